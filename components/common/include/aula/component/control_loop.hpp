@@ -1,0 +1,43 @@
+#pragma once
+// Runs the student's algorithm every control period of SIMULATED time (80 ms by default), in
+// lockstep with the simulator when it is in lockstep: the tick is acknowledged only after the
+// algorithm ran and the motor command was published.
+
+#include <aula/component/proxies.hpp>
+#include <aula/lcm/lockstep_client.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace aula::component {
+
+class ControlLoop {
+ public:
+  // `step` runs at every due tick while running (the student's execute()).
+  ControlLoop(lcm::LCM& bus, const std::string& client_name, int64_t period_us, MotorsProxy& motors,
+              std::function<void()> step);
+
+  void setRunning(bool running);  // stopping also zeroes the motors
+  bool running() const { return running_; }
+  void poll() { client_.poll(); }  // housekeeping: lockstep re-registration
+  void leave() { client_.leave(); }
+
+  int64_t simTimeUs() const { return client_.simTimeUs(); }
+  bool clockSeen() const { return client_.clockSeen(); }
+  int64_t periodUs() const { return period_us_; }
+  // Optional hook after every due tick, running or not (GUI model updates, recorders).
+  void setOnTick(std::function<void(int64_t utime)> hook) { on_tick_ = std::move(hook); }
+
+ private:
+  void tick(int64_t utime);
+
+  MotorsProxy& motors_;
+  std::function<void()> step_;
+  std::function<void(int64_t)> on_tick_;
+  int64_t period_us_;
+  bool running_ = false;
+  lcmbus::LockstepClient client_;
+};
+
+}  // namespace aula::component

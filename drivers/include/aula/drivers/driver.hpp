@@ -1,0 +1,49 @@
+#pragma once
+// A simulator-side device attached to one robot, declared in the world as an SDF
+// <plugin filename="TYPE">. Drivers mirror JdeRobot's ICE drivers: each publishes or
+// subscribes on its configured LCM channel, stamped with simulated time.
+//
+// Life cycle: the simulator creates drivers with makeDriver(), calls attach() once, then
+// step(sim_time_us) after every physics step. Drivers read parameters in attach() and
+// document them at the top of their source file (Stage style).
+
+#include <aula/world/world_spec.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lcm { class LCM; }
+namespace aula::physics { class PhysicsWorld; }
+namespace aula::geometry { class Raycaster2D; }
+
+namespace aula::drivers {
+
+// What a driver may touch. Owned by the simulator; outlives every driver.
+struct DriverContext {
+  lcm::LCM* bus = nullptr;
+  physics::PhysicsWorld* physics = nullptr;
+  // Static world geometry cut at a height (lasers ask for their mount height).
+  std::function<const geometry::Raycaster2D*(double z_m)> raycaster_at;
+  uint64_t seed = 0;                                 // run seed (noise)
+};
+
+class Driver {
+ public:
+  virtual ~Driver() = default;
+  // Reads the plugin's parameters and subscribes; throws world::WorldError on bad parameters.
+  virtual void attach(DriverContext& context, int robot, const world::PluginSpec& plugin) = 0;
+  // Called after every physics step with the new simulated time.
+  virtual void step(int64_t sim_time_us) = 0;
+  // World reset: forget held commands and schedules.
+  virtual void reset() {}
+};
+
+// The driver types this build knows, by the name used in <plugin filename="...">.
+std::vector<std::string> driverTypes();
+// Throws world::WorldError naming the type when it is unknown.
+std::unique_ptr<Driver> makeDriver(const std::string& type);
+
+}  // namespace aula::drivers

@@ -1,0 +1,23 @@
+// The one table of driver types, by the name used in <plugin filename="...">.
+#include "aula/drivers/driver.hpp"
+
+#include "bumper_driver.hpp"
+#include "laser_driver.hpp"
+#include "motors_driver.hpp"
+#include "pose3d_driver.hpp"
+
+namespace aula::drivers {
+
+std::vector<std::string> driverTypes() { return {"pose3d", "motors", "laser", "bumper"}; }
+
+std::unique_ptr<Driver> makeDriver(const std::string& type) {
+  if (type == "pose3d") return std::make_unique<Pose3dDriver>();
+  if (type == "motors") return std::make_unique<MotorsDriver>();
+  if (type == "laser") return std::make_unique<LaserDriver>();
+  if (type == "bumper") return std::make_unique<BumperDriver>();
+  std::string known;
+  for (const auto& t : driverTypes()) known += (known.empty() ? "" : ", ") + t;
+  throw world::WorldError("unknown driver type '" + type + "' (known: " + known + ")");
+}
+
+}  // namespace aula::drivers

@@ -1,0 +1,101 @@
+#include "motors_driver.hpp"
+
+#include <aula/physics/physics_world.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+namespace aula::drivers {
+
+bool filterCommand(const MotorLimits& limits, double v, double w, double l, VelocityCommand& out) {
+  if (!std::isfinite(v) || !std::isfinite(w) || !std::isfinite(l)) return false;
+  VelocityCommand c;
+  c.v_mps = std::clamp(v, -limits.max_v_mps, limits.max_v_mps);
+  c.w_radps = std::clamp(w, -limits.max_w_radps, limits.max_w_radps);
+  c.l_mps = limits.holonomic ? std::clamp(l, -limits.max_v_mps, limits.max_v_mps) : 0.0;
+  if (limits.ackermann) {
+    c.l_mps = 0.0;
+    const double max_w = limits.min_turn_radius_m > 0 ? std::abs(c.v_mps) / limits.min_turn_radius_m
+                                                       : limits.max_w_radps;
+    c.w_radps = std::clamp(c.w_radps, -max_w, max_w);
+  }
+  out = c;
+  return true;
+}
+
+MotorsDriver::~MotorsDriver() {
+  if (subscription_ != nullptr && context_ != nullptr) context_->bus->unsubscribe(subscription_);
+}
+
+void MotorsDriver::attach(DriverContext& context, int robot, const world::PluginSpec& plugin) {
+  context_ = &context;
+  robot_ = robot;
+  const std::string where = plugin.owner + "/" + plugin.name;
+  channel_ = plugin.getString("channel", "");
+  if (channel_.empty()) throw world::WorldError(where + ": motors needs a <channel>");
+  limits_.max_v_mps = plugin.getDouble("max_v", 1.0);
+  limits_.max_w_radps = plugin.getDouble("max_w", 1.0);
+  limits_.holonomic = plugin.getBool("holonomic", false);
+  const std::string kinematics = plugin.getString("kinematics", "diff");
+  if (kinematics == "ackermann") {
+    limits_.ackermann = true;
+    const double wheelbase = plugin.getDouble("wheelbase", 2.6);
+    const double max_steer = plugin.getDouble("max_steer_rad", 0.48);
+    if (!(wheelbase > 0) || !(max_steer > 0) || !(max_steer < 1.5)) {
+      throw world::WorldError(where + ": ackermann needs wheelbase > 0 and 0 < max_steer_rad < 1.5");
+    }
+    limits_.min_turn_radius_m = wheelbase / std::tan(max_steer);
+  } else if (kinematics != "diff") {
+    throw world::WorldError(where + ": kinematics '" + kinematics +
+                            "' is not one of: diff, ackermann");
+  }
+  if (!(limits_.max_v_mps > 0) || !(limits_.max_w_radps > 0)) {
+    throw world::WorldError(where + ": max_v and max_w must be > 0");
+  }
+  const double watchdog_s = plugin.getDouble("watchdog_s", 0.5);
+  if (!(watchdog_s > 0)) throw world::WorldError(where + ": watchdog_s must be > 0");
+  watchdog_us_ = static_cast<int64_t>(std::llround(watchdog_s * 1e6));
+  subscription_ = context.bus->subscribe(channel_, &MotorsDriver::onCommand, this);
+}
+
+void MotorsDriver::onCommand(const lcm::ReceiveBuffer*, const std::string& channel,
+                             const aula::motors_t* msg) {
+  VelocityCommand filtered;
+  if (!filterCommand(limits_, msg->v, msg->w, msg->l, filtered)) {
+    ++rejected_;
+    // Log the first few and then every 100th, so a broken client cannot flood the terminal.
+    if (rejected_ <= 3 || rejected_ % 100 == 0) {
+      std::cerr << "aula-sim: " << channel << ": rejected non-finite motors command (v=" << msg->v
+                << " w=" << msg->w << " l=" << msg->l << "), " << rejected_ << " so far\n";
+    }
+    return;
+  }
+  command_ = filtered;
+  have_command_ = true;
+  fresh_command_ = true;
+}
+
+void MotorsDriver::step(int64_t sim_time_us) {
+  now_us_ = sim_time_us;
+  if (fresh_command_) {
+    last_command_us_ = sim_time_us;
+    fresh_command_ = false;
+  }
+  if (have_command_ && sim_time_us - last_command_us_ > watchdog_us_) {
+    command_ = VelocityCommand{};  // watchdog: the client went quiet, stop the robot
+    have_command_ = false;
+  }
+  context_->physics->commandVelocity(robot_, command_.v_mps, command_.w_radps, command_.l_mps);
+}
+
+void MotorsDriver::reset() {
+  command_ = VelocityCommand{};
+  have_command_ = false;
+  fresh_command_ = false;
+  last_command_us_ = 0;
+}
+
+}  // namespace aula::drivers

@@ -1,0 +1,36 @@
+#pragma once
+// LCM in an event loop without threads: in a Qt application a QSocketNotifier on the bus's file
+// descriptor calls handle() when data arrive; headless, runHeadless() polls the same descriptor.
+// Either way every LCM callback runs on the one main thread that also owns the widgets.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <QObject>
+#include <QSocketNotifier>
+#include <QTimer>
+
+#include <functional>
+
+namespace aula::app {
+
+class BusPump : public QObject {
+  Q_OBJECT
+ public:
+  // `housekeeping` runs every `housekeeping_ms` of wall time (re-registration, timeouts).
+  BusPump(lcm::LCM& bus, std::function<void()> housekeeping, int housekeeping_ms = 50,
+          QObject* parent = nullptr);
+
+ private:
+  void drain();
+  lcm::LCM& bus_;
+  QSocketNotifier notifier_;
+  QTimer timer_;
+  std::function<void()> housekeeping_;
+};
+
+// Headless loop: handles the bus until `done()` is true or SIGINT/SIGTERM arrives.
+// `housekeeping` runs at least every 50 ms of wall time. Returns true when stopped by a signal.
+bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
+                 const std::function<void()>& housekeeping);
+
+}  // namespace aula::app

@@ -1,0 +1,74 @@
+#pragma once
+// Planar ray casting against the world's static primitives, for laser drivers.
+// DART's Bullet raycast costs ~2.5 ms per 180-beam scan and is up to 1.3 cm off; this caster is
+// analytic (exact ray/rectangle and ray/circle intersections) over a uniform-grid spatial index.
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace aula::world { struct WorldSpec; }
+
+namespace aula::geometry {
+
+// Oriented rectangle in the plane.
+struct Rect2 {
+  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
+  double yaw_rad = 0.0;
+  Eigen::Vector2d half_extents_m = Eigen::Vector2d::Zero();
+};
+
+struct Circle2 {
+  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
+  double radius_m = 0.0;
+};
+
+// Obstacles cut by a horizontal plane.
+struct Obstacles2D {
+  std::vector<Rect2> rects;
+  std::vector<Circle2> circles;
+};
+
+// The static primitives of a world whose vertical extent contains height z_m (upright boxes
+// and cylinders; a tilted primitive is approximated by its footprint).
+Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m);
+
+struct ScanRequest {
+  Eigen::Vector2d origin_m = Eigen::Vector2d::Zero();  // sensor position, world frame
+  double yaw_rad = 0.0;                                // sensor heading, world frame
+  double min_angle_rad = 0.0;                          // first beam, sensor frame
+  double angle_increment_rad = 0.0;
+  int num_beams = 0;
+  double min_range_m = 0.0;
+  double max_range_m = 10.0;
+};
+
+class Raycaster2D {
+ public:
+  Raycaster2D() = default;
+  // Builds the spatial index; cell size chosen by measurement (see docs/performance.md).
+  explicit Raycaster2D(Obstacles2D statics, double cell_size_m = 1.0);
+
+  // Distance to the first hit along the ray, or max_range_m when nothing is closer.
+  // `dynamic` holds moving obstacles (other robots) tested brute force.
+  double cast(const Eigen::Vector2d& origin_m, double angle_rad, double max_range_m,
+              const Obstacles2D* dynamic = nullptr) const;
+
+  // Fills ranges_m (num_beams values). Beams with no hit within max_range report max_range;
+  // hits closer than min_range also report max_range (out of the sensor's range, like a real
+  // scanner's invalid reading).
+  void scan(const ScanRequest& request, float* ranges_m,
+            const Obstacles2D* dynamic = nullptr) const;
+
+  const Obstacles2D& statics() const { return statics_; }
+
+ private:
+  Obstacles2D statics_;
+  // Uniform grid over the statics' bounding box; each cell lists rect/circle indices.
+  double cell_m_ = 1.0;
+  Eigen::Vector2d grid_min_ = Eigen::Vector2d::Zero();
+  int cols_ = 0, rows_ = 0;
+  std::vector<std::vector<int>> cells_;  // index >= 0: rect, < 0: circle (-1 - i)
+};
+
+}  // namespace aula::geometry

@@ -1,0 +1,66 @@
+#pragma once
+// The client half of the simulator's lockstep handshake.
+//
+// The simulator publishes sim_clock_t ticks. A registered client whose period divides the
+// tick's utime must acknowledge it (after handling the sensor data published before the tick
+// and publishing its own outputs); until every due client has acked, the world does not
+// advance. Registration and acks are re-sent after a short wall-clock wait, so one lost UDP
+// packet never stalls a run.
+
+#include <aula/sim_clock_t.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace aula::lcmbus {
+
+class LockstepClient {
+ public:
+  // on_tick(utime) runs at every tick that is due for this client (every period_us of sim time),
+  // in lockstep or not; in lockstep the ack follows when on_tick returns.
+  using TickHandler = std::function<void(int64_t utime)>;
+
+  LockstepClient(lcm::LCM& bus, std::string client_name, int64_t period_us, TickHandler on_tick);
+  ~LockstepClient();
+  LockstepClient(const LockstepClient&) = delete;
+  LockstepClient& operator=(const LockstepClient&) = delete;
+
+  // Call regularly (e.g. every 50 ms wall, or after each lcm.handle()): re-sends the
+  // registration until the simulator lists this client.
+  void poll();
+  // Leave lockstep (the simulator stops waiting). Also done by the destructor.
+  void leave();
+
+  int64_t simTimeUs() const { return last_utime_; }
+  bool registered() const { return registered_; }
+  bool lockstep() const { return lockstep_; }
+  bool paused() const { return paused_; }
+  bool clockSeen() const { return last_seq_ >= 0; }
+  double realTimeFactor() const { return rtf_; }
+
+ private:
+  void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
+  void sendRegister(bool leave);
+  void sendAck(int64_t seq, int64_t utime);
+
+  lcm::LCM& bus_;
+  lcm::Subscription* subscription_ = nullptr;
+  std::string name_;
+  int64_t period_us_;
+  TickHandler on_tick_;
+  int64_t last_seq_ = -1;
+  int64_t last_utime_ = 0;
+  int64_t next_due_us_ = 0;
+  bool registered_ = false;
+  bool lockstep_ = false;
+  bool paused_ = false;
+  bool left_ = false;
+  double rtf_ = 0.0;
+  std::chrono::steady_clock::time_point last_register_{};
+};
+
+}  // namespace aula::lcmbus

@@ -1,0 +1,82 @@
+#include "aula/lcm/lockstep_client.hpp"
+
+#include "aula/lcm/bus.hpp"
+
+#include <aula/lockstep_ack_t.hpp>
+#include <aula/lockstep_register_t.hpp>
+
+#include <utility>
+
+namespace aula::lcmbus {
+namespace {
+constexpr auto kRegisterResend = std::chrono::milliseconds(100);
+}
+
+LockstepClient::LockstepClient(lcm::LCM& bus, std::string client_name, int64_t period_us,
+                               TickHandler on_tick)
+    : bus_(bus), name_(std::move(client_name)), period_us_(period_us), on_tick_(std::move(on_tick)) {
+  if (period_us_ <= 0) period_us_ = 1;
+  subscription_ = bus_.subscribe(kClockChannel, &LockstepClient::onClock, this);
+  sendRegister(false);
+}
+
+LockstepClient::~LockstepClient() {
+  leave();
+  if (subscription_ != nullptr) bus_.unsubscribe(subscription_);
+}
+
+void LockstepClient::poll() {
+  if (left_ || registered_) return;
+  if (std::chrono::steady_clock::now() - last_register_ >= kRegisterResend) sendRegister(false);
+}
+
+void LockstepClient::leave() {
+  if (left_) return;
+  left_ = true;
+  sendRegister(true);
+}
+
+void LockstepClient::sendRegister(bool leave) {
+  aula::lockstep_register_t msg;
+  msg.client = name_;
+  msg.period_us = period_us_;
+  msg.leave = leave;
+  bus_.publish(kLockstepRegisterChannel, &msg);
+  last_register_ = std::chrono::steady_clock::now();
+}
+
+void LockstepClient::sendAck(int64_t seq, int64_t utime) {
+  aula::lockstep_ack_t ack;
+  ack.client = name_;
+  ack.seq = seq;
+  ack.utime = utime;
+  bus_.publish(kLockstepAckChannel, &ack);
+}
+
+void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string&,
+                             const aula::sim_clock_t* tick) {
+  lockstep_ = tick->lockstep;
+  paused_ = tick->paused;
+  rtf_ = tick->real_time_factor;
+  bool listed = false;
+  for (const auto& c : tick->clients) listed = listed || c == name_;
+  registered_ = listed && !left_;
+
+  if (tick->seq == last_seq_) {
+    // The simulator re-sent a tick: our ack was lost. Ack again, do not run twice.
+    if (registered_ && lockstep_) sendAck(tick->seq, tick->utime);
+    return;
+  }
+  if (tick->seq < last_seq_) return;  // stale duplicate
+  if (tick->utime < last_utime_) next_due_us_ = 0;  // world reset: time went back
+  last_seq_ = tick->seq;
+  last_utime_ = tick->utime;
+
+  if (tick->utime >= next_due_us_) {
+    next_due_us_ = (tick->utime / period_us_ + 1) * period_us_;
+    if (on_tick_) on_tick_(tick->utime);
+    if (registered_ && lockstep_) sendAck(tick->seq, tick->utime);
+  }
+}
+
+}  // namespace aula::lcmbus

@@ -1,0 +1,40 @@
+#pragma once
+// A child process that never outlives its parent: started with PR_SET_PDEATHSIG, stopped with
+// SIGTERM then SIGKILL. Used by the `aula` launcher and by integration tests.
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <sys/types.h>
+
+namespace aula::process {
+
+class ChildProcess {
+ public:
+  // argv[0] is the program (a path or a name on PATH). stdout/stderr go to the given files
+  // (empty: inherited). Throws std::runtime_error when the program cannot be started.
+  ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",
+               const std::string& stderr_path = "");
+  ~ChildProcess();  // stops the child if still running
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  pid_t pid() const { return pid_; }
+  const std::string& name() const { return name_; }
+
+  // Non-blocking: the exit code once finished (128 + signal when killed by a signal).
+  std::optional<int> poll();
+  // Waits up to `timeout`; nullopt if still running.
+  std::optional<int> wait(std::chrono::milliseconds timeout);
+  // SIGTERM, wait up to `grace`, then SIGKILL. Returns the exit code.
+  int stop(std::chrono::milliseconds grace = std::chrono::milliseconds(2000));
+
+ private:
+  pid_t pid_ = -1;
+  std::string name_;
+  std::optional<int> exit_code_;
+};
+
+}  // namespace aula::process

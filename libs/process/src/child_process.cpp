@@ -1,0 +1,103 @@
+#include "aula/process/child_process.hpp"
+
+#include <csignal>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace aula::process {
+namespace {
+
+int decode(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+  return -1;
+}
+
+}  // namespace
+
+ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
+                           const std::string& stderr_path) {
+  if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
+  name_ = argv[0];
+  // A pipe closed on exec tells the parent whether exec succeeded.
+  int status_pipe[2];
+  if (pipe2(status_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
+  const pid_t parent = getpid();
+  pid_ = fork();
+  if (pid_ < 0) throw std::runtime_error("fork failed: " + std::string(std::strerror(errno)));
+  if (pid_ == 0) {
+    close(status_pipe[0]);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(127);  // the parent died before prctl
+    // The parent may block SIGINT/SIGTERM for a signalfd; the child must not inherit that.
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    auto redirect = [](const std::string& path, int fd) {
+      if (path.empty()) return;
+      const int out = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (out >= 0) {
+        dup2(out, fd);
+        close(out);
+      }
+    };
+    redirect(stdout_path, STDOUT_FILENO);
+    redirect(stderr_path, STDERR_FILENO);
+    std::vector<char*> args;
+    for (auto& a : argv) args.push_back(a.data());
+    args.push_back(nullptr);
+    execvp(args[0], args.data());
+    const int err = errno;
+    (void)!write(status_pipe[1], &err, sizeof err);
+    _exit(127);
+  }
+  close(status_pipe[1]);
+  int err = 0;
+  const ssize_t n = read(status_pipe[0], &err, sizeof err);
+  close(status_pipe[0]);
+  if (n == static_cast<ssize_t>(sizeof err)) {
+    int status = 0;
+    waitpid(pid_, &status, 0);
+    pid_ = -1;
+    throw std::runtime_error("cannot start '" + name_ + "': " + std::strerror(err));
+  }
+}
+
+ChildProcess::~ChildProcess() {
+  if (pid_ > 0 && !exit_code_) stop();
+}
+
+std::optional<int> ChildProcess::poll() {
+  if (exit_code_ || pid_ <= 0) return exit_code_;
+  int status = 0;
+  if (waitpid(pid_, &status, WNOHANG) == pid_) exit_code_ = decode(status);
+  return exit_code_;
+}
+
+std::optional<int> ChildProcess::wait(std::chrono::milliseconds timeout) {
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  while (!poll()) {
+    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return exit_code_;
+}
+
+int ChildProcess::stop(std::chrono::milliseconds grace) {
+  if (poll()) return *exit_code_;
+  kill(pid_, SIGTERM);
+  if (auto code = wait(grace)) return *code;
+  kill(pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  exit_code_ = decode(status);
+  return *exit_code_;
+}
+
+}  // namespace aula::process

@@ -1,0 +1,89 @@
+#pragma once
+// A world as Aula sees it once the SDF is read: static primitives, robots and the drivers
+// declared on them. Plain data, no sdformat or DART types, so that the simulator, the map
+// generator, the laser caster and the referees all share one description.
+
+#include <Eigen/Geometry>
+
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace aula::world {
+
+// Malformed or unreadable world: the message names the file (and element) and what is wrong.
+class WorldError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class ShapeKind { Box, Cylinder };
+
+struct Shape {
+  ShapeKind kind = ShapeKind::Box;
+  Eigen::Vector3d box_size_m = Eigen::Vector3d::Zero();  // Box: full extents along local x, y, z
+  double radius_m = 0.0;                                 // Cylinder: axis along local z
+  double length_m = 0.0;                                 // Cylinder
+
+  // Half-height along the world z axis when the shape is upright.
+  double halfHeight() const { return kind == ShapeKind::Box ? box_size_m.z() / 2 : length_m / 2; }
+};
+
+// One collision primitive of a static model, already in world coordinates.
+struct StaticObject {
+  std::string name;                                // "model::link::collision"
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // world pose of the shape centre
+  Shape shape;
+};
+
+// A driver declared on a robot with <plugin name="..." filename="TYPE">, Gazebo style.
+// Every child element of <plugin> is kept as text in params (e.g. "channel" -> "ROOMBA_LASER").
+struct PluginSpec {
+  std::string name;   // instance name, unique on the robot
+  std::string type;   // driver type: pose3d, motors, laser, bumper
+  std::map<std::string, std::string> params;
+
+  bool has(const std::string& key) const { return params.count(key) != 0; }
+  // Typed reads; throw WorldError naming robot/plugin/key when a value does not parse.
+  std::string getString(const std::string& key, const std::string& fallback) const;
+  double getDouble(const std::string& key, double fallback) const;
+  int getInt(const std::string& key, int fallback) const;
+  bool getBool(const std::string& key, bool fallback) const;
+  // "x y z roll pitch yaw" (SDF pose syntax), relative to the robot body frame.
+  Eigen::Isometry3d getPose(const std::string& key) const;
+
+  std::string owner;  // robot name, for error messages
+};
+
+// A mobile robot: one rigid body moving in the plane, driven by its motors plugin.
+struct RobotSpec {
+  std::string name;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // initial world pose of the body frame
+  double mass_kg = 1.0;
+  Shape shape;                                             // collision shape of the body
+  Eigen::Isometry3d shape_offset = Eigen::Isometry3d::Identity();  // shape pose in body frame
+  std::vector<PluginSpec> plugins;
+
+  const PluginSpec* findPlugin(const std::string& type) const;
+};
+
+struct WorldSpec {
+  std::string name;
+  std::string source_path;
+  double physics_step_s = 0.0;  // <physics><max_step_size>; 0 when the world does not say
+  std::vector<StaticObject> statics;
+  std::vector<RobotSpec> robots;
+
+  const RobotSpec* findRobot(const std::string& name) const;
+};
+
+// Reads an SDF world with libsdformat. `model://NAME` includes resolve in models_dir
+// (default: the "models" folder beside the world file). Throws WorldError.
+WorldSpec loadWorld(const std::string& path, const std::string& models_dir = "");
+
+// Extracts the yaw of a pose (rotation about world z).
+double yawOf(const Eigen::Isometry3d& pose);
+
+}  // namespace aula::world

@@ -1,0 +1,37 @@
+#pragma once
+// A referee's report: an ordered JSON object written atomically (temp file + rename), so a
+// reader never sees half a report. Numbers are printed with a fixed format so the same run
+// gives byte-identical files.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace aula::referee {
+
+class Report {
+ public:
+  void set(const std::string& key, double value);
+  void set(const std::string& key, long long value);
+  void set(const std::string& key, int value) { set(key, static_cast<long long>(value)); }
+  void set(const std::string& key, bool value);
+  void set(const std::string& key, const std::string& value);
+  void set(const std::string& key, const char* value) { set(key, std::string(value)); }
+  void set(const std::string& key, const std::vector<double>& values);
+
+  std::string toJson() const;
+  // Throws std::runtime_error naming the path on failure.
+  void writeAtomically(const std::string& path) const;
+
+  // The raw JSON text of a key ("" when absent), for tests and summaries.
+  std::string raw(const std::string& key) const;
+
+ private:
+  void put(const std::string& key, std::string json);
+  std::vector<std::pair<std::string, std::string>> fields_;
+};
+
+// Fixed, locale-independent number formatting used in reports ("12.345678").
+std::string formatNumber(double value);
+
+}  // namespace aula::referee

@@ -1,0 +1,98 @@
+#include "aula/referee/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+namespace aula::referee {
+namespace {
+
+std::string quote(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string formatNumber(double value) {
+  if (!std::isfinite(value)) return "null";  // JSON has no NaN/inf
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", value);
+  std::string s = buf;
+  // Trim trailing zeros but keep one decimal: 12.500000 -> 12.5, 3.000000 -> 3.0
+  while (s.size() > 2 && s.back() == '0' && s[s.size() - 2] != '.') s.pop_back();
+  if (s == "-0.0") s = "0.0";
+  return s;
+}
+
+void Report::put(const std::string& key, std::string json) {
+  for (auto& [k, v] : fields_) {
+    if (k == key) {
+      v = std::move(json);
+      return;
+    }
+  }
+  fields_.emplace_back(key, std::move(json));
+}
+
+void Report::set(const std::string& key, double value) { put(key, formatNumber(value)); }
+void Report::set(const std::string& key, long long value) { put(key, std::to_string(value)); }
+void Report::set(const std::string& key, bool value) { put(key, value ? "true" : "false"); }
+void Report::set(const std::string& key, const std::string& value) { put(key, quote(value)); }
+void Report::set(const std::string& key, const std::vector<double>& values) {
+  std::string json = "[";
+  for (size_t i = 0; i < values.size(); ++i) json += (i ? ", " : "") + formatNumber(values[i]);
+  put(key, json + "]");
+}
+
+std::string Report::raw(const std::string& key) const {
+  for (const auto& [k, v] : fields_) {
+    if (k == key) return v;
+  }
+  return "";
+}
+
+std::string Report::toJson() const {
+  std::string out = "{\n";
+  for (size_t i = 0; i < fields_.size(); ++i) {
+    out += "  " + quote(fields_[i].first) + ": " + fields_[i].second;
+    out += i + 1 < fields_.size() ? ",\n" : "\n";
+  }
+  return out + "}\n";
+}
+
+void Report::writeAtomically(const std::string& path) const {
+  const std::string tmp = path + ".tmp." + std::to_string(getpid());
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    if (!out) throw std::runtime_error(path + ": cannot write report");
+    out << toJson();
+    out.flush();
+    if (!out) throw std::runtime_error(path + ": cannot write report");
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot move report into place");
+  }
+}
+
+}  // namespace aula::referee

@@ -1,0 +1,30 @@
+#include "aula/teletaxi/taxi_grade.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace aula::teletaxi {
+
+TaxiGrade gradeTaxi(const TaxiGradeInput& in, const TaxiGradeScale& scale) {
+  TaxiGrade g;
+  g.average_speed_mps = in.driving_time_s > 0 ? in.path_length_m / in.driving_time_s : 0.0;
+  g.reached = !in.timed_out && in.stopped && std::isfinite(in.final_distance_m) &&
+              in.final_distance_m <= scale.arrival_radius_m;
+  char line[160];
+  if (!g.reached) {
+    std::snprintf(line, sizeof line, "not reached: %.2f m from the destination%s",
+                  in.final_distance_m, in.timed_out ? " at the timeout" : "");
+    g.verdict = line;
+    return g;
+  }
+  g.base_mark = in.final_distance_m <= 2.0 ? 8.0 : in.final_distance_m <= 4.0 ? 7.5 : 7.0;
+  g.speed_mark = std::min(10.0, 10.0 * g.average_speed_mps / scale.reference_speed_mps);
+  g.mark = std::min(10.0, g.base_mark + 0.2 * g.speed_mark);
+  std::snprintf(line, sizeof line, "reached: %.2f m from the destination, %.2f m/s average",
+                in.final_distance_m, g.average_speed_mps);
+  g.verdict = line;
+  return g;
+}
+
+}  // namespace aula::teletaxi

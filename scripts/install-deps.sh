@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs every build, test and run dependency of Aula with apt (Debian 12).
+# Idempotent: quiet and fast when everything is already there.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libdart-all-dev libdart-collision-bullet-dev libdart-utils-dev libdart-gui-osg-dev
+  libsdformat-dev
+  liblcm-dev liblcm-bin libglib2.0-dev
+  libompl-dev
+  qtbase5-dev libqt5charts5-dev
+  libopencv-dev
+  libeigen3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth
+  iproute2 procps python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,48 @@
+#pragma once
+// The simulator half of lockstep: who is registered, who is due at a tick, who has acked.
+// Plain bookkeeping on sim time and a wall clock passed in, so it is unit-testable.
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace aula::sim {
+
+class LockstepServer {
+ public:
+  using WallClock = std::chrono::steady_clock;
+
+  explicit LockstepServer(std::chrono::milliseconds drop_after) : drop_after_(drop_after) {}
+
+  // Returns true when the client is new (worth a log line).
+  bool join(const std::string& client, int64_t period_us);
+  bool leave(const std::string& client);
+  // Marks the clients due at this tick (period divides into utime) as awaited.
+  void tick(int64_t seq, int64_t utime, WallClock::time_point now);
+  void ack(const std::string& client, int64_t seq);
+  // True while some due client has not acked the current tick.
+  bool waiting() const;
+  // Drops clients that have not acked for drop_after; returns their names.
+  std::vector<std::string> dropStale(WallClock::time_point now);
+  // Earliest sim time after `utime` at which some client is due (INT64_MAX if none).
+  int64_t nextDueAfter(int64_t utime) const;
+  // World reset: time starts again from zero.
+  void resetSchedule();
+
+  std::vector<std::string> clients() const;
+  std::size_t size() const { return clients_.size(); }
+
+ private:
+  struct Client {
+    int64_t period_us = 1;
+    int64_t next_due_us = 0;
+    int64_t awaited_seq = -1;  // -1: nothing awaited
+    WallClock::time_point awaited_since{};
+  };
+  std::map<std::string, Client> clients_;
+  std::chrono::milliseconds drop_after_;
+};
+
+}  // namespace aula::sim

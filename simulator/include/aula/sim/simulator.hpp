@@ -1,0 +1,85 @@
+#pragma once
+// The simulator process core: the DART world, the drivers on its robots, the one clock, the
+// control channel and lockstep. Single-threaded: LCM is handled between physics steps.
+
+#include <aula/drivers/driver.hpp>
+#include <aula/geometry/raycaster2d.hpp>
+#include <aula/physics/physics_world.hpp>
+#include <aula/sim/lockstep_server.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <aula/lockstep_ack_t.hpp>
+#include <aula/lockstep_register_t.hpp>
+#include <aula/sim_control_t.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aula::config { class Config; }
+
+namespace aula::sim {
+
+struct SimulatorOptions {
+  double step_s = 0.005;             // physics step
+  double real_time_factor = 1.0;     // pacing in free-running mode; 0 = as fast as possible
+  bool lockstep = false;
+  int64_t seed = 0;
+  int64_t clock_period_us = 20000;   // SIM_CLOCK ticks at least this often (sim time)
+  int lockstep_wait_clients = 0;     // lockstep: do not start before this many clients joined
+  std::chrono::milliseconds lockstep_resend{20};   // re-send an unacked tick after (wall)
+  std::chrono::milliseconds lockstep_drop{5000};   // drop a silent client after (wall)
+  double duration_s = 0.0;           // stop after this much sim time; 0 = run until stopped
+  bool start_paused = false;
+
+  // Reads Simulator.* keys; throws config::ConfigError.
+  static SimulatorOptions fromConfig(const config::Config& cfg);
+};
+
+class Simulator {
+ public:
+  // Throws world::WorldError on bad drivers/parameters.
+  Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& bus);
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  // Runs until `should_stop()` returns true or duration_s is reached.
+  void run(const std::function<bool()>& should_stop);
+  // Advances to the next clock tick and publishes it (no pacing, no lockstep waiting).
+  void advanceToNextTick();
+
+  physics::PhysicsWorld& physics() { return *physics_; }
+  const world::WorldSpec& spec() const { return spec_; }
+  int64_t timeUs() const { return physics_->timeUs(); }
+  const SimulatorOptions& options() const { return options_; }
+
+ private:
+  void onControl(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_control_t* msg);
+  void onRegister(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* m);
+  void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
+  void publishClock();
+  void resetWorld();
+  const geometry::Raycaster2D* raycasterAt(double z_m);
+  void log(const std::string& line) const;
+
+  world::WorldSpec spec_;
+  SimulatorOptions options_;
+  lcm::LCM& bus_;
+  std::unique_ptr<physics::PhysicsWorld> physics_;
+  std::map<long long, std::unique_ptr<geometry::Raycaster2D>> raycasters_;  // key: z in mm
+  drivers::DriverContext context_;
+  std::vector<std::unique_ptr<drivers::Driver>> drivers_;
+  LockstepServer lockstep_;
+  std::vector<lcm::Subscription*> subscriptions_;
+  int64_t seq_ = 0;
+  bool paused_ = false;
+  double measured_rtf_ = 0.0;
+};
+
+}  // namespace aula::sim

@@ -1,0 +1,77 @@
+// aula-sim WORLD [--config simulator.cfg] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]
+//                [--duration S] [--Simulator.Key=value ...]
+// Headless by default, like gzserver.
+#include "src/signal_watcher.hpp"
+
+#include <aula/config/config.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/sim/simulator.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <fstream>
+#include <iostream>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: aula-sim WORLD [--config FILE] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]\n"
+    "                [--duration SECONDS] [--paused] [--Simulator.Key=value ...]\n"
+    "  WORLD        an SDF world, e.g. worlds/vacuum.world\n"
+    "  --config     simulator settings (default: config/simulator.cfg if present)\n"
+    "  --lockstep   advance only when every registered client has acknowledged\n"
+    "  --rtf X      real-time factor in free-running mode (0 = as fast as possible)\n"
+    "  --duration   stop after this many simulated seconds\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace aula;
+  try {
+    const auto cl = config::CommandLine::parse(
+        argc, argv, {"config", "rtf", "seed", "lcm-url", "duration"});
+    if (cl.flag("help")) {
+      std::cout << kUsage;
+      return 0;
+    }
+    cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "help"});
+    if (cl.positional.size() != 1) {
+      std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
+      return 2;
+    }
+    config::Config cfg;
+    if (cl.flag("config")) {
+      cfg = config::Config::fromFile(cl.option("config"));
+    } else {
+      const std::string fallback = std::string(AULA_SOURCE_DIR) + "/config/simulator.cfg";
+      if (std::ifstream(fallback).good()) cfg = config::Config::fromFile(fallback);
+    }
+    if (cl.flag("lockstep")) cfg.set("Simulator.Lockstep", "true", "command line --lockstep");
+    if (cl.flag("paused")) cfg.set("Simulator.StartPaused", "true", "command line --paused");
+    if (cl.flag("rtf")) cfg.set("Simulator.RealTimeFactor", cl.option("rtf"), "command line --rtf");
+    if (cl.flag("seed")) cfg.set("Simulator.Seed", cl.option("seed"), "command line --seed");
+    if (cl.flag("duration")) cfg.set("Simulator.Duration", cl.option("duration"), "command line --duration");
+    cl.applyOverrides(cfg);
+
+    const auto options = sim::SimulatorOptions::fromConfig(cfg);
+    world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+    auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
+    sim::SignalWatcher signals;
+    sim::Simulator simulator(std::move(spec), options, *bus);
+    std::cerr << "aula-sim: world '" << simulator.spec().name << "' with "
+              << simulator.physics().robotCount() << " robot(s), step " << options.step_s * 1e3
+              << " ms, " << (options.lockstep ? "lockstep" : "free-running") << ", seed "
+              << options.seed << std::endl;
+    simulator.run([&] { return signals.stopRequested(); });
+    std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time\n";
+    return 0;
+  } catch (const config::ConfigError& e) {
+    std::cerr << "aula-sim: " << e.what() << "\n";
+    return 2;
+  } catch (const world::WorldError& e) {
+    std::cerr << "aula-sim: " << e.what() << "\n";
+    return 2;
+  } catch (const lcmbus::BusError& e) {
+    std::cerr << "aula-sim: " << e.what() << "\n";
+    return 1;
+  }
+}

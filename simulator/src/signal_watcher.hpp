@@ -1,0 +1,40 @@
+#pragma once
+// SIGINT/SIGTERM as a file descriptor (signalfd), so a single-threaded loop can poll for a
+// clean stop without a global flag.
+
+#include <csignal>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+namespace aula::sim {
+
+class SignalWatcher {
+ public:
+  SignalWatcher() {
+    sigset_t mask;
+    sigemptyset(&mask);
+    sigaddset(&mask, SIGINT);
+    sigaddset(&mask, SIGTERM);
+    sigprocmask(SIG_BLOCK, &mask, nullptr);
+    fd_ = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+  }
+  ~SignalWatcher() {
+    if (fd_ >= 0) close(fd_);
+  }
+  SignalWatcher(const SignalWatcher&) = delete;
+  SignalWatcher& operator=(const SignalWatcher&) = delete;
+
+  // Non-blocking: true once a stop signal has arrived.
+  bool stopRequested() {
+    if (stop_ || fd_ < 0) return stop_;
+    signalfd_siginfo info;
+    if (read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) stop_ = true;
+    return stop_;
+  }
+
+ private:
+  int fd_ = -1;
+  bool stop_ = false;
+};
+
+}  // namespace aula::sim

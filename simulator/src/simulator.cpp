@@ -1,0 +1,244 @@
+#include "aula/sim/simulator.hpp"
+
+#include <aula/config/config.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/sim_clock_t.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <thread>
+
+namespace aula::sim {
+namespace {
+using WallClock = std::chrono::steady_clock;
+
+int64_t secondsToUs(double s) { return static_cast<int64_t>(std::llround(s * 1e6)); }
+}  // namespace
+
+SimulatorOptions SimulatorOptions::fromConfig(const config::Config& cfg) {
+  SimulatorOptions o;
+  o.step_s = cfg.getDouble("Simulator.PhysicsStep", o.step_s);
+  o.real_time_factor = cfg.getDouble("Simulator.RealTimeFactor", o.real_time_factor);
+  o.lockstep = cfg.getBool("Simulator.Lockstep", o.lockstep);
+  o.seed = cfg.getInt64("Simulator.Seed", o.seed);
+  o.clock_period_us = secondsToUs(cfg.getDouble("Simulator.ClockPeriod", o.clock_period_us / 1e6));
+  o.lockstep_wait_clients = cfg.getInt("Simulator.Lockstep.WaitForClients", o.lockstep_wait_clients);
+  o.lockstep_resend = std::chrono::milliseconds(
+      cfg.getInt("Simulator.Lockstep.ResendMs", static_cast<int>(o.lockstep_resend.count())));
+  o.lockstep_drop = std::chrono::milliseconds(
+      cfg.getInt("Simulator.Lockstep.DropAfterMs", static_cast<int>(o.lockstep_drop.count())));
+  o.duration_s = cfg.getDouble("Simulator.Duration", o.duration_s);
+  o.start_paused = cfg.getBool("Simulator.StartPaused", o.start_paused);
+
+  auto bad = [&](const std::string& key, const std::string& what) {
+    throw config::ConfigError((cfg.origin(key).empty() ? "config" : cfg.origin(key)) + ": " + key +
+                              ": " + what);
+  };
+  if (!(o.step_s >= 1e-4 && o.step_s <= 0.05)) bad("Simulator.PhysicsStep", "must be in [0.0001, 0.05] s");
+  if (!(o.real_time_factor >= 0)) bad("Simulator.RealTimeFactor", "must be >= 0 (0 = as fast as possible)");
+  if (o.clock_period_us < secondsToUs(o.step_s)) bad("Simulator.ClockPeriod", "must be >= the physics step");
+  if (o.lockstep_wait_clients < 0) bad("Simulator.Lockstep.WaitForClients", "must be >= 0");
+  if (o.lockstep_resend.count() <= 0) bad("Simulator.Lockstep.ResendMs", "must be > 0");
+  if (o.lockstep_drop.count() <= 0) bad("Simulator.Lockstep.DropAfterMs", "must be > 0");
+  if (!(o.duration_s >= 0)) bad("Simulator.Duration", "must be >= 0");
+  return o;
+}
+
+Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& bus)
+    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop) {
+  physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
+  context_.bus = &bus_;
+  context_.physics = physics_.get();
+  context_.seed = static_cast<uint64_t>(options_.seed);
+  context_.raycaster_at = [this](double z_m) { return raycasterAt(z_m); };
+  for (int r = 0; r < physics_->robotCount(); ++r) {
+    for (const auto& plugin : physics_->robotSpec(r).plugins) {
+      auto driver = drivers::makeDriver(plugin.type);
+      driver->attach(context_, r, plugin);
+      drivers_.push_back(std::move(driver));
+    }
+  }
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
+  subscriptions_.push_back(
+      bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
+  paused_ = options_.start_paused;
+}
+
+Simulator::~Simulator() {
+  for (auto* s : subscriptions_) bus_.unsubscribe(s);
+}
+
+const geometry::Raycaster2D* Simulator::raycasterAt(double z_m) {
+  const long long key = std::llround(z_m * 1000.0);
+  auto& slot = raycasters_[key];
+  if (!slot) slot = std::make_unique<geometry::Raycaster2D>(geometry::sliceAtHeight(spec_, z_m));
+  return slot.get();
+}
+
+void Simulator::log(const std::string& line) const {
+  std::cerr << "aula-sim [" << physics_->timeUs() / 1e6 << " s]: " << line << std::endl;
+}
+
+void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
+                          const aula::sim_control_t* msg) {
+  switch (msg->command) {
+    case aula::sim_control_t::PAUSE:
+      paused_ = true;
+      log("paused");
+      break;
+    case aula::sim_control_t::RESUME:
+      paused_ = false;
+      log("resumed");
+      break;
+    case aula::sim_control_t::RESET:
+      resetWorld();
+      log("world reset");
+      break;
+    case aula::sim_control_t::SET_POSE: {
+      const int robot = physics_->robotIndex(msg->robot);
+      if (robot < 0) {
+        log(channel + ": SET_POSE for unknown robot '" + msg->robot + "' ignored");
+      } else if (!std::isfinite(msg->x) || !std::isfinite(msg->y) || !std::isfinite(msg->yaw)) {
+        log(channel + ": SET_POSE with a non-finite pose ignored");
+      } else {
+        physics_->setRobotPose(robot, msg->x, msg->y, msg->yaw);
+        log("robot '" + msg->robot + "' teleported");
+      }
+      break;
+    }
+    default:
+      log(channel + ": unknown command " + std::to_string(msg->command) + " ignored");
+  }
+}
+
+void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
+                           const aula::lockstep_register_t* msg) {
+  if (msg->leave) {
+    if (lockstep_.leave(msg->client)) log("lockstep client '" + msg->client + "' left");
+    return;
+  }
+  if (msg->period_us <= 0) {
+    log("lockstep client '" + msg->client + "' asked for period " +
+        std::to_string(msg->period_us) + " us: ignored");
+    return;
+  }
+  if (lockstep_.join(msg->client, msg->period_us)) {
+    log("lockstep client '" + msg->client + "' joined, period " +
+        std::to_string(msg->period_us / 1000.0) + " ms");
+    // The newcomer must see (and ack) the current tick before the world moves on; the
+    // re-published tick also tells it that it is listed.
+    if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
+    publishClock();
+  }
+}
+
+void Simulator::onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg) {
+  lockstep_.ack(msg->client, msg->seq);
+}
+
+void Simulator::resetWorld() {
+  physics_->reset();
+  for (auto& d : drivers_) d->reset();
+  lockstep_.resetSchedule();
+}
+
+void Simulator::publishClock() {
+  aula::sim_clock_t tick;
+  tick.utime = physics_->timeUs();
+  tick.seq = seq_;
+  tick.lockstep = options_.lockstep;
+  tick.paused = paused_;
+  tick.real_time_factor = measured_rtf_;
+  tick.seed = options_.seed;
+  tick.world = spec_.name;
+  tick.clients = lockstep_.clients();
+  tick.num_clients = static_cast<int32_t>(tick.clients.size());
+  bus_.publish(lcmbus::kClockChannel, &tick);
+}
+
+void Simulator::advanceToNextTick() {
+  const int64_t now = physics_->timeUs();
+  int64_t next = (now / options_.clock_period_us + 1) * options_.clock_period_us;
+  if (options_.lockstep) next = std::min(next, lockstep_.nextDueAfter(now));
+  while (physics_->timeUs() < next) {
+    physics_->step();
+    const int64_t t = physics_->timeUs();
+    for (auto& d : drivers_) d->step(t);
+  }
+  ++seq_;
+  publishClock();
+}
+
+void Simulator::run(const std::function<bool()>& should_stop) {
+  const int64_t duration_us = secondsToUs(options_.duration_s);
+  auto pace_origin = WallClock::now();
+  int64_t pace_origin_us = physics_->timeUs();
+  auto rtf_window_start = WallClock::now();
+  int64_t rtf_window_us = physics_->timeUs();
+  auto last_publish = WallClock::now();
+
+  // Tick 0: sensors at t = 0 for the clients, then wait for them in lockstep.
+  for (auto& d : drivers_) d->step(physics_->timeUs());
+  publishClock();
+  lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
+
+  while (!should_stop()) {
+    if (duration_us > 0 && physics_->timeUs() >= duration_us) break;
+    while (bus_.handleTimeout(0) > 0) {
+    }
+
+    const auto now = WallClock::now();
+    if (paused_ || (options_.lockstep && static_cast<int>(lockstep_.size()) <
+                                             options_.lockstep_wait_clients && seq_ == 0)) {
+      if (now - last_publish > std::chrono::milliseconds(100)) {
+        publishClock();
+        last_publish = now;
+      }
+      bus_.handleTimeout(20);
+      pace_origin = WallClock::now();
+      pace_origin_us = physics_->timeUs();
+      continue;
+    }
+
+    if (options_.lockstep) {
+      for (const auto& name : lockstep_.dropStale(now)) {
+        log("lockstep client '" + name + "' dropped: no ack for " +
+            std::to_string(options_.lockstep_drop.count()) + " ms (wall)");
+      }
+      if (lockstep_.waiting()) {
+        const int ready = bus_.handleTimeout(static_cast<int>(options_.lockstep_resend.count()));
+        if (ready == 0 && lockstep_.waiting()) publishClock();  // a tick or an ack was lost
+        continue;
+      }
+    }
+
+    advanceToNextTick();
+    last_publish = WallClock::now();
+    if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), last_publish);
+
+    // Real-time factor over the last second of wall time, published in the clock.
+    const auto after = WallClock::now();
+    const double window_s = std::chrono::duration<double>(after - rtf_window_start).count();
+    if (window_s >= 1.0) {
+      measured_rtf_ = (physics_->timeUs() - rtf_window_us) / 1e6 / window_s;
+      rtf_window_start = after;
+      rtf_window_us = physics_->timeUs();
+    }
+
+    if (!options_.lockstep && options_.real_time_factor > 0) {
+      const double sim_s = (physics_->timeUs() - pace_origin_us) / 1e6;
+      const auto target = pace_origin + std::chrono::duration_cast<WallClock::duration>(
+                                            std::chrono::duration<double>(sim_s / options_.real_time_factor));
+      // Sleep by waiting on the bus, so commands are handled while we wait.
+      while (!should_stop()) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(target - WallClock::now());
+        if (left.count() <= 0) break;
+        bus_.handleTimeout(static_cast<int>(left.count()));
+      }
+    }
+  }
+}
+
+}  // namespace aula::sim

@@ -1,0 +1,84 @@
+#include <aula/config/config.hpp>
+#include <aula/sim/lockstep_server.hpp>
+#include <aula/sim/simulator.hpp>
+
+#include <gtest/gtest.h>
+
+using aula::sim::LockstepServer;
+using namespace std::chrono_literals;
+
+TEST(LockstepServer, WaitsOnlyForDueClientsUntilTheyAck) {
+  LockstepServer server(1000ms);
+  const auto t0 = LockstepServer::WallClock::now();
+  EXPECT_TRUE(server.join("component", 80000));
+  EXPECT_FALSE(server.join("component", 80000));  // re-registration is not news
+  EXPECT_TRUE(server.join("referee", 20000));
+  server.tick(0, 0, t0);  // everyone is due at t = 0
+  EXPECT_TRUE(server.waiting());
+  server.ack("component", 0);
+  EXPECT_TRUE(server.waiting());
+  server.ack("referee", 5);  // wrong seq: still waiting
+  EXPECT_TRUE(server.waiting());
+  server.ack("referee", 0);
+  EXPECT_FALSE(server.waiting());
+
+  EXPECT_EQ(server.nextDueAfter(0), 20000);
+  server.tick(1, 20000, t0);  // only the referee is due
+  server.ack("referee", 1);
+  EXPECT_FALSE(server.waiting());
+  EXPECT_EQ(server.nextDueAfter(20000), 40000);
+  server.tick(4, 80000, t0);  // both due
+  server.ack("referee", 4);
+  EXPECT_TRUE(server.waiting());
+  server.ack("component", 4);
+  EXPECT_FALSE(server.waiting());
+}
+
+TEST(LockstepServer, DropsSilentClientsAfterTheTimeout) {
+  LockstepServer server(100ms);
+  const auto t0 = LockstepServer::WallClock::now();
+  server.join("slow", 10000);
+  server.join("fast", 10000);
+  server.tick(0, 0, t0);
+  server.ack("fast", 0);
+  EXPECT_TRUE(server.dropStale(t0 + 50ms).empty());
+  const auto dropped = server.dropStale(t0 + 150ms);
+  ASSERT_EQ(dropped.size(), 1u);
+  EXPECT_EQ(dropped[0], "slow");
+  EXPECT_FALSE(server.waiting());
+  EXPECT_EQ(server.clients(), std::vector<std::string>{"fast"});
+}
+
+TEST(LockstepServer, LeaveAndReset) {
+  LockstepServer server(100ms);
+  const auto t0 = LockstepServer::WallClock::now();
+  server.join("a", 10000);
+  server.tick(3, 30000, t0);
+  EXPECT_TRUE(server.waiting());
+  EXPECT_TRUE(server.leave("a"));
+  EXPECT_FALSE(server.leave("a"));
+  EXPECT_FALSE(server.waiting());
+  server.join("b", 10000);
+  server.tick(4, 40000, t0);
+  server.resetSchedule();
+  EXPECT_FALSE(server.waiting());
+  server.tick(5, 0, t0);  // time went back to zero: due again at once
+  EXPECT_TRUE(server.waiting());
+}
+
+TEST(SimulatorOptions, RejectsBadValuesNamingTheKey) {
+  const auto cfg = aula::config::Config::fromString(
+      "Simulator.PhysicsStep = 0.5\n", "simulator.cfg");
+  try {
+    aula::sim::SimulatorOptions::fromConfig(cfg);
+    FAIL() << "expected an error";
+  } catch (const aula::config::ConfigError& e) {
+    EXPECT_STREQ(e.what(), "simulator.cfg:1: Simulator.PhysicsStep: must be in [0.0001, 0.05] s");
+  }
+  const auto ok = aula::config::Config::fromString(
+      "Simulator.PhysicsStep = 0.002\nSimulator.Lockstep = yes\nSimulator.Seed = 42\n", "s.cfg");
+  const auto o = aula::sim::SimulatorOptions::fromConfig(ok);
+  EXPECT_DOUBLE_EQ(o.step_s, 0.002);
+  EXPECT_TRUE(o.lockstep);
+  EXPECT_EQ(o.seed, 42);
+}

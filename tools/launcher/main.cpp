@@ -1,0 +1,140 @@
+// aula run EXERCISE [--headless] [--world=FILE] [--lockstep] [--rtf=X] [--seed=N]
+//                   [--duration=S] [--lcm-url=URL] [--Key=value ...]
+// Starts the simulator and the exercise's processes (like the original's three terminals),
+// waits for the run to end and stops everything cleanly: it never leaves a process behind
+// (children die with it: PR_SET_PDEATHSIG) and exits non-zero if any process failed.
+#include <aula/config/config.hpp>
+#include <aula/process/child_process.hpp>
+
+#include <csignal>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+namespace {
+
+struct Exercise {
+  std::string world;                 // relative to the source tree
+  std::vector<std::string> clients;  // executables in the build's bin folder, last = primary
+  std::vector<std::string> client_args;
+  std::string description;
+};
+
+std::map<std::string, Exercise> exercises() {
+  return {
+      {"demo",
+       {"worlds/vacuum.world", {"aula-demo-client"}, {}, "the roomba bouncing around the house"}},
+  };
+}
+
+constexpr const char* kUsage =
+    "usage: aula run EXERCISE [--headless] [--world=FILE] [--lockstep] [--rtf=X] [--seed=N]\n"
+    "                [--duration=SECONDS] [--lcm-url=URL] [--Key=value ...]\n"
+    "exercises:\n";
+
+std::string binDir(const char* argv0) {
+  std::string self = argv0;
+  char buffer[4096];
+  const ssize_t n = readlink("/proc/self/exe", buffer, sizeof buffer - 1);
+  if (n > 0) self.assign(buffer, n);
+  const auto slash = self.rfind('/');
+  return slash == std::string::npos ? "." : self.substr(0, slash);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace aula;
+  const auto table = exercises();
+  auto usage = [&] {
+    std::cerr << kUsage;
+    for (const auto& [name, ex] : table) std::cerr << "  " << name << "  " << ex.description << "\n";
+    return 2;
+  };
+  try {
+    const auto cl = config::CommandLine::parse(argc, argv, {});
+    cl.requireKnown({"headless", "world", "lockstep", "rtf", "seed", "duration", "lcm-url", "help"});
+    if (cl.flag("help")) return usage(), 0;
+    if (cl.positional.size() != 2 || cl.positional[0] != "run") return usage();
+    const auto it = table.find(cl.positional[1]);
+    if (it == table.end()) {
+      std::cerr << "aula: unknown exercise '" << cl.positional[1] << "'\n";
+      return usage();
+    }
+    const Exercise& ex = it->second;
+    const std::string bin = binDir(argv[0]);
+    const std::string source = AULA_SOURCE_DIR;
+
+    std::vector<std::string> shared;  // options every process understands
+    if (cl.flag("lcm-url")) shared.push_back("--lcm-url=" + cl.option("lcm-url"));
+    for (const auto& [key, value] : cl.overrides) shared.push_back("--" + key + "=" + value);
+
+    std::vector<std::string> sim_args = {bin + "/aula-sim", cl.option("world", source + "/" + ex.world)};
+    if (cl.flag("lockstep") || cl.flag("headless")) {
+      sim_args.push_back("--lockstep");
+      sim_args.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(ex.clients.size()));
+    }
+    if (cl.flag("rtf")) sim_args.push_back("--rtf=" + cl.option("rtf"));
+    if (cl.flag("seed")) sim_args.push_back("--seed=" + cl.option("seed"));
+    sim_args.insert(sim_args.end(), shared.begin(), shared.end());
+
+    sigset_t mask;
+    sigemptyset(&mask);
+    sigaddset(&mask, SIGINT);
+    sigaddset(&mask, SIGTERM);
+    sigprocmask(SIG_BLOCK, &mask, nullptr);
+    const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+
+    std::vector<std::unique_ptr<process::ChildProcess>> children;
+    children.push_back(std::make_unique<process::ChildProcess>(sim_args));
+    for (const auto& client : ex.clients) {
+      std::vector<std::string> args = {bin + "/" + client};
+      args.insert(args.end(), ex.client_args.begin(), ex.client_args.end());
+      if (cl.flag("duration")) args.push_back("--duration=" + cl.option("duration"));
+      if (cl.flag("headless")) args.push_back("--headless");
+      args.insert(args.end(), shared.begin(), shared.end());
+      children.push_back(std::make_unique<process::ChildProcess>(args));
+    }
+
+    // The run ends when the primary process (the last one: referee or client) ends, when any
+    // process fails, or on Ctrl-C.
+    int result = 0;
+    signalfd_siginfo info;
+    for (;;) {
+      if (read(signal_fd, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+        std::cerr << "aula: stopping\n";
+        break;
+      }
+      bool finished = false;
+      for (size_t i = 0; i < children.size(); ++i) {
+        if (const auto code = children[i]->poll()) {
+          if (*code != 0) {
+            std::cerr << "aula: " << children[i]->name() << " exited with code " << *code << "\n";
+            result = *code == 2 ? 2 : 1;
+          }
+          finished = finished || *code != 0 || i + 1 == children.size() || i == 0;
+        }
+      }
+      if (finished) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    // Stop clients first (they send their last commands and leave lockstep), then the simulator.
+    for (auto c = children.rbegin(); c != children.rend(); ++c) {
+      const int code = (*c)->stop();
+      if (code != 0 && code != 128 + SIGTERM && result == 0 && (*c)->name() != sim_args[0]) {
+        std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
+      }
+    }
+    return result;
+  } catch (const config::ConfigError& e) {
+    std::cerr << "aula: " << e.what() << "\n";
+    return usage();
+  } catch (const std::exception& e) {
+    std::cerr << "aula: " << e.what() << "\n";
+    return 1;
+  }
+}
