@@ -6,7 +6,7 @@
 //   samples        beams, default 180
 //   min_angle, max_angle   rad, default -pi/2 .. pi/2; beams span them inclusive:
 //                  increment = (max - min) / (samples - 1)
-//   min_range, max_range   m, default 0.08 .. 10; no hit (or closer than min) -> max_range
+//   min_range, max_range   m, default 0.08 .. 10; no hit -> max_range, closer than min -> min_range
 //   rate_hz        default 20
 //   noise_stddev   m, default 0: seeded Gaussian noise on hits
 // Rays are cast analytically against the static geometry cut at the sensor's height and against

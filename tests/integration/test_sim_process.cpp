@@ -148,7 +148,9 @@ TEST(SimProcess, LockstepAdvancesOnlyWhenTheClientAcks) {
     const auto settle = std::chrono::steady_clock::now() + 100ms;
     while (std::chrono::steady_clock::now() < settle) bus->handleTimeout(10);
     EXPECT_EQ(last.utime, expected) << "ack " << i;
-    if (i > 0) EXPECT_EQ(last.utime - before, 100000) << "ack " << i;
+    if (i > 0) {
+      EXPECT_EQ(last.utime - before, 100000) << "ack " << i;
+    }
   }
   EXPECT_EQ(sim.stop(), 0) << readFile(log);
 }

@@ -58,6 +58,7 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string&,
   lockstep_ = tick->lockstep;
   paused_ = tick->paused;
   rtf_ = tick->real_time_factor;
+  last_tick_ = *tick;
   bool listed = false;
   for (const auto& c : tick->clients) listed = listed || c == name_;
   registered_ = listed && !left_;

@@ -181,8 +181,8 @@ TEST_P(WallImpact, StopsAtTheWallWithBumperPressed) {
     max_x = std::max(max_x, listener.pose.x);
   }
   EXPECT_TRUE(listener.ever_pressed);
-  EXPECT_EQ(listener.bumper.state, aula::bumper_t::PRESSED);
-  EXPECT_EQ(listener.bumper.bumper, aula::bumper_t::CENTER);
+  EXPECT_EQ(listener.bumper.state, int8_t{aula::bumper_t::PRESSED});
+  EXPECT_EQ(listener.bumper.bumper, int8_t{aula::bumper_t::CENTER});
   const double penetration = max_x + 0.165 - 5.0;
   EXPECT_LT(penetration, 0.02) << "at " << speed << " m/s";
   EXPECT_NEAR(listener.pose.z, 0.0, 1e-6);

@@ -55,8 +55,8 @@ class Raycaster2D {
               const Obstacles2D* dynamic = nullptr) const;
 
   // Fills ranges_m (num_beams values). Beams with no hit within max_range report max_range;
-  // hits closer than min_range also report max_range (out of the sensor's range, like a real
-  // scanner's invalid reading).
+  // hits closer than min_range report min_range (an obstacle touching the sensor must never
+  // look like free space to a student's algorithm).
   void scan(const ScanRequest& request, float* ranges_m,
             const Obstacles2D* dynamic = nullptr) const;
 

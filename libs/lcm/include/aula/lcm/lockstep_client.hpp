@@ -41,6 +41,8 @@ class LockstepClient {
   bool paused() const { return paused_; }
   bool clockSeen() const { return last_seq_ >= 0; }
   double realTimeFactor() const { return rtf_; }
+  // The latest tick as received (world name, seed, clients...).
+  const aula::sim_clock_t& lastTick() const { return last_tick_; }
 
  private:
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
@@ -60,6 +62,7 @@ class LockstepClient {
   bool paused_ = false;
   bool left_ = false;
   double rtf_ = 0.0;
+  aula::sim_clock_t last_tick_{};
   std::chrono::steady_clock::time_point last_register_{};
 };
 

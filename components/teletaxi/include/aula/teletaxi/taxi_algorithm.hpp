@@ -1,0 +1,37 @@
+#pragma once
+// What the TeleTaxi student writes: one class with generatePath() (runs once, on
+// "Generate Path") and execute() (runs every control period of sim time after "GO!").
+// The API mirrors the original exercise: sensor/pose3d, vel/motors and the Grid.
+
+#include <aula/component/proxies.hpp>
+#include <aula/teletaxi/grid.hpp>
+
+#include <memory>
+#include <string>
+
+namespace aula::teletaxi {
+
+struct TaxiApi {
+  component::Pose3dProxy& pose3d;  // getX/getY/getYaw, or getRobotX/getRobotY/getRobotTheta
+  component::MotorsProxy& motors;  // sendV/sendW, or setV/setW (clamped to MaxV/MaxW)
+  Grid& grid;
+  // The original names.
+  component::Pose3dProxy& sensor;
+  component::MotorsProxy& vel;
+
+  TaxiApi(component::Pose3dProxy& p, component::MotorsProxy& m, Grid& g)
+      : pose3d(p), motors(m), grid(g), sensor(p), vel(m) {}
+};
+
+class TaxiAlgorithm {
+ public:
+  virtual ~TaxiAlgorithm() = default;
+  virtual void generatePath(TaxiApi& api) = 0;
+  virtual void execute(TaxiApi& api) = 0;
+};
+
+// "student" (student/MyAlgorithm.cpp) or "reference" (reference/GppReference.cpp).
+std::unique_ptr<TaxiAlgorithm> makeStudentAlgorithm();
+std::unique_ptr<TaxiAlgorithm> makeReferenceAlgorithm();
+
+}  // namespace aula::teletaxi

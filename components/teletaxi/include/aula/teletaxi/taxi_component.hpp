@@ -1,0 +1,76 @@
+#pragma once
+// The TeleTaxi academic component without its window: proxies, the grid, the student's
+// algorithm, the sim-time control loop and the episode messages for the referee. The Qt window
+// (taxi_window.hpp) and the headless main both drive this one object.
+
+#include <aula/component/control_loop.hpp>
+#include <aula/component/proxies.hpp>
+#include <aula/config/config.hpp>
+#include <aula/episode_t.hpp>
+#include <aula/teletaxi/grid.hpp>
+#include <aula/teletaxi/taxi_algorithm.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace aula::teletaxi {
+
+class TaxiComponent {
+ public:
+  // Reads TeleTaxi.* keys (channels, limits, period, map, algorithm, destination, autostart).
+  // Throws config::ConfigError for bad keys and std::runtime_error for an unreadable map.
+  TaxiComponent(lcm::LCM& bus, const config::Config& cfg);
+
+  void setDestination(double x_m, double y_m);  // world metres; clears any previous path
+  // Runs the algorithm's generatePath(); false (with a reason) when not possible yet.
+  bool generatePath(std::string* why = nullptr);
+  bool go(std::string* why = nullptr);  // "GO!": execute() every control period from now on
+  void stop();                           // "Stop": algorithm off, taxi stopped
+  void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  void poll();                           // housekeeping (lockstep registration)
+  void leave() { loop_->leave(); }
+
+  // Headless automation: with TeleTaxi.Autostart, generate the path and GO as soon as the
+  // destination and the taxi's pose are known.
+  bool autostart() const { return autostart_; }
+
+  Grid& grid() { return *grid_; }
+  const component::Pose3dProxy& pose() const { return *pose_; }
+  const component::MotorsProxy& motors() const { return *motors_; }
+  bool running() const { return loop_->running(); }
+  bool pathGenerated() const { return path_generated_; }
+  std::optional<std::pair<double, double>> destination() const { return destination_; }
+  int64_t simTimeUs() const { return loop_->simTimeUs(); }
+  const std::string& algorithmName() const { return algorithm_name_; }
+  double maxV() const { return motors_->maxV(); }
+  double maxW() const { return motors_->maxW(); }
+  // Called after every control tick (GUI refresh hooks, tests).
+  void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+
+ private:
+  void tick(int64_t utime);
+  void publishEpisode(int64_t utime);
+
+  lcm::LCM& bus_;
+  std::string episode_channel_;
+  std::string algorithm_name_;
+  std::unique_ptr<component::Pose3dProxy> pose_;
+  std::unique_ptr<component::MotorsProxy> motors_;
+  std::unique_ptr<Grid> grid_;
+  std::unique_ptr<TaxiAlgorithm> algorithm_;
+  std::unique_ptr<TaxiApi> api_;
+  std::unique_ptr<component::ControlLoop> loop_;
+  std::optional<std::pair<double, double>> destination_;
+  bool path_generated_ = false;
+  bool autostart_ = false;
+  int64_t started_utime_ = -1;
+  int64_t last_episode_utime_ = -1'000'000'000;
+  bool episode_dirty_ = true;
+  std::function<void(int64_t)> on_tick_;
+};
+
+}  // namespace aula::teletaxi

@@ -1,0 +1,193 @@
+#include "aula/geometry/raycaster2d.hpp"
+
+#include <aula/world/world_spec.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aula::geometry {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Entry distance of the ray o + t d (|d| = 1) into an oriented rectangle, 0 if o is inside,
+// +inf on a miss. Slab test in the rectangle's frame.
+double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Rect2& r) {
+  const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
+  const Eigen::Vector2d rel = o - r.center_m;
+  const double ox = c * rel.x() + s * rel.y(), oy = -s * rel.x() + c * rel.y();
+  const double dx = c * d.x() + s * d.y(), dy = -s * d.x() + c * d.y();
+  double t0 = -kInf, t1 = kInf;
+  const double hx = r.half_extents_m.x(), hy = r.half_extents_m.y();
+  if (std::abs(dx) < 1e-15) {
+    if (ox < -hx || ox > hx) return kInf;
+  } else {
+    double a = (-hx - ox) / dx, b = (hx - ox) / dx;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  if (std::abs(dy) < 1e-15) {
+    if (oy < -hy || oy > hy) return kInf;
+  } else {
+    double a = (-hy - oy) / dy, b = (hy - oy) / dy;
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  if (t0 > t1 || t1 < 0) return kInf;
+  return std::max(t0, 0.0);
+}
+
+double rayCircle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Circle2& c) {
+  const Eigen::Vector2d rel = o - c.center_m;
+  const double b = rel.dot(d);
+  const double cc = rel.squaredNorm() - c.radius_m * c.radius_m;
+  if (cc <= 0) return 0.0;  // inside
+  const double disc = b * b - cc;
+  if (disc < 0) return kInf;
+  const double t = -b - std::sqrt(disc);
+  return t >= 0 ? t : kInf;
+}
+
+double castBrute(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Obstacles2D& obstacles, double best) {
+  for (const auto& r : obstacles.rects) best = std::min(best, rayRect(o, d, r));
+  for (const auto& c : obstacles.circles) best = std::min(best, rayCircle(o, d, c));
+  return best;
+}
+
+// Axis-aligned bounds of an obstacle's footprint.
+void boundsOf(const Rect2& r, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  const double c = std::abs(std::cos(r.yaw_rad)), s = std::abs(std::sin(r.yaw_rad));
+  const Eigen::Vector2d ext(c * r.half_extents_m.x() + s * r.half_extents_m.y(),
+                            s * r.half_extents_m.x() + c * r.half_extents_m.y());
+  lo = r.center_m - ext;
+  hi = r.center_m + ext;
+}
+void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  lo = c.center_m - Eigen::Vector2d::Constant(c.radius_m);
+  hi = c.center_m + Eigen::Vector2d::Constant(c.radius_m);
+}
+
+}  // namespace
+
+Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m) {
+  Obstacles2D out;
+  for (const auto& o : world.statics) {
+    const double half = o.shape.halfHeight();
+    const double z = o.pose.translation().z();
+    if (z_m < z - half || z_m > z + half) continue;
+    const Eigen::Vector2d c = o.pose.translation().head<2>();
+    if (o.shape.kind == world::ShapeKind::Cylinder) {
+      out.circles.push_back({c, o.shape.radius_m});
+    } else {
+      out.rects.push_back({c, world::yawOf(o.pose), o.shape.box_size_m.head<2>() / 2});
+    }
+  }
+  return out;
+}
+
+Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
+    : statics_(std::move(statics)), cell_m_(cell_size_m) {
+  const size_t count = statics_.rects.size() + statics_.circles.size();
+  if (count == 0) return;
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInf), hi = -lo;
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> boxes;
+  boxes.reserve(count);
+  for (const auto& r : statics_.rects) {
+    Eigen::Vector2d a, b;
+    boundsOf(r, a, b);
+    boxes.emplace_back(a, b);
+  }
+  for (const auto& c : statics_.circles) {
+    Eigen::Vector2d a, b;
+    boundsOf(c, a, b);
+    boxes.emplace_back(a, b);
+  }
+  for (const auto& [a, b] : boxes) {
+    lo = lo.cwiseMin(a);
+    hi = hi.cwiseMax(b);
+  }
+  grid_min_ = lo - Eigen::Vector2d::Constant(1e-6);
+  cols_ = std::max(1, static_cast<int>(std::ceil((hi.x() - grid_min_.x()) / cell_m_)) + 1);
+  rows_ = std::max(1, static_cast<int>(std::ceil((hi.y() - grid_min_.y()) / cell_m_)) + 1);
+  cells_.assign(static_cast<size_t>(cols_) * rows_, {});
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    const int id = i < statics_.rects.size() ? static_cast<int>(i)
+                                             : -1 - static_cast<int>(i - statics_.rects.size());
+    const int c0 = std::clamp(static_cast<int>((boxes[i].first.x() - grid_min_.x()) / cell_m_), 0, cols_ - 1);
+    const int c1 = std::clamp(static_cast<int>((boxes[i].second.x() - grid_min_.x()) / cell_m_), 0, cols_ - 1);
+    const int r0 = std::clamp(static_cast<int>((boxes[i].first.y() - grid_min_.y()) / cell_m_), 0, rows_ - 1);
+    const int r1 = std::clamp(static_cast<int>((boxes[i].second.y() - grid_min_.y()) / cell_m_), 0, rows_ - 1);
+    for (int r = r0; r <= r1; ++r) {
+      for (int c = c0; c <= c1; ++c) cells_[static_cast<size_t>(r) * cols_ + c].push_back(id);
+    }
+  }
+}
+
+double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double max_range_m,
+                         const Obstacles2D* dynamic) const {
+  const Eigen::Vector2d d(std::cos(angle_rad), std::sin(angle_rad));
+  double best = max_range_m;
+  if (dynamic != nullptr) best = std::min(best, castBrute(origin, d, *dynamic, kInf));
+  if (cells_.empty()) return best;
+
+  // Clip the ray to the grid's box, then walk the cells it crosses (Amanatides-Woo).
+  const Eigen::Vector2d gmax = grid_min_ + Eigen::Vector2d(cols_ * cell_m_, rows_ * cell_m_);
+  double t_enter = 0.0, t_exit = best;
+  for (int a = 0; a < 2; ++a) {
+    if (std::abs(d[a]) < 1e-15) {
+      if (origin[a] < grid_min_[a] || origin[a] > gmax[a]) return best;
+      continue;
+    }
+    double t0 = (grid_min_[a] - origin[a]) / d[a], t1 = (gmax[a] - origin[a]) / d[a];
+    if (t0 > t1) std::swap(t0, t1);
+    t_enter = std::max(t_enter, t0);
+    t_exit = std::min(t_exit, t1);
+  }
+  if (t_enter > t_exit) return best;
+  const Eigen::Vector2d p = origin + d * (t_enter + 1e-12);
+  int cx = std::clamp(static_cast<int>(std::floor((p.x() - grid_min_.x()) / cell_m_)), 0, cols_ - 1);
+  int cy = std::clamp(static_cast<int>(std::floor((p.y() - grid_min_.y()) / cell_m_)), 0, rows_ - 1);
+  const int step_x = d.x() > 0 ? 1 : -1, step_y = d.y() > 0 ? 1 : -1;
+  const double dt_x = std::abs(d.x()) < 1e-15 ? kInf : cell_m_ / std::abs(d.x());
+  const double dt_y = std::abs(d.y()) < 1e-15 ? kInf : cell_m_ / std::abs(d.y());
+  const double next_bx = grid_min_.x() + (cx + (step_x > 0 ? 1 : 0)) * cell_m_;
+  const double next_by = grid_min_.y() + (cy + (step_y > 0 ? 1 : 0)) * cell_m_;
+  double t_x = std::abs(d.x()) < 1e-15 ? kInf : (next_bx - origin.x()) / d.x();
+  double t_y = std::abs(d.y()) < 1e-15 ? kInf : (next_by - origin.y()) / d.y();
+
+  for (;;) {
+    // An object may be tested again in a later cell: cheap, and keeps the caster stateless
+    // (const and safe to share).
+    for (const int id : cells_[static_cast<size_t>(cy) * cols_ + cx]) {
+      const double t = id >= 0 ? rayRect(origin, d, statics_.rects[id]) : rayCircle(origin, d, statics_.circles[-1 - id]);
+      best = std::min(best, t);
+    }
+    const double t_cell_exit = std::min(t_x, t_y);
+    // A hit before this cell's exit cannot be beaten by anything in later cells.
+    if (best <= t_cell_exit || t_cell_exit > t_exit) break;
+    if (t_x < t_y) {
+      cx += step_x;
+      t_x += dt_x;
+      if (cx < 0 || cx >= cols_) break;
+    } else {
+      cy += step_y;
+      t_y += dt_y;
+      if (cy < 0 || cy >= rows_) break;
+    }
+  }
+  return best;
+}
+
+void Raycaster2D::scan(const ScanRequest& request, float* ranges_m, const Obstacles2D* dynamic) const {
+  for (int i = 0; i < request.num_beams; ++i) {
+    const double angle = request.yaw_rad + request.min_angle_rad + i * request.angle_increment_rad;
+    double r = cast(request.origin_m, angle, request.max_range_m, dynamic);
+    r = std::clamp(r, request.min_range_m, request.max_range_m);
+    ranges_m[i] = static_cast<float>(r);
+  }
+}
+
+}  // namespace aula::geometry

@@ -1,0 +1,217 @@
+#include "aula/physics/physics_world.hpp"
+
+#include <dart/collision/CollisionObject.hpp>
+#include <dart/collision/CollisionResult.hpp>
+#include <dart/collision/bullet/BulletCollisionDetector.hpp>
+#include <dart/constraint/ConstraintSolver.hpp>
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/BoxShape.hpp>
+#include <dart/dynamics/CylinderShape.hpp>
+#include <dart/dynamics/Inertia.hpp>
+#include <dart/dynamics/PlanarJoint.hpp>
+#include <dart/dynamics/ShapeNode.hpp>
+#include <dart/dynamics/WeldJoint.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aula::physics {
+namespace {
+
+using dart::dynamics::BodyNode;
+using dart::dynamics::BoxShape;
+using dart::dynamics::CollisionAspect;
+using dart::dynamics::CylinderShape;
+using dart::dynamics::DynamicsAspect;
+using dart::dynamics::ShapePtr;
+using dart::dynamics::VisualAspect;
+
+// Servo limits: how hard a robot's motors can push, as accelerations of its own mass and
+// inertia. Finite limits are what make contacts win over commands (an unlimited servo drives
+// through walls).
+constexpr double kMaxLinearAccel = 10.0;   // m/s^2
+constexpr double kMaxAngularAccel = 30.0;  // rad/s^2
+// Sub-stepping keeps fast robots from sinking into (or tunnelling through) thin walls: a
+// physics step is split so that no robot travels more than this per sub-step.
+constexpr double kMaxTravelPerSubstep = 0.01;  // m
+
+ShapePtr makeShape(const world::Shape& s) {
+  if (s.kind == world::ShapeKind::Cylinder) return std::make_shared<CylinderShape>(s.radius_m, s.length_m);
+  return std::make_shared<BoxShape>(s.box_size_m);
+}
+
+double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+}  // namespace
+
+struct PhysicsWorld::Robot {
+  world::RobotSpec spec;
+  dart::dynamics::SkeletonPtr skeleton;
+  dart::dynamics::PlanarJoint* joint = nullptr;
+  BodyNode* body = nullptr;
+  double v = 0, w = 0, l = 0;  // held body-frame command
+};
+
+PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
+  if (!(step_s > 0)) throw world::WorldError("physics step must be > 0");
+  step_us_ = std::max<int64_t>(1, std::llround(step_s * 1e6));
+  world_ = dart::simulation::World::create(spec.name.empty() ? "aula" : spec.name);
+  world_->setTimeStep(step_us_ / 1e6);
+  world_->getConstraintSolver()->setCollisionDetector(dart::collision::BulletCollisionDetector::create());
+
+  // All static geometry: one immobile skeleton, one body, many shape nodes (fastest layout).
+  auto statics = dart::dynamics::Skeleton::create("statics");
+  auto* ground = statics->createJointAndBodyNodePair<dart::dynamics::WeldJoint>().second;
+  for (const auto& o : spec.statics) {
+    auto* node = ground->createShapeNodeWith<VisualAspect, CollisionAspect, DynamicsAspect>(makeShape(o.shape), o.name);
+    node->setRelativeTransform(o.pose);
+  }
+  statics->setMobile(false);
+  world_->addSkeleton(statics);
+
+  for (const auto& r : spec.robots) {
+    const std::string where = spec.source_path + ": robot '" + r.name + "'";
+    if (r.shape.kind == world::ShapeKind::Box && (r.shape.box_size_m.array() <= 0).any()) {
+      throw world::WorldError(where + ": box size must be positive");
+    }
+    if (r.shape.kind == world::ShapeKind::Cylinder && !(r.shape.radius_m > 0 && r.shape.length_m > 0)) {
+      throw world::WorldError(where + ": cylinder radius and length must be positive");
+    }
+    Robot robot;
+    robot.spec = r;
+    robot.skeleton = dart::dynamics::Skeleton::create(r.name);
+    dart::dynamics::PlanarJoint::Properties joint_props;
+    joint_props.mName = r.name + "_planar";
+    auto pair = robot.skeleton->createJointAndBodyNodePair<dart::dynamics::PlanarJoint>(
+        nullptr, joint_props, BodyNode::AspectProperties(r.name + "_body"));
+    robot.joint = pair.first;
+    robot.body = pair.second;
+    robot.joint->setXYPlane();
+    // The joint frame sits at the robot's initial height; x, y, yaw are its coordinates.
+    Eigen::Isometry3d lift = Eigen::Isometry3d::Identity();
+    lift.translation().z() = r.pose.translation().z();
+    robot.joint->setTransformFromParentBodyNode(lift);
+
+    auto shape = makeShape(r.shape);
+    auto* node = robot.body->createShapeNodeWith<VisualAspect, CollisionAspect, DynamicsAspect>(shape, r.name + "_shape");
+    node->setRelativeTransform(r.shape_offset);
+    const Eigen::Matrix3d moment = shape->computeInertia(r.mass_kg);
+    robot.body->setInertia(dart::dynamics::Inertia(r.mass_kg, r.shape_offset.translation(),
+                                                    r.shape_offset.linear() * moment * r.shape_offset.linear().transpose()));
+
+    robot.joint->setActuatorType(dart::dynamics::Joint::SERVO);
+    const double force = r.mass_kg * kMaxLinearAccel;
+    const double torque = std::max(1e-3, moment(2, 2) * kMaxAngularAccel);
+    robot.joint->setForceUpperLimit(0, force);
+    robot.joint->setForceLowerLimit(0, -force);
+    robot.joint->setForceUpperLimit(1, force);
+    robot.joint->setForceLowerLimit(1, -force);
+    robot.joint->setForceUpperLimit(2, torque);
+    robot.joint->setForceLowerLimit(2, -torque);
+    robots_.push_back(std::move(robot));
+    world_->addSkeleton(robots_.back().skeleton);
+    setRobotPose(static_cast<int>(robots_.size()) - 1, r.pose.translation().x(), r.pose.translation().y(),
+                 world::yawOf(r.pose));
+  }
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+
+int PhysicsWorld::robotCount() const { return static_cast<int>(robots_.size()); }
+
+int PhysicsWorld::robotIndex(const std::string& name) const {
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    if (robots_[i].spec.name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+const world::RobotSpec& PhysicsWorld::robotSpec(int robot) const { return robots_.at(robot).spec; }
+
+void PhysicsWorld::commandVelocity(int robot, double v_mps, double w_radps, double lateral_mps) {
+  Robot& r = robots_.at(robot);
+  r.v = v_mps;
+  r.w = w_radps;
+  r.l = lateral_mps;
+}
+
+RobotState PhysicsWorld::robotState(int robot) const {
+  const Robot& r = robots_.at(robot);
+  RobotState s;
+  const Eigen::Vector3d q = r.joint->getPositions();
+  const Eigen::Vector3d dq = r.joint->getVelocities();
+  s.position_m = Eigen::Vector3d(q[0], q[1], r.joint->getTransformFromParentBodyNode().translation().z());
+  s.yaw_rad = wrapAngle(q[2]);
+  s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(s.yaw_rad, Eigen::Vector3d::UnitZ()));
+  s.velocity_mps = Eigen::Vector2d(dq[0], dq[1]);
+  s.yaw_rate_radps = dq[2];
+  return s;
+}
+
+ContactState PhysicsWorld::contact(int robot) const {
+  const Robot& r = robots_.at(robot);
+  ContactState c;
+  const auto& result = world_->getLastCollisionResult();
+  if (!result.inCollision(r.body)) return c;
+  c.in_contact = true;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  const Eigen::Isometry3d to_body = r.body->getWorldTransform().inverse();
+  for (const auto& contact : result.getContacts()) {
+    auto belongs = [&](const dart::collision::CollisionObject* o) {
+      const auto* node = o->getShapeFrame()->asShapeNode();
+      return node != nullptr && node->getBodyNodePtr().get() == r.body;
+    };
+    if (!belongs(contact.collisionObject1) && !belongs(contact.collisionObject2)) continue;
+    sum += to_body * contact.point;
+    ++c.contact_points;
+  }
+  if (c.contact_points > 0) {
+    sum /= c.contact_points;
+    c.bearing_rad = std::atan2(sum.y(), sum.x());
+  }
+  return c;
+}
+
+void PhysicsWorld::setRobotPose(int robot, double x_m, double y_m, double yaw_rad) {
+  Robot& r = robots_.at(robot);
+  r.joint->setPositions(Eigen::Vector3d(x_m, y_m, yaw_rad));
+  r.joint->setVelocities(Eigen::Vector3d::Zero());
+  r.joint->setCommands(Eigen::Vector3d::Zero());
+  r.v = r.w = r.l = 0;
+}
+
+void PhysicsWorld::reset() {
+  world_->reset();
+  for (size_t i = 0; i < robots_.size(); ++i) {
+    const auto& p = robots_[i].spec.pose;
+    setRobotPose(static_cast<int>(i), p.translation().x(), p.translation().y(), world::yawOf(p));
+  }
+  time_us_ = 0;
+}
+
+void PhysicsWorld::step() {
+  // Split the step when a robot is (or is commanded to be) fast.
+  double fastest = 0.0;
+  for (const auto& r : robots_) {
+    const Eigen::Vector3d dq = r.joint->getVelocities();
+    fastest = std::max({fastest, std::hypot(dq[0], dq[1]), std::hypot(r.v, r.l)});
+  }
+  const double dt = step_us_ / 1e6;
+  const int substeps = std::clamp(static_cast<int>(std::ceil(fastest * dt / kMaxTravelPerSubstep)), 1, 100);
+  if (substeps > 1) world_->setTimeStep(dt / substeps);
+  for (int k = 0; k < substeps; ++k) {
+    for (auto& r : robots_) {
+      const double yaw = r.joint->getPositions()[2];
+      const double c = std::cos(yaw), s = std::sin(yaw);
+      // The planar joint's x/y rates are in the world frame.
+      r.joint->setCommand(0, r.v * c - r.l * s);
+      r.joint->setCommand(1, r.v * s + r.l * c);
+      r.joint->setCommand(2, r.w);
+    }
+    world_->step();
+  }
+  if (substeps > 1) world_->setTimeStep(dt);
+  time_us_ += step_us_;
+}
+
+}  // namespace aula::physics

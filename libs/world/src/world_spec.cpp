@@ -1,0 +1,250 @@
+// Reads Gazebo-style SDF worlds with libsdformat 12 into Aula's plain WorldSpec.
+// Poses are composed as model * link * collision (raw poses; `relative_to` is not supported).
+#include "aula/world/world_spec.hpp"
+
+#include <sdf/Box.hh>
+#include <sdf/Collision.hh>
+#include <sdf/Cylinder.hh>
+#include <sdf/Element.hh>
+#include <sdf/Geometry.hh>
+#include <sdf/Link.hh>
+#include <sdf/Model.hh>
+#include <sdf/ParserConfig.hh>
+#include <sdf/Physics.hh>
+#include <sdf/Root.hh>
+#include <sdf/World.hh>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace aula::world {
+namespace {
+
+const std::set<std::string>& knownPluginTypes() {
+  static const std::set<std::string> types = {"pose3d", "motors", "laser", "bumper"};
+  return types;
+}
+
+Eigen::Isometry3d toEigen(const ignition::math::Pose3d& p) {
+  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
+  out.translation() = Eigen::Vector3d(p.Pos().X(), p.Pos().Y(), p.Pos().Z());
+  out.linear() = Eigen::Quaterniond(p.Rot().W(), p.Rot().X(), p.Rot().Y(), p.Rot().Z())
+                     .normalized()
+                     .toRotationMatrix();
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+// Box or cylinder collision geometry; WorldError for anything else.
+Shape shapeOf(const sdf::Collision& collision, const std::string& where) {
+  const sdf::Geometry* geom = collision.Geom();
+  Shape shape;
+  if (geom != nullptr && geom->Type() == sdf::GeometryType::BOX && geom->BoxShape() != nullptr) {
+    const auto size = geom->BoxShape()->Size();
+    shape.kind = ShapeKind::Box;
+    shape.box_size_m = Eigen::Vector3d(size.X(), size.Y(), size.Z());
+    return shape;
+  }
+  if (geom != nullptr && geom->Type() == sdf::GeometryType::CYLINDER && geom->CylinderShape() != nullptr) {
+    shape.kind = ShapeKind::Cylinder;
+    shape.radius_m = geom->CylinderShape()->Radius();
+    shape.length_m = geom->CylinderShape()->Length();
+    return shape;
+  }
+  throw WorldError(where + ": only <box> and <cylinder> collision geometry is supported");
+}
+
+std::vector<PluginSpec> pluginsOf(const sdf::Model& model, const std::string& file) {
+  std::vector<PluginSpec> plugins;
+  sdf::ElementPtr element = model.Element();
+  if (!element || !element->HasElement("plugin")) return plugins;
+  for (sdf::ElementPtr p = element->GetElement("plugin"); p; p = p->GetNextElement("plugin")) {
+    PluginSpec spec;
+    spec.owner = model.Name();
+    spec.name = p->Get<std::string>("name");
+    spec.type = p->Get<std::string>("filename");
+    const std::string where = file + ": model '" + model.Name() + "', plugin '" + spec.name + "'";
+    if (knownPluginTypes().count(spec.type) == 0) {
+      std::string known;
+      for (const auto& t : knownPluginTypes()) known += (known.empty() ? "" : ", ") + t;
+      throw WorldError(where + ": unknown driver filename '" + spec.type + "' (known: " + known + ")");
+    }
+    for (const auto& other : plugins) {
+      if (other.name == spec.name) throw WorldError(where + ": duplicate plugin name");
+    }
+    for (sdf::ElementPtr child = p->GetFirstElement(); child; child = child->GetNextElement()) {
+      std::string text = child->GetValue() ? child->GetValue()->GetAsString() : "";
+      spec.params[child->GetName()] = trim(text);
+    }
+    plugins.push_back(std::move(spec));
+  }
+  return plugins;
+}
+
+}  // namespace
+
+std::string PluginSpec::getString(const std::string& key, const std::string& fallback) const {
+  const auto it = params.find(key);
+  return it == params.end() ? fallback : it->second;
+}
+
+namespace {
+[[noreturn]] void badParam(const PluginSpec& p, const std::string& key, const std::string& what) {
+  throw WorldError("robot '" + p.owner + "', plugin '" + p.name + "': <" + key + ">" +
+                   p.getString(key, "") + "</" + key + "> " + what);
+}
+}  // namespace
+
+double PluginSpec::getDouble(const std::string& key, double fallback) const {
+  if (!has(key)) return fallback;
+  const std::string text = getString(key, "");
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || errno != 0 || end != text.c_str() + text.size() || !std::isfinite(v)) {
+    badParam(*this, key, "is not a finite number");
+  }
+  return v;
+}
+
+int PluginSpec::getInt(const std::string& key, int fallback) const {
+  if (!has(key)) return fallback;
+  const std::string text = getString(key, "");
+  errno = 0;
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || errno != 0 || end != text.c_str() + text.size() || v < -2147483647L || v > 2147483647L) {
+    badParam(*this, key, "is not an integer");
+  }
+  return static_cast<int>(v);
+}
+
+bool PluginSpec::getBool(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const std::string v = getString(key, "");
+  if (v == "true" || v == "1") return true;
+  if (v == "false" || v == "0") return false;
+  badParam(*this, key, "is not a boolean (true/false)");
+}
+
+Eigen::Isometry3d PluginSpec::getPose(const std::string& key) const {
+  std::istringstream in(getString(key, ""));
+  double v[6];
+  for (double& x : v) {
+    if (!(in >> x) || !std::isfinite(x)) badParam(*this, key, "is not a pose 'x y z roll pitch yaw'");
+  }
+  std::string rest;
+  if (in >> rest) badParam(*this, key, "is not a pose 'x y z roll pitch yaw'");
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(v[0], v[1], v[2]);
+  pose.linear() = (Eigen::AngleAxisd(v[5], Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(v[4], Eigen::Vector3d::UnitY()) *
+                   Eigen::AngleAxisd(v[3], Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  return pose;
+}
+
+const PluginSpec* RobotSpec::findPlugin(const std::string& type) const {
+  for (const auto& p : plugins) {
+    if (p.type == type) return &p;
+  }
+  return nullptr;
+}
+
+const RobotSpec* WorldSpec::findRobot(const std::string& robot) const {
+  for (const auto& r : robots) {
+    if (r.name == robot) return &r;
+  }
+  return nullptr;
+}
+
+double yawOf(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d r = pose.linear();
+  return std::atan2(r(1, 0), r(0, 0));
+}
+
+WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
+  if (!std::ifstream(path).good()) throw WorldError(path + ": cannot open world file");
+  std::string models = models_dir;
+  if (models.empty()) {
+    const auto slash = path.rfind('/');
+    models = (slash == std::string::npos ? std::string(".") : path.substr(0, slash)) + "/models";
+  }
+  sdf::ParserConfig config;
+  config.AddURIPath("model://", models);
+  config.SetFindCallback([models](const std::string& uri) -> std::string {
+    // Unresolvable includes end up here; returning "" makes sdformat report the error.
+    (void)models;
+    (void)uri;
+    return "";
+  });
+  sdf::Root root;
+  const sdf::Errors errors = root.Load(path, config);
+  if (!errors.empty()) {
+    std::string text = path + ": cannot load world:";
+    for (const auto& e : errors) text += "\n  " + e.Message();
+    throw WorldError(text);
+  }
+  if (root.WorldCount() != 1) throw WorldError(path + ": expected exactly one <world>");
+  const sdf::World* world = root.WorldByIndex(0);
+
+  WorldSpec spec;
+  spec.name = world->Name();
+  spec.source_path = path;
+  if (world->PhysicsCount() > 0) spec.physics_step_s = world->PhysicsByIndex(0)->MaxStepSize();
+
+  for (uint64_t m = 0; m < world->ModelCount(); ++m) {
+    const sdf::Model* model = world->ModelByIndex(m);
+    const std::string where = path + ": model '" + model->Name() + "'";
+    const Eigen::Isometry3d model_pose = toEigen(model->RawPose());
+    if (model->ModelCount() > 0) throw WorldError(where + ": nested models are not supported");
+    if (model->Static()) {
+      if (!pluginsOf(*model, path).empty()) throw WorldError(where + ": a static model cannot carry drivers");
+      for (uint64_t l = 0; l < model->LinkCount(); ++l) {
+        const sdf::Link* link = model->LinkByIndex(l);
+        const Eigen::Isometry3d link_pose = model_pose * toEigen(link->RawPose());
+        for (uint64_t c = 0; c < link->CollisionCount(); ++c) {
+          const sdf::Collision* collision = link->CollisionByIndex(c);
+          StaticObject o;
+          o.name = model->Name() + "::" + link->Name() + "::" + collision->Name();
+          o.shape = shapeOf(*collision, where + ", collision '" + collision->Name() + "'");
+          o.pose = link_pose * toEigen(collision->RawPose());
+          spec.statics.push_back(o);
+        }
+      }
+      continue;
+    }
+    // A robot: one link, one collision, drivers as plugins.
+    if (model->LinkCount() != 1) {
+      throw WorldError(where + ": a robot (non-static model) must have exactly one <link>, it has " +
+                       std::to_string(model->LinkCount()));
+    }
+    const sdf::Link* link = model->LinkByIndex(0);
+    if (link->CollisionCount() != 1) {
+      throw WorldError(where + ": a robot's link must have exactly one <collision>, it has " +
+                       std::to_string(link->CollisionCount()));
+    }
+    RobotSpec robot;
+    robot.name = model->Name();
+    robot.pose = model_pose * toEigen(link->RawPose());
+    const sdf::Collision* collision = link->CollisionByIndex(0);
+    robot.shape = shapeOf(*collision, where + ", collision '" + collision->Name() + "'");
+    robot.shape_offset = toEigen(collision->RawPose());
+    robot.mass_kg = link->Inertial().MassMatrix().Mass();
+    if (!(robot.mass_kg > 0)) throw WorldError(where + ": the link needs an <inertial><mass> > 0");
+    robot.plugins = pluginsOf(*model, path);
+    spec.robots.push_back(std::move(robot));
+  }
+  return spec;
+}
+
+}  // namespace aula::world

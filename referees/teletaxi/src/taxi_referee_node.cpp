@@ -1,0 +1,85 @@
+#include "taxi_referee_node.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace aula::teletaxi {
+
+TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
+  TaxiRefereeSettings s;
+  s.timeout_s = cfg.getDouble("TeleTaxi.Referee.Timeout", s.timeout_s);
+  s.stop_speed_mps = cfg.getDouble("TeleTaxi.Referee.StopSpeed", s.stop_speed_mps);
+  s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold", s.stop_hold_s);
+  if (!(s.timeout_s > 0)) {
+    throw config::ConfigError(cfg.origin("TeleTaxi.Referee.Timeout") + ": TeleTaxi.Referee.Timeout must be > 0");
+  }
+  return s;
+}
+
+TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg)
+    : referee_(taxiRefereeSettings(cfg)) {
+  bus.subscribe(cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"), &TaxiRefereeNode::onPose, this);
+  bus.subscribe(cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE"), &TaxiRefereeNode::onEpisode, this);
+  const double period_s = cfg.getDouble("TeleTaxi.Referee.Period", 0.1);
+  clock_ = std::make_unique<lcmbus::LockstepClient>(
+      bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
+      [this](int64_t utime) { onTick(utime); });
+}
+
+void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  referee_.onPose(msg->utime, msg->x, msg->y, msg->yaw);
+}
+
+void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
+  algorithm_ = msg->algorithm;
+  if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
+  if (msg->started_utime >= 0) referee_.start(msg->started_utime);
+}
+
+void TaxiRefereeNode::onTick(int64_t utime) {
+  referee_.onTick(utime);
+  if (referee_.finished() && !announced_) {
+    announced_ = true;
+    if (on_finished_) on_finished_();
+  }
+}
+
+aula::referee::Report TaxiRefereeNode::report() const {
+  const TaxiGrade g = referee_.finished() ? referee_.grade() : referee_.provisionalGrade();
+  const auto& tick = clock_->lastTick();
+  aula::referee::Report r;
+  r.set("exercise", "teletaxi");
+  r.set("mark", g.mark);
+  r.set("sim_time_s", simTimeUs() / 1e6);
+  r.set("seed", static_cast<long long>(tick.seed));
+  r.set("world", tick.world);
+  r.set("algorithm", algorithm_);
+  r.set("finished", referee_.finished());
+  r.set("reached", g.reached);
+  r.set("final_distance_m", referee_.distanceToGoalM());
+  r.set("path_length_m", referee_.pathLengthM());
+  r.set("straight_distance_m", referee_.straightDistanceM());
+  r.set("driving_time_s", referee_.elapsedS());
+  r.set("average_speed_mps", g.average_speed_mps);
+  r.set("base_mark", g.base_mark);
+  r.set("speed_mark", g.speed_mark);
+  r.set("destination_m", std::vector<double>{referee_.goalX(), referee_.goalY()});
+  r.set("verdict", g.verdict);
+  return r;
+}
+
+std::string TaxiRefereeNode::summary() const {
+  const TaxiGrade g = referee_.finished() ? referee_.grade() : referee_.provisionalGrade();
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "TeleTaxi mark: %.2f / 10\n"
+                "  %s\n"
+                "  base %.1f (distance %.2f m) + 0.2 x speed mark %.2f (%.2f m/s = %.1f km/h over %.1f m in %.1f s sim)\n"
+                "  straight distance start -> destination: %.1f m\n",
+                g.mark, g.verdict.c_str(), g.base_mark, referee_.distanceToGoalM(), g.speed_mark,
+                g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
+                referee_.elapsedS(), referee_.straightDistanceM());
+  return text;
+}
+
+}  // namespace aula::teletaxi

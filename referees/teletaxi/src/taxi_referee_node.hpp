@@ -1,0 +1,47 @@
+#pragma once
+// The TeleTaxi referee's LCM side: true pose, the component's episode events and the clock
+// feed the TaxiReferee; at the end it builds the report.
+
+#include <aula/config/config.hpp>
+#include <aula/episode_t.hpp>
+#include <aula/lcm/lockstep_client.hpp>
+#include <aula/pose3d_t.hpp>
+#include <aula/referee/report.hpp>
+#include <aula/teletaxi/taxi_referee.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace aula::teletaxi {
+
+class TaxiRefereeNode {
+ public:
+  TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+
+  const TaxiReferee& referee() const { return referee_; }
+  bool finished() const { return referee_.finished(); }
+  aula::referee::Report report() const;
+  std::string summary() const;  // the mark and its breakdown, for the terminal
+  void poll() { clock_->poll(); }
+  void leave() { clock_->leave(); }
+  int64_t simTimeUs() const { return clock_->simTimeUs(); }
+  void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+
+ private:
+  void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
+  void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
+  void onTick(int64_t utime);
+
+  TaxiReferee referee_;
+  std::string algorithm_ = "unknown";
+  std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::function<void()> on_finished_;
+  bool announced_ = false;
+};
+
+TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg);
+
+}  // namespace aula::teletaxi

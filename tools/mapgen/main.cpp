@@ -1,0 +1,93 @@
+// aula-mapgen WORLD --out DIR/NAME.png --resolution M_PER_PX [--size WxH] [--center X,Y]
+//             [--z-band MIN,MAX]
+// Rasterises a world's static geometry into a binary occupancy PNG (0 obstacle, 255 free) and
+// writes NAME.yaml beside it: the one world-to-map transform of every GUI and referee.
+#include <aula/config/config.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <cmath>
+#include <iostream>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: aula-mapgen WORLD --out DIR/NAME.png --resolution M_PER_PX [--size WxH] [--center X,Y]\n"
+    "                   [--z-band MIN,MAX]\n"
+    "  default size/centre: the bounding box of the static geometry; default z-band: 0.01,100 m\n";
+
+std::pair<double, double> pairOf(const std::string& text, char sep, const std::string& option) {
+  const auto at = text.find(sep);
+  try {
+    if (at == std::string::npos) throw std::invalid_argument(text);
+    size_t used1 = 0, used2 = 0;
+    const double a = std::stod(text.substr(0, at), &used1);
+    const double b = std::stod(text.substr(at + 1), &used2);
+    if (used1 != at || used2 != text.size() - at - 1) throw std::invalid_argument(text);
+    return {a, b};
+  } catch (const std::exception&) {
+    throw aula::config::ConfigError("command line: --" + option + "=" + text + " is malformed");
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace aula;
+  try {
+    const auto cl = config::CommandLine::parse(argc, argv, {"out", "resolution", "size", "center", "z-band"});
+    cl.requireKnown({"out", "resolution", "size", "center", "z-band"});
+    if (cl.positional.size() != 1 || !cl.flag("out") || !cl.flag("resolution")) {
+      std::cerr << kUsage;
+      return 2;
+    }
+    const std::string out = cl.option("out");
+    if (out.size() < 5 || out.substr(out.size() - 4) != ".png") {
+      throw config::ConfigError("command line: --out must name a .png file");
+    }
+    const double resolution = pairOf(cl.option("resolution") + ",0", ',', "resolution").first;
+    if (!(resolution > 0)) throw config::ConfigError("command line: --resolution must be > 0");
+    const world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+    if (spec.statics.empty()) throw world::WorldError(cl.positional[0] + ": no static geometry to map");
+
+    const Eigen::Vector4d bounds = world::staticBounds(spec);
+    double cx = (bounds[0] + bounds[2]) / 2, cy = (bounds[1] + bounds[3]) / 2;
+    int width = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution));
+    int height = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution));
+    if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
+    if (cl.flag("size")) {
+      const auto [w, h] = pairOf(cl.option("size"), 'x', "size");
+      width = static_cast<int>(w);
+      height = static_cast<int>(h);
+    }
+    if (width <= 0 || height <= 0 || width > 20000 || height > 20000) {
+      throw config::ConfigError("command line: map size must be 1..20000 px per side");
+    }
+    double z_min = 0.01, z_max = 100.0;
+    if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
+
+    world::MapTransform t;
+    t.resolution_m = resolution;
+    t.width_px = width;
+    t.height_px = height;
+    t.origin_x_m = cx - width * resolution / 2;
+    t.origin_y_m = cy + height * resolution / 2;
+    const cv::Mat map = world::rasterizeOccupancy(spec, t, z_min, z_max);
+    if (!cv::imwrite(out, map)) throw std::runtime_error(out + ": cannot write the map image");
+    const auto slash = out.rfind('/');
+    const std::string file = slash == std::string::npos ? out : out.substr(slash + 1);
+    t.save(out.substr(0, out.size() - 4) + ".yaml", file);
+    return 0;
+  } catch (const config::ConfigError& e) {
+    std::cerr << "aula-mapgen: " << e.what() << "\n" << kUsage;
+    return 2;
+  } catch (const world::WorldError& e) {
+    std::cerr << "aula-mapgen: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "aula-mapgen: " << e.what() << "\n";
+    return 1;
+  }
+}
