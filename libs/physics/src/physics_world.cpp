@@ -1,5 +1,6 @@
 #include "aula/physics/physics_world.hpp"
 
+#include <dart/collision/CollisionGroup.hpp>
 #include <dart/collision/CollisionObject.hpp>
 #include <dart/collision/CollisionResult.hpp>
 #include <dart/collision/bullet/BulletCollisionDetector.hpp>
@@ -34,6 +35,9 @@ constexpr double kMaxAngularAccel = 30.0;  // rad/s^2
 // Sub-stepping keeps fast robots from sinking into (or tunnelling through) thin walls: a
 // physics step is split so that no robot travels more than this per sub-step.
 constexpr double kMaxTravelPerSubstep = 0.01;  // m
+// Coulomb friction of every contact (DART takes the smaller of the two shapes' values). Low, so
+// that a robot pushing against a wall at an angle slides along it, as bumpers and car bodies do.
+constexpr double kFriction = 0.3;
 
 ShapePtr makeShape(const world::Shape& s) {
   if (s.kind == world::ShapeKind::Cylinder) return std::make_shared<CylinderShape>(s.radius_m, s.length_m);
@@ -50,6 +54,15 @@ struct PhysicsWorld::Robot {
   dart::dynamics::PlanarJoint* joint = nullptr;
   BodyNode* body = nullptr;
   double v = 0, w = 0, l = 0;  // held body-frame command
+  double reach_m = 0;          // footprint radius about the body origin
+  Eigen::Vector2d anchor_m = Eigen::Vector2d::Constant(1e300);  // position at the last near-set rebuild
+};
+
+struct PhysicsWorld::StaticPrimitive {
+  std::string name;
+  ShapePtr shape;
+  Eigen::Isometry3d pose;
+  Eigen::Vector2d lo, hi;  // footprint bounds
 };
 
 PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
@@ -59,15 +72,36 @@ PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
   world_->setTimeStep(step_us_ / 1e6);
   world_->getConstraintSolver()->setCollisionDetector(dart::collision::BulletCollisionDetector::create());
 
-  // All static geometry: one immobile skeleton, one body, many shape nodes (fastest layout).
+  // All static geometry as visuals (for a viewer) in one immobile skeleton; the collision
+  // detector sees only the near set, kept in a second immobile skeleton.
   auto statics = dart::dynamics::Skeleton::create("statics");
   auto* ground = statics->createJointAndBodyNodePair<dart::dynamics::WeldJoint>().second;
   for (const auto& o : spec.statics) {
-    auto* node = ground->createShapeNodeWith<VisualAspect, CollisionAspect, DynamicsAspect>(makeShape(o.shape), o.name);
+    StaticPrimitive p;
+    p.name = o.name;
+    p.shape = makeShape(o.shape);
+    p.pose = o.pose;
+    const Eigen::Vector2d c = o.pose.translation().head<2>();
+    Eigen::Vector2d half;
+    if (o.shape.kind == world::ShapeKind::Cylinder) {
+      half = Eigen::Vector2d::Constant(o.shape.radius_m);
+    } else {
+      // Bounds of the rotated box's footprint (any rotation: use the 3D box's extent).
+      const Eigen::Matrix3d r = o.pose.linear().cwiseAbs();
+      half = (r * (o.shape.box_size_m / 2)).head<2>();
+    }
+    p.lo = c - half;
+    p.hi = c + half;
+    statics_.push_back(p);
+    auto* node = ground->createShapeNodeWith<VisualAspect>(p.shape, o.name);
     node->setRelativeTransform(o.pose);
   }
   statics->setMobile(false);
   world_->addSkeleton(statics);
+  auto near = dart::dynamics::Skeleton::create("statics_near");
+  near_body_ = near->createJointAndBodyNodePair<dart::dynamics::WeldJoint>().second;
+  near->setMobile(false);
+  world_->addSkeleton(near);
 
   for (const auto& r : spec.robots) {
     const std::string where = spec.source_path + ": robot '" + r.name + "'";
@@ -95,6 +129,7 @@ PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
     auto shape = makeShape(r.shape);
     auto* node = robot.body->createShapeNodeWith<VisualAspect, CollisionAspect, DynamicsAspect>(shape, r.name + "_shape");
     node->setRelativeTransform(r.shape_offset);
+    node->getDynamicsAspect()->setFrictionCoeff(kFriction);
     const Eigen::Matrix3d moment = shape->computeInertia(r.mass_kg);
     robot.body->setInertia(dart::dynamics::Inertia(r.mass_kg, r.shape_offset.translation(),
                                                     r.shape_offset.linear() * moment * r.shape_offset.linear().transpose()));
@@ -108,6 +143,11 @@ PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
     robot.joint->setForceLowerLimit(1, -force);
     robot.joint->setForceUpperLimit(2, torque);
     robot.joint->setForceLowerLimit(2, -torque);
+    if (r.shape.kind == world::ShapeKind::Cylinder) {
+      robot.reach_m = r.shape_offset.translation().head<2>().norm() + r.shape.radius_m;
+    } else {
+      robot.reach_m = r.shape_offset.translation().head<2>().norm() + r.shape.box_size_m.head<2>().norm() / 2;
+    }
     robots_.push_back(std::move(robot));
     world_->addSkeleton(robots_.back().skeleton);
     setRobotPose(static_cast<int>(robots_.size()) - 1, r.pose.translation().x(), r.pose.translation().y(),
@@ -178,6 +218,44 @@ void PhysicsWorld::setRobotPose(int robot, double x_m, double y_m, double yaw_ra
   r.joint->setVelocities(Eigen::Vector3d::Zero());
   r.joint->setCommands(Eigen::Vector3d::Zero());
   r.v = r.w = r.l = 0;
+  refreshNearStatics(true);
+}
+
+void PhysicsWorld::refreshNearStatics(bool force) {
+  bool moved = force;
+  for (const auto& r : robots_) {
+    const Eigen::Vector3d q = r.joint->getPositions();
+    moved = moved || (Eigen::Vector2d(q[0], q[1]) - r.anchor_m).norm() > kNearRefresh_m;
+  }
+  if (!moved) return;
+  std::vector<int> wanted;
+  for (auto& r : robots_) {
+    const Eigen::Vector3d q = r.joint->getPositions();
+    r.anchor_m = Eigen::Vector2d(q[0], q[1]);
+  }
+  for (size_t i = 0; i < statics_.size(); ++i) {
+    for (const auto& r : robots_) {
+      const double reach = r.reach_m + kNearMargin_m;
+      const Eigen::Vector2d lo = r.anchor_m.array() - reach, hi = r.anchor_m.array() + reach;
+      if ((statics_[i].lo.array() <= hi.array()).all() && (statics_[i].hi.array() >= lo.array()).all()) {
+        wanted.push_back(static_cast<int>(i));
+        break;
+      }
+    }
+  }
+  if (wanted == near_set_) return;
+  near_set_ = std::move(wanted);
+  // Detach the old shapes from the collision group while they still exist: DART 6.12 would
+  // otherwise destroy their collision objects after the shape frames are gone (use after free).
+  const auto group = world_->getConstraintSolver()->getCollisionGroup();
+  for (auto* node : near_body_->getShapeNodes()) group->removeShapeFrame(node);
+  near_body_->removeAllShapeNodes();
+  for (const int i : near_set_) {
+    auto* node = near_body_->createShapeNodeWith<CollisionAspect, DynamicsAspect>(statics_[i].shape, statics_[i].name);
+    node->setRelativeTransform(statics_[i].pose);
+    node->getDynamicsAspect()->setFrictionCoeff(kFriction);
+    group->addShapeFrame(node);  // explicit: the group does not reliably pick up new nodes
+  }
 }
 
 void PhysicsWorld::reset() {
@@ -200,6 +278,7 @@ void PhysicsWorld::step() {
   const int substeps = std::clamp(static_cast<int>(std::ceil(fastest * dt / kMaxTravelPerSubstep)), 1, 100);
   if (substeps > 1) world_->setTimeStep(dt / substeps);
   for (int k = 0; k < substeps; ++k) {
+    refreshNearStatics(false);
     for (auto& r : robots_) {
       const double yaw = r.joint->getPositions()[2];
       const double c = std::cos(yaw), s = std::sin(yaw);
