@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libdart-all-dev libdart-collision-bullet-dev libdart-utils-dev libdart-gui-osg-dev
+  libdart-external-lodepng-dev libdart-external-imgui-dev libgl1-mesa-dri
   libsdformat-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libompl-dev

@@ -2,21 +2,25 @@
 //                [--duration S] [--Simulator.Key=value ...]
 // Headless by default, like gzserver.
 #include "src/signal_watcher.hpp"
+#include "src/sim_view.hpp"
 
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/sim/simulator.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
 namespace {
 
 constexpr const char* kUsage =
-    "usage: aula-sim WORLD [--config FILE] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]\n"
+    "usage: aula-sim WORLD [--gui] [--config FILE] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]\n"
     "                [--duration SECONDS] [--paused] [--Simulator.Key=value ...]\n"
     "  WORLD        an SDF world, e.g. worlds/vacuum.world\n"
+    "  --gui        open a 3D view of the world (headless by default, like gzserver)\n"
+    "  --screenshot=FILE.png  with --gui: save the view after one second of wall time\n"
     "  --config     simulator settings (default: config/simulator.cfg if present)\n"
     "  --lockstep   advance only when every registered client has acknowledged\n"
     "  --rtf X      real-time factor in free-running mode (0 = as fast as possible)\n"
@@ -33,7 +37,7 @@ int main(int argc, char** argv) {
       std::cout << kUsage;
       return 0;
     }
-    cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "help"});
+    cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
     if (cl.positional.size() != 1) {
       std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
       return 2;
@@ -61,7 +65,24 @@ int main(int argc, char** argv) {
               << simulator.physics().robotCount() << " robot(s), step " << options.step_s * 1e3
               << " ms, " << (options.lockstep ? "lockstep" : "free-running") << ", seed "
               << options.seed << std::endl;
-    simulator.run([&] { return signals.stopRequested(); });
+    if (cl.flag("gui")) {
+      // Look at the first robot, from a distance that fits the world.
+      Eigen::Vector3d center = Eigen::Vector3d::Zero();
+      if (simulator.physics().robotCount() > 0) center = simulator.physics().robotState(0).position_m;
+      double size_m = 10.0;
+      for (const auto& o : simulator.spec().statics) {
+        size_m = std::max(size_m, 0.5 * (o.pose.translation().head<2>() - center.head<2>()).norm());
+      }
+      sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0));
+      int frames = 0;
+      const std::string screenshot = cl.option("screenshot");
+      simulator.run([&] { return signals.stopRequested(); }, [&] {
+        if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
+        return view.frame();
+      });
+    } else {
+      simulator.run([&] { return signals.stopRequested(); });
+    }
     std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time\n";
     return 0;
   } catch (const config::ConfigError& e) {

@@ -171,13 +171,15 @@ void Simulator::advanceToNextTick() {
   publishClock();
 }
 
-void Simulator::run(const std::function<bool()>& should_stop) {
+void Simulator::run(const std::function<bool()>& should_stop, const std::function<bool()>& frame) {
   const int64_t duration_us = secondsToUs(options_.duration_s);
   auto pace_origin = WallClock::now();
   int64_t pace_origin_us = physics_->timeUs();
   auto rtf_window_start = WallClock::now();
   int64_t rtf_window_us = physics_->timeUs();
   auto last_publish = WallClock::now();
+  auto last_frame = WallClock::now();
+  constexpr auto kFramePeriod = std::chrono::milliseconds(33);
 
   // Tick 0: sensors at t = 0 for the clients, then wait for them in lockstep.
   for (auto& d : drivers_) d->step(physics_->timeUs());
@@ -186,6 +188,10 @@ void Simulator::run(const std::function<bool()>& should_stop) {
 
   while (!should_stop()) {
     if (duration_us > 0 && physics_->timeUs() >= duration_us) break;
+    if (frame && WallClock::now() - last_frame >= kFramePeriod) {
+      if (!frame()) break;
+      last_frame = WallClock::now();
+    }
     while (bus_.handleTimeout(0) > 0) {
     }
 

@@ -49,8 +49,9 @@ class Simulator {
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
 
-  // Runs until `should_stop()` returns true or duration_s is reached.
-  void run(const std::function<bool()>& should_stop);
+  // Runs until `should_stop()` returns true or duration_s is reached. `frame`, if given, runs
+  // about 30 times per wall second (a viewer's render) and stops the run by returning false.
+  void run(const std::function<bool()>& should_stop, const std::function<bool()>& frame = nullptr);
   // Advances to the next clock tick and publishes it (no pacing, no lockstep waiting).
   void advanceToNextTick();
 

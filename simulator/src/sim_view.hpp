@@ -1,0 +1,31 @@
+#pragma once
+// aula-sim --gui: a 3D view of the running world with DART's OpenSceneGraph viewer, like
+// Gazebo's client. The view only draws; the simulator keeps stepping the world itself.
+
+#include <dart/simulation/World.hpp>
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+namespace aula::sim {
+
+class SimView {
+ public:
+  // Opens a window looking at `center_m` from a distance fitting `size_m`.
+  SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m);
+  ~SimView();
+  SimView(const SimView&) = delete;
+  SimView& operator=(const SimView&) = delete;
+
+  // Renders one frame; false once the window was closed.
+  bool frame();
+  // Saves the next rendered frame as a PNG.
+  void captureNextFrame(const std::string& png_path);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aula::sim
