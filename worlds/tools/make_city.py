@@ -3,7 +3,10 @@
 
 A grid of roads (12-16 m wide) between blocks of buildings (each block split into four
 touching buildings of different heights), a perimeter road inside the city wall, a 71 m square
-plaza with a fountain, a round tower with a curved road around it, and an L-shaped sharp bend.
+plaza with a fountain, a round tower with a curved road around it, an L-shaped sharp bend, and
+in the north-west a 14 m wide quarter-circle boulevard whose building edges are chains of
+rotated boxes (backed by axis-aligned "staircase" buildings, so no closed pocket of free space
+is left behind them).
 Deterministic: rerun after editing and commit the result (the world is data a teacher reads).
 """
 import math
@@ -49,6 +52,9 @@ for i in range(n):
         # curved road around it and four corner buildings.
         if i in (4, 5) and j in (1, 2):
             continue
+        # The curved boulevard (north-west, blocks 0..1 x 4..5 merged): see below.
+        if i in (0, 1) and j in (4, 5):
+            continue
         buildings(name, x0, x1, y0, y1)
 
 # Round tower in the south-east group (x 91..233, y -233..-91 incl. the roads inside).
@@ -61,6 +67,75 @@ for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
     cx = gcx + sx * ((gx1 - gx0) / 2 - side / 2)
     cy = gcy + sy * ((gy1 - gy0) / 2 - side / 2)
     boxes.append((f"tower_corner_{k}", cx, cy, side, side, 18.0, 0.0))
+
+# Curved boulevard in the north-west group (x -233..-91, y 91..233): a quarter circle centred
+# near the group's south-east corner C, joining the road y = 85 (at x ~ -173) to the road
+# x = -85 (at y ~ 173). Local frame: u = west of C, v = north of C.
+def curved_group():
+    gx0, gx1 = block_span(0)[0], block_span(1)[1]
+    gy0, gy1 = block_span(4)[0], block_span(5)[1]
+    L = gx1 - gx0                      # the group is square
+    cx, cy = gx1, gy0                  # corner C
+    sxw, syw = -1.0, 1.0               # local (u, v) -> world (cx + sxw*u, cy + syw*v)
+    R, W, N = 80.0, 14.0, 10           # centre-line radius, road width, segments per quarter
+    ri, ro = R - W / 2, R + W / 2
+    dl = (math.pi / 2) / N
+    h = ri * math.cos(dl / 2)          # distance of the inner chords from the arc centre
+    d_in = 0.4 * h                     # radial depth of the inner chain
+    m = d_in * math.sin(dl / 2)        # arc centre inset so no box pokes out of the group
+    a0 = m                             # arc centre C' = (m, m) in local coordinates
+
+    def box(name, u, v, su, sv, height, phi):
+        # A box centred at local (u, v) with its x axis at local angle phi.
+        yaw = math.atan2(syw * math.sin(phi), sxw * math.cos(phi))
+        boxes.append((name, cx + sxw * u, cy + syw * v, su, sv, height, yaw))
+
+    # Inner side: a chain of rotated boxes whose outer faces are the chords of the inner edge,
+    # and an axis-aligned core behind them.
+    for k in range(N):
+        phi = (k + 0.5) * dl
+        r = h - d_in / 2
+        box(f"curve_inner_{k}", a0 + r * math.cos(phi), a0 + r * math.sin(phi), d_in,
+            2 * ri * math.sin(dl / 2) + 0.05, 20.0, phi)
+    a = m + (h - d_in) / math.cos(dl / 2) + 1.0
+    assert (a - m) * math.sqrt(2) < h - 1.0
+    box("curve_core", a / 2, a / 2, a, a, 30.0, 0.0)
+    # Outer side: boxes tangent to the outer edge, boxes filling the V gaps at the joints.
+    d_out = 15.0
+    half = ro * math.tan(dl / 2)
+    for k in range(N):
+        phi = (k + 0.5) * dl
+        r = ro + d_out / 2
+        box(f"curve_outer_{k}", a0 + r * math.cos(phi), a0 + r * math.sin(phi), d_out,
+            2 * half + 0.05, 12.0, phi)
+    rv = ro / math.cos(dl / 2)
+    for k in range(1, N):
+        phi = k * dl
+        r0, r1 = rv, ro + d_out
+        r = (r0 + r1) / 2
+        box(f"curve_joint_{k}", a0 + r * math.cos(phi), a0 + r * math.sin(phi), r1 - r0,
+            2 * (d_out * math.tan(dl / 2) + 0.5), 12.0, phi)
+    # Staircase of axis-aligned buildings beyond the chain band (they dip into the band, never
+    # into the road): strips along u, each from the band's outer edge to the group's edge.
+    rs = ro + d_out - 1.0
+    step = 6.0
+    u = 0.0
+    while u < L - 1e-9:
+        ub = min(L, u + step)
+        if ub - a0 >= rs:
+            ub = L  # past the arc: one building to the group's west edge
+            vlow = 0.0
+        else:
+            vlow = a0 + math.sqrt(rs * rs - (ub - a0) ** 2)
+        if vlow < L:
+            dip = math.hypot(u - a0, vlow - a0) if vlow > 0 else abs(u - a0)
+            assert dip > ro + 1.0, (u, vlow, dip)
+            box(f"curve_stair_{len(boxes)}", (u + ub) / 2, (vlow + L) / 2, ub - u, L - vlow,
+                random.choice([9, 12, 15, 20, 25]), 0.0)
+        u = ub
+
+
+curved_group()
 
 # A sharp bend: close the road x = 175 between the two north-east blocks (y 91..169), so
 # traffic from the north turns 90 degrees at y = 175.

@@ -3,7 +3,9 @@
 #include <aula/laser_t.hpp>
 #include <aula/motors_t.hpp>
 #include <aula/pose3d_t.hpp>
+#include <aula/lcm/bus.hpp>
 #include <aula/sim/simulator.hpp>
+#include <aula/sim_control_t.hpp>
 
 #include "motors_driver.hpp"
 
@@ -277,4 +279,35 @@ TEST(Simulator, SameSeedGivesIdenticalPoseStreams) {
   EXPECT_TRUE(samePoses(a, b));
   const auto c = bounceRun(8);
   EXPECT_FALSE(samePoses(a, c)) << "laser noise should depend on the seed";
+}
+
+TEST(Simulator, ControlChannelTeleportsPausesAndResets) {
+  lcm::LCM bus("memq://");
+  Listener listener(bus);
+  aula::sim::Simulator sim(room(0, 0, 0), fastOptions(), bus);
+  aula::sim_control_t cmd{};
+  cmd.command = aula::sim_control_t::SET_POSE;
+  cmd.robot = "bot";
+  cmd.x = 2.0;
+  cmd.y = -3.0;
+  cmd.yaw = 1.0;
+  bus.publish(aula::lcmbus::kControlChannel, &cmd);
+  runFor(sim, bus, 0.1);
+  EXPECT_NEAR(listener.pose.x, 2.0, 1e-6);
+  EXPECT_NEAR(listener.pose.y, -3.0, 1e-6);
+  EXPECT_NEAR(listener.pose.yaw, 1.0, 1e-6);
+  cmd.robot = "nobody";  // unknown robot: logged and ignored
+  bus.publish(aula::lcmbus::kControlChannel, &cmd);
+  cmd.robot = "bot";
+  cmd.x = NAN;  // non-finite pose: ignored
+  bus.publish(aula::lcmbus::kControlChannel, &cmd);
+  runFor(sim, bus, 0.1);
+  EXPECT_NEAR(listener.pose.x, 2.0, 1e-6);
+  cmd.command = aula::sim_control_t::RESET;
+  bus.publish(aula::lcmbus::kControlChannel, &cmd);
+  drain(bus);
+  EXPECT_EQ(sim.timeUs(), 0) << "reset sets the clock back";
+  sim.advanceToNextTick();
+  drain(bus);
+  EXPECT_NEAR(listener.pose.x, 0.0, 1e-6);
 }
