@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
     });
     window.show();
     if (setup.command_line.flag("screenshot")) {
-      return window.screenshotWhenReady(setup.command_line.option("screenshot")) ? app.exec() : 1;
+      return window.screenshotWhenReady(QString::fromStdString(setup.command_line.option("screenshot"))) ? app.exec() : 1;
     }
     const int code = app.exec();
     node.leave();

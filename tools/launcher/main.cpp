@@ -18,22 +18,28 @@
 namespace {
 
 struct Exercise {
-  std::string world;                 // relative to the source tree
-  std::vector<std::string> clients;  // executables in the build's bin folder, last = primary
-  std::vector<std::string> client_args;
+  std::string world;        // relative to the source tree
+  std::string config;       // the exercise's .cfg, relative to the source tree
+  std::string cfg_prefix;   // its keys' section, e.g. "TeleTaxi" (for --algorithm)
+  std::string component;    // executable in the build's bin folder
+  std::string referee;      // "" when the exercise has none
   std::string description;
 };
 
 std::map<std::string, Exercise> exercises() {
   return {
-      {"demo",
-       {"worlds/vacuum.world", {"aula-demo-client"}, {}, "the roomba bouncing around the house"}},
+      {"demo", {"worlds/vacuum.world", "config/demo.cfg", "Demo", "aula-demo-client", "",
+                "the roomba bouncing around the house (no referee)"}},
+      {"teletaxi", {"worlds/cityLarge.world", "config/teleTaxi.cfg", "TeleTaxi", "teletaxi", "teletaxi-referee",
+                    "global navigation with Gradient Path Planning"}},
   };
 }
 
 constexpr const char* kUsage =
-    "usage: aula run EXERCISE [--headless] [--world=FILE] [--lockstep] [--rtf=X] [--seed=N]\n"
-    "                [--duration=SECONDS] [--lcm-url=URL] [--Key=value ...]\n"
+    "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=reference|student] [--seed=N]\n"
+    "                [--report=FILE.json] [--lockstep] [--rtf=X] [--duration=SECONDS] [--lcm-url=URL]\n"
+    "                [--Key=value ...]\n"
+    "  --headless  no windows; lockstep, as fast as possible; the run ends with the referee's mark\n"
     "exercises:\n";
 
 std::string binDir(const char* argv0) {
@@ -57,7 +63,7 @@ int main(int argc, char** argv) {
   };
   try {
     const auto cl = config::CommandLine::parse(argc, argv, {});
-    cl.requireKnown({"headless", "world", "lockstep", "rtf", "seed", "duration", "lcm-url", "help"});
+    cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url", "help"});
     if (cl.flag("help")) return usage(), 0;
     if (cl.positional.size() != 2 || cl.positional[0] != "run") return usage();
     const auto it = table.find(cl.positional[1]);
@@ -72,15 +78,22 @@ int main(int argc, char** argv) {
     std::vector<std::string> shared;  // options every process understands
     if (cl.flag("lcm-url")) shared.push_back("--lcm-url=" + cl.option("lcm-url"));
     for (const auto& [key, value] : cl.overrides) shared.push_back("--" + key + "=" + value);
+    if (cl.flag("algorithm")) shared.push_back("--" + ex.cfg_prefix + ".Algorithm=" + cl.option("algorithm"));
+    if (cl.flag("headless")) shared.push_back("--" + ex.cfg_prefix + ".Autostart=true");
 
+    const size_t clients = ex.referee.empty() ? 1 : 2;
     std::vector<std::string> sim_args = {bin + "/aula-sim", cl.option("world", source + "/" + ex.world)};
     if (cl.flag("lockstep") || cl.flag("headless")) {
       sim_args.push_back("--lockstep");
-      sim_args.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(ex.clients.size()));
+      sim_args.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
     }
+    if (cl.flag("headless") && !cl.flag("rtf")) sim_args.push_back("--rtf=0");
     if (cl.flag("rtf")) sim_args.push_back("--rtf=" + cl.option("rtf"));
     if (cl.flag("seed")) sim_args.push_back("--seed=" + cl.option("seed"));
-    sim_args.insert(sim_args.end(), shared.begin(), shared.end());
+    if (cl.flag("lcm-url")) sim_args.push_back("--lcm-url=" + cl.option("lcm-url"));
+    for (const auto& [key, value] : cl.overrides) {
+      if (key.rfind("Simulator.", 0) == 0 || key.rfind("Aula.", 0) == 0) sim_args.push_back("--" + key + "=" + value);
+    }
 
     sigset_t mask;
     sigemptyset(&mask);
@@ -89,15 +102,21 @@ int main(int argc, char** argv) {
     sigprocmask(SIG_BLOCK, &mask, nullptr);
     const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
 
-    std::vector<std::unique_ptr<process::ChildProcess>> children;
-    children.push_back(std::make_unique<process::ChildProcess>(sim_args));
-    for (const auto& client : ex.clients) {
-      std::vector<std::string> args = {bin + "/" + client};
-      args.insert(args.end(), ex.client_args.begin(), ex.client_args.end());
-      if (cl.flag("duration")) args.push_back("--duration=" + cl.option("duration"));
+    auto client_args = [&](const std::string& program) {
+      std::vector<std::string> args = {bin + "/" + program, "--config=" + source + "/" + ex.config};
       if (cl.flag("headless")) args.push_back("--headless");
       args.insert(args.end(), shared.begin(), shared.end());
-      children.push_back(std::make_unique<process::ChildProcess>(args));
+      return args;
+    };
+    std::vector<std::unique_ptr<process::ChildProcess>> children;
+    children.push_back(std::make_unique<process::ChildProcess>(sim_args));
+    auto component_args = client_args(ex.component);
+    if (ex.referee.empty() && cl.flag("duration")) component_args.push_back("--duration=" + cl.option("duration"));
+    children.push_back(std::make_unique<process::ChildProcess>(component_args));
+    if (!ex.referee.empty()) {
+      auto referee_args = client_args(ex.referee);
+      if (cl.flag("report")) referee_args.push_back("--report=" + cl.option("report"));
+      children.push_back(std::make_unique<process::ChildProcess>(referee_args));
     }
 
     // The run ends when the primary process (the last one: referee or client) ends, when any

@@ -54,8 +54,9 @@ int main(int argc, char** argv) {
 
     const Eigen::Vector4d bounds = world::staticBounds(spec);
     double cx = (bounds[0] + bounds[2]) / 2, cy = (bounds[1] + bounds[3]) / 2;
-    int width = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution));
-    int height = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution));
+    // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
+    int width = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution - 1e-6));
+    int height = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution - 1e-6));
     if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
     if (cl.flag("size")) {
       const auto [w, h] = pairOf(cl.option("size"), 'x', "size");

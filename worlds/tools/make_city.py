@@ -2,8 +2,8 @@
 """Writes worlds/cityLarge.world: a 500 x 500 m city centred on the origin.
 
 A grid of roads (12-16 m wide) between blocks of buildings (each block split into four
-touching buildings of different heights), a perimeter road inside the city wall, a 71 m square
-plaza with a fountain, a round tower with a curved road around it, an L-shaped sharp bend, and
+touching buildings of different heights), a perimeter road inside the city wall, a
+106 m square plaza with a fountain, a round tower with a curved road around it, an L-shaped sharp bend, and
 in the north-west a 14 m wide quarter-circle boulevard whose building edges are chains of
 rotated boxes (backed by axis-aligned "staircase" buildings, so no closed pocket of free space
 is left behind them).
@@ -16,7 +16,7 @@ import sys
 random.seed(2018)
 
 # Road centre lines and widths, the same along x and y.
-ROADS = [(-240, 14), (-175, 14), (-85, 12), (0, 16), (85, 12), (175, 14), (240, 14)]
+ROADS = [(-240, 14), (-175, 14), (-120, 12), (0, 16), (120, 12), (175, 14), (240, 14)]
 WALL = 250.0
 
 boxes = []  # (name, cx, cy, sx, sy, height, yaw)
@@ -61,8 +61,8 @@ for i in range(n):
 gx0, gx1 = block_span(4)[0], block_span(5)[1]
 gy0, gy1 = block_span(1)[0], block_span(2)[1]
 gcx, gcy = (gx0 + gx1) / 2, (gy0 + gy1) / 2
-cylinders.append(("round_tower", gcx, gcy, 30.0, 60.0))
-side = 38.0
+cylinders.append(("round_tower", gcx, gcy, 28.0, 60.0))
+side = 25.0
 for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
     cx = gcx + sx * ((gx1 - gx0) / 2 - side / 2)
     cy = gcy + sy * ((gy1 - gy0) / 2 - side / 2)

@@ -44,12 +44,20 @@ MapTransform MapTransform::load(const std::string& yaml_path, std::string* image
     }
     return v;
   };
+  auto integer_of = [&](const std::string& key) {
+    const double v = number_of(key);
+    if (v != std::floor(v) || std::abs(v) > 1e9) {
+      throw std::runtime_error(yaml_path + ":" + std::to_string(values.at(key).second) + ": '" + key +
+                               "' is not an integer");
+    }
+    return static_cast<int>(v);
+  };
   MapTransform t;
   t.resolution_m = number_of("resolution");
   t.origin_x_m = number_of("origin_x");
   t.origin_y_m = number_of("origin_y");
-  t.width_px = static_cast<int>(number_of("width"));
-  t.height_px = static_cast<int>(number_of("height"));
+  t.width_px = integer_of("width");
+  t.height_px = integer_of("height");
   if (!(t.resolution_m > 0) || t.width_px <= 0 || t.height_px <= 0) {
     throw std::runtime_error(yaml_path + ": resolution, width and height must be > 0");
   }

@@ -1,5 +1,6 @@
 // Reads Gazebo-style SDF worlds with libsdformat 12 into Aula's plain WorldSpec.
 // Poses are composed as model * link * collision (raw poses; `relative_to` is not supported).
+// Nested models of static models are flattened; <plane> collisions (ground) are ignored.
 #include "aula/world/world_spec.hpp"
 
 #include <sdf/Box.hh>
@@ -13,11 +14,13 @@
 #include <sdf/Physics.hh>
 #include <sdf/Root.hh>
 #include <sdf/World.hh>
+#include <tinyxml2.h>
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -38,6 +41,16 @@ Eigen::Isometry3d toEigen(const ignition::math::Pose3d& p) {
   return out;
 }
 
+// Raw pose of a model, link or collision; `relative_to` frames are not supported (say so).
+template <typename T>
+Eigen::Isometry3d poseOf(const T& element, const std::string& where) {
+  if (!element.PoseRelativeTo().empty()) {
+    throw WorldError(where + ": <pose relative_to=\"" + element.PoseRelativeTo() +
+                     "\"> is not supported; give poses relative to the parent element");
+  }
+  return toEigen(element.RawPose());
+}
+
 std::string trim(const std::string& s) {
   const auto b = s.find_first_not_of(" \t\r\n");
   if (b == std::string::npos) return "";
@@ -52,12 +65,16 @@ Shape shapeOf(const sdf::Collision& collision, const std::string& where) {
     const auto size = geom->BoxShape()->Size();
     shape.kind = ShapeKind::Box;
     shape.box_size_m = Eigen::Vector3d(size.X(), size.Y(), size.Z());
+    if (!(shape.box_size_m.minCoeff() > 0)) throw WorldError(where + ": box <size> must be positive");
     return shape;
   }
   if (geom != nullptr && geom->Type() == sdf::GeometryType::CYLINDER && geom->CylinderShape() != nullptr) {
     shape.kind = ShapeKind::Cylinder;
     shape.radius_m = geom->CylinderShape()->Radius();
     shape.length_m = geom->CylinderShape()->Length();
+    if (!(shape.radius_m > 0 && shape.length_m > 0)) {
+      throw WorldError(where + ": cylinder <radius> and <length> must be positive");
+    }
     return shape;
   }
   throw WorldError(where + ": only <box> and <cylinder> collision geometry is supported");
@@ -172,26 +189,80 @@ double yawOf(const Eigen::Isometry3d& pose) {
   return std::atan2(r(1, 0), r(0, 0));
 }
 
+namespace {
+
+// Static geometry of a static model (and of its nested models), in world coordinates.
+// <plane> collisions (a Gazebo ground plane) are skipped: Aula's physics keeps robots on the
+// ground with a planar joint, and a ground would be an obstacle in every map.
+void addStatics(const sdf::Model& model, const Eigen::Isometry3d& model_pose, const std::string& prefix,
+                const std::string& file, WorldSpec& spec) {
+  const std::string name = prefix + model.Name();
+  const std::string where = file + ": model '" + name + "'";
+  if (!pluginsOf(model, file).empty()) throw WorldError(where + ": a static model cannot carry drivers");
+  for (uint64_t l = 0; l < model.LinkCount(); ++l) {
+    const sdf::Link* link = model.LinkByIndex(l);
+    const Eigen::Isometry3d link_pose = model_pose * poseOf(*link, where + ", link '" + link->Name() + "'");
+    for (uint64_t c = 0; c < link->CollisionCount(); ++c) {
+      const sdf::Collision* collision = link->CollisionByIndex(c);
+      if (collision->Geom() != nullptr && collision->Geom()->Type() == sdf::GeometryType::PLANE) continue;
+      StaticObject o;
+      o.name = name + "::" + link->Name() + "::" + collision->Name();
+      o.shape = shapeOf(*collision, where + ", link '" + link->Name() + "', collision '" + collision->Name() + "'");
+      o.pose = link_pose * poseOf(*collision, where + ", collision '" + collision->Name() + "'");
+      spec.statics.push_back(o);
+    }
+  }
+  for (uint64_t n = 0; n < model.ModelCount(); ++n) {
+    const sdf::Model* nested = model.ModelByIndex(n);
+    addStatics(*nested, model_pose * poseOf(*nested, where + ", model '" + nested->Name() + "'"), name + "::",
+               file, spec);
+  }
+}
+
+// Malformed XML: sdformat only says "Unable to read file"; tinyxml2 gives the line.
+void checkXml(const std::string& path) {
+  tinyxml2::XMLDocument doc;
+  if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
+    const char* detail = doc.ErrorStr();
+    throw WorldError(path + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " +
+                     (detail != nullptr ? detail : "parse error"));
+  }
+}
+
+}  // namespace
+
 WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
   if (!std::ifstream(path).good()) throw WorldError(path + ": cannot open world file");
+  checkXml(path);
   std::string models = models_dir;
   if (models.empty()) {
     const auto slash = path.rfind('/');
     models = (slash == std::string::npos ? std::string(".") : path.substr(0, slash)) + "/models";
   }
+  // model://NAME -> MODELS/NAME (a folder with model.config and model.sdf), Gazebo style.
   sdf::ParserConfig config;
   config.AddURIPath("model://", models);
-  config.SetFindCallback([models](const std::string& uri) -> std::string {
-    // Unresolvable includes end up here; returning "" makes sdformat report the error.
-    (void)models;
-    (void)uri;
+  auto unresolved = std::make_shared<std::vector<std::string>>();
+  config.SetFindCallback([unresolved](const std::string& uri) -> std::string {
+    // Only called for what the URI path above does not resolve; "" makes sdformat report it.
+    unresolved->push_back(uri);
     return "";
   });
   sdf::Root root;
   const sdf::Errors errors = root.Load(path, config);
   if (!errors.empty()) {
-    std::string text = path + ": cannot load world:";
-    for (const auto& e : errors) text += "\n  " + e.Message();
+    std::string text = path + ": cannot load world (" + std::to_string(errors.size()) + " error" +
+                       (errors.size() == 1 ? "" : "s") + "):";
+    for (const auto& e : errors) {
+      text += "\n  " + e.Message();
+      if (e.FilePath().has_value() && *e.FilePath() != path) text += " [" + *e.FilePath() + "]";
+      if (e.LineNumber().has_value()) text += " (line " + std::to_string(*e.LineNumber()) + ")";
+    }
+    for (const auto& uri : *unresolved) {
+      const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
+      text += "\n  model '" + name + "' not found: expected " + models + "/" + name +
+              "/model.config and model.sdf";
+    }
     throw WorldError(text);
   }
   if (root.WorldCount() != 1) throw WorldError(path + ": expected exactly one <world>");
@@ -205,25 +276,13 @@ WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
   for (uint64_t m = 0; m < world->ModelCount(); ++m) {
     const sdf::Model* model = world->ModelByIndex(m);
     const std::string where = path + ": model '" + model->Name() + "'";
-    const Eigen::Isometry3d model_pose = toEigen(model->RawPose());
-    if (model->ModelCount() > 0) throw WorldError(where + ": nested models are not supported");
+    const Eigen::Isometry3d model_pose = poseOf(*model, where);
     if (model->Static()) {
-      if (!pluginsOf(*model, path).empty()) throw WorldError(where + ": a static model cannot carry drivers");
-      for (uint64_t l = 0; l < model->LinkCount(); ++l) {
-        const sdf::Link* link = model->LinkByIndex(l);
-        const Eigen::Isometry3d link_pose = model_pose * toEigen(link->RawPose());
-        for (uint64_t c = 0; c < link->CollisionCount(); ++c) {
-          const sdf::Collision* collision = link->CollisionByIndex(c);
-          StaticObject o;
-          o.name = model->Name() + "::" + link->Name() + "::" + collision->Name();
-          o.shape = shapeOf(*collision, where + ", collision '" + collision->Name() + "'");
-          o.pose = link_pose * toEigen(collision->RawPose());
-          spec.statics.push_back(o);
-        }
-      }
+      addStatics(*model, model_pose, "", path, spec);
       continue;
     }
     // A robot: one link, one collision, drivers as plugins.
+    if (model->ModelCount() > 0) throw WorldError(where + ": a robot (non-static model) cannot nest models");
     if (model->LinkCount() != 1) {
       throw WorldError(where + ": a robot (non-static model) must have exactly one <link>, it has " +
                        std::to_string(model->LinkCount()));
@@ -235,13 +294,15 @@ WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
     }
     RobotSpec robot;
     robot.name = model->Name();
-    robot.pose = model_pose * toEigen(link->RawPose());
+    robot.pose = model_pose * poseOf(*link, where + ", link '" + link->Name() + "'");
     const sdf::Collision* collision = link->CollisionByIndex(0);
     robot.shape = shapeOf(*collision, where + ", collision '" + collision->Name() + "'");
-    robot.shape_offset = toEigen(collision->RawPose());
+    robot.shape_offset = poseOf(*collision, where + ", collision '" + collision->Name() + "'");
     robot.mass_kg = link->Inertial().MassMatrix().Mass();
     if (!(robot.mass_kg > 0)) throw WorldError(where + ": the link needs an <inertial><mass> > 0");
     robot.plugins = pluginsOf(*model, path);
+    for (auto& p : robot.plugins) p.owner = robot.name;
+    if (spec.findRobot(robot.name) != nullptr) throw WorldError(where + ": duplicate robot name");
     spec.robots.push_back(std::move(robot));
   }
   return spec;

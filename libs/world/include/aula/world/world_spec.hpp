@@ -81,6 +81,11 @@ struct WorldSpec {
 
 // Reads an SDF world with libsdformat. `model://NAME` includes resolve in models_dir
 // (default: the "models" folder beside the world file). Throws WorldError.
+// Static models: every box/cylinder collision becomes a StaticObject (nested models flattened;
+// <plane> collisions, i.e. a Gazebo ground plane, are ignored; any other geometry is an error).
+// Non-static models are robots: one link, one box/cylinder collision, mass > 0, plugins whose
+// filename is a known driver type (pose3d, motors, laser, bumper). Poses are raw SDF poses
+// composed parent * child; `relative_to` is rejected.
 WorldSpec loadWorld(const std::string& path, const std::string& models_dir = "");
 
 // Extracts the yaw of a pose (rotation about world z).

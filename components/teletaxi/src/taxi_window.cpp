@@ -1,0 +1,155 @@
+#include "taxi_window.hpp"
+
+#include <aula/component/widgets/screenshot.hpp>
+
+#include <QApplication>
+#include <QPainter>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace aula::teletaxi {
+namespace {
+QImage toQImage(const cv::Mat& gray) {
+  return QImage(gray.data, gray.cols, gray.rows, static_cast<int>(gray.step), QImage::Format_Grayscale8).copy();
+}
+}  // namespace
+
+TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
+  setWindowTitle("TeleTaxi - Gradient Path Planning");
+  auto* central = new QWidget(this);
+  auto* layout = new QHBoxLayout(central);
+  map_ = new component::MapView(toQImage(component_.grid().getMap()), component_.grid().transform(), central);
+  map_->setMinimumSize(600, 600);
+  layout->addWidget(map_, 1);
+
+  auto* side = new QVBoxLayout;
+  auto* info = new QGroupBox("Taxi", central);
+  auto* info_layout = new QVBoxLayout(info);
+  destination_label_ = new QLabel(info);
+  position_label_ = new QLabel(info);
+  velocity_label_ = new QLabel(info);
+  status_label_ = new QLabel(info);
+  status_label_->setWordWrap(true);
+  for (auto* l : {destination_label_, position_label_, velocity_label_, status_label_}) info_layout->addWidget(l);
+  side->addWidget(info);
+
+  auto* generate = new QPushButton("Generate Path", central);
+  auto* go = new QPushButton("GO!", central);
+  auto* stop = new QPushButton("Stop", central);
+  go->setStyleSheet("background-color: #3c3; font-weight: bold;");
+  stop->setStyleSheet("background-color: #d33; font-weight: bold;");
+  side->addWidget(generate);
+  side->addWidget(go);
+  side->addWidget(stop);
+  auto* teleop = new component::Teleoperator(component_.maxV(), component_.maxW(), central);
+  side->addWidget(teleop);
+  side->addStretch(1);
+  layout->addLayout(side);
+  setCentralWidget(central);
+
+  connect(map_, &component::MapView::worldDoubleClicked, this, [this](double x, double y) {
+    component_.setDestination(x, y);
+    map_->setPath({});
+    path_shown_ = false;
+    status_label_->setText("Destination chosen: press Generate Path");
+  });
+  connect(generate, &QPushButton::clicked, this, [this] {
+    std::string why;
+    status_label_->setText(component_.generatePath(&why) ? "Path generated: press GO!" : QString::fromStdString(why));
+    path_shown_ = false;
+  });
+  connect(go, &QPushButton::clicked, this, [this] {
+    std::string why;
+    status_label_->setText(component_.go(&why) ? "Driving..." : QString::fromStdString(why));
+  });
+  connect(stop, &QPushButton::clicked, this, [this, teleop] {
+    component_.stop();
+    teleop->stop();
+    status_label_->setText("Stopped");
+  });
+  connect(teleop, &component::Teleoperator::velocityChanged, this,
+          [this](double v, double w) { component_.teleoperate(v, w); });
+  component_.grid().setShowGridHandler([this] { showGridField(); });
+  connect(&timer_, &QTimer::timeout, this, &TaxiWindow::refresh);
+  timer_.start(50);
+  refresh();
+}
+
+void TaxiWindow::updatePathOverlay() {
+  const Grid& grid = component_.grid();
+  std::vector<QPointF> cells;
+  // Path cells in the order of the taxi -> destination descent is not stored in the Grid, so
+  // draw the marked cells as points (green), as the original did.
+  for (int y = 0; y < grid.getHeight(); ++y) {
+    for (int x = 0; x < grid.getWidth(); ++x) {
+      if (grid.getPathVal(x, y) != 0.0f) {
+        const auto [wx, wy] = grid.gridToWorld(x, y);
+        cells.emplace_back(wx, wy);
+      }
+    }
+  }
+  map_->setOverlay([this, cells](QPainter& p) {
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(0, 180, 0));
+    const double r = std::max(1.5, map_->pixelsPerMetre() * component_.grid().transform().resolution_m * 0.5);
+    for (const auto& c : cells) p.drawEllipse(map_->worldToWidget(c.x(), c.y()), r, r);
+  });
+  path_shown_ = true;
+}
+
+void TaxiWindow::refresh() {
+  const auto& pose = component_.pose();
+  if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 4.0, 2.0);
+  const auto dest = component_.destination();
+  map_->setMarker(dest ? std::optional<QPointF>(QPointF(dest->first, dest->second)) : std::nullopt);
+  destination_label_->setText(dest ? QString("Destination: (%1, %2) m").arg(dest->first, 0, 'f', 1).arg(dest->second, 0, 'f', 1)
+                                   : QString("Destination: double-click on the map"));
+  position_label_->setText(pose.received() ? QString("Position: (%1, %2) m, %3 deg")
+                                                 .arg(pose.getX(), 0, 'f', 1)
+                                                 .arg(pose.getY(), 0, 'f', 1)
+                                                 .arg(pose.getYaw() * 180 / M_PI, 0, 'f', 0)
+                                           : QString("Position: waiting for the simulator"));
+  velocity_label_->setText(QString("v = %1 m/s   w = %2 rad/s   (sim %3 s)")
+                               .arg(component_.motors().getV(), 0, 'f', 2)
+                               .arg(component_.motors().getW(), 0, 'f', 2)
+                               .arg(component_.simTimeUs() / 1e6, 0, 'f', 1));
+  if (component_.grid().isPathFinded() && !path_shown_) updatePathOverlay();
+  if (!component_.grid().isPathFinded() && path_shown_) {
+    map_->setOverlay(nullptr);
+    path_shown_ = false;
+  }
+}
+
+void TaxiWindow::showGridField() {
+  if (grid_window_ == nullptr) {
+    grid_window_ = new QLabel;
+    grid_window_->setWindowTitle("Grid Field");
+    grid_window_->setAttribute(Qt::WA_DeleteOnClose, false);
+  }
+  const QImage field = toQImage(component_.grid().fieldImage());
+  grid_window_->setPixmap(QPixmap::fromImage(field.scaled(600, 600, Qt::KeepAspectRatio, Qt::FastTransformation)));
+  grid_window_->show();
+}
+
+bool TaxiWindow::screenshotWhenReady(const QString& png_path) {
+  auto* poll = new QTimer(this);
+  auto started = std::make_shared<int>(0);
+  connect(poll, &QTimer::timeout, this, [this, png_path, poll, started] {
+    refresh();
+    const bool ready = component_.pose().received() && (!component_.autostart() || component_.grid().isPathFinded());
+    if (ready || ++*started > 100) {
+      poll->stop();
+      component::saveWidgetPng(*this, png_path);
+      if (grid_window_ != nullptr) component::saveWidgetPng(*grid_window_, QString(png_path).replace(".png", "_grid.png"));
+      QApplication::quit();
+    }
+  });
+  poll->start(100);
+  return true;
+}
+
+}  // namespace aula::teletaxi

@@ -1,0 +1,39 @@
+#pragma once
+// The TeleTaxi window: the city map (double-click picks the destination), Generate Path, GO!,
+// Stop, the taxi and its path, labels, and the teleoperator. Refreshed every 50 ms of wall time;
+// the algorithm runs on sim time in TaxiComponent.
+
+#include <aula/component/widgets/map_view.hpp>
+#include <aula/component/widgets/teleoperator.hpp>
+#include <aula/teletaxi/taxi_component.hpp>
+
+#include <QLabel>
+#include <QMainWindow>
+#include <QTimer>
+
+namespace aula::teletaxi {
+
+class TaxiWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit TaxiWindow(TaxiComponent& component);
+  // Grabs the window to `png_path` once the taxi is on the map, then quits the application.
+  bool screenshotWhenReady(const QString& png_path);
+
+ private:
+  void refresh();
+  void showGridField();
+  void updatePathOverlay();
+
+  TaxiComponent& component_;
+  component::MapView* map_ = nullptr;
+  QLabel* destination_label_ = nullptr;
+  QLabel* position_label_ = nullptr;
+  QLabel* velocity_label_ = nullptr;
+  QLabel* status_label_ = nullptr;
+  QLabel* grid_window_ = nullptr;
+  QTimer timer_;
+  bool path_shown_ = false;
+};
+
+}  // namespace aula::teletaxi

@@ -1,0 +1,79 @@
+#include "taxi_referee_window.hpp"
+
+#include <aula/component/widgets/screenshot.hpp>
+
+#include <QApplication>
+#include <QGridLayout>
+#include <QPushButton>
+
+#include <cmath>
+
+namespace aula::teletaxi {
+
+TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
+  setWindowTitle("TeleTaxi referee");
+  auto* layout = new QGridLayout(this);
+  clock_ = new QLabel(this);
+  clock_->setStyleSheet("font-size: 28px; font-family: monospace;");
+  distances_ = new QLabel(this);
+  mark_ = new QLabel("Mark: -", this);
+  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
+  mark_->setWordWrap(true);
+  speed_ = new component::Gauge("Speed", "km/h", 0, 80, 270, this);
+  speed_->setBands({{0, 50, QColor(90, 190, 90)}, {50, 65, QColor(240, 160, 40)}, {65, 80, QColor(220, 60, 60)}});
+  heading_ = new component::Gauge("Heading", "deg", 0, 360, 360, this);
+  auto* show = new QPushButton("Show me my mark", this);
+  layout->addWidget(new QLabel("Sim time since GO!", this), 0, 0, 1, 2);
+  layout->addWidget(clock_, 1, 0, 1, 2);
+  layout->addWidget(distances_, 2, 0, 1, 2);
+  layout->addWidget(speed_, 3, 0);
+  layout->addWidget(heading_, 3, 1);
+  layout->addWidget(show, 4, 0, 1, 2);
+  layout->addWidget(mark_, 5, 0, 1, 2);
+  connect(show, &QPushButton::clicked, this, &TaxiRefereeWindow::showMark);
+  connect(&timer_, &QTimer::timeout, this, &TaxiRefereeWindow::refresh);
+  timer_.start(50);
+  refresh();
+}
+
+void TaxiRefereeWindow::refresh() {
+  const TaxiReferee& r = node_.referee();
+  const double t = r.elapsedS();
+  clock_->setText(QString("%1:%2").arg(static_cast<int>(t) / 60, 2, 10, QChar('0')).arg(std::fmod(t, 60.0), 4, 'f', 1, QChar('0')));
+  distances_->setText(r.hasGoal() ? QString("Straight line start -> destination: %1 m\nTravelled: %2 m\nTo the destination: %3 m")
+                                        .arg(r.straightDistanceM(), 0, 'f', 1)
+                                        .arg(r.pathLengthM(), 0, 'f', 1)
+                                        .arg(r.distanceToGoalM(), 0, 'f', 1)
+                                  : QString("Waiting for a destination (double-click on the TeleTaxi map)"));
+  speed_->setValue(r.speedMps() * 3.6);
+  double heading_deg = 90.0 - r.yawRad() * 180.0 / M_PI;  // compass: 0 = north (+y), clockwise
+  heading_deg = std::fmod(std::fmod(heading_deg, 360.0) + 360.0, 360.0);
+  heading_->setValue(heading_deg);
+}
+
+void TaxiRefereeWindow::showMark() {
+  const TaxiReferee& r = node_.referee();
+  const TaxiGrade g = r.finished() ? r.grade() : r.provisionalGrade();
+  mark_->setText(QString("Mark: %1 / 10%2\n%3")
+                     .arg(g.mark, 0, 'f', 2)
+                     .arg(r.finished() ? "" : " (so far)")
+                     .arg(QString::fromStdString(g.verdict)));
+}
+
+bool TaxiRefereeWindow::screenshotWhenReady(const QString& png_path) {
+  auto* poll = new QTimer(this);
+  auto ticks = std::make_shared<int>(0);
+  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
+    refresh();
+    if (node_.finished() || ++*ticks > 300) {
+      poll->stop();
+      showMark();
+      component::saveWidgetPng(*this, png_path);
+      QApplication::quit();
+    }
+  });
+  poll->start(100);
+  return true;
+}
+
+}  // namespace aula::teletaxi

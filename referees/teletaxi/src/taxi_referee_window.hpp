@@ -1,0 +1,33 @@
+#pragma once
+// TeleTaxi's referee window: the sim-time clock (from GO! to arrival), straight-line and
+// travelled distance, speedometer (km/h), heading dial, "Show me my mark" and the mark.
+
+#include "taxi_referee_node.hpp"
+
+#include <aula/component/widgets/gauge.hpp>
+
+#include <QLabel>
+#include <QTimer>
+#include <QWidget>
+
+namespace aula::teletaxi {
+
+class TaxiRefereeWindow : public QWidget {
+  Q_OBJECT
+ public:
+  explicit TaxiRefereeWindow(TaxiRefereeNode& node);
+  void showMark();
+  bool screenshotWhenReady(const QString& png_path);
+
+ private:
+  void refresh();
+  TaxiRefereeNode& node_;
+  QLabel* clock_ = nullptr;
+  QLabel* distances_ = nullptr;
+  QLabel* mark_ = nullptr;
+  component::Gauge* speed_ = nullptr;
+  component::Gauge* heading_ = nullptr;
+  QTimer timer_;
+};
+
+}  // namespace aula::teletaxi
