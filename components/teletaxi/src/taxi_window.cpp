@@ -34,6 +34,8 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   velocity_label_ = new QLabel(info);
   status_label_ = new QLabel(info);
   status_label_->setWordWrap(true);
+  velocity_label_->setWordWrap(true);
+  info->setMinimumWidth(330);
   for (auto* l : {destination_label_, position_label_, velocity_label_, status_label_}) info_layout->addWidget(l);
   side->addWidget(info);
 
@@ -113,7 +115,7 @@ void TaxiWindow::refresh() {
                                                  .arg(pose.getY(), 0, 'f', 1)
                                                  .arg(pose.getYaw() * 180 / M_PI, 0, 'f', 0)
                                            : QString("Position: waiting for the simulator"));
-  velocity_label_->setText(QString("v = %1 m/s   w = %2 rad/s   (sim %3 s)")
+  velocity_label_->setText(QString("v = %1 m/s   w = %2 rad/s\nsim time %3 s")
                                .arg(component_.motors().getV(), 0, 'f', 2)
                                .arg(component_.motors().getW(), 0, 'f', 2)
                                .arg(component_.simTimeUs() / 1e6, 0, 'f', 1));
@@ -140,7 +142,9 @@ bool TaxiWindow::screenshotWhenReady(const QString& png_path) {
   auto started = std::make_shared<int>(0);
   connect(poll, &QTimer::timeout, this, [this, png_path, poll, started] {
     refresh();
-    const bool ready = component_.pose().received() && (!component_.autostart() || component_.grid().isPathFinded());
+    // With autostart, wait until the taxi is well on its way, so the picture shows it driving.
+    const bool ready = component_.pose().received() &&
+                       (!component_.autostart() || (component_.grid().isPathFinded() && component_.simTimeUs() > 8'000'000));
     if (ready || ++*started > 100) {
       poll->stop();
       component::saveWidgetPng(*this, png_path);

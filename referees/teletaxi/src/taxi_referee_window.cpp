@@ -30,6 +30,10 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
   layout->addWidget(heading_, 3, 1);
   layout->addWidget(show, 4, 0, 1, 2);
   layout->addWidget(mark_, 5, 0, 1, 2);
+  speed_->setMinimumSize(190, 190);
+  heading_->setMinimumSize(190, 190);
+  mark_->setMinimumHeight(110);
+  resize(460, 640);
   connect(show, &QPushButton::clicked, this, &TaxiRefereeWindow::showMark);
   connect(&timer_, &QTimer::timeout, this, &TaxiRefereeWindow::refresh);
   timer_.start(50);
