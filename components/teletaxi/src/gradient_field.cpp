@@ -16,7 +16,7 @@ GradientField::GradientField(const cv::Mat& map, const FieldParams& params)
   CV_Assert(map.type() == CV_8UC1 && !map.empty());
   cv::Mat distance;  // pixels to the nearest obstacle (Euclidean)
   cv::distanceTransform(map, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  step_cost_.assign(stride_ * (height_ + 2), kUnreached);  // border = blocked sentinel
+  cells_.assign(stride_ * (height_ + 2), CellData{kUnreached, kUnreached});  // border = blocked
   for (int y = 0; y < height_; ++y) {
     const float* d = distance.ptr<float>(y);
     for (int x = 0; x < width_; ++x) {
@@ -26,39 +26,42 @@ GradientField::GradientField(const cv::Mat& map, const FieldParams& params)
         const double span = params.penalty_radius_cells - params.core_radius_cells;
         p = params.penalty_max * (params.penalty_radius_cells - d[x]) / std::max(span, 1e-9);
       }
-      step_cost_[index(x, y)] = static_cast<uint32_t>(std::lround(p * kScale));
+      cells_[index(x, y)].cost = static_cast<uint32_t>(std::lround(p * kScale));
     }
   }
-  field_.assign(step_cost_.size(), kUnreached);
+  max_edge_ = kDiagonal;
+  for (const CellData& c : cells_) {
+    if (c.cost != kUnreached) max_edge_ = std::max(max_edge_, kDiagonal + c.cost);
+  }
 }
 
 bool GradientField::traversable(int x, int y) const {
-  return x >= 0 && y >= 0 && x < width_ && y < height_ && step_cost_[index(x, y)] != kUnreached;
+  return x >= 0 && y >= 0 && x < width_ && y < height_ && cells_[index(x, y)].cost != kUnreached;
 }
 
 float GradientField::penalty(int x, int y) const {
   if (!traversable(x, y)) return std::numeric_limits<float>::infinity();
-  return static_cast<float>(step_cost_[index(x, y)]) / kScale;
+  return static_cast<float>(cells_[index(x, y)].cost) / kScale;
 }
 
 float GradientField::value(int x, int y) const {
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return std::numeric_limits<float>::infinity();
-  const uint32_t v = field_[index(x, y)];
+  if (!traversable(x, y)) return std::numeric_limits<float>::infinity();
+  const uint32_t v = cells_[index(x, y)].field;
   return v == kUnreached ? std::numeric_limits<float>::infinity() : static_cast<float>(v) / kScale;
 }
 
 bool GradientField::compute(Cell goal) {
-  std::fill(field_.begin(), field_.end(), kUnreached);
+  for (CellData& c : cells_) c.field = c.cost == kUnreached ? 0 : kUnreached;
   goal_ = goal;
-  if (!traversable(goal.x, goal.y)) return false;
+  if (!traversable(goal.x, goal.y)) {
+    for (CellData& c : cells_) c.field = kUnreached;
+    return false;
+  }
 
   // Dial's algorithm: a circular array of buckets indexed by cost, wide enough for the
-  // largest single edge (a diagonal step into the most penalised cell).
-  uint32_t max_edge = kDiagonal;
-  for (const uint32_t c : step_cost_) {
-    if (c != kUnreached) max_edge = std::max(max_edge, kDiagonal + c);
-  }
-  const size_t ring = max_edge + 1;
+  // largest single edge (a diagonal step into the most penalised cell). Slots advance by
+  // addition and wrap by one subtraction: a modulo per cost unit was most of the time.
+  const size_t ring = max_edge_ + 1;
   if (buckets_.size() != ring) buckets_.assign(ring, {});
   for (auto& b : buckets_) b.clear();
 
@@ -67,49 +70,53 @@ bool GradientField::compute(Cell goal) {
   const uint32_t steps[8] = {kStraight, kStraight, kStraight, kStraight, kDiagonal, kDiagonal, kDiagonal, kDiagonal};
 
   const uint32_t start = static_cast<uint32_t>(index(goal.x, goal.y));
-  field_[start] = 0;
+  cells_[start].field = 0;
   buckets_[0].push_back(start);
   size_t pending = 1;
-  uint32_t* field = field_.data();
-  const uint32_t* cost = step_cost_.data();
+  CellData* grid = cells_.data();
+  size_t slot = 0;
   for (uint32_t current = 0; pending > 0; ++current) {
-    auto& bucket = buckets_[current % ring];
-    // Entries may be appended to this bucket while it is processed (zero-cost edges cannot
-    // exist, so they never are; iterate by index anyway for safety).
-    for (size_t k = 0; k < bucket.size(); ++k) {
-      const uint32_t cell = bucket[k];
-      --pending;
-      if (field[cell] != current) continue;  // stale entry: a shorter path was found
-      for (int n = 0; n < 8; ++n) {
-        const uint32_t next = static_cast<uint32_t>(cell + offsets[n]);
-        const uint32_t c = cost[next];
-        if (c == kUnreached) continue;
-        const uint32_t candidate = current + steps[n] + c;
-        if (candidate < field[next]) {
-          field[next] = candidate;
-          buckets_[candidate % ring].push_back(next);
-          ++pending;
+    auto& bucket = buckets_[slot];
+    if (!bucket.empty()) {
+      for (size_t k = 0; k < bucket.size(); ++k) {
+        const uint32_t cell = bucket[k];
+        --pending;
+        if (grid[cell].field != current) continue;  // stale entry: a shorter path was found
+        for (int n = 0; n < 8; ++n) {
+          const uint32_t next = static_cast<uint32_t>(cell + offsets[n]);
+          CellData& neighbour = grid[next];
+          const uint32_t delta = steps[n] + neighbour.cost;  // wraps for blocked cells: harmless,
+          const uint32_t candidate = current + delta;        // their field 0 is never beaten
+          if (candidate < neighbour.field) {
+            neighbour.field = candidate;
+            size_t target = slot + delta;
+            if (target >= ring) target -= ring;
+            buckets_[target].push_back(next);
+            ++pending;
+          }
         }
       }
+      bucket.clear();
     }
-    bucket.clear();
+    if (++slot == ring) slot = 0;
   }
   return true;
 }
 
 std::vector<Cell> GradientField::descend(Cell start) const {
   std::vector<Cell> path;
-  if (!traversable(start.x, start.y) || field_[index(start.x, start.y)] == kUnreached) return path;
+  if (!traversable(start.x, start.y) || cells_[index(start.x, start.y)].field == kUnreached) return path;
   Cell c = start;
   path.push_back(c);
   static constexpr int dx[8] = {1, -1, 0, 0, 1, -1, 1, -1};
   static constexpr int dy[8] = {0, 0, 1, -1, 1, 1, -1, -1};
   while (!(c == goal_)) {
-    uint32_t best = field_[index(c.x, c.y)];
+    uint32_t best = cells_[index(c.x, c.y)].field;
     Cell next = c;
     for (int n = 0; n < 8; ++n) {
-      const uint32_t v = field_[index(c.x + dx[n], c.y + dy[n])];
-      if (v < best) {
+      const CellData& d = cells_[index(c.x + dx[n], c.y + dy[n])];
+      const uint32_t v = d.field;
+      if (d.cost != kUnreached && v < best) {
         best = v;
         next = {c.x + dx[n], c.y + dy[n]};
       }

@@ -52,9 +52,15 @@ class GradientField {
 
   int width_ = 0, height_ = 0;
   size_t stride_ = 0;
-  std::vector<uint32_t> step_cost_;   // padded: per-cell penalty in units, kUnreached = blocked
-  std::vector<uint32_t> field_;       // padded
+  // Padded grid, field and cost side by side so one cache line serves both. Blocked cells keep
+  // field = 0 during a computation, so no relaxation ever improves them (no branch needed).
+  struct CellData {
+    uint32_t field;
+    uint32_t cost;  // per-cell penalty in units; kUnreached = blocked
+  };
+  std::vector<CellData> cells_;
   std::vector<std::vector<uint32_t>> buckets_;
+  uint32_t max_edge_ = 0;  // largest single-step cost, sizes the bucket ring
   Cell goal_{-1, -1};
 };
 
