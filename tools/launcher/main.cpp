@@ -7,6 +7,7 @@
 #include <aula/process/child_process.hpp>
 
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -62,7 +63,7 @@ int main(int argc, char** argv) {
     return 2;
   };
   try {
-    const auto cl = config::CommandLine::parse(argc, argv, {});
+    auto cl = config::CommandLine::parse(argc, argv, {});
     cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url", "help"});
     if (cl.flag("help")) return usage(), 0;
     if (cl.positional.size() != 2 || cl.positional[0] != "run") return usage();
@@ -72,6 +73,13 @@ int main(int argc, char** argv) {
       return usage();
     }
     const Exercise& ex = it->second;
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    const bool no_display = (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
+    if (!cl.flag("headless") && no_display) {
+      std::cerr << "aula: no display (DISPLAY is not set): running headless; the mark is printed at the end\n";
+      cl.options["headless"] = "";
+    }
     const std::string bin = binDir(argv[0]);
     const std::string source = AULA_SOURCE_DIR;
 
