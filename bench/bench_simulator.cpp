@@ -2,6 +2,7 @@
 // worlds, on the in-process memq:// bus, and the lockstep round trip over real UDP LCM.
 #include <aula/lcm/bus.hpp>
 #include <aula/lockstep_ack_t.hpp>
+#include <aula/physics/physics_world.hpp>
 #include <aula/sim/simulator.hpp>
 #include <aula/sim_clock_t.hpp>
 #include <aula/world/world_spec.hpp>
@@ -42,6 +43,21 @@ void BM_AutoparkStreet(benchmark::State& state) { simulateWorld(state, "autopark
 BENCHMARK(BM_CityIdleTaxi)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_VacuumHouse)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_AutoparkStreet)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+// One DART physics step alone (no drivers, no bus), the first robot driving a slow circle.
+void physicsStep(benchmark::State& state, const std::string& world_file) {
+  const auto spec = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world_file);
+  aula::physics::PhysicsWorld physics(spec, 0.005);
+  physics.commandVelocity(0, 0.3, 0.5, 0.0);
+  for (auto _ : state) physics.step();
+  state.counters["near_statics"] = physics.nearStaticCount();
+}
+void BM_PhysicsStepCity(benchmark::State& state) { physicsStep(state, "cityLarge.world"); }
+void BM_PhysicsStepHouse(benchmark::State& state) { physicsStep(state, "vacuum.world"); }
+void BM_PhysicsStepStreet(benchmark::State& state) { physicsStep(state, "autopark.world"); }
+BENCHMARK(BM_PhysicsStepCity)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PhysicsStepHouse)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PhysicsStepStreet)->Unit(benchmark::kMicrosecond);
 
 // One lockstep handshake over UDP multicast: the simulator side publishes a tick, a client
 // thread (its own LCM instance, as a separate process would have) acks it.

@@ -53,6 +53,7 @@ TEST_P(TeleTaxiReference, ReachesTheDestinationWithAMarkOfAtLeastNine) {
   EXPECT_NE(json.find("\"reached\": true"), std::string::npos) << json;
   EXPECT_GE(numberOf(json, "mark"), 9.0) << json;
   EXPECT_LE(numberOf(json, "final_distance_m"), 2.0) << json;
+  EXPECT_EQ(numberOf(json, "bumps"), 0.0) << "the taxi touched a wall\n" << json;
   EXPECT_NE(json.find("\"exercise\": \"teletaxi\""), std::string::npos);
   EXPECT_NE(json.find("\"algorithm\": \"reference\""), std::string::npos);
   EXPECT_NE(json.find("\"world\": \"cityLarge\""), std::string::npos);

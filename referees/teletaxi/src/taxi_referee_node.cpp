@@ -20,6 +20,7 @@ TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg)
     : referee_(taxiRefereeSettings(cfg)) {
   bus.subscribe(cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"), &TaxiRefereeNode::onPose, this);
   bus.subscribe(cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE"), &TaxiRefereeNode::onEpisode, this);
+  bus.subscribe(cfg.getString("TeleTaxi.Bumper.Channel", "TAXI_BUMPER"), &TaxiRefereeNode::onBumper, this);
   const double period_s = cfg.getDouble("TeleTaxi.Referee.Period", 0.1);
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
@@ -34,6 +35,12 @@ void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, c
   algorithm_ = msg->algorithm;
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
+}
+
+void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  const bool pressed = msg->state == aula::bumper_t::PRESSED;
+  if (pressed && !pressed_ && referee_.started() && !referee_.finished()) ++bumps_;
+  pressed_ = pressed;
 }
 
 void TaxiRefereeNode::onTick(int64_t utime) {
@@ -63,6 +70,7 @@ aula::referee::Report TaxiRefereeNode::report() const {
   r.set("average_speed_mps", g.average_speed_mps);
   r.set("base_mark", g.base_mark);
   r.set("speed_mark", g.speed_mark);
+  r.set("bumps", bumps_);
   r.set("destination_m", std::vector<double>{referee_.goalX(), referee_.goalY()});
   r.set("verdict", g.verdict);
   return r;
@@ -75,10 +83,10 @@ std::string TaxiRefereeNode::summary() const {
                 "TeleTaxi mark: %.2f / 10\n"
                 "  %s\n"
                 "  base %.1f (distance %.2f m) + 0.2 x speed mark %.2f (%.2f m/s = %.1f km/h over %.1f m in %.1f s sim)\n"
-                "  straight distance start -> destination: %.1f m\n",
+                "  straight distance start -> destination: %.1f m; bumps against walls: %lld\n",
                 g.mark, g.verdict.c_str(), g.base_mark, referee_.distanceToGoalM(), g.speed_mark,
                 g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
-                referee_.elapsedS(), referee_.straightDistanceM());
+                referee_.elapsedS(), referee_.straightDistanceM(), bumps_);
   return text;
 }
 

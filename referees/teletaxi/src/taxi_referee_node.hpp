@@ -3,6 +3,7 @@
 // feed the TaxiReferee; at the end it builds the report.
 
 #include <aula/config/config.hpp>
+#include <aula/bumper_t.hpp>
 #include <aula/episode_t.hpp>
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/pose3d_t.hpp>
@@ -28,18 +29,22 @@ class TaxiRefereeNode {
   void poll() { clock_->poll(); }
   void leave() { clock_->leave(); }
   int64_t simTimeUs() const { return clock_->simTimeUs(); }
+  long long bumps() const { return bumps_; }
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
+  void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
 
   TaxiReferee referee_;
   std::string algorithm_ = "unknown";
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   bool announced_ = false;
+  long long bumps_ = 0;       // contacts with walls (or anything) after GO!, counted on press
+  bool pressed_ = false;
 };
 
 TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg);

@@ -7,7 +7,8 @@
 // Speed: Bullet updates the bounding box of every collision object and walks every touching
 // static-static pair at each step, so a city of 135 touching buildings cost ~50 us per step.
 // Only the static primitives near some robot are therefore given to the collision detector
-// (the "near set", rebuilt when a robot has moved kNearRefresh_m since the last rebuild; it
+// (the "near set", rebuilt when a robot has moved kNearRefresh_m since the last rebuild -- checked
+// at every sub-step, so at most 1 cm further -- it
 // holds everything within kNearMargin_m of each robot's footprint, so nothing a robot can
 // touch before the next rebuild is ever missing). All statics stay in the world as visuals.
 
@@ -67,8 +68,8 @@ class PhysicsWorld {
   // How many static primitives the collision detector currently sees (for tests/benchmarks).
   int nearStaticCount() const { return static_cast<int>(near_set_.size()); }
 
-  static constexpr double kNearMargin_m = 2.0;
-  static constexpr double kNearRefresh_m = 0.5;
+  static constexpr double kNearMargin_m = 0.5;
+  static constexpr double kNearRefresh_m = 0.2;
 
  private:
   struct Robot;
