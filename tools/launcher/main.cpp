@@ -33,6 +33,8 @@ std::map<std::string, Exercise> exercises() {
                 "the roomba bouncing around the house (no referee)"}},
       {"teletaxi", {"worlds/cityLarge.world", "config/teleTaxi.cfg", "TeleTaxi", "teletaxi", "teletaxi-referee",
                     "global navigation with Gradient Path Planning"}},
+      {"vacuum", {"worlds/vacuum.world", "config/vacuumCleaner.cfg", "Vacuum", "vacuum-cleaner",
+                  "vacuum-cleaner-referee", "clean the house without localization"}},
   };
 }
 

@@ -1,0 +1,43 @@
+#pragma once
+// What the vacuum cleaner student writes: execute(), every control period of simulated time.
+// There is no localization in this exercise: the API gives the yaw, the laser, the bumper and
+// the motors, and nothing that tells where the robot is.
+
+#include <aula/component/proxies.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace aula::vacuum {
+
+// The only part of the pose the student gets.
+class YawSensor {
+ public:
+  explicit YawSensor(const component::Pose3dProxy& pose) : pose_(pose) {}
+  double getYaw() const { return pose_.getYaw(); }  // radians, CCW
+
+ private:
+  const component::Pose3dProxy& pose_;
+};
+
+struct VacuumApi {
+  YawSensor& pose3d;               // getYaw()
+  component::LaserProxy& laser;    // getLaserData(): 180 beams over -90..90 degrees, m and mm
+  component::BumperProxy& bumper;  // getBumperData().state == 1 when pressed
+  component::MotorsProxy& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
+  double period_s;                 // the control period (sim seconds between execute() calls)
+};
+
+class VacuumAlgorithm {
+ public:
+  virtual ~VacuumAlgorithm() = default;
+  virtual void execute(VacuumApi& api) = 0;
+};
+
+// seed: the run's seed (aula run --seed), for algorithms that draw random turns.
+std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed);
+std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);   // spiral, wall, bounce
+std::unique_ptr<VacuumAlgorithm> makeRandomBounceAlgorithm(uint64_t seed);  // the baseline
+
+}  // namespace aula::vacuum

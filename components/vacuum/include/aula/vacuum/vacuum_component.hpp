@@ -1,0 +1,60 @@
+#pragma once
+// The vacuum cleaner academic component without its window: proxies, the student's algorithm
+// on sim time, the episode messages for the referee. The true pose is read only for the GUI
+// (robot glyph and cleaned area); the algorithm never sees it.
+
+#include <aula/component/control_loop.hpp>
+#include <aula/component/proxies.hpp>
+#include <aula/config/config.hpp>
+#include <aula/vacuum/vacuum_algorithm.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace aula::vacuum {
+
+class VacuumComponent {
+ public:
+  VacuumComponent(lcm::LCM& bus, const config::Config& cfg);
+
+  void setRunning(bool running);  // "Run my algorithm" toggle
+  bool running() const { return loop_->running(); }
+  void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  void poll() { loop_->poll(); }
+  void leave() { loop_->leave(); }
+
+  const component::Pose3dProxy& truePose() const { return *pose_; }  // GUI only
+  const component::LaserProxy& laser() const { return *laser_; }
+  const component::MotorsProxy& motors() const { return *motors_; }
+  int64_t simTimeUs() const { return loop_->simTimeUs(); }
+  const std::string& algorithmName() const { return algorithm_name_; }
+  double maxV() const { return motors_->maxV(); }
+  double maxW() const { return motors_->maxW(); }
+  std::string mapYaml() const { return map_yaml_; }
+  void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+
+ private:
+  void tick(int64_t utime);
+  void step();
+
+  lcm::LCM& bus_;
+  std::string algorithm_name_, episode_channel_, map_yaml_;
+  double period_s_;
+  bool autostart_ = false;
+  std::unique_ptr<component::Pose3dProxy> pose_;
+  std::unique_ptr<component::LaserProxy> laser_;
+  std::unique_ptr<component::BumperProxy> bumper_;
+  std::unique_ptr<component::MotorsProxy> motors_;
+  std::unique_ptr<YawSensor> yaw_;
+  std::unique_ptr<VacuumApi> api_;
+  std::unique_ptr<VacuumAlgorithm> algorithm_;  // created at the first tick, with the run's seed
+  std::unique_ptr<component::ControlLoop> loop_;
+  int64_t last_episode_utime_ = -1'000'000'000;
+  bool episode_dirty_ = true;
+  std::function<void(int64_t)> on_tick_;
+};
+
+}  // namespace aula::vacuum

@@ -1,0 +1,85 @@
+#include "vacuum_window.hpp"
+
+#include <aula/component/widgets/screenshot.hpp>
+#include <aula/world/map_transform.hpp>
+
+#include <QApplication>
+#include <QHBoxLayout>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace aula::vacuum {
+
+VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
+  setWindowTitle("Vacuum cleaner");
+  std::string image;
+  const auto yaml = std::string(AULA_MAPS_DIR) + "/" + component_.mapYaml();
+  const world::MapTransform transform = world::MapTransform::load(yaml, &image);
+  QImage map(QString::fromStdString(image));
+  if (map.isNull()) throw std::runtime_error(image + ": cannot read the map image");
+  auto* central = new QWidget(this);
+  auto* layout = new QHBoxLayout(central);
+  map_ = new component::MapView(map.convertToFormat(QImage::Format_Grayscale8), transform, central);
+  map_->setMinimumSize(560, 560);
+  layout->addWidget(map_, 1);
+  auto* side = new QVBoxLayout;
+  run_ = new QPushButton(central);
+  run_->setMinimumHeight(40);
+  status_ = new QLabel(central);
+  status_->setWordWrap(true);
+  status_->setMinimumWidth(260);
+  auto* teleop = new component::Teleoperator(component_.maxV(), component_.maxW(), central);
+  side->addWidget(run_);
+  side->addWidget(status_);
+  side->addWidget(teleop);
+  side->addStretch(1);
+  layout->addLayout(side);
+  setCentralWidget(central);
+  connect(run_, &QPushButton::clicked, this, [this] {
+    component_.setRunning(!component_.running());
+    showRunState();
+  });
+  connect(teleop, &component::Teleoperator::velocityChanged, this,
+          [this](double v, double w) { component_.teleoperate(v, w); });
+  connect(&timer_, &QTimer::timeout, this, &VacuumWindow::refresh);
+  timer_.start(50);
+  showRunState();
+  refresh();
+}
+
+void VacuumWindow::showRunState() {
+  const bool on = component_.running();
+  run_->setText(on ? "Stop my algorithm" : "Run my algorithm");
+  run_->setStyleSheet(on ? "background-color: #3c3; font-weight: bold;" : "background-color: #d33; color: white; font-weight: bold;");
+}
+
+void VacuumWindow::refresh() {
+  const auto& pose = component_.truePose();
+  if (pose.received() && pose.utime() != last_pose_utime_) {
+    last_pose_utime_ = pose.utime();
+    map_->paintDisc(pose.getX(), pose.getY(), 0.165, QColor(80, 170, 255, 200));
+    map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 0.33, 0.33);
+  }
+  showRunState();
+  status_->setText(QString("Algorithm: %1\nsim time %2 s\nv = %3 m/s   w = %4 rad/s")
+                       .arg(QString::fromStdString(component_.algorithmName()))
+                       .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
+                       .arg(component_.motors().getV(), 0, 'f', 2)
+                       .arg(component_.motors().getW(), 0, 'f', 2));
+}
+
+void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
+  auto* poll = new QTimer(this);
+  connect(poll, &QTimer::timeout, this, [this, png_path, poll, sim_us] {
+    if (component_.simTimeUs() < sim_us) return;
+    poll->stop();
+    refresh();
+    component::saveWidgetPng(*this, png_path);
+    QApplication::quit();
+  });
+  poll->start(20);
+}
+
+}  // namespace aula::vacuum

@@ -1,0 +1,36 @@
+#pragma once
+// The vacuum cleaner window: the house map with the robot and the area it has cleaned (its
+// real 0.33 m disc footprint, from the true pose: shown to the student, never given to the
+// algorithm), the "Run my algorithm" toggle, the teleoperator and Stop.
+
+#include <aula/component/widgets/map_view.hpp>
+#include <aula/component/widgets/teleoperator.hpp>
+#include <aula/vacuum/vacuum_component.hpp>
+
+#include <QLabel>
+#include <QMainWindow>
+#include <QPushButton>
+#include <QTimer>
+
+namespace aula::vacuum {
+
+class VacuumWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit VacuumWindow(VacuumComponent& component);
+  // Grabs the window to png_path once sim time reaches sim_us, then quits.
+  void screenshotAfter(const QString& png_path, int64_t sim_us);
+
+ private:
+  void refresh();
+  void showRunState();
+
+  VacuumComponent& component_;
+  component::MapView* map_ = nullptr;
+  QPushButton* run_ = nullptr;
+  QLabel* status_ = nullptr;
+  QTimer timer_;
+  int64_t last_pose_utime_ = -1;
+};
+
+}  // namespace aula::vacuum

@@ -1,0 +1,58 @@
+#pragma once
+// The vacuum cleaner's referee logic on simulated time: coverage of the floor by the robot's
+// true disc footprint, its gain per 100 s, bumps and time stuck; the mark at the end.
+//   mark = min(10, 10 * coverage / full_mark_coverage)   (the original bar: 30 %)
+
+#include <aula/vacuum/coverage_grid.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace aula::vacuum {
+
+struct CoverageSettings {
+  double duration_s = 900.0;
+  double full_mark_coverage_percent = 30.0;
+  double robot_radius_m = 0.165;
+  double stuck_window_s = 2.0;     // stuck = moved less than stuck_distance_m over this window
+  double stuck_distance_m = 0.05;
+};
+
+double coverageMark(double coverage_percent, double full_mark_coverage_percent);
+
+class CoverageReferee {
+ public:
+  CoverageReferee(CoverageGrid grid, CoverageSettings settings);
+
+  void onPose(int64_t utime, double x_m, double y_m);
+  void onBump(int64_t utime, bool pressed);
+  void onTick(int64_t utime);
+
+  bool finished() const { return finished_; }
+  double elapsedS() const { return (end_utime_ >= 0 ? end_utime_ : now_utime_) / 1e6; }
+  double remainingS() const { return std::max(0.0, settings_.duration_s - elapsedS()); }
+  double coveragePercent() const { return grid_.coveragePercent(); }
+  double mark() const { return coverageMark(coveragePercent(), settings_.full_mark_coverage_percent); }
+  const std::vector<double>& coveragePer100s() const { return per_100s_; }  // gain in each 100 s
+  long long bumps() const { return bumps_; }
+  double stuckS() const { return stuck_s_; }
+  const CoverageGrid& grid() const { return grid_; }
+  const CoverageSettings& settings() const { return settings_; }
+
+ private:
+  CoverageGrid grid_;
+  CoverageSettings settings_;
+  bool finished_ = false;
+  int64_t now_utime_ = 0;
+  int64_t end_utime_ = -1;
+  bool pressed_ = false;
+  long long bumps_ = 0;
+  double stuck_s_ = 0;
+  std::vector<double> per_100s_;
+  double coverage_at_last_boundary_ = 0;
+  // Stuck detection: the pose one window ago.
+  int64_t window_start_utime_ = -1;
+  double window_x_ = 0, window_y_ = 0;
+};
+
+}  // namespace aula::vacuum

@@ -1,0 +1,55 @@
+#include "aula/vacuum/coverage_referee.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aula::vacuum {
+
+double coverageMark(double coverage_percent, double full_mark_coverage_percent) {
+  if (!(full_mark_coverage_percent > 0) || !std::isfinite(coverage_percent)) return 0.0;
+  return std::clamp(10.0 * coverage_percent / full_mark_coverage_percent, 0.0, 10.0);
+}
+
+CoverageReferee::CoverageReferee(CoverageGrid grid, CoverageSettings settings)
+    : grid_(std::move(grid)), settings_(settings) {}
+
+void CoverageReferee::onPose(int64_t utime, double x_m, double y_m) {
+  if (finished_ || utime > static_cast<int64_t>(std::llround(settings_.duration_s * 1e6))) return;
+  grid_.markDisc(x_m, y_m, settings_.robot_radius_m);
+  const int64_t window_us = static_cast<int64_t>(settings_.stuck_window_s * 1e6);
+  if (window_start_utime_ < 0) {
+    window_start_utime_ = utime;
+    window_x_ = x_m;
+    window_y_ = y_m;
+  } else if (utime - window_start_utime_ >= window_us) {
+    if (std::hypot(x_m - window_x_, y_m - window_y_) < settings_.stuck_distance_m) {
+      stuck_s_ += (utime - window_start_utime_) / 1e6;
+    }
+    window_start_utime_ = utime;
+    window_x_ = x_m;
+    window_y_ = y_m;
+  }
+}
+
+void CoverageReferee::onBump(int64_t, bool pressed) {
+  if (finished_) return;
+  if (pressed && !pressed_) ++bumps_;
+  pressed_ = pressed;
+}
+
+void CoverageReferee::onTick(int64_t utime) {
+  if (finished_) return;
+  now_utime_ = utime;
+  // Coverage gain in each finished 100 s slice.
+  while (utime >= static_cast<int64_t>(per_100s_.size() + 1) * 100'000'000 &&
+         static_cast<double>(per_100s_.size() + 1) * 100.0 <= settings_.duration_s + 1e-9) {
+    per_100s_.push_back(grid_.coveragePercent() - coverage_at_last_boundary_);
+    coverage_at_last_boundary_ = grid_.coveragePercent();
+  }
+  if (utime >= static_cast<int64_t>(std::llround(settings_.duration_s * 1e6))) {
+    finished_ = true;
+    end_utime_ = static_cast<int64_t>(std::llround(settings_.duration_s * 1e6));
+  }
+}
+
+}  // namespace aula::vacuum

@@ -1,0 +1,45 @@
+#pragma once
+// The vacuum referee's LCM side: true pose and bumper feed the CoverageReferee; the clock ends
+// the run at 900 s of sim time; the report is built at the end.
+
+#include <aula/bumper_t.hpp>
+#include <aula/config/config.hpp>
+#include <aula/episode_t.hpp>
+#include <aula/lcm/lockstep_client.hpp>
+#include <aula/pose3d_t.hpp>
+#include <aula/referee/report.hpp>
+#include <aula/vacuum/coverage_referee.hpp>
+
+#include <functional>
+#include <memory>
+
+namespace aula::vacuum {
+
+class CoverageRefereeNode {
+ public:
+  CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+  const CoverageReferee& referee() const { return *referee_; }
+  bool finished() const { return referee_->finished(); }
+  referee::Report report() const;
+  std::string summary() const;
+  void poll() { clock_->poll(); }
+  void leave() { clock_->leave(); }
+  void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+  // Called for every pose (GUI painting).
+  void setOnPose(std::function<void(double, double, double)> hook) { on_pose_ = std::move(hook); }
+  std::string mapYaml() const { return map_yaml_; }
+
+ private:
+  void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
+  void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
+  void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
+
+  std::unique_ptr<CoverageReferee> referee_;
+  std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::string algorithm_ = "unknown", map_yaml_;
+  std::function<void()> on_finished_;
+  std::function<void(double, double, double)> on_pose_;
+  bool announced_ = false;
+};
+
+}  // namespace aula::vacuum

@@ -1,0 +1,84 @@
+#include "coverage_referee_window.hpp"
+
+#include <aula/component/widgets/screenshot.hpp>
+
+#include <aula/world/map_transform.hpp>
+
+#include <QApplication>
+#include <QGridLayout>
+#include <QPushButton>
+
+#include <cmath>
+
+namespace aula::vacuum {
+
+CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(node) {
+  setWindowTitle("Vacuum cleaner referee");
+  std::string image;
+  const auto t = world::MapTransform::load(std::string(AULA_MAPS_DIR) + "/" + node_.mapYaml(), &image);
+  map_ = new component::MapView(QImage(QString::fromStdString(image)).convertToFormat(QImage::Format_Grayscale8), t, this);
+  map_->setMinimumSize(480, 480);
+  // The cleaned area, painted from the same true poses the referee counts.
+  node_.setOnPose([this](double x, double y, double yaw) {
+    map_->paintDisc(x, y, node_.referee().settings().robot_radius_m, QColor(80, 170, 255, 200));
+    map_->setRobot(x, y, yaw, 0.33, 0.33);
+  });
+  auto* layout = new QGridLayout(this);
+  percent_ = new QLabel(this);
+  percent_->setStyleSheet("font-size: 26px; font-weight: bold;");
+  bar_ = new QProgressBar(this);
+  bar_->setRange(0, 1000);
+  bar_->setFormat("%p% of the full mark");
+  countdown_ = new QLabel(this);
+  countdown_->setStyleSheet("font-size: 22px; font-family: monospace;");
+  clock_ = new component::Gauge("sim time", "s", 0, 60, 360, this);
+  clock_->setMinimumSize(170, 170);
+  mark_ = new QLabel("Mark: -", this);
+  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
+  auto* show = new QPushButton("Show me my mark", this);
+  layout->addWidget(percent_, 0, 0);
+  layout->addWidget(countdown_, 0, 1);
+  layout->addWidget(bar_, 1, 0, 1, 2);
+  layout->addWidget(map_, 2, 0);
+  layout->addWidget(clock_, 2, 1, Qt::AlignTop);
+  layout->addWidget(show, 3, 0, 1, 2);
+  layout->addWidget(mark_, 4, 0, 1, 2);
+  resize(820, 760);
+  connect(show, &QPushButton::clicked, this, &CoverageRefereeWindow::showMark);
+  connect(&timer_, &QTimer::timeout, this, &CoverageRefereeWindow::refresh);
+  timer_.start(50);
+  refresh();
+}
+
+void CoverageRefereeWindow::refresh() {
+  const CoverageReferee& r = node_.referee();
+  percent_->setText(QString("%1 % cleaned").arg(r.coveragePercent(), 0, 'f', 2));
+  bar_->setValue(static_cast<int>(std::min(1000.0, 1000.0 * r.coveragePercent() / r.settings().full_mark_coverage_percent)));
+  const double left = r.remainingS();
+  countdown_->setText(QString("%1:%2 left").arg(static_cast<int>(left) / 60, 2, 10, QChar('0')).arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
+  clock_->setValue(std::fmod(r.elapsedS(), 60.0));
+}
+
+void CoverageRefereeWindow::showMark() {
+  const CoverageReferee& r = node_.referee();
+  mark_->setText(QString("Mark: %1 / 10%2   (coverage %3 %, bumps %4)")
+                     .arg(r.mark(), 0, 'f', 2)
+                     .arg(r.finished() ? "" : " so far")
+                     .arg(r.coveragePercent(), 0, 'f', 1)
+                     .arg(r.bumps()));
+}
+
+void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {
+  auto* poll = new QTimer(this);
+  connect(poll, &QTimer::timeout, this, [this, png_path, poll] {
+    if (!node_.finished()) return;
+    poll->stop();
+    refresh();
+    showMark();
+    component::saveWidgetPng(*this, png_path);
+    QApplication::quit();
+  });
+  poll->start(50);
+}
+
+}  // namespace aula::vacuum

@@ -1,0 +1,36 @@
+#pragma once
+// The vacuum referee window: coverage percentage (label and bar), the house map with the
+// cleaned area, a 900 s sim-time countdown with an analogue clock, and the mark at the end.
+
+#include "coverage_referee_node.hpp"
+
+#include <aula/component/widgets/gauge.hpp>
+#include <aula/component/widgets/map_view.hpp>
+
+#include <QLabel>
+#include <QProgressBar>
+#include <QTimer>
+#include <QWidget>
+
+namespace aula::vacuum {
+
+class CoverageRefereeWindow : public QWidget {
+  Q_OBJECT
+ public:
+  explicit CoverageRefereeWindow(CoverageRefereeNode& node);
+  void showMark();
+  void screenshotWhenFinished(const QString& png_path);
+
+ private:
+  void refresh();
+  CoverageRefereeNode& node_;
+  component::MapView* map_ = nullptr;
+  QLabel* percent_ = nullptr;
+  QProgressBar* bar_ = nullptr;
+  QLabel* countdown_ = nullptr;
+  component::Gauge* clock_ = nullptr;
+  QLabel* mark_ = nullptr;
+  QTimer timer_;
+};
+
+}  // namespace aula::vacuum
