@@ -15,7 +15,7 @@ packages=(
   libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
-  iproute2 procps python3
+  iproute2 procps python3 bc
 )
 
 missing=()

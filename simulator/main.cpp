@@ -56,8 +56,17 @@ int main(int argc, char** argv) {
     if (cl.flag("duration")) cfg.set("Simulator.Duration", cl.option("duration"), "command line --duration");
     cl.applyOverrides(cfg);
 
-    const auto options = sim::SimulatorOptions::fromConfig(cfg);
+    auto options = sim::SimulatorOptions::fromConfig(cfg);  // validates every key first
     world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+    // Like Gazebo, a world's <physics><max_step_size> chooses its step; the .cfg gives the
+    // default for worlds that do not say, and the command line overrides both.
+    const bool step_on_command_line = cfg.origin("Simulator.PhysicsStep").rfind("command line", 0) == 0;
+    if (spec.physics_step_s > 0 && !step_on_command_line) {
+      if (!(spec.physics_step_s >= 1e-4 && spec.physics_step_s <= 0.05)) {
+        throw world::WorldError(spec.source_path + ": <max_step_size> must be in [0.0001, 0.05] s");
+      }
+      options.step_s = spec.physics_step_s;
+    }
     auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
     sim::SignalWatcher signals;
     sim::Simulator simulator(std::move(spec), options, *bus);

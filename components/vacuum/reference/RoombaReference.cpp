@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace aula::vacuum {
 namespace {
@@ -26,69 +28,84 @@ class RoombaReference : public VacuumAlgorithm {
     const auto& laser = api.laser.getLaserData();
     if (laser.numLaser == 0) return;  // no scan yet
     const double front = sectorMin(laser, -0.45, 0.45);
-    const double front_wide = sectorMin(laser, -0.9, 0.9);
-    const double right = sectorMin(laser, -1.58, -1.2);
+    const double front_wide = sectorMin(laser, -1.0, 1.0);
+    const double right = sectorMin(laser, -1.58, -1.25);
     const double yaw = api.pose3d.getYaw();
     const bool bumped = api.bumper.getBumperData().state == 1;
 
-    if (bumped && mode_ != Mode::Backoff) {
-      bumps_recent_ = t_ - last_bump_t_ < 4.0 ? bumps_recent_ + 1 : 1;
+    // A bump ends a forward move. While backing off or turning (a disc can always turn on the
+    // spot) a held bumper is ignored, or a robot wedged in a nook would back off forever.
+    const bool moving_forward = mode_ == Mode::Cross || mode_ == Mode::Wall || mode_ == Mode::Spiral;
+    if (bumped && moving_forward && (!was_bumped_ || t_ - mode_start_ > 0.3)) {
+      bumps_recent_ = t_ - last_bump_t_ < 5.0 ? bumps_recent_ + 1 : 1;
       last_bump_t_ = t_;
       enter(Mode::Backoff);
     }
+    was_bumped_ = bumped;
     double v = 0, w = 0;
     switch (mode_) {
       case Mode::Spiral: {
-        spiral_radius_ += 0.012 * dt / std::max(spiral_radius_, 0.1);  // constant spacing
+        spiral_radius_ += 0.05 * dt / std::max(spiral_radius_, 0.1);  // rings ~0.3 m apart
         v = max_v_;
         w = v / spiral_radius_;
-        if (front < 0.35 || front_wide < 0.22) startTurn(yaw, after_spiral_);
+        if (front < 0.3 || front_wide < 0.2 || t_ - mode_start_ > 40.0) chooseHeading(laser, yaw, false);
         break;
       }
       case Mode::Cross: {
-        v = front < 0.6 ? 0.25 : max_v_;
+        v = front < 0.5 ? 0.3 : max_v_;
+        if (t_ - mode_start_ > 1.0) quick_fails_ = 0;  // a real run: not boxed in
         if (front < 0.22 || front_wide < 0.17) {
-          ++runs_;
-          // A long free run means open space: spiral there sometimes.
-          const bool open = t_ - mode_start_ > 6.0 && sectorMin(laser, -1.57, 1.57) > 0.5;
-          startTurn(yaw, open && runs_ % 3 == 0 ? Mode::Spiral : Mode::Cross);
-        } else if (t_ - wall_end_t_ > 110.0) {
-          startTurn(yaw, Mode::Wall, 0.0);
+          // Blocked again right after turning, several times: boxed in without touching
+          // anything. Back out and turn round.
+          if (t_ - mode_start_ < 0.5 && ++quick_fails_ >= 3) {
+            quick_fails_ = 0;
+            bumps_recent_ = 3;
+            enter(Mode::Backoff);
+          } else {
+            chooseHeading(laser, yaw, false);
+          }
+        } else if (t_ - wall_end_t_ > wall_every_s_ && right < 0.5) {
+          enter(Mode::Wall);  // a wall on the right: follow it for a while
         }
         break;
       }
       case Mode::Wall: {
-        if (front < 0.3) {
+        if (front < 0.3 || front_wide < 0.18) {
           v = 0.0;
-          w = 1.6;  // corner ahead: turn left on the spot
-        } else if (right > 0.6) {
-          v = 0.25;
-          w = -1.2;  // lost the wall: curve right to find it
+          w = 1.8;  // corner ahead: turn left on the spot
+        } else if (right > 0.7) {
+          v = 0.3;
+          w = -1.3;  // lost the wall: curve right to find it
         } else {
-          v = 0.4;
-          w = std::clamp(-6.0 * (right - 0.26), -1.5, 1.5);
+          v = 0.45;
+          w = std::clamp(-5.0 * (right - 0.24), -1.5, 1.5);
         }
         if (t_ - mode_start_ > wall_time_s_) {
           wall_end_t_ = t_;
-          startTurn(yaw, Mode::Cross);
+          chooseHeading(laser, yaw, false);
         }
         break;
       }
       case Mode::Backoff: {
         v = -0.15;
-        if (t_ - mode_start_ > 0.35) {
-          const Mode next = first_contact_ ? Mode::Wall : Mode::Cross;
-          first_contact_ = false;
-          startTurn(yaw, next, bumps_recent_ >= 3 ? 1.0 : 0.0);
-        }
+        if (t_ - mode_start_ > (bumps_recent_ >= 3 ? 0.8 : 0.3)) chooseHeading(laser, yaw, bumps_recent_ >= 3);
         break;
       }
       case Mode::Turn: {
         const double error = wrap(turn_target_ - yaw);
-        w = std::copysign(std::min(2.5, 0.4 + 3.0 * std::abs(error)), error);
-        if (std::abs(error) < 0.08 || t_ - mode_start_ > 4.0) enter(turn_next_);
+        w = std::copysign(std::min(2.8, 0.5 + 3.0 * std::abs(error)), error);
+        if (std::abs(error) < 0.1 || t_ - mode_start_ > 3.0) enter(turn_next_);
         break;
       }
+    }
+    // Spinning on the spot for long (a corner the wall follower cannot leave, a nook where every
+    // turn faces an obstacle): back out and turn round.
+    spin_s_ = std::abs(v) < 0.05 ? spin_s_ + dt : 0.0;
+    if (spin_s_ > 4.0) {
+      spin_s_ = 0;
+      bumps_recent_ = 3;
+      wall_end_t_ = t_;
+      enter(Mode::Backoff);
     }
     api.motors.sendV(v);
     api.motors.sendW(w);
@@ -109,15 +126,41 @@ class RoombaReference : public VacuumAlgorithm {
   void enter(Mode m) {
     mode_ = m;
     mode_start_ = t_;
-    if (m == Mode::Spiral) spiral_radius_ = 0.2;
+    if (m == Mode::Spiral) spiral_radius_ = 0.15;
   }
 
-  // Turn by a random angle (left, 100-260 degrees), widened when trapped; or, for the wall
-  // follower, a quarter turn left so the wall ends up on the right.
-  void startTurn(double yaw, Mode next, double extra = 0.0) {
-    std::uniform_real_distribution<double> angle(1.75, 4.5);
-    double delta = next == Mode::Wall ? M_PI / 2 : angle(rng_) + extra;
-    if (next != Mode::Wall && std::uniform_int_distribution<int>(0, 1)(rng_) == 0) delta = -delta;
+  // A new heading: a random open direction the laser sees (a corridor at least as wide as the
+  // robot and 0.8 m deep), favouring long ones; if there is none, or the robot is trapped,
+  // turn back (the way it came in is free).
+  void chooseHeading(const component::LaserData& laser, double yaw, bool trapped) {
+    std::vector<std::pair<double, double>> options;  // (angle, weight)
+    const int half_width = 8;  // beams on each side: ~8 degrees, the robot's width at ~1 m
+    for (int i = half_width; i + half_width < laser.numLaser; i += 2) {
+      const double a = laser.angle(i);
+      if (std::abs(a) < 0.35) continue;  // straight ahead is what just got blocked
+      double clear = laser.maxRange;
+      for (int k = i - half_width; k <= i + half_width; ++k) clear = std::min<double>(clear, laser.values_m[k]);
+      if (clear >= 0.8) options.emplace_back(a, std::min(clear, 4.0));
+    }
+    double delta;
+    if (trapped || options.empty()) {
+      delta = M_PI + std::uniform_real_distribution<double>(-0.7, 0.7)(rng_);
+      bumps_recent_ = 0;
+    } else {
+      double total = 0;
+      for (const auto& o : options) total += o.second;
+      double pick = std::uniform_real_distribution<double>(0, total)(rng_);
+      delta = options.back().first;
+      for (const auto& o : options) {
+        if ((pick -= o.second) <= 0) {
+          delta = o.first;
+          break;
+        }
+      }
+    }
+    // Open space all around: spiral there now and then.
+    const bool open = sectorMin(laser, -1.57, 1.57) > 0.9;
+    const Mode next = open && std::uniform_real_distribution<double>(0, 1)(rng_) < 0.35 ? Mode::Spiral : Mode::Cross;
     turn_target_ = wrap(yaw + delta);
     turn_next_ = next;
     enter(Mode::Turn);
@@ -126,12 +169,13 @@ class RoombaReference : public VacuumAlgorithm {
   std::mt19937_64 rng_;
   Mode mode_ = Mode::Spiral;
   Mode turn_next_ = Mode::Cross;
-  Mode after_spiral_ = Mode::Cross;
   double t_ = 0, mode_start_ = 0, last_bump_t_ = -100, wall_end_t_ = 0;
-  double spiral_radius_ = 0.2, turn_target_ = 0;
-  double max_v_ = 0.5, wall_time_s_ = 45.0;
-  int runs_ = 0, bumps_recent_ = 0;
-  bool first_contact_ = true;
+  double spiral_radius_ = 0.15, turn_target_ = 0;
+  double max_v_ = 0.5, wall_time_s_ = 45.0, wall_every_s_ = 60.0;
+  int bumps_recent_ = 0;
+  int quick_fails_ = 0;
+  double spin_s_ = 0;
+  bool was_bumped_ = false;
 };
 
 // The baseline: straight ahead at full speed until the bumper fires, back off, random turn.

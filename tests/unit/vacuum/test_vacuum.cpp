@@ -1,0 +1,118 @@
+#include <aula/vacuum/coverage_grid.hpp>
+#include <aula/vacuum/coverage_referee.hpp>
+#include <aula/vacuum/vacuum_algorithm.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <type_traits>
+
+using namespace aula::vacuum;
+
+namespace {
+
+// A 1 m x 1 m room at 0.02 m/px (50 x 50 px) with a 0.2 m obstacle column on the right.
+cv::Mat tinyMap() {
+  cv::Mat map(50, 50, CV_8UC1, cv::Scalar(255));
+  map(cv::Rect(40, 0, 10, 50)).setTo(0);
+  return map;
+}
+
+aula::world::MapTransform tinyTransform() {
+  aula::world::MapTransform t;
+  t.resolution_m = 0.02;
+  t.origin_x_m = 0;
+  t.origin_y_m = 1;
+  t.width_px = t.height_px = 50;
+  return t;
+}
+
+template <typename T, typename = void>
+struct HasGetX : std::false_type {};
+template <typename T>
+struct HasGetX<T, std::void_t<decltype(std::declval<T&>().getX())>> : std::true_type {};
+template <typename T, typename = void>
+struct HasGetY : std::false_type {};
+template <typename T>
+struct HasGetY<T, std::void_t<decltype(std::declval<T&>().getY())>> : std::true_type {};
+
+}  // namespace
+
+TEST(CoverageGrid, CountsTheDiscFootprintOnFreePixelsOnly) {
+  CoverageGrid grid(tinyMap(), tinyTransform(), 0.3, 0.5);
+  EXPECT_EQ(grid.floorPixels(), 40 * 50);
+  // A 0.1 m disc (5 px radius) in the open: pixel centres within 5 px of (15.0, 25.0) px.
+  grid.markDisc(0.3, 0.5, 0.1);
+  int expected = 0;
+  for (int row = 0; row < 50; ++row) {
+    for (int col = 0; col < 40; ++col) {
+      const double dx = col + 0.5 - 15.0, dy = row + 0.5 - 25.0;
+      expected += dx * dx + dy * dy <= 25.0;
+    }
+  }
+  EXPECT_EQ(grid.cleanedPixels(), expected);
+  EXPECT_NEAR(grid.cleanedPixels(), M_PI * 25, 6);  // about pi r^2
+  // Marking the same disc again adds nothing.
+  grid.markDisc(0.3, 0.5, 0.1);
+  EXPECT_EQ(grid.cleanedPixels(), expected);
+  // A disc half over the obstacle column counts only the floor half.
+  const int64_t before = grid.cleanedPixels();
+  grid.markDisc(0.8, 0.2, 0.1);  // column starts at x = 0.8
+  EXPECT_NEAR(grid.cleanedPixels() - before, expected / 2.0, 6);
+  EXPECT_NEAR(grid.coveragePercent(), 100.0 * grid.cleanedPixels() / 2000.0, 1e-12);
+}
+
+TEST(CoverageGrid, FloorIsWhatIsReachableFromTheStart) {
+  cv::Mat map = tinyMap();
+  map(cv::Rect(0, 20, 40, 2)).setTo(0);  // a wall splits the room: the top part is sealed off
+  CoverageGrid grid(map, tinyTransform(), 0.3, 0.2);  // start in the bottom part (y < 0.56 m)
+  EXPECT_EQ(grid.floorPixels(), 40 * 28);
+  EXPECT_THROW(CoverageGrid(map, tinyTransform(), 0.9, 0.5), std::invalid_argument);  // in the column
+}
+
+TEST(CoverageReferee, MarkPerHundredSecondsAndTheEnd) {
+  EXPECT_DOUBLE_EQ(coverageMark(15.0, 30.0), 5.0);
+  EXPECT_DOUBLE_EQ(coverageMark(45.0, 30.0), 10.0);
+  EXPECT_DOUBLE_EQ(coverageMark(NAN, 30.0), 0.0);
+  EXPECT_DOUBLE_EQ(coverageMark(10.0, 0.0), 0.0);  // no division by zero
+  CoverageSettings s;
+  s.duration_s = 300;
+  s.robot_radius_m = 0.1;
+  CoverageReferee r(CoverageGrid(tinyMap(), tinyTransform(), 0.3, 0.5), s);
+  for (int64_t t = 0; t <= 300'000'000; t += 20'000) {
+    const double x = 0.12 + 0.6 * (t / 300e6);  // a slow sweep to the right
+    r.onPose(t, x, 0.5);
+    if (t % 1'000'000 == 0) r.onTick(t);
+  }
+  ASSERT_TRUE(r.finished());
+  ASSERT_EQ(r.coveragePer100s().size(), 3u);
+  double total = 0;
+  for (double gain : r.coveragePer100s()) {
+    EXPECT_GT(gain, 0);
+    total += gain;
+  }
+  EXPECT_NEAR(total, r.coveragePercent(), 1e-9);
+  EXPECT_DOUBLE_EQ(r.elapsedS(), 300.0);
+  r.onPose(301'000'000, 0.12, 0.9);  // after the end: ignored
+  EXPECT_NEAR(total, r.coveragePercent(), 1e-9);
+}
+
+TEST(CoverageReferee, CountsBumpsAndTimeStuck) {
+  CoverageSettings s;
+  CoverageReferee r(CoverageGrid(tinyMap(), tinyTransform(), 0.3, 0.5), s);
+  r.onBump(0, true);
+  r.onBump(20'000, true);  // held: still one bump
+  r.onBump(40'000, false);
+  r.onBump(60'000, true);
+  EXPECT_EQ(r.bumps(), 2);
+  for (int64_t t = 0; t <= 10'000'000; t += 20'000) r.onPose(t, 0.3, 0.5);  // 10 s without moving
+  EXPECT_NEAR(r.stuckS(), 10.0, 0.1);
+}
+
+TEST(VacuumApi, GivesTheStudentNoPosition) {
+  // No localization in this exercise: the pose the student gets has a yaw and nothing else.
+  static_assert(!HasGetX<YawSensor>::value, "YawSensor must not expose x");
+  static_assert(!HasGetY<YawSensor>::value, "YawSensor must not expose y");
+  static_assert(std::is_same_v<decltype(std::declval<VacuumApi&>().pose3d), YawSensor&>);
+  SUCCEED();
+}
