@@ -129,7 +129,7 @@ void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
         std::to_string(msg->period_us / 1000.0) + " ms");
     // The newcomer must see (and ack) the current tick before the world moves on; the
     // re-published tick also tells it that it is listed.
-    if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
+    if (options_.lockstep && started_) lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
     publishClock();
   }
 }
@@ -147,7 +147,9 @@ void Simulator::resetWorld() {
 void Simulator::publishClock() {
   aula::sim_clock_t tick;
   tick.utime = physics_->timeUs();
-  tick.seq = seq_;
+  // Before the run starts (lockstep, waiting for clients) ticks carry seq -1: they only tell
+  // clients they are listed; nobody runs or acks on them.
+  tick.seq = started_ ? seq_ : -1;
   tick.lockstep = options_.lockstep;
   tick.paused = paused_;
   tick.real_time_factor = measured_rtf_;
@@ -159,6 +161,7 @@ void Simulator::publishClock() {
 }
 
 void Simulator::advanceToNextTick() {
+  started_ = true;
   const int64_t now = physics_->timeUs();
   int64_t next = (now / options_.clock_period_us + 1) * options_.clock_period_us;
   // In lockstep with clients, tick only when some client is due: every tick costs each client
@@ -183,10 +186,6 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
   auto last_frame = WallClock::now();
   constexpr auto kFramePeriod = std::chrono::milliseconds(33);
 
-  // Tick 0: sensors at t = 0 for the clients, then wait for them in lockstep.
-  for (auto& d : drivers_) d->step(physics_->timeUs());
-  publishClock();
-  lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
 
   while (!should_stop()) {
     if (duration_us > 0 && physics_->timeUs() >= duration_us) break;
@@ -198,8 +197,19 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
     }
 
     const auto now = WallClock::now();
-    if (paused_ || (options_.lockstep && static_cast<int>(lockstep_.size()) <
-                                             options_.lockstep_wait_clients && seq_ == 0)) {
+    const bool waiting_for_clients =
+        !started_ && options_.lockstep && static_cast<int>(lockstep_.size()) < options_.lockstep_wait_clients;
+    if (!started_ && !waiting_for_clients && !paused_) {
+      // Tick 0, once every expected client is listening: sensors at t = 0, then the clock, so
+      // each client sees the same first messages whatever the order the processes started in.
+      started_ = true;
+      for (auto& d : drivers_) d->step(physics_->timeUs());
+      publishClock();
+      last_publish = now;
+      if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), now);
+      continue;
+    }
+    if (paused_ || waiting_for_clients) {
       if (now - last_publish > std::chrono::milliseconds(100)) {
         publishClock();
         last_publish = now;

@@ -1,5 +1,5 @@
 // aula-sim as a real process on a private LCM port, driven by this test as its client.
-#include "private_bus.hpp"
+#include "test_support.hpp"
 
 #include <aula/bumper_t.hpp>
 #include <aula/laser_t.hpp>
@@ -21,18 +21,13 @@
 #include <thread>
 
 using namespace std::chrono_literals;
+using aula::testing::readFile;
 using aula::process::ChildProcess;
 
 namespace {
 
 const std::string kVacuumWorld = std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world";
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 struct RoombaClient {
   explicit RoombaClient(lcm::LCM& bus) : bus(bus) {

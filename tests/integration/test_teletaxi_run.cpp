@@ -1,6 +1,6 @@
 // The whole TeleTaxi exercise, headless in lockstep: `aula run teletaxi` starts the simulator,
 // the component with the reference solution and the referee as real processes.
-#include "private_bus.hpp"
+#include "test_support.hpp"
 
 #include <aula/process/child_process.hpp>
 
@@ -11,21 +11,11 @@
 #include <sstream>
 
 using namespace std::chrono_literals;
+using aula::testing::readFile;
 
 namespace {
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
-double numberOf(const std::string& json, const std::string& key) {
-  std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.]+)"))) return -1;
-  return std::stod(m[1]);
-}
 
 // Runs one episode; returns the report text.
 std::string runTaxi(const std::string& destination, const std::string& tag) {
@@ -51,9 +41,9 @@ class TeleTaxiReference : public ::testing::TestWithParam<std::pair<const char*,
 TEST_P(TeleTaxiReference, ReachesTheDestinationWithAMarkOfAtLeastNine) {
   const std::string json = runTaxi(GetParam().second, GetParam().first);
   EXPECT_NE(json.find("\"reached\": true"), std::string::npos) << json;
-  EXPECT_GE(numberOf(json, "mark"), 9.0) << json;
-  EXPECT_LE(numberOf(json, "final_distance_m"), 2.0) << json;
-  EXPECT_EQ(numberOf(json, "bumps"), 0.0) << "the taxi touched a wall\n" << json;
+  EXPECT_GE(aula::testing::jsonNumber(json, "mark"), 9.0) << json;
+  EXPECT_LE(aula::testing::jsonNumber(json, "final_distance_m"), 2.0) << json;
+  EXPECT_EQ(aula::testing::jsonNumber(json, "bumps"), 0.0) << "the taxi touched a wall\n" << json;
   EXPECT_NE(json.find("\"exercise\": \"teletaxi\""), std::string::npos);
   EXPECT_NE(json.find("\"algorithm\": \"reference\""), std::string::npos);
   EXPECT_NE(json.find("\"world\": \"cityLarge\""), std::string::npos);

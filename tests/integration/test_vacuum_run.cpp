@@ -1,7 +1,7 @@
 // The vacuum cleaner exercise, headless in lockstep: `aula run vacuum` with the reference
 // solution, shortened to 120 s of sim time to keep CI quick (the 900 s figures are in
 // docs/performance.md, from bench/vacuum_runs.sh).
-#include "private_bus.hpp"
+#include "test_support.hpp"
 
 #include <aula/process/child_process.hpp>
 
@@ -12,15 +12,10 @@
 #include <sstream>
 
 using namespace std::chrono_literals;
+using aula::testing::readFile;
 
 namespace {
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::string runVacuum(int seed, const std::string& tag) {
   const std::string report = ::testing::TempDir() + "vacuum_" + tag + ".json";
@@ -37,11 +32,6 @@ std::string runVacuum(int seed, const std::string& tag) {
   return readFile(report);
 }
 
-double numberOf(const std::string& json, const std::string& key) {
-  std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.]+)"))) return -1;
-  return std::stod(m[1]);
-}
 
 }  // namespace
 
@@ -53,7 +43,7 @@ TEST(VacuumRun, SameSeedSameReportDifferentSeedDifferentRun) {
   EXPECT_EQ(a, b) << "the same seed must give a byte-identical report";
   EXPECT_NE(a, c) << "another seed should give another run";
   EXPECT_NE(a.find("\"exercise\": \"vacuum\""), std::string::npos) << a;
-  EXPECT_DOUBLE_EQ(numberOf(a, "sim_time_s"), 120.0) << a;
-  EXPECT_GT(numberOf(a, "coverage_percent"), 10.0) << "the reference cleans in 120 s\n" << a;
+  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "sim_time_s"), 120.0) << a;
+  EXPECT_GT(aula::testing::jsonNumber(a, "coverage_percent"), 10.0) << "the reference cleans in 120 s\n" << a;
   EXPECT_NE(a.find("\"coverage_per_100s\": ["), std::string::npos) << a;
 }

@@ -79,6 +79,7 @@ class Simulator {
   LockstepServer lockstep_;
   std::vector<lcm::Subscription*> subscriptions_;
   int64_t seq_ = 0;
+  bool started_ = false;  // tick 0 published (after the expected lockstep clients joined)
   bool paused_ = false;
   double measured_rtf_ = 0.0;
 };

@@ -1,0 +1,34 @@
+#pragma once
+// Shared by the integration tests: a private LCM port per test process, and small readers.
+// Integration tests talk over a private UDP multicast port, so parallel ctest runs never cross
+// (a different group on the same port still receives the cross-talk: isolate by port).
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+namespace aula::testing {
+
+inline std::string privateLcmUrl() {
+  const int port = 17000 + static_cast<int>(getpid() % 20000);
+  return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
+}
+
+inline std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A number field of a referee's JSON report (-1 when absent).
+inline double jsonNumber(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.]+)"))) return -1;
+  return std::stod(m[1]);
+}
+
+}  // namespace aula::testing
