@@ -25,8 +25,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   map_->setMinimumSize(560, 560);
   layout->addWidget(map_, 1);
   auto* side = new QVBoxLayout;
-  run_ = new QPushButton(central);
-  run_->setMinimumHeight(40);
+  run_ = new component::RunToggle(central);
   status_ = new QLabel(central);
   status_->setWordWrap(true);
   status_->setMinimumWidth(260);
@@ -37,10 +36,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   side->addStretch(1);
   layout->addLayout(side);
   setCentralWidget(central);
-  connect(run_, &QPushButton::clicked, this, [this] {
-    component_.setRunning(!component_.running());
-    showRunState();
-  });
+  connect(run_, &component::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
   connect(teleop, &component::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
@@ -54,20 +50,13 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   });
   connect(&timer_, &QTimer::timeout, this, &VacuumWindow::refresh);
   timer_.start(50);
-  showRunState();
   refresh();
-}
-
-void VacuumWindow::showRunState() {
-  const bool on = component_.running();
-  run_->setText(on ? "Stop my algorithm" : "Run my algorithm");
-  run_->setStyleSheet(on ? "background-color: #3c3; font-weight: bold;" : "background-color: #d33; color: white; font-weight: bold;");
 }
 
 void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 0.33, 0.33);
-  showRunState();
+  run_->setRunning(component_.running());
   status_->setText(QString("Algorithm: %1\nsim time %2 s\nv = %3 m/s   w = %4 rad/s")
                        .arg(QString::fromStdString(component_.algorithmName()))
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)

@@ -4,12 +4,12 @@
 // algorithm), the "Run my algorithm" toggle, the teleoperator and Stop.
 
 #include <aula/component/widgets/map_view.hpp>
+#include <aula/component/widgets/run_toggle.hpp>
 #include <aula/component/widgets/teleoperator.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
 #include <QLabel>
 #include <QMainWindow>
-#include <QPushButton>
 #include <QTimer>
 
 namespace aula::vacuum {
@@ -23,11 +23,10 @@ class VacuumWindow : public QMainWindow {
 
  private:
   void refresh();
-  void showRunState();
 
   VacuumComponent& component_;
   component::MapView* map_ = nullptr;
-  QPushButton* run_ = nullptr;
+  component::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
   QTimer timer_;
   int64_t last_pose_utime_ = -1;

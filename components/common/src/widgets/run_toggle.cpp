@@ -1,0 +1,21 @@
+#include "aula/component/widgets/run_toggle.hpp"
+
+namespace aula::component {
+
+RunToggle::RunToggle(QWidget* parent) : QPushButton(parent) {
+  setMinimumHeight(40);
+  setRunning(false);
+  connect(this, &QPushButton::clicked, this, [this] {
+    setRunning(!running_);
+    emit runningChanged(running_);
+  });
+}
+
+void RunToggle::setRunning(bool running) {
+  running_ = running;
+  setText(running ? "Stop my algorithm" : "Run my algorithm");
+  setStyleSheet(running ? "background-color: #3c3; font-weight: bold;"
+                        : "background-color: #d33; color: white; font-weight: bold;");
+}
+
+}  // namespace aula::component
