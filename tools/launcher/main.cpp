@@ -154,7 +154,7 @@ int main(int argc, char** argv) {
     // Stop clients first (they send their last commands and leave lockstep), then the simulator.
     for (auto c = children.rbegin(); c != children.rend(); ++c) {
       const int code = (*c)->stop();
-      if (code != 0 && code != 128 + SIGTERM && result == 0 && (*c)->name() != sim_args[0]) {
+      if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != sim_args[0]) {
         std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
       }
     }
