@@ -64,7 +64,7 @@ void TaxiRefereeWindow::showMark() {
                      .arg(QString::fromStdString(g.verdict)));
 }
 
-bool TaxiRefereeWindow::screenshotWhenReady(const QString& png_path) {
+void TaxiRefereeWindow::screenshotWhenFinished(const QString& png_path) {
   auto* poll = new QTimer(this);
   auto ticks = std::make_shared<int>(0);
   connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
@@ -77,7 +77,6 @@ bool TaxiRefereeWindow::screenshotWhenReady(const QString& png_path) {
     }
   });
   poll->start(100);
-  return true;
 }
 
 }  // namespace aula::teletaxi

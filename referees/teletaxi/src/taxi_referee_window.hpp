@@ -17,7 +17,7 @@ class TaxiRefereeWindow : public QWidget {
  public:
   explicit TaxiRefereeWindow(TaxiRefereeNode& node);
   void showMark();
-  bool screenshotWhenReady(const QString& png_path);
+  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();

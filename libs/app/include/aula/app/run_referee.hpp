@@ -1,0 +1,49 @@
+#pragma once
+// The one flow of every referee process. Headless: handle the bus until the episode ends (or a
+// signal), then print the mark and write the report. With a display: the referee's window,
+// which shows the mark by itself at the end (the same summary and report are written then).
+//
+// Node needs finished(), poll(), leave(), summary(), report(), setOnFinished(hook);
+// Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
+
+#include <aula/app/bus_pump.hpp>
+#include <aula/app/process_setup.hpp>
+
+#include <QApplication>
+
+#include <iostream>
+#include <string>
+
+namespace aula::app {
+
+template <class Node, class Window>
+int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
+  const std::string report_path = setup.command_line.option("report");
+  auto finish = [&] {
+    std::cout << node.summary() << std::flush;
+    if (!report_path.empty()) node.report().writeAtomically(report_path);
+  };
+  if (setup.headless) {
+    const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, [&] { node.poll(); });
+    node.leave();
+    if (signalled && !node.finished()) std::cout << "(stopped before the end of the episode)\n";
+    finish();
+    return 0;
+  }
+  QApplication app(argc, argv);
+  Window window(node);
+  BusPump pump(*setup.bus, [&] { node.poll(); });
+  node.setOnFinished([&] {
+    window.showMark();
+    finish();
+  });
+  window.show();
+  if (setup.command_line.flag("screenshot")) {
+    window.screenshotWhenFinished(QString::fromStdString(setup.command_line.option("screenshot")));
+  }
+  const int code = app.exec();
+  node.leave();
+  return code;
+}
+
+}  // namespace aula::app
