@@ -43,8 +43,6 @@ class GppReference : public TaxiAlgorithm {
       const auto [wx, wy] = grid.gridToWorld(c.x, c.y);
       points.push_back({wx, wy});
     }
-    // End exactly at the destination the user chose, not at its cell's centre.
-    if (!points.empty()) points.push_back({goal_x_m(grid), goal_y_m(grid)});
     pilot_.setPath(points);
     grid.setPathFinded();
   }
@@ -63,10 +61,6 @@ class GppReference : public TaxiAlgorithm {
   }
 
  private:
-  // The destination cell's world centre (the Grid knows only cells).
-  static double goal_x_m(Grid& g) { return g.gridToWorld(g.getDestiny().first, g.getDestiny().second).first; }
-  static double goal_y_m(Grid& g) { return g.gridToWorld(g.getDestiny().first, g.getDestiny().second).second; }
-
   std::unique_ptr<GradientField> field_;
   PathPilot pilot_;
   int64_t last_utime_ = -1;

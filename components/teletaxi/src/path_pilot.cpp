@@ -55,7 +55,6 @@ PilotCommand PathPilot::command(double x, double y, double yaw, double speed_mps
   if (std::abs(cmd.heading_error_rad) > 0.8) v = 0.0;  // turn in place first
   // Largest heading change of the path within the preview distance.
   const double base_dir = std::atan2(cmd.target.y - path_[progress_].y, cmd.target.x - path_[progress_].x);
-  double bend = 0.0;
   for (size_t i = t; i + 1 < path_.size() && arc_m_[i] - arc_m_[progress_] < params_.curve_preview_m; ++i) {
     const double dir = std::atan2(path_[i + 1].y - path_[i].y, path_[i + 1].x - path_[i].x);
     const double change = std::abs(wrap(dir - base_dir));
@@ -64,12 +63,10 @@ PilotCommand PathPilot::command(double x, double y, double yaw, double speed_mps
     const double bend_speed = params_.curve_speed_mps * (M_PI / 2) / std::max(change, 0.1);
     const double allowed = std::sqrt(bend_speed * bend_speed + 2 * params_.braking_mps2 * std::max(0.0, distance - lookahead));
     v = std::min(v, allowed);
-    bend = std::max(bend, change);
   }
   const double remaining = arc_m_.back() - arc_m_[progress_];
   v = std::min(v, std::sqrt(2 * params_.braking_mps2 * std::max(0.0, std::min(remaining, to_goal) - params_.arrival_radius_m * 0.5)));
   cmd.v_mps = std::clamp(v, 0.0, params_.max_v_mps);
-  (void)bend;
   return cmd;
 }
 
