@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
 
     auto options = sim::SimulatorOptions::fromConfig(cfg);  // validates every key first
     world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+    sim::applyStartPoses(cfg, spec);
     // Like Gazebo, a world's <physics><max_step_size> chooses its step; the .cfg gives the
     // default for worlds that do not say, and the command line overrides both.
     const bool step_on_command_line = cfg.origin("Simulator.PhysicsStep").rfind("command line", 0) == 0;

@@ -45,6 +45,28 @@ SimulatorOptions SimulatorOptions::fromConfig(const config::Config& cfg) {
   return o;
 }
 
+void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
+  const std::string prefix = "Simulator.StartPose.";
+  for (const std::string& key : cfg.keys()) {
+    if (key.rfind(prefix, 0) != 0) continue;
+    const std::string robot = key.substr(prefix.size());
+    auto it = std::find_if(spec.robots.begin(), spec.robots.end(), [&](const world::RobotSpec& r) { return r.name == robot; });
+    if (it == spec.robots.end()) {
+      std::string names;
+      for (const auto& r : spec.robots) names += (names.empty() ? "" : ", ") + r.name;
+      throw config::ConfigError(cfg.origin(key) + ": " + key + ": the world has no robot '" + robot + "' (robots: " + names + ")");
+    }
+    const std::vector<double> pose = cfg.getDoubleList(key);
+    if (pose.size() != 3 || !std::isfinite(pose[0]) || !std::isfinite(pose[1]) || !std::isfinite(pose[2])) {
+      throw config::ConfigError(cfg.origin(key) + ": " + key + ": expected x, y, yaw (m, m, rad)");
+    }
+    Eigen::Isometry3d start = Eigen::Isometry3d::Identity();
+    start.translation() = Eigen::Vector3d(pose[0], pose[1], it->pose.translation().z());
+    start.linear() = Eigen::AngleAxisd(pose[2], Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    it->pose = start;
+  }
+}
+
 Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& bus)
     : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop) {
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
@@ -59,10 +81,10 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& 
       drivers_.push_back(std::move(driver));
     }
   }
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
+  subscriptions_.push_back(lcmbus::subscribe(bus_, lcmbus::kControlChannel, &Simulator::onControl, this));
   subscriptions_.push_back(
-      bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
+      lcmbus::subscribe(bus_, lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
+  subscriptions_.push_back(lcmbus::subscribe(bus_, lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
   paused_ = options_.start_paused;
 }
 

@@ -1,6 +1,6 @@
 // The vacuum cleaner exercise, headless in lockstep: `aula run vacuum` with the reference
-// solution, shortened to 120 s of sim time to keep CI quick (the 900 s figures are in
-// docs/performance.md, from bench/vacuum_runs.sh).
+// solution for the full 900 s of sim time (about 4 s wall each). The figures over many seeds
+// are in docs/performance.md, from bench/vacuum_runs.sh.
 #include "test_support.hpp"
 
 #include <aula/process/child_process.hpp>
@@ -23,10 +23,10 @@ std::string runVacuum(int seed, const std::string& tag) {
   std::remove(report.c_str());
   aula::process::ChildProcess run({std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless",
                                    "--algorithm=reference", "--seed=" + std::to_string(seed),
-                                   "--Vacuum.Referee.Duration=120", "--report=" + report,
+                                   "--report=" + report,
                                    "--lcm-url=" + aula::testing::privateLcmUrl()},
                                   log, log);
-  const auto code = run.wait(90s);
+  const auto code = run.wait(100s);
   EXPECT_TRUE(code.has_value()) << readFile(log);
   EXPECT_EQ(code.value_or(-1), 0) << readFile(log);
   return readFile(report);
@@ -43,7 +43,12 @@ TEST(VacuumRun, SameSeedSameReportDifferentSeedDifferentRun) {
   EXPECT_EQ(a, b) << "the same seed must give a byte-identical report";
   EXPECT_NE(a, c) << "another seed should give another run";
   EXPECT_NE(a.find("\"exercise\": \"vacuum\""), std::string::npos) << a;
-  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "sim_time_s"), 120.0) << a;
-  EXPECT_GT(aula::testing::jsonNumber(a, "coverage_percent"), 10.0) << "the reference cleans in 120 s\n" << a;
+  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "sim_time_s"), 900.0) << a;
+  // The bar for one run; the median over seeds is higher (docs/performance.md).
+  EXPECT_GE(aula::testing::jsonNumber(a, "coverage_percent"), 55.0) << a;
+  EXPECT_GE(aula::testing::jsonNumber(c, "coverage_percent"), 55.0) << c;
+  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "mark"), 10.0) << a;
+  // 50 Hz for 900 s, both ends counted: the referee saw every pose message the driver sent.
+  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "pose_messages"), 45001.0) << a;
   EXPECT_NE(a.find("\"coverage_per_100s\": ["), std::string::npos) << a;
 }

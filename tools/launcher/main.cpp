@@ -9,6 +9,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <thread>
@@ -35,11 +36,13 @@ std::map<std::string, Exercise> exercises() {
                     "global navigation with Gradient Path Planning"}},
       {"vacuum", {"worlds/vacuum.world", "config/vacuumCleaner.cfg", "Vacuum", "vacuum-cleaner",
                   "vacuum-cleaner-referee", "clean the house without localization"}},
+      {"autopark", {"worlds/autopark.world", "config/autopark.cfg", "Autopark", "autopark", "autopark-referee",
+                    "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car, a tight slot)"}},
   };
 }
 
 constexpr const char* kUsage =
-    "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=reference|student] [--seed=N]\n"
+    "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--lockstep] [--rtf=X] [--duration=SECONDS] [--lcm-url=URL]\n"
     "                [--Key=value ...]\n"
     "  --headless  no windows; lockstep, as fast as possible; the run ends with the referee's mark\n"
@@ -85,14 +88,29 @@ int main(int argc, char** argv) {
     const std::string bin = binDir(argv[0]);
     const std::string source = AULA_SOURCE_DIR;
 
+    // The world: a path from here, or from the source tree, or a file name in worlds/. The
+    // clients get it too (Autopark's component and referee read the slot from it).
+    std::string world = source + "/" + ex.world;
+    if (cl.flag("world")) {
+      world = cl.option("world");
+      namespace fs = std::filesystem;
+      if (!fs::path(world).is_absolute()) {
+        if (fs::exists(world)) world = fs::absolute(world).string();
+        else if (fs::exists(source + "/" + world)) world = source + "/" + world;
+        else if (fs::exists(source + "/worlds/" + world)) world = source + "/worlds/" + world;
+      }
+      if (!fs::exists(world)) throw config::ConfigError("--world=" + cl.option("world") + ": no such world file");
+    }
+
     std::vector<std::string> shared;  // options every process understands
     if (cl.flag("lcm-url")) shared.push_back("--lcm-url=" + cl.option("lcm-url"));
     for (const auto& [key, value] : cl.overrides) shared.push_back("--" + key + "=" + value);
     if (cl.flag("algorithm")) shared.push_back("--" + ex.cfg_prefix + ".Algorithm=" + cl.option("algorithm"));
     if (cl.flag("headless")) shared.push_back("--" + ex.cfg_prefix + ".Autostart=true");
+    if (cl.flag("world")) shared.push_back("--" + ex.cfg_prefix + ".World=" + world);
 
     const size_t clients = ex.referee.empty() ? 1 : 2;
-    std::vector<std::string> sim_args = {bin + "/aula-sim", cl.option("world", source + "/" + ex.world)};
+    std::vector<std::string> sim_args = {bin + "/aula-sim", world};
     if (cl.flag("lockstep") || cl.flag("headless")) {
       sim_args.push_back("--lockstep");
       sim_args.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));

@@ -1,5 +1,7 @@
 #include "aula/component/proxies.hpp"
 
+#include <aula/lcm/bus.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -14,7 +16,7 @@ double clampFinite(double value, double limit) {
 }  // namespace
 
 Pose3dProxy::Pose3dProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = bus_.subscribe(channel, &Pose3dProxy::onPose, this);
+  subscription_ = lcmbus::subscribe(bus_, channel, &Pose3dProxy::onPose, this);
 }
 Pose3dProxy::~Pose3dProxy() { bus_.unsubscribe(subscription_); }
 void Pose3dProxy::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
@@ -23,7 +25,7 @@ void Pose3dProxy::onPose(const lcm::ReceiveBuffer*, const std::string&, const au
 }
 
 LaserProxy::LaserProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = bus_.subscribe(channel, &LaserProxy::onLaser, this);
+  subscription_ = lcmbus::subscribe(bus_, channel, &LaserProxy::onLaser, this);
 }
 LaserProxy::~LaserProxy() { bus_.unsubscribe(subscription_); }
 void LaserProxy::onLaser(const lcm::ReceiveBuffer*, const std::string&, const aula::laser_t* msg) {
@@ -42,7 +44,7 @@ void LaserProxy::onLaser(const lcm::ReceiveBuffer*, const std::string&, const au
 }
 
 BumperProxy::BumperProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = bus_.subscribe(channel, &BumperProxy::onBumper, this);
+  subscription_ = lcmbus::subscribe(bus_, channel, &BumperProxy::onBumper, this);
 }
 BumperProxy::~BumperProxy() { bus_.unsubscribe(subscription_); }
 void BumperProxy::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {

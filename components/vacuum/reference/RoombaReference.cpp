@@ -5,6 +5,9 @@
 //   CROSS   straight runs across the room, each ended by a seeded random turn;
 //   escape  after a bump: back off, then turn; repeated bumps in a short time widen the turn.
 // It returns to the spiral when a run ends in open space, and to the wall now and then.
+// New headings favour floor it has not been over yet, by dead reckoning: it integrates its own
+// speed commands along the measured yaw into a coarse memory of where it has been. That drifts
+// (wheels slip, pushes against furniture), so it only biases the random choice.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <algorithm>
@@ -32,6 +35,7 @@ class RoombaReference : public VacuumAlgorithm {
     const double right = sectorMin(laser, -1.58, -1.25);
     const double yaw = api.pose3d.getYaw();
     const bool bumped = api.bumper.getBumperData().state == 1;
+    deadReckon(yaw, bumped || front < 0.12, dt);
 
     // A bump ends a forward move. While backing off or turning (a disc can always turn on the
     // spot) a held bumper is ignored, or a robot wedged in a nook would back off forever.
@@ -109,10 +113,42 @@ class RoombaReference : public VacuumAlgorithm {
     }
     api.motors.sendV(v);
     api.motors.sendW(w);
+    commanded_v_ = std::clamp(v, -max_v_, max_v_);
   }
 
  private:
   enum class Mode { Spiral, Cross, Wall, Backoff, Turn };
+
+  // Dead-reckoned memory: cells of kCellM around the start, marked where the robot has been.
+  static constexpr double kCellM = 0.25;
+  static constexpr int kCells = 200;  // 50 x 50 m
+
+  void deadReckon(double yaw, bool blocked, double dt) {
+    // Last period's command; a pressed bumper or a wall at the nose means it did not move.
+    if (!(blocked && commanded_v_ > 0)) {
+      x_m_ += commanded_v_ * dt * std::cos(yaw);
+      y_m_ += commanded_v_ * dt * std::sin(yaw);
+    }
+    const int c = cellOf(x_m_), r = cellOf(y_m_);
+    for (int dr = -1; dr <= 1; ++dr)
+      for (int dc = -1; dc <= 1; ++dc) {
+        if (dr != 0 && dc != 0) continue;  // a plus: about the 0.33 m disc
+        if (inside(c + dc, r + dr)) visited_[(r + dr) * kCells + c + dc] = 1;
+      }
+  }
+  static int cellOf(double v_m) { return static_cast<int>(std::floor(v_m / kCellM)) + kCells / 2; }
+  static bool inside(int c, int r) { return c >= 0 && r >= 0 && c < kCells && r < kCells; }
+
+  // Fraction of the not-yet-visited cells along a heading, up to range_m.
+  double novelty(double heading_rad, double range_m) const {
+    int fresh = 0, total = 0;
+    for (double d = 0.5; d <= range_m; d += kCellM) {
+      const int c = cellOf(x_m_ + d * std::cos(heading_rad)), r = cellOf(y_m_ + d * std::sin(heading_rad));
+      ++total;
+      if (inside(c, r) && !visited_[r * kCells + c]) ++fresh;
+    }
+    return total == 0 ? 0.0 : static_cast<double>(fresh) / total;
+  }
 
   static double sectorMin(const component::LaserData& laser, double from_rad, double to_rad) {
     double m = laser.maxRange;
@@ -140,7 +176,10 @@ class RoombaReference : public VacuumAlgorithm {
       if (std::abs(a) < 0.35) continue;  // straight ahead is what just got blocked
       double clear = laser.maxRange;
       for (int k = i - half_width; k <= i + half_width; ++k) clear = std::min<double>(clear, laser.values_m[k]);
-      if (clear >= 0.8) options.emplace_back(a, std::min(clear, 4.0));
+      if (clear < 0.8) continue;
+      const double reach = std::min(clear, 4.0);
+      const double fresh = novelty(yaw + a, reach);
+      options.emplace_back(a, reach * (novelty_floor_ + fresh) * (novelty_floor_ + fresh));
     }
     double delta;
     if (trapped || options.empty()) {
@@ -176,6 +215,9 @@ class RoombaReference : public VacuumAlgorithm {
   int quick_fails_ = 0;
   double spin_s_ = 0;
   bool was_bumped_ = false;
+  double commanded_v_ = 0, x_m_ = 0, y_m_ = 0;
+  double novelty_floor_ = 0.05;
+  std::vector<uint8_t> visited_ = std::vector<uint8_t>(kCells * kCells, 0);
 };
 
 // The baseline: straight ahead at full speed until the bumper fires, back off, random turn.

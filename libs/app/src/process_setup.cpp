@@ -27,6 +27,11 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   return setup;
 }
 
+std::string sourcePath(const config::Config& cfg, const std::string& key, const std::string& fallback) {
+  const std::string path = cfg.getString(key, fallback);
+  return !path.empty() && path[0] == '/' ? path : std::string(AULA_SOURCE_DIR) + "/" + path;
+}
+
 int guardedMain(const std::string& program, const std::function<int()>& body) {
   try {
     return body();

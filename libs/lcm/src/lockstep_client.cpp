@@ -16,7 +16,7 @@ LockstepClient::LockstepClient(lcm::LCM& bus, std::string client_name, int64_t p
                                TickHandler on_tick)
     : bus_(bus), name_(std::move(client_name)), period_us_(period_us), on_tick_(std::move(on_tick)) {
   if (period_us_ <= 0) period_us_ = 1;
-  subscription_ = bus_.subscribe(kClockChannel, &LockstepClient::onClock, this);
+  subscription_ = lcmbus::subscribe(bus_, kClockChannel, &LockstepClient::onClock, this);
   sendRegister(false);
 }
 

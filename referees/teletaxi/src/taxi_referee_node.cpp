@@ -1,5 +1,6 @@
 #include "taxi_referee_node.hpp"
 
+#include <aula/lcm/bus.hpp>
 #include <cmath>
 #include <cstdio>
 
@@ -18,9 +19,9 @@ TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
 
 TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg)
     : referee_(taxiRefereeSettings(cfg)) {
-  bus.subscribe(cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"), &TaxiRefereeNode::onPose, this);
-  bus.subscribe(cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE"), &TaxiRefereeNode::onEpisode, this);
-  bus.subscribe(cfg.getString("TeleTaxi.Bumper.Channel", "TAXI_BUMPER"), &TaxiRefereeNode::onBumper, this);
+  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"), &TaxiRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE"), &TaxiRefereeNode::onEpisode, this);
+  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Bumper.Channel", "TAXI_BUMPER"), &TaxiRefereeNode::onBumper, this);
   const double period_s = cfg.getDouble("TeleTaxi.Referee.Period", 0.1);
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),

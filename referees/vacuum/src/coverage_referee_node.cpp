@@ -1,5 +1,6 @@
 #include "coverage_referee_node.hpp"
 
+#include <aula/lcm/bus.hpp>
 #include <aula/world/map_transform.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -29,9 +30,9 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   if (start.size() != 2) throw config::ConfigError(cfg.origin("Vacuum.Referee.FloorPoint") + ": needs x, y");
   referee_ = std::make_unique<CoverageReferee>(CoverageGrid(map, t, start[0], start[1]), s);
 
-  bus.subscribe(cfg.getString("Vacuum.Pose3D.Channel", "ROOMBA_POSE"), &CoverageRefereeNode::onPose, this);
-  bus.subscribe(cfg.getString("Vacuum.Bumper.Channel", "ROOMBA_BUMPER"), &CoverageRefereeNode::onBumper, this);
-  bus.subscribe(cfg.getString("Vacuum.Episode.Channel", "VACUUM_EPISODE"), &CoverageRefereeNode::onEpisode, this);
+  lcmbus::subscribe(bus, cfg.getString("Vacuum.Pose3D.Channel", "ROOMBA_POSE"), &CoverageRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, cfg.getString("Vacuum.Bumper.Channel", "ROOMBA_BUMPER"), &CoverageRefereeNode::onBumper, this);
+  lcmbus::subscribe(bus, cfg.getString("Vacuum.Episode.Channel", "VACUUM_EPISODE"), &CoverageRefereeNode::onEpisode, this);
   const double period_s = cfg.getDouble("Vacuum.Referee.Period", 0.2);
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
@@ -44,6 +45,7 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
 }
 
 void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  ++pose_messages_;
   referee_->onPose(msg->utime, msg->x, msg->y);
   if (on_pose_) on_pose_(msg->x, msg->y, msg->yaw);
 }
@@ -74,6 +76,8 @@ referee::Report CoverageRefereeNode::report() const {
   out.set("floor_area_m2", r.grid().floorAreaM2());
   out.set("bumps", r.bumps());
   out.set("stuck_s", r.stuckS());
+  // 50 Hz x the run: fewer means the bus lost messages and the coverage is an underestimate.
+  out.set("pose_messages", pose_messages_);
   return out;
 }
 

@@ -40,6 +40,7 @@ class CoverageRefereeNode {
   std::function<void()> on_finished_;
   std::function<void(double, double, double)> on_pose_;
   bool announced_ = false;
+  long long pose_messages_ = 0;
 };
 
 }  // namespace aula::vacuum

@@ -102,7 +102,7 @@ TEST(LoadWorld, AutoparkStreet) {
   const WorldSpec w = loadWorld(kWorlds + "autopark.world");
   ASSERT_EQ(w.robots.size(), 1u);
   const RobotSpec& car = w.robots[0];
-  EXPECT_EQ(car.name, "taxi_holo_laser");
+  EXPECT_EQ(car.name, "car");
   EXPECT_TRUE(car.pose.translation().isApprox(Eigen::Vector3d(-7, 2.5, 0)));
   int lasers = 0;
   for (const auto& p : car.plugins) lasers += p.type == "laser";

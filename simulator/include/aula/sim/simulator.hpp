@@ -41,6 +41,11 @@ struct SimulatorOptions {
   static SimulatorOptions fromConfig(const config::Config& cfg);
 };
 
+// Simulator.StartPose.<robot> = x, y, yaw (m, m, rad): where a robot starts instead of the
+// world's pose (a teacher's start position; a world reset returns there). Throws
+// config::ConfigError for an unknown robot or a malformed pose.
+void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec);
+
 class Simulator {
  public:
   // Throws world::WorldError on bad drivers/parameters.

@@ -32,4 +32,8 @@ struct ProcessSetup {
 // ConfigError and WorldError -> 2, anything else -> 1.
 int guardedMain(const std::string& program, const std::function<int()>& body);
 
+// A path from a .cfg key: absolute as given, else relative to the source tree (where worlds/,
+// config/ live), so a process finds it from any working directory.
+std::string sourcePath(const config::Config& cfg, const std::string& key, const std::string& fallback);
+
 }  // namespace aula::app

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace aula::config { class Config; struct CommandLine; }
 
@@ -29,5 +30,19 @@ std::string resolveUrl(const config::CommandLine& cl, const config::Config& cfg)
 
 // Opens the bus or throws BusError with the reason and the fix (e.g. no multicast route).
 std::unique_ptr<lcm::LCM> openBus(const std::string& url);
+
+// LCM keeps at most 30 undelivered messages per subscription and silently drops the rest. In
+// lockstep a client may sleep while the simulator runs a whole sync period ahead (a 1 s
+// referee period is 50 pose messages), so every Aula subscription queues up to this many:
+// the lockstep protocol, not the queue, bounds how far a reader can fall behind.
+inline constexpr int kQueueCapacity = 10000;
+
+// bus.subscribe(...) with the queue above: use it for every subscription.
+template <class... SubscribeArgs>
+lcm::Subscription* subscribe(lcm::LCM& bus, SubscribeArgs&&... args) {
+  lcm::Subscription* subscription = bus.subscribe(std::forward<SubscribeArgs>(args)...);
+  if (subscription != nullptr) subscription->setQueueCapacity(kQueueCapacity);
+  return subscription;
+}
 
 }  // namespace aula::lcmbus

@@ -1,0 +1,59 @@
+#pragma once
+// The Autopark academic component without its window: the world's geometry (for the GUI and the
+// laser mounts), proxies, the student's algorithm on sim time, the episode messages for the
+// referee.
+
+#include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/component/control_loop.hpp>
+#include <aula/component/proxies.hpp>
+#include <aula/config/config.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace aula::autopark {
+
+class AutoparkComponent {
+ public:
+  AutoparkComponent(lcm::LCM& bus, const config::Config& cfg);
+
+  void setRunning(bool running);  // "Run my algorithm" toggle
+  bool running() const { return loop_->running(); }
+  void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  void poll() { loop_->poll(); }
+  void leave() { loop_->leave(); }
+
+  const AutoparkApi& api() const { return *api_; }
+  const world::WorldSpec& world() const { return world_; }
+  int64_t simTimeUs() const { return loop_->simTimeUs(); }
+  const std::string& algorithmName() const { return algorithm_name_; }
+  double maxV() const { return motors_->maxV(); }
+  double maxW() const { return motors_->maxW(); }
+  void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+
+ private:
+  void tick(int64_t utime);
+  void step();
+
+  lcm::LCM& bus_;
+  world::WorldSpec world_;
+  std::string algorithm_name_, episode_channel_;
+  double period_s_;
+  bool autostart_ = false;
+  std::unique_ptr<component::Pose3dProxy> pose_;
+  std::unique_ptr<component::LaserProxy> front_, rear_, right_;
+  std::unique_ptr<component::MotorsProxy> motors_;
+  std::unique_ptr<AutoparkApi> api_;
+  std::unique_ptr<AutoparkAlgorithm> algorithm_;  // created at the first tick, with the run's seed
+  std::unique_ptr<component::ControlLoop> loop_;
+  int64_t started_utime_ = -1;
+  int64_t last_episode_utime_ = -1'000'000'000;
+  bool episode_dirty_ = true;
+  std::function<void(int64_t)> on_tick_;
+};
+
+}  // namespace aula::autopark

@@ -1,0 +1,48 @@
+#pragma once
+// Finds a free parking slot beside the curb from laser scans, with no map given: every laser
+// point to the right of the car goes into a profile along the street (x bins); a bin whose
+// nearest point to the lane is well below the parked cars' side sees the curb, so it is free.
+// A slot is a run of free bins bounded by parked cars at both ends.
+// Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
+
+#include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/component/proxies.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace aula::autopark {
+
+struct Slot {
+  double rear_x_m = 0;   // end of the parked car behind the slot (smaller x)
+  double front_x_m = 0;  // start of the parked car ahead of it
+  double curb_y_m = 0;   // the curb face seen inside the slot
+  double edge_y_m = 0;   // the parked cars' side nearest the lane
+  double lengthM() const { return front_x_m - rear_x_m; }
+  double centreXM() const { return (rear_x_m + front_x_m) / 2; }
+};
+
+class SlotDetector {
+ public:
+  // min_length_m: the shortest slot worth reporting (the car's length plus a margin).
+  explicit SlotDetector(double min_length_m, double bin_m = 0.1, double from_x_m = -100, double to_x_m = 100);
+
+  // One scan from a laser at `mount` on a car at (x, y, yaw).
+  void addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
+               const component::LaserData& scan);
+  void addPoint(double x_m, double y_m);  // a point of the parking side (world frame)
+
+  // The bounded slot nearest to near_x_m, if one has been seen.
+  std::optional<Slot> slot(double near_x_m) const;
+  std::optional<double> edgeY() const;  // the parked cars' side, once seen
+  double minLengthM() const { return min_length_m_; }
+
+ private:
+  int binOf(double x_m) const;
+  double min_length_m_, bin_m_, from_x_m_;
+  std::vector<double> nearest_y_;  // per bin: the highest y seen (nearest the lane); NaN = unseen
+  double edge_y_;
+  bool have_edge_ = false;
+};
+
+}  // namespace aula::autopark

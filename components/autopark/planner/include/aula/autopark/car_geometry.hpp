@@ -1,0 +1,35 @@
+#pragma once
+// Car geometry and the centre <-> rear-axle pose conversions used by the parking planner.
+
+#include <array>
+
+namespace aula::autopark {
+
+struct Pose2D {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double yaw_rad = 0.0;
+};
+
+// The car body is a length_m x width_m box around its centre pose. The planner's Reeds-Shepp
+// reference point is the rear axle, rear_axle_from_centre_m behind the centre along the heading
+// (1.3 m: 0.7 m from the rear bumper; wheelbase 2.6 m, so R = 2.6 / tan(0.48) = 5.0 m).
+struct CarGeometry {
+  double length_m = 4.0;
+  double width_m = 2.0;
+  double rear_axle_from_centre_m = 1.3;
+  double min_turn_radius_m = 5.0;  // of the rear axle
+};
+
+// Wraps an angle to [-pi, pi).
+double wrapAngle(double a_rad);
+
+Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car);
+Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car);
+
+// Corners (x, y) of the body box inflated by inflation_m on every side, counter-clockwise,
+// starting at the rear-right corner.
+std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
+                                                      double inflation_m);
+
+}  // namespace aula::autopark

@@ -1,0 +1,40 @@
+#include <aula/autopark/car_geometry.hpp>
+
+#include <cmath>
+
+namespace aula::autopark {
+
+double wrapAngle(double a_rad) {
+  const double two_pi = 2.0 * M_PI;
+  double r = std::fmod(a_rad + M_PI, two_pi);
+  if (r < 0) r += two_pi;
+  return r - M_PI;
+}
+
+Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car) {
+  const double d = car.rear_axle_from_centre_m;
+  return {centre.x_m - d * std::cos(centre.yaw_rad), centre.y_m - d * std::sin(centre.yaw_rad),
+          centre.yaw_rad};
+}
+
+Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car) {
+  const double d = car.rear_axle_from_centre_m;
+  return {rear_axle.x_m + d * std::cos(rear_axle.yaw_rad),
+          rear_axle.y_m + d * std::sin(rear_axle.yaw_rad), rear_axle.yaw_rad};
+}
+
+std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
+                                                      double inflation_m) {
+  const double hl = 0.5 * car.length_m + inflation_m;
+  const double hw = 0.5 * car.width_m + inflation_m;
+  const double c = std::cos(centre.yaw_rad), s = std::sin(centre.yaw_rad);
+  const double local[4][2] = {{-hl, -hw}, {hl, -hw}, {hl, hw}, {-hl, hw}};
+  std::array<std::array<double, 2>, 4> out{};
+  for (int i = 0; i < 4; ++i) {
+    out[i] = {centre.x_m + c * local[i][0] - s * local[i][1],
+              centre.y_m + s * local[i][0] + c * local[i][1]};
+  }
+  return out;
+}
+
+}  // namespace aula::autopark

@@ -1,0 +1,100 @@
+#include "aula/autopark/slot_detector.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aula::autopark {
+namespace {
+// A bin is free when what is nearest to the lane there lies this far below the cars' side.
+constexpr double kFreeDepthM = 1.0;
+// Unseen bins tolerated inside a free run (sparse beams far away).
+constexpr int kMaxUnseenRun = 4;
+}  // namespace
+
+SlotDetector::SlotDetector(double min_length_m, double bin_m, double from_x_m, double to_x_m)
+    : min_length_m_(min_length_m), bin_m_(bin_m), from_x_m_(from_x_m),
+      nearest_y_(static_cast<size_t>(std::ceil((to_x_m - from_x_m) / bin_m)), std::numeric_limits<double>::quiet_NaN()),
+      edge_y_(-std::numeric_limits<double>::infinity()) {}
+
+int SlotDetector::binOf(double x_m) const { return static_cast<int>(std::floor((x_m - from_x_m_) / bin_m_)); }
+
+void SlotDetector::addPoint(double x_m, double y_m) {
+  const int b = binOf(x_m);
+  if (b < 0 || b >= static_cast<int>(nearest_y_.size())) return;
+  double& n = nearest_y_[b];
+  if (std::isnan(n) || y_m > n) n = y_m;
+  if (y_m > edge_y_) edge_y_ = y_m;
+  have_edge_ = true;
+}
+
+void SlotDetector::addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
+                           const component::LaserData& scan) {
+  const double c = std::cos(car_yaw_rad), s = std::sin(car_yaw_rad);
+  const double lx = car_x_m + c * mount.x_m - s * mount.y_m;
+  const double ly = car_y_m + s * mount.x_m + c * mount.y_m;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    const double r = scan.values_m[i];
+    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;  // no echo
+    const double a = car_yaw_rad + mount.yaw_rad + scan.angle(i);
+    const double px = lx + r * std::cos(a), py = ly + r * std::sin(a);
+    // The parking side only: right of the car's body, not the far curb or the car's own lane.
+    if (py < car_y_m - 1.2) addPoint(px, py);
+  }
+}
+
+std::optional<double> SlotDetector::edgeY() const {
+  if (!have_edge_) return std::nullopt;
+  return edge_y_;
+}
+
+std::optional<Slot> SlotDetector::slot(double near_x_m) const {
+  if (!have_edge_) return std::nullopt;
+  const int n = static_cast<int>(nearest_y_.size());
+  enum Kind { Unseen, Free, Occupied };
+  auto kind = [&](int b) {
+    const double y = nearest_y_[b];
+    if (std::isnan(y)) return Unseen;
+    return y < edge_y_ - kFreeDepthM ? Free : Occupied;
+  };
+  std::optional<Slot> best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  int b = 0;
+  while (b < n) {
+    if (kind(b) != Occupied) {
+      ++b;
+      continue;
+    }
+    // b is occupied: look for a free run right after it, closed by another occupied bin.
+    int e = b + 1, unseen = 0;
+    bool any_free = false;
+    std::vector<double> floor_y;
+    while (e < n && kind(e) != Occupied) {
+      if (kind(e) == Free) {
+        any_free = true;
+        unseen = 0;
+        floor_y.push_back(nearest_y_[e]);
+      } else if (++unseen > kMaxUnseenRun) {
+        break;  // a long unseen stretch: the slot's bounds are unknown
+      }
+      ++e;
+    }
+    if (e < n && kind(e) == Occupied && any_free) {
+      Slot s;
+      s.rear_x_m = from_x_m_ + (b + 1) * bin_m_;
+      s.front_x_m = from_x_m_ + e * bin_m_;
+      std::nth_element(floor_y.begin(), floor_y.begin() + floor_y.size() / 2, floor_y.end());
+      s.curb_y_m = floor_y[floor_y.size() / 2];
+      s.edge_y_m = edge_y_;
+      const double distance = std::abs(s.centreXM() - near_x_m);
+      if (s.lengthM() >= min_length_m_ && distance < best_distance) {
+        best = s;
+        best_distance = distance;
+      }
+    }
+    b = std::max(e, b + 1);
+  }
+  return best;
+}
+
+}  // namespace aula::autopark

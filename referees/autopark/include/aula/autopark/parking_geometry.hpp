@@ -1,0 +1,53 @@
+#pragma once
+// The Autopark referee's geometry, from the true world: the slot (the two parked cars around
+// the largest gap on the parking side), the curb line, and the car's real footprint, rotated
+// about its own centre. Distances are minimum distances between footprints (the original used
+// corners rotated about the world origin and maximum distances).
+
+#include <aula/world/world_spec.hpp>
+
+#include <array>
+#include <string>
+
+namespace aula::autopark {
+
+struct Point2 {
+  double x_m = 0, y_m = 0;
+};
+
+// A rectangle in the plane: centre, heading of its length axis, full length and width.
+struct Rect2D {
+  double cx_m = 0, cy_m = 0, yaw_rad = 0, length_m = 0, width_m = 0;
+  std::array<Point2, 4> corners() const;  // counter-clockwise
+};
+
+// Minimum distance between two rectangles; 0 when they touch or overlap.
+double rectDistance(const Rect2D& a, const Rect2D& b);
+bool rectsOverlap(const Rect2D& a, const Rect2D& b);
+
+// The slot as the world builds it.
+struct ParkingScene {
+  Rect2D rear_car;   // the parked car before the slot (smaller x: the car drives along +x)
+  Rect2D front_car;  // the parked car after it
+  double curb_y_m = 0;  // the parking-side curb face (the curb is at y < curb_y_m)
+  double ideal_x_m = 0, ideal_y_m = 0, ideal_yaw_rad = 0;
+  double car_length_m = 4, car_width_m = 2;
+  double slotLengthM() const;  // free gap between the two parked cars
+
+  // Parked cars are static models named parked_car*; the curb is the collision named
+  // *curb_parking_side. Throws world::WorldError naming the world when one is missing.
+  static ParkingScene fromWorld(const world::WorldSpec& world, const std::string& robot_name);
+};
+
+struct ParkingMeasures {
+  double front_gap_m = 0;      // car footprint to the front car
+  double rear_gap_m = 0;       // car footprint to the rear car
+  double curb_gap_m = 0;       // nearest footprint corner to the curb face
+  double yaw_error_deg = 0;    // heading relative to the curb, in (-90, 90]
+  double position_error_m = 0; // car centre to the ideal pose
+  bool inside_slot = false;    // centre between the two cars, in the parking lane, within 45 deg
+};
+
+ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m, double yaw_rad);
+
+}  // namespace aula::autopark

@@ -1,0 +1,107 @@
+#include "aula/autopark/parking_referee.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace aula::autopark {
+namespace {
+
+double angleScore(double yaw_error_deg) {
+  const double e = std::abs(yaw_error_deg);
+  return e <= 15.0 ? 100.0 : e <= 45.0 ? 50.0 : 0.0;
+}
+
+double gapScore(double gap_m, const ParkingRefereeSettings& s) {
+  if (gap_m >= s.gap_full_from_m && gap_m < s.gap_full_to_m) return 100.0;
+  if (gap_m >= s.gap_half_from_m && gap_m < s.gap_full_from_m) return 50.0;
+  return 0.0;
+}
+
+double curbScore(double gap_m, const ParkingRefereeSettings& s) {
+  if (gap_m < 0) return 0.0;  // over the curb
+  return gap_m <= s.curb_full_m ? 100.0 : gap_m < s.curb_half_m ? 50.0 : 0.0;
+}
+
+}  // namespace
+
+ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
+                           const ParkingRefereeSettings& s) {
+  ParkingScores out;
+  // Angle and distances grade where the car is in the slot; outside it there is nothing to grade.
+  if (m.inside_slot) {
+    out.angle = angleScore(m.yaw_error_deg);
+    out.distance = (gapScore(m.front_gap_m, s) + gapScore(m.rear_gap_m, s) + curbScore(m.curb_gap_m, s)) / 3.0;
+  }
+  if (parked) out.time = park_time_s < s.full_time_s ? 100.0 : 100.0 * s.full_time_s / park_time_s;
+  out.collision = collisions == 0 ? 100.0 : 0.0;
+  out.mark = 0.025 * (out.angle + out.time + out.distance + out.collision);
+  return out;
+}
+
+void ParkingReferee::start(int64_t utime) {
+  if (start_utime_) return;  // the first Run starts the clock; a pause does not reset it
+  start_utime_ = utime;
+}
+
+void ParkingReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_rad) {
+  if (have_pose_ && utime > last_pose_utime_) {
+    const double dt = (utime - last_pose_utime_) / 1e6;
+    speed_mps_ = std::hypot(x_m - x_, y_m - y_) / dt;
+    // A car turning on the spot is not stationary: count its corners' speed.
+    const double half_diagonal = std::hypot(scene_.car_length_m, scene_.car_width_m) / 2;
+    speed_mps_ += std::abs(std::remainder(yaw_rad - yaw_, 2 * M_PI)) * half_diagonal / dt;
+  }
+  have_pose_ = true;
+  last_pose_utime_ = utime;
+  x_ = x_m;
+  y_ = y_m;
+  yaw_ = yaw_rad;
+  if (!finished_) measures_ = measureParking(scene_, x_, y_, yaw_);
+}
+
+void ParkingReferee::onContact(int64_t utime, bool pressed) {
+  const bool counting = started() && !finished_;
+  if (pressed && !in_contact_) {
+    if (counting) ++collisions_;
+    contact_since_utime_ = utime;
+  } else if (!pressed && in_contact_ && counting) {
+    contact_us_ += utime - std::max(contact_since_utime_, *start_utime_);
+  }
+  in_contact_ = pressed;
+}
+
+void ParkingReferee::onTick(int64_t utime) {
+  now_utime_ = utime;
+  if (!started() || finished_ || !have_pose_) return;
+  const bool still = speed_mps_ < settings_.still_speed_mps && measures_.inside_slot;
+  if (!still) {
+    still_since_utime_.reset();
+  } else if (!still_since_utime_) {
+    still_since_utime_ = utime;
+  }
+  if (still_since_utime_ && (utime - *still_since_utime_) / 1e6 >= settings_.still_hold_s) {
+    finished_ = parked_ = true;
+    end_utime_ = std::max(*start_utime_, *still_since_utime_);  // parked when it stopped
+  } else if ((utime - *start_utime_) / 1e6 >= settings_.timeout_s) {
+    finished_ = true;
+    end_utime_ = utime;
+  }
+  if (finished_ && in_contact_) contact_us_ += utime - std::max(contact_since_utime_, *start_utime_);
+}
+
+double ParkingReferee::elapsedS() const {
+  if (!start_utime_) return 0.0;
+  return ((end_utime_ ? *end_utime_ : now_utime_) - *start_utime_) / 1e6;
+}
+
+double ParkingReferee::contactS() const {
+  int64_t us = contact_us_;
+  if (in_contact_ && started() && !finished_) us += now_utime_ - std::max(contact_since_utime_, *start_utime_);
+  return us / 1e6;
+}
+
+ParkingScores ParkingReferee::scores() const {
+  return scoreParking(measures_, parked_, elapsedS(), collisions_, settings_);
+}
+
+}  // namespace aula::autopark

@@ -1,0 +1,117 @@
+#include "parking_referee_node.hpp"
+
+#include <aula/app/process_setup.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+namespace aula::autopark {
+
+ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
+  ParkingRefereeSettings s;
+  s.timeout_s = cfg.getDouble("Autopark.Referee.Timeout", s.timeout_s);
+  s.still_hold_s = cfg.getDouble("Autopark.Referee.StillHold", s.still_hold_s);
+  s.full_time_s = cfg.getDouble("Autopark.Referee.FullMarkTime", s.full_time_s);
+  const auto gaps = cfg.getDoubleList("Autopark.Referee.GapBands", {s.gap_half_from_m, s.gap_full_from_m, s.gap_full_to_m});
+  const auto curb = cfg.getDoubleList("Autopark.Referee.CurbBands", {s.curb_full_m, s.curb_half_m});
+  auto bad = [&](const std::string& key, const std::string& what) {
+    throw config::ConfigError(cfg.origin(key) + ": " + key + ": " + what);
+  };
+  if (!(s.timeout_s > 0)) bad("Autopark.Referee.Timeout", "must be > 0");
+  if (!(s.still_hold_s > 0)) bad("Autopark.Referee.StillHold", "must be > 0");
+  if (!(s.full_time_s > 0)) bad("Autopark.Referee.FullMarkTime", "must be > 0");
+  if (gaps.size() != 3 || !(gaps[0] <= gaps[1] && gaps[1] < gaps[2])) bad("Autopark.Referee.GapBands", "expected half_from <= full_from < full_to (m)");
+  if (curb.size() != 2 || !(curb[0] > 0 && curb[0] <= curb[1])) bad("Autopark.Referee.CurbBands", "expected 0 < full <= half (m)");
+  s.gap_half_from_m = gaps[0];
+  s.gap_full_from_m = gaps[1];
+  s.gap_full_to_m = gaps[2];
+  s.curb_full_m = curb[0];
+  s.curb_half_m = curb[1];
+  return s;
+}
+
+ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg) {
+  const world::WorldSpec world = world::loadWorld(app::sourcePath(cfg, "Autopark.World", "worlds/autopark.world"));
+  referee_ = std::make_unique<ParkingReferee>(ParkingScene::fromWorld(world, cfg.getString("Autopark.Robot", "car")),
+                                              parkingRefereeSettings(cfg));
+  lcmbus::subscribe(bus, cfg.getString("Autopark.Pose3D.Channel", "CAR_POSE"), &ParkingRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, cfg.getString("Autopark.Bumper.Channel", "CAR_BUMPER"), &ParkingRefereeNode::onBumper, this);
+  lcmbus::subscribe(bus, cfg.getString("Autopark.Episode.Channel", "AUTOPARK_EPISODE"), &ParkingRefereeNode::onEpisode, this);
+  const double period_s = cfg.getDouble("Autopark.Referee.Period", 0.1);
+  if (!(period_s >= 0.005 && period_s <= 1.0)) {
+    throw config::ConfigError(cfg.origin("Autopark.Referee.Period") + ": Autopark.Referee.Period must be in [0.005, 1] s");
+  }
+  clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
+                                                    [this](int64_t utime) { onTick(utime); });
+}
+
+void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  referee_->onPose(msg->utime, msg->x, msg->y, msg->yaw);
+}
+
+void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  referee_->onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
+}
+
+void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
+  algorithm_ = msg->algorithm;
+  if (msg->started_utime >= 0) referee_->start(msg->started_utime);
+}
+
+void ParkingRefereeNode::onTick(int64_t utime) {
+  referee_->onTick(utime);
+  if (referee_->finished() && !announced_) {
+    announced_ = true;
+    if (on_finished_) on_finished_();
+  }
+}
+
+aula::referee::Report ParkingRefereeNode::report() const {
+  const ParkingReferee& r = *referee_;
+  const ParkingScores s = r.scores();
+  const ParkingMeasures& m = r.measures();
+  const auto& tick = clock_->lastTick();
+  aula::referee::Report out;
+  out.set("exercise", "autopark");
+  out.set("mark", s.mark);
+  out.set("sim_time_s", clock_->simTimeUs() / 1e6);
+  out.set("seed", static_cast<long long>(tick.seed));
+  out.set("world", tick.world);
+  out.set("algorithm", algorithm_);
+  out.set("finished", r.finished());
+  out.set("parked", r.parked());
+  out.set("park_time_s", r.elapsedS());
+  out.set("front_gap_m", m.front_gap_m);
+  out.set("rear_gap_m", m.rear_gap_m);
+  out.set("curb_gap_m", m.curb_gap_m);
+  out.set("yaw_error_deg", m.yaw_error_deg);
+  out.set("position_error_m", m.position_error_m);
+  out.set("slot_length_m", r.scene().slotLengthM());
+  out.set("collisions", r.collisions());
+  out.set("contact_time_s", r.contactS());
+  out.set("final_pose", std::vector<double>{r.x(), r.y(), r.yawRad()});
+  out.set("ideal_pose", std::vector<double>{r.scene().ideal_x_m, r.scene().ideal_y_m, r.scene().ideal_yaw_rad});
+  out.set("score_angle", s.angle);
+  out.set("score_time", s.time);
+  out.set("score_distance", s.distance);
+  out.set("score_collision", s.collision);
+  return out;
+}
+
+std::string ParkingRefereeNode::summary() const {
+  const ParkingReferee& r = *referee_;
+  const ParkingScores s = r.scores();
+  const ParkingMeasures& m = r.measures();
+  char text[768];
+  std::snprintf(text, sizeof text,
+                "Autopark mark: %.2f / 10 = 0.025 x (angle %.0f + time %.0f + distances %.1f + collisions %.0f)\n"
+                "  %s after %.1f s sim; %.2f m from the ideal pose, yaw error %.1f deg\n"
+                "  gaps: front %.2f m, rear %.2f m, curb %.2f m; collisions %lld (%.1f s in contact)\n",
+                s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
+                m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.curb_gap_m, r.collisions(), r.contactS());
+  return text;
+}
+
+}  // namespace aula::autopark

@@ -1,0 +1,49 @@
+#pragma once
+// The Autopark referee's LCM side: the true pose, the bumper driver's contacts (DART), the
+// component's Run and the clock feed the ParkingReferee; at the end it builds the report.
+
+#include <aula/autopark/parking_referee.hpp>
+#include <aula/bumper_t.hpp>
+#include <aula/config/config.hpp>
+#include <aula/episode_t.hpp>
+#include <aula/lcm/lockstep_client.hpp>
+#include <aula/pose3d_t.hpp>
+#include <aula/referee/report.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace aula::autopark {
+
+class ParkingRefereeNode {
+ public:
+  ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+
+  const ParkingReferee& referee() const { return *referee_; }
+  bool finished() const { return referee_->finished(); }
+  aula::referee::Report report() const;
+  std::string summary() const;
+  void poll() { clock_->poll(); }
+  void leave() { clock_->leave(); }
+  void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+
+ private:
+  void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
+  void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
+  void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
+  void onTick(int64_t utime);
+
+  std::unique_ptr<ParkingReferee> referee_;
+  std::string algorithm_ = "unknown";
+  std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::function<void()> on_finished_;
+  bool announced_ = false;
+};
+
+// Autopark.Referee.* keys; throws config::ConfigError naming the key.
+ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg);
+
+}  // namespace aula::autopark

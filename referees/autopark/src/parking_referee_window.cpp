@@ -1,0 +1,91 @@
+#include "parking_referee_window.hpp"
+
+#include <aula/component/widgets/screenshot.hpp>
+
+#include <QApplication>
+#include <QGridLayout>
+#include <QPushButton>
+
+#include <cmath>
+#include <memory>
+
+namespace aula::autopark {
+
+ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(node) {
+  setWindowTitle("Autopark referee");
+  auto* layout = new QGridLayout(this);
+  clock_ = new QLabel(this);
+  clock_->setStyleSheet("font-size: 28px; font-family: monospace;");
+  distances_ = new QLabel(this);
+  distances_->setStyleSheet("font-family: monospace;");
+  mark_ = new QLabel("Mark: -", this);
+  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
+  mark_->setWordWrap(true);
+  orientation_ = new component::Gauge("Orientation", "deg", -90, 90, 180, this);
+  const QColor green(90, 190, 90), orange(240, 160, 40), red(220, 60, 60);
+  orientation_->setBands({{-90, -45, red}, {-45, -15, orange}, {-15, 15, green}, {15, 45, orange}, {45, 90, red}});
+  orientation_->setMinimumSize(200, 200);
+  collisions_ = new QProgressBar(this);
+  collisions_->setRange(0, 5);
+  collisions_->setFormat("collisions: %v");
+  collisions_->setStyleSheet("QProgressBar::chunk { background: rgb(220, 60, 60); }");
+  auto* show = new QPushButton("Show me my mark", this);
+  layout->addWidget(new QLabel("Sim time since Run", this), 0, 0);
+  layout->addWidget(show, 0, 1);
+  layout->addWidget(clock_, 1, 0);
+  layout->addWidget(distances_, 1, 1, 2, 1);
+  layout->addWidget(orientation_, 2, 0, 2, 1);
+  layout->addWidget(collisions_, 3, 1);
+  layout->addWidget(mark_, 4, 0, 1, 2);
+  mark_->setMinimumHeight(90);
+  resize(560, 460);
+  connect(show, &QPushButton::clicked, this, &ParkingRefereeWindow::showMark);
+  connect(&timer_, &QTimer::timeout, this, &ParkingRefereeWindow::refresh);
+  timer_.start(50);
+  refresh();
+}
+
+void ParkingRefereeWindow::refresh() {
+  const ParkingReferee& r = node_.referee();
+  const double t = r.elapsedS();
+  clock_->setText(QString("%1:%2").arg(static_cast<int>(t) / 60, 2, 10, QChar('0')).arg(std::fmod(t, 60.0), 4, 'f', 1, QChar('0')));
+  const ParkingMeasures& m = r.measures();
+  distances_->setText(QString("Front car: %1 m\nRear car:  %2 m\nCurb:      %3 m\nTo the ideal pose: %4 m\n%5")
+                          .arg(m.front_gap_m, 5, 'f', 2)
+                          .arg(m.rear_gap_m, 5, 'f', 2)
+                          .arg(m.curb_gap_m, 5, 'f', 2)
+                          .arg(m.position_error_m, 0, 'f', 2)
+                          .arg(r.parked() ? "PARKED" : m.inside_slot ? "in the slot" : "not in the slot"));
+  orientation_->setValue(m.yaw_error_deg);
+  collisions_->setValue(static_cast<int>(std::min<long long>(r.collisions(), collisions_->maximum())));
+  collisions_->setFormat(QString("collisions: %1 (%2 s)").arg(r.collisions()).arg(r.contactS(), 0, 'f', 1));
+}
+
+void ParkingRefereeWindow::showMark() {
+  const ParkingReferee& r = node_.referee();
+  const ParkingScores s = r.scores();
+  mark_->setText(QString("Mark: %1 / 10%2\nangle %3 + time %4 + distances %5 + collisions %6 (x 0.025)")
+                     .arg(s.mark, 0, 'f', 2)
+                     .arg(r.finished() ? "" : " (so far)")
+                     .arg(s.angle, 0, 'f', 0)
+                     .arg(s.time, 0, 'f', 0)
+                     .arg(s.distance, 0, 'f', 1)
+                     .arg(s.collision, 0, 'f', 0));
+}
+
+void ParkingRefereeWindow::screenshotWhenFinished(const QString& png_path) {
+  auto* poll = new QTimer(this);
+  auto ticks = std::make_shared<int>(0);
+  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
+    refresh();
+    if (node_.finished() || ++*ticks > 600) {
+      poll->stop();
+      showMark();
+      component::saveWidgetPng(*this, png_path);
+      QApplication::quit();
+    }
+  });
+  poll->start(100);
+}
+
+}  // namespace aula::autopark

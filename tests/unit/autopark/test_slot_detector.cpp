@@ -1,0 +1,90 @@
+// Autopark's slot detector on synthetic scans: the three lasers of a car driving along the
+// street, ray-cast against the worlds' own geometry at the lasers' height.
+#include <aula/autopark/slot_detector.hpp>
+#include <aula/geometry/raycaster2d.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace aula::autopark;
+
+namespace {
+
+struct Street {
+  aula::geometry::Raycaster2D caster;
+  explicit Street(const std::string& world)
+      : caster(aula::geometry::sliceAtHeight(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world), 0.1)) {}
+
+  aula::component::LaserData scan(double x, double y, double yaw, const LaserMount& m) const {
+    aula::component::LaserData d;
+    d.numLaser = 180;
+    d.minAngle = -M_PI / 2;
+    d.maxAngle = M_PI / 2;
+    d.angleIncrement = M_PI / 179;
+    d.minRange = 0.08;
+    d.maxRange = 10;
+    d.values_m.resize(180);
+    aula::geometry::ScanRequest r;
+    r.origin_m = Eigen::Vector2d(x + std::cos(yaw) * m.x_m - std::sin(yaw) * m.y_m, y + std::sin(yaw) * m.x_m + std::cos(yaw) * m.y_m);
+    r.yaw_rad = yaw + m.yaw_rad;
+    r.min_angle_rad = d.minAngle;
+    r.angle_increment_rad = d.angleIncrement;
+    r.num_beams = 180;
+    r.min_range_m = d.minRange;
+    r.max_range_m = d.maxRange;
+    caster.scan(r, d.values_m.data());
+    return d;
+  }
+};
+
+const LaserMount kFront{2.0, 0, 0}, kRear{-1.9, 0, M_PI}, kRight{0.3, -1.0, -M_PI / 2};
+
+void drive(const Street& street, SlotDetector& detector, double from_x, double to_x, double y) {
+  const double step = from_x < to_x ? 0.1 : -0.1;
+  for (double x = from_x; step > 0 ? x <= to_x : x >= to_x; x += step) {
+    for (const auto& m : {kFront, kRear, kRight}) detector.addScan(x, y, 0, m, street.scan(x, y, 0, m));
+  }
+}
+
+}  // namespace
+
+TEST(SlotDetector, FindsTheDefaultSlotDrivingPastIt) {
+  const Street street("autopark.world");
+  SlotDetector detector(4.8);
+  drive(street, detector, -7, -1, 2.5);
+  EXPECT_FALSE(detector.slot(0).has_value()) << "the slot is not bounded yet";
+  drive(street, detector, -1, 14, 2.5);
+  const auto slot = detector.slot(7);
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->rear_x_m, 2.75, 0.15);
+  EXPECT_NEAR(slot->front_x_m, 11.75, 0.15);
+  EXPECT_NEAR(slot->curb_y_m, -4.25, 0.05);
+  EXPECT_NEAR(slot->edge_y_m, -2.1, 0.05);
+}
+
+TEST(SlotDetector, TightSlotAndTooShortAGap) {
+  const Street street("autopark_ackermann_1.3L.world");
+  SlotDetector detector(4.8);
+  drive(street, detector, -7, 12, 1.0);
+  const auto slot = detector.slot(5);
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->lengthM(), 5.2, 0.25);
+  EXPECT_NEAR(slot->centreXM(), 2.75 + 2.6, 0.1);
+  // The same street with a 6 m minimum: no slot at all (the 4.5 m gaps between the other cars
+  // are shorter still).
+  SlotDetector picky(6.0);
+  drive(street, picky, -7, 12, 1.0);
+  EXPECT_FALSE(picky.slot(5).has_value());
+}
+
+TEST(SlotDetector, SeesTheSlotBehindWithTheRearLaser) {
+  // Started alongside the car ahead of the slot, the car reverses down the street.
+  const Street street("autopark.world");
+  SlotDetector detector(4.8);
+  drive(street, detector, 14, 9, 2.5);
+  const auto slot = detector.slot(14);
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->centreXM(), 7.25, 0.15);
+}

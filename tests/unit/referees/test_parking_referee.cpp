@@ -1,0 +1,192 @@
+// Autopark referee: footprint geometry (minimum distances about the car's own centre), the
+// slot read from the worlds, the sub-scores and the episode on sim time.
+#include <aula/autopark/parking_geometry.hpp>
+#include <aula/autopark/parking_referee.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace aula::autopark;
+
+namespace {
+
+// The default street, by hand: cars 4.5 x 1.8 at y = -3, x = 0.5 and 14; curb face y = -4.25.
+ParkingScene handScene() {
+  ParkingScene s;
+  s.rear_car = Rect2D{0.5, -3, 0, 4.5, 1.8};
+  s.front_car = Rect2D{14, -3, 0, 4.5, 1.8};
+  s.curb_y_m = -4.25;
+  s.ideal_x_m = 7.25;
+  s.ideal_y_m = -3;
+  s.car_length_m = 4;
+  s.car_width_m = 2;
+  return s;
+}
+
+constexpr double kDeg = M_PI / 180.0;
+
+}  // namespace
+
+TEST(ParkingGeometry, RectDistanceAxisAlignedAndTouching) {
+  const Rect2D a{0, 0, 0, 4, 2};
+  EXPECT_NEAR(rectDistance(a, Rect2D{5, 0, 0, 4, 2}), 1.0, 1e-12);   // 2 + 1 + 2
+  EXPECT_NEAR(rectDistance(a, Rect2D{0, 3, 0, 4, 2}), 1.0, 1e-12);
+  EXPECT_NEAR(rectDistance(a, Rect2D{5, 3, 0, 4, 2}), std::hypot(1.0, 1.0), 1e-12);  // corner to corner
+  EXPECT_EQ(rectDistance(a, Rect2D{3.9, 0, 0, 4, 2}), 0.0);
+  EXPECT_TRUE(rectsOverlap(a, Rect2D{0, 0, 0.3, 1, 1}));  // one inside the other
+}
+
+TEST(ParkingGeometry, RotatedCarCornersTurnAboutItsOwnCentre) {
+  // A car at (7.25, -3) rotated 90 degrees: 4 m tall, 2 m wide, centred on itself (the original
+  // rotated corners about the world origin, which moved the car across the street).
+  const Rect2D car{7.25, -3, M_PI / 2, 4, 2};
+  double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
+  for (const auto& c : car.corners()) {
+    min_x = std::min(min_x, c.x_m);
+    max_x = std::max(max_x, c.x_m);
+    min_y = std::min(min_y, c.y_m);
+    max_y = std::max(max_y, c.y_m);
+  }
+  EXPECT_NEAR(min_x, 6.25, 1e-9);
+  EXPECT_NEAR(max_x, 8.25, 1e-9);
+  EXPECT_NEAR(min_y, -5.0, 1e-9);
+  EXPECT_NEAR(max_y, -1.0, 1e-9);
+}
+
+TEST(ParkingGeometry, IdealPoseMeasures) {
+  const ParkingMeasures m = measureParking(handScene(), 7.25, -3, 0);
+  EXPECT_NEAR(m.front_gap_m, 14 - 2.25 - 9.25, 1e-9);  // 2.5
+  EXPECT_NEAR(m.rear_gap_m, 5.25 - 2.75, 1e-9);        // 2.5
+  EXPECT_NEAR(m.curb_gap_m, -4.0 + 4.25, 1e-9);        // 0.25
+  EXPECT_NEAR(m.yaw_error_deg, 0, 1e-9);
+  EXPECT_NEAR(m.position_error_m, 0, 1e-9);
+  EXPECT_TRUE(m.inside_slot);
+}
+
+TEST(ParkingGeometry, TiltedCarUsesMinimumDistances) {
+  // 10 degrees nose-left, 1 m forward: the front-right corner is the one nearest the front
+  // car, the rear-right corner the one nearest the curb.
+  const double yaw = 10 * kDeg, c = std::cos(yaw), s = std::sin(yaw);
+  const ParkingMeasures m = measureParking(handScene(), 8.25, -3, yaw);
+  const double front_right_x = 8.25 + c * 2 - s * -1;
+  const double rear_right_y = -3 + s * -2 + c * -1;
+  EXPECT_NEAR(m.front_gap_m, 11.75 - front_right_x, 1e-9);
+  EXPECT_NEAR(m.curb_gap_m, rear_right_y + 4.25, 1e-9);
+  EXPECT_NEAR(m.yaw_error_deg, 10, 1e-9);
+  // Backwards is as parallel as forwards; the bands are symmetric.
+  EXPECT_NEAR(measureParking(handScene(), 7.25, -3, M_PI - 5 * kDeg).yaw_error_deg, -5, 1e-9);
+  EXPECT_NEAR(measureParking(handScene(), 7.25, -3, -10 * kDeg).yaw_error_deg, -10, 1e-9);
+}
+
+TEST(ParkingGeometry, OutsideTheSlot) {
+  EXPECT_FALSE(measureParking(handScene(), 7.25, 1.5, 0).inside_slot);   // still in the lane
+  EXPECT_FALSE(measureParking(handScene(), 0.5, -3, 0).inside_slot);     // on the rear car
+  EXPECT_FALSE(measureParking(handScene(), 7.25, -3, 60 * kDeg).inside_slot);
+}
+
+TEST(ParkingGeometry, SceneFromTheWorlds) {
+  const auto street = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/autopark.world");
+  const ParkingScene s = ParkingScene::fromWorld(street, "car");
+  EXPECT_NEAR(s.rear_car.cx_m, 0.5, 1e-9);
+  EXPECT_NEAR(s.front_car.cx_m, 14, 1e-9);
+  EXPECT_NEAR(s.curb_y_m, -4.25, 1e-9);
+  EXPECT_NEAR(s.ideal_x_m, 7.25, 1e-9);
+  EXPECT_NEAR(s.ideal_y_m, -3, 1e-9);
+  EXPECT_NEAR(s.slotLengthM(), 9.0, 1e-9);
+  EXPECT_NEAR(s.car_length_m, 4.0, 1e-9);
+  // The variants' slots are what their names say, in car lengths.
+  for (double k : {1.6, 1.4, 1.3, 1.2}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "/worlds/autopark_ackermann_%gL.world", k);
+    const auto w = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + name);
+    const ParkingScene v = ParkingScene::fromWorld(w, "car");
+    EXPECT_NEAR(v.slotLengthM(), 4.0 * k, 1e-9) << name;
+    EXPECT_NEAR(v.rear_car.cx_m, 0.5, 1e-9) << name;
+    EXPECT_EQ(w.findRobot("car")->findPlugin("motors")->getString("kinematics", ""), "ackermann") << name;
+  }
+  EXPECT_THROW(ParkingScene::fromWorld(street, "nobody"), aula::world::WorldError);
+}
+
+TEST(ParkingScores, BandsAndMark) {
+  ParkingRefereeSettings s;
+  ParkingMeasures m = measureParking(handScene(), 7.25, -3, 0);
+  ParkingScores best = scoreParking(m, true, 60, 0, s);
+  EXPECT_DOUBLE_EQ(best.mark, 10.0);
+  // Slow: T = 100 * 170 / t.
+  EXPECT_DOUBLE_EQ(scoreParking(m, true, 340, 0, s).time, 50.0);
+  // A collision costs C.
+  EXPECT_DOUBLE_EQ(scoreParking(m, true, 60, 1, s).mark, 7.5);
+  // Not parked: no time score.
+  EXPECT_DOUBLE_EQ(scoreParking(m, false, 300, 0, s).time, 0.0);
+  // 20 degrees either way: angle 50.
+  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, 20 * kDeg), true, 60, 0, s).angle, 50.0);
+  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, -20 * kDeg), true, 60, 0, s).angle, 50.0);
+  // 1.3 m from the rear car (50) and 3.7 m from the front one (0): D = (0 + 50 + 100) / 3.
+  m = measureParking(handScene(), 6.05, -3, 0);
+  EXPECT_NEAR(m.rear_gap_m, 1.3, 1e-9);
+  EXPECT_NEAR(scoreParking(m, true, 60, 0, s).distance, 50.0, 1e-9);
+}
+
+TEST(ParkingReferee, ParkedAfterStandingStillThreeSecondsClockStopsWhenItStopped) {
+  ParkingReferee r(handScene(), ParkingRefereeSettings{});
+  int64_t t = 0;
+  r.onPose(t, -7, 2.5, 0);
+  r.onTick(t);
+  EXPECT_FALSE(r.started());
+  r.start(1'000'000);
+  // Drive for 20 s (not in the slot), then stand at the ideal pose.
+  for (t = 1'000'000; t <= 21'000'000; t += 100'000) {
+    r.onPose(t, -7 + (t - 1'000'000) / 1e6 * 0.5, 2.5, 0);
+    r.onTick(t);
+  }
+  EXPECT_FALSE(r.finished());
+  const int64_t stopped = t;
+  for (; t <= stopped + 5'000'000 && !r.finished(); t += 100'000) {
+    r.onPose(t, 7.25, -3, 0);
+    r.onTick(t);
+  }
+  ASSERT_TRUE(r.finished());
+  EXPECT_TRUE(r.parked());
+  // The first still pose is one period after arriving (speed needs two poses in the slot).
+  EXPECT_NEAR(r.elapsedS(), (stopped - 1'000'000) / 1e6 + 0.1, 1e-9);
+  EXPECT_DOUBLE_EQ(r.scores().mark, 10.0);
+  EXPECT_EQ(r.collisions(), 0);
+}
+
+TEST(ParkingReferee, ContactsCountedWithTheirDurationAndTimeout) {
+  ParkingRefereeSettings settings;
+  settings.timeout_s = 10;
+  ParkingReferee r(handScene(), settings);
+  r.onContact(500'000, true);  // before Run: not counted
+  r.onContact(600'000, false);
+  r.start(1'000'000);
+  int64_t t = 1'000'000;
+  for (; t <= 12'000'000 && !r.finished(); t += 100'000) {
+    r.onPose(t, (t / 1e6), 2.5, 0);  // driving along the lane, 1 m/s
+    if (t == 2'000'000) r.onContact(t, true);
+    if (t == 2'500'000) r.onContact(t, false);
+    if (t == 4'000'000) r.onContact(t, true);
+    if (t == 4'200'000) r.onContact(t, false);
+    r.onTick(t);
+  }
+  ASSERT_TRUE(r.finished());
+  EXPECT_FALSE(r.parked());
+  EXPECT_EQ(r.collisions(), 2);
+  EXPECT_NEAR(r.contactS(), 0.7, 1e-9);
+  EXPECT_NEAR(r.elapsedS(), 10.0, 1e-9);
+  EXPECT_DOUBLE_EQ(r.scores().collision, 0.0);
+  EXPECT_DOUBLE_EQ(r.scores().time, 0.0);
+}
+
+TEST(ParkingReferee, TurningOnTheSpotIsNotStandingStill) {
+  ParkingReferee r(handScene(), ParkingRefereeSettings{});
+  r.start(0);
+  int64_t t = 0;
+  for (; t <= 10'000'000; t += 100'000) {
+    r.onPose(t, 7.25, -3, 0.2 * std::sin(t / 1e6));  // wiggling in place
+    r.onTick(t);
+  }
+  EXPECT_FALSE(r.finished());
+}
