@@ -2,6 +2,7 @@
 
 #include <aula/lcm/bus.hpp>
 #include <aula/physics/physics_world.hpp>
+#include <aula/world/car_kinematics.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -18,10 +19,11 @@ bool filterCommand(const MotorLimits& limits, double v, double w, double l, Velo
   c.w_radps = std::clamp(w, -limits.max_w_radps, limits.max_w_radps);
   c.l_mps = limits.holonomic ? std::clamp(l, -limits.max_v_mps, limits.max_v_mps) : 0.0;
   if (limits.ackermann) {
-    c.l_mps = 0.0;
     const double max_w = limits.min_turn_radius_m > 0 ? std::abs(c.v_mps) / limits.min_turn_radius_m
                                                        : limits.max_w_radps;
     c.w_radps = std::clamp(c.w_radps, -max_w, max_w);
+    // v is the same at the centre and at the rear axle; the centre slides sideways by w * lever.
+    c.l_mps = -limits.rear_axle_x_m * c.w_radps;
   }
   out = c;
   return true;
@@ -40,19 +42,10 @@ void MotorsDriver::attach(DriverContext& context, int robot, const world::Plugin
   limits_.max_v_mps = plugin.getDouble("max_v", 1.0);
   limits_.max_w_radps = plugin.getDouble("max_w", 1.0);
   limits_.holonomic = plugin.getBool("holonomic", false);
-  const std::string kinematics = plugin.getString("kinematics", "diff");
-  if (kinematics == "ackermann") {
-    limits_.ackermann = true;
-    const double wheelbase = plugin.getDouble("wheelbase", 2.6);
-    const double max_steer = plugin.getDouble("max_steer_rad", 0.48);
-    if (!(wheelbase > 0) || !(max_steer > 0) || !(max_steer < 1.5)) {
-      throw world::WorldError(where + ": ackermann needs wheelbase > 0 and 0 < max_steer_rad < 1.5");
-    }
-    limits_.min_turn_radius_m = wheelbase / std::tan(max_steer);
-  } else if (kinematics != "diff") {
-    throw world::WorldError(where + ": kinematics '" + kinematics +
-                            "' is not one of: diff, ackermann");
-  }
+  const world::CarKinematics kinematics = world::readCarKinematics(plugin);
+  limits_.ackermann = kinematics.ackermann;
+  limits_.min_turn_radius_m = kinematics.min_turn_radius_m;
+  limits_.rear_axle_x_m = kinematics.rear_axle_x_m;
   if (!(limits_.max_v_mps > 0) || !(limits_.max_w_radps > 0)) {
     throw world::WorldError(where + ": max_v and max_w must be > 0");
   }

@@ -8,6 +8,9 @@
 //   kinematics   "diff" (default: turns in place) or "ackermann" (car-like: |w| <= |v| / R)
 //   wheelbase    m, default 2.6 (ackermann)
 //   max_steer_rad  rad, default 0.48 (ackermann); minimum turning radius R = wheelbase / tan(max_steer)
+//   rear_axle_x  m along the body x axis from the centre, default -wheelbase / 2 (ackermann).
+//                The car turns about a point on its rear axle line, as a real car does, so the
+//                centre gets the lateral speed l = -rear_axle_x * w (the rear axle never slides).
 //   watchdog_s   s of sim time, default 0.5: with no command for that long the robot stops
 // Non-finite commands are rejected (counted, logged); the previous command stays.
 
@@ -25,7 +28,8 @@ struct MotorLimits {
   double max_w_radps = 1.0;
   bool holonomic = false;
   bool ackermann = false;
-  double min_turn_radius_m = 0.0;  // ackermann only
+  double min_turn_radius_m = 0.0;  // ackermann only: of the rear axle centre
+  double rear_axle_x_m = 0.0;      // ackermann only: body-frame x of the rear axle
 };
 
 struct VelocityCommand {
@@ -34,7 +38,8 @@ struct VelocityCommand {
   double l_mps = 0.0;
 };
 
-// Clamps to the limits and, for an Ackermann car, limits |w| to |v| / R.
+// Clamps to the limits and, for an Ackermann car, limits |w| to |v| / R and replaces l by the
+// lateral speed of the centre that keeps the rear axle from sliding.
 // Returns false (and leaves `out` alone) when any component is NaN or infinite.
 bool filterCommand(const MotorLimits& limits, double v, double w, double l, VelocityCommand& out);
 

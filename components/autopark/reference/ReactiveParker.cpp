@@ -3,9 +3,12 @@
 //             SlotDetector builds a profile of the parking side from the three lasers; at the
 //             street's end (something close ahead or behind) search the other way.
 //   APPROACH  drive to the manoeuvre's start: alongside the car ahead of the slot, where two
-//             equal arcs of radius R reach the slot's centre line.
+//             equal arcs of radius R bring the car into the slot, a little behind its centre
+//             (reversing in close behind the car ahead is where a parallel park scrapes).
 //   ARC1      reverse steering right (the rear swings towards the curb) until the remaining
 //             lateral offset is what the second arc removes: R (1 - cos yaw);
+//             the arcs are those of the point the car turns about (its centre for a car that
+//             turns in place, its rear axle for a car-like one), so one plan suits both;
 //   ARC2      reverse steering left until the car is parallel to the curb;
 //   CENTRE    forward or back, straight, until the front and rear lasers see equal gaps;
 //   PARKED    stop.
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace aula::autopark {
 namespace {
@@ -39,6 +43,8 @@ class ReactiveParker : public AutoparkAlgorithm {
     const auto& right = api.laser3.getLaserData();
     if (front.numLaser == 0 || rear.numLaser == 0 || right.numLaser == 0 || !api.pose3d.received()) return;
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
+    // The point the car turns about: it moves on arcs of radius |v / w|.
+    const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
     if (!detector_) {
       detector_.emplace(api.car_length_m + kSlotMarginM);
       radius_m_ = std::max(kArcRadiusM, api.min_turn_radius_m);
@@ -78,7 +84,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       case Mode::Arc1: {
         v = -kManoeuvreMps;
         w = kManoeuvreMps / radius_m_;  // reversing, yaw grows: the rear swings right
-        const double remaining = y - goal_y_m_;
+        const double remaining = pivot_y - goal_y_m_;
         if (remaining <= radius_m_ * (1 - std::cos(yaw)) || yaw > 1.2) mode_ = Mode::Arc2;
         break;
       }
@@ -108,21 +114,32 @@ class ReactiveParker : public AutoparkAlgorithm {
       case Mode::Parked:
         break;
     }
+    if (mode_ != logged_mode_) {
+      // One line per phase, so a student can follow the manoeuvre in the terminal.
+      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), x, y, yaw * 180 / M_PI);
+      logged_mode_ = mode_;
+    }
     api.motors.sendV(v);
     api.motors.sendW(w);
   }
 
  private:
   enum class Mode { Search, Approach, Arc1, Arc2, Centre, Parked };
+  static const char* name(Mode m) {
+    static const char* const names[] = {"SEARCH", "APPROACH", "ARC1", "ARC2", "CENTRE", "PARKED"};
+    return names[static_cast<int>(m)];
+  }
   static constexpr double kSlotMarginM = 0.8;      // shortest slot: the car plus this
   static constexpr double kArcRadiusM = 5.0;
-  static constexpr double kLaneClearanceM = 0.7;   // from the parked cars' side while manoeuvring
-  static constexpr double kCurbClearanceM = 0.25;  // where the parked car's side ends up
+  static constexpr double kLaneClearanceM = 1.0;   // from the parked cars' side while manoeuvring
+  static constexpr double kCurbClearanceM = 0.45;  // where the parked car's side ends up
+  static constexpr double kBehindCentreM = 1.0;    // the arcs end this far behind the slot's centre
   static constexpr double kCruiseMps = 2.0, kReverseMps = 1.5, kManoeuvreMps = 0.8;
 
   // Pure-pursuit on the lane line, car-like: |w| <= |v| / R.
   double keepLane(const AutoparkApi& api, double v, double y, double yaw) {
-    if (auto edge = detector_->edgeY(); edge && !manoeuvre_planned_) lane_y_m_ = std::min(lane_y_m_, *edge + kLaneClearanceM + api.car_width_m / 2);
+    if (auto edge = detector_->edgeY(); edge && !manoeuvre_planned_) lane_y_m_ = *edge + kLaneClearanceM + api.car_width_m / 2;
+    if (!std::isfinite(lane_y_m_)) lane_y_m_ = y;  // nothing known yet: keep to the present line
     const double lookahead_m = 5.0;
     const double heading = (v >= 0 ? 1 : -1) * std::atan2(lane_y_m_ - y, lookahead_m);
     double w = 1.5 * wrap(heading - yaw) * std::abs(v) / 1.0;
@@ -138,15 +155,18 @@ class ReactiveParker : public AutoparkAlgorithm {
     const double offset = lane_y_m_ - goal_y_m_;
     const double cos_arc = std::clamp(1.0 - offset / (2 * radius_m_), -1.0, 1.0);
     const double arc_length_x = 2 * radius_m_ * std::sqrt(1 - cos_arc * cos_arc);
-    start_x_m_ = slot_.centreXM() + arc_length_x;
+    // Room behind: end no closer than 0.6 m to the car behind; CENTRE then drives forward.
+    const double behind = std::clamp((slot_.lengthM() - api.car_length_m) / 2 - 0.6, 0.0, kBehindCentreM);
+    // The pivot starts and ends at the same body offset, parallel to the street.
+    start_x_m_ = slot_.centreXM() - behind + arc_length_x;
   }
 
   std::optional<SlotDetector> detector_;
   Slot slot_;
-  Mode mode_ = Mode::Search;
+  Mode mode_ = Mode::Search, logged_mode_ = Mode::Parked;
   int direction_ = 1;
   double t_ = 0, radius_m_ = kArcRadiusM;
-  double lane_y_m_ = 1e9, goal_y_m_ = 0, start_x_m_ = 0;
+  double lane_y_m_ = NAN, goal_y_m_ = 0, start_x_m_ = 0;
   bool manoeuvre_planned_ = false;
   int centre_moves_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <aula/app/process_setup.hpp>
 #include <aula/episode_t.hpp>
+#include <aula/world/car_kinematics.hpp>
 
 #include <cmath>
 
@@ -52,8 +53,11 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg) :
                                                     mountOf(*car, right, world_.source_path)});
   api_->car_length_m = car->shape.box_size_m.x();
   api_->car_width_m = car->shape.box_size_m.y();
-  if (const world::PluginSpec* motors = car->findPlugin("motors"); motors && motors->getString("kinematics", "diff") == "ackermann") {
-    api_->min_turn_radius_m = motors->getDouble("wheelbase", 2.6) / std::tan(motors->getDouble("max_steer_rad", 0.48));
+  if (const world::PluginSpec* motors = car->findPlugin("motors")) {
+    const world::CarKinematics kinematics = world::readCarKinematics(*motors);
+    api_->min_turn_radius_m = kinematics.min_turn_radius_m;
+    api_->turn_centre_x_m = kinematics.rear_axle_x_m;
+    api_->wheelbase_m = kinematics.wheelbase_m;
   }
   loop_ = std::make_unique<component::ControlLoop>(bus, "autopark", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
                                                    *motors_, [this] { step(); });

@@ -98,7 +98,7 @@ void AutoparkWindow::drawCar(QPainter& p) const {
   // Wheels: 0.7 x 0.25 m at the axles (front wheels steer with the commanded turn).
   const double c = std::cos(yaw), s = std::sin(yaw);
   const double v = component_.api().motors.getV(), w = component_.api().motors.getW();
-  const double wheelbase = 2.6;
+  const double wheelbase = component_.api().wheelbase_m;
   const double steer = std::abs(v) > 0.05 ? std::clamp(std::atan(wheelbase * w / v), -0.6, 0.6) : 0.0;
   p.setPen(Qt::NoPen);
   p.setBrush(Qt::black);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace aula::autopark {
 namespace {
@@ -10,12 +11,13 @@ namespace {
 constexpr double kFreeDepthM = 1.0;
 // Unseen bins tolerated inside a free run (sparse beams far away).
 constexpr int kMaxUnseenRun = 4;
+// Levels of the parking side are told apart in buckets of this height.
+constexpr double kLevelM = 0.1;
 }  // namespace
 
 SlotDetector::SlotDetector(double min_length_m, double bin_m, double from_x_m, double to_x_m)
     : min_length_m_(min_length_m), bin_m_(bin_m), from_x_m_(from_x_m),
-      nearest_y_(static_cast<size_t>(std::ceil((to_x_m - from_x_m) / bin_m)), std::numeric_limits<double>::quiet_NaN()),
-      edge_y_(-std::numeric_limits<double>::infinity()) {}
+      nearest_y_(static_cast<size_t>(std::ceil((to_x_m - from_x_m) / bin_m)), std::numeric_limits<double>::quiet_NaN()) {}
 
 int SlotDetector::binOf(double x_m) const { return static_cast<int>(std::floor((x_m - from_x_m_) / bin_m_)); }
 
@@ -24,8 +26,6 @@ void SlotDetector::addPoint(double x_m, double y_m) {
   if (b < 0 || b >= static_cast<int>(nearest_y_.size())) return;
   double& n = nearest_y_[b];
   if (std::isnan(n) || y_m > n) n = y_m;
-  if (y_m > edge_y_) edge_y_ = y_m;
-  have_edge_ = true;
 }
 
 void SlotDetector::addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
@@ -44,18 +44,38 @@ void SlotDetector::addScan(double car_x_m, double car_y_m, double car_yaw_rad, c
 }
 
 std::optional<double> SlotDetector::edgeY() const {
-  if (!have_edge_) return std::nullopt;
-  return edge_y_;
+  // The cars' side is the most common level among the bins standing well above the lowest one
+  // (the curb). A wall across the street's end or a pole shows in a few bins only, so it cannot
+  // pull the edge towards the lane the way the single highest point would.
+  double floor_y = std::numeric_limits<double>::infinity();
+  for (double y : nearest_y_) {
+    if (!std::isnan(y)) floor_y = std::min(floor_y, y);
+  }
+  if (!std::isfinite(floor_y)) return std::nullopt;
+  std::map<long, std::pair<int, double>> levels;  // 0.1 m bucket -> (bins, highest y)
+  for (double y : nearest_y_) {
+    if (std::isnan(y) || y < floor_y + kFreeDepthM) continue;
+    auto& level = levels[std::lround(std::floor(y / kLevelM))];
+    ++level.first;
+    level.second = level.first == 1 ? y : std::max(level.second, y);
+  }
+  // Until both the curb and the cars have been seen, one level alone could be either.
+  if (levels.empty()) return std::nullopt;
+  const auto mode = std::max_element(levels.begin(), levels.end(),
+                                     [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
+  return mode->second.second;
 }
 
 std::optional<Slot> SlotDetector::slot(double near_x_m) const {
-  if (!have_edge_) return std::nullopt;
+  const std::optional<double> edge = edgeY();
+  if (!edge) return std::nullopt;
+  const double edge_y = *edge;
   const int n = static_cast<int>(nearest_y_.size());
   enum Kind { Unseen, Free, Occupied };
   auto kind = [&](int b) {
     const double y = nearest_y_[b];
     if (std::isnan(y)) return Unseen;
-    return y < edge_y_ - kFreeDepthM ? Free : Occupied;
+    return y < edge_y - kFreeDepthM ? Free : Occupied;
   };
   std::optional<Slot> best;
   double best_distance = std::numeric_limits<double>::infinity();
@@ -85,7 +105,7 @@ std::optional<Slot> SlotDetector::slot(double near_x_m) const {
       s.front_x_m = from_x_m_ + e * bin_m_;
       std::nth_element(floor_y.begin(), floor_y.begin() + floor_y.size() / 2, floor_y.end());
       s.curb_y_m = floor_y[floor_y.size() / 2];
-      s.edge_y_m = edge_y_;
+      s.edge_y_m = edge_y;
       const double distance = std::abs(s.centreXM() - near_x_m);
       if (s.lengthM() >= min_length_m_ && distance < best_distance) {
         best = s;

@@ -52,7 +52,14 @@ void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, c
 }
 
 void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  const long long before = referee_->collisions();
   referee_->onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
+  if (referee_->collisions() > before) {
+    // Say where, so a student can see which part of the manoeuvre touched something.
+    std::fprintf(stderr, "autopark-referee [%.2f s]: collision %lld, car at x %.2f y %.2f yaw %.1f deg\n",
+                 referee_->elapsedS(), referee_->collisions(), referee_->x(), referee_->y(),
+                 referee_->yawRad() * 180 / M_PI);
+  }
 }
 
 void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {

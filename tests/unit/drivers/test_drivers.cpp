@@ -239,6 +239,27 @@ TEST(MotorsDriver, FilterClampsAndRejects) {
   EXPECT_NEAR(c.w_radps, 0.2, 1e-12);  // |w| <= |v| / R
   ASSERT_TRUE(aula::drivers::filterCommand(limits, 0.0, 1.0, 0, c));
   EXPECT_EQ(c.w_radps, 0.0);  // a car cannot turn in place
+  EXPECT_EQ(c.l_mps, 0.0);
+}
+
+TEST(MotorsDriver, AckermannTurnsAboutTheRearAxle) {
+  aula::drivers::MotorLimits limits;
+  limits.max_v_mps = 3;
+  limits.max_w_radps = 1;
+  limits.ackermann = true;
+  limits.min_turn_radius_m = 5;
+  limits.rear_axle_x_m = -1.3;
+  aula::drivers::VelocityCommand c;
+  // The student's l is ignored; the centre slides so the rear axle has no sideways speed.
+  ASSERT_TRUE(aula::drivers::filterCommand(limits, -2.0, 0.3, 9.0, c));
+  EXPECT_NEAR(c.w_radps, 0.3, 1e-12);
+  EXPECT_NEAR(c.l_mps, 0.39, 1e-12);
+  const double rear_axle_lateral = c.l_mps + c.w_radps * limits.rear_axle_x_m;
+  EXPECT_NEAR(rear_axle_lateral, 0.0, 1e-12);
+  // Turning radius of the rear axle: |v| / |w| never below R.
+  ASSERT_TRUE(aula::drivers::filterCommand(limits, 1.0, -1.0, 0, c));
+  EXPECT_NEAR(std::abs(c.v_mps / c.w_radps), 5.0, 1e-12);
+  EXPECT_NEAR(c.l_mps, -0.26, 1e-12);
 }
 
 namespace {

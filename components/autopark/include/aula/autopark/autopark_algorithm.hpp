@@ -25,6 +25,10 @@ struct AutoparkApi {
   double car_length_m = 4.0, car_width_m = 2.0;
   // Turning radius the car needs: 0 for a car that turns in place ("diff"), else |w| <= |v| / R.
   double min_turn_radius_m = 0.0;
+  // Body-frame x of the point the car turns about: 0 (its centre) for a car that turns in place,
+  // its rear axle (about -1.3 m) for a car-like one. That point moves on circles of radius v / w.
+  double turn_centre_x_m = 0.0;
+  double wheelbase_m = 2.6;  // for drawing the wheels
 };
 
 class AutoparkAlgorithm {

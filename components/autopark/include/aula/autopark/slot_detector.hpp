@@ -34,15 +34,13 @@ class SlotDetector {
 
   // The bounded slot nearest to near_x_m, if one has been seen.
   std::optional<Slot> slot(double near_x_m) const;
-  std::optional<double> edgeY() const;  // the parked cars' side, once seen
+  std::optional<double> edgeY() const;  // the parked cars' side, once both it and the curb are seen
   double minLengthM() const { return min_length_m_; }
 
  private:
   int binOf(double x_m) const;
   double min_length_m_, bin_m_, from_x_m_;
   std::vector<double> nearest_y_;  // per bin: the highest y seen (nearest the lane); NaN = unseen
-  double edge_y_;
-  bool have_edge_ = false;
 };
 
 }  // namespace aula::autopark

@@ -1,0 +1,61 @@
+// The Autopark exercise, headless in lockstep: `aula run autopark` with the reference solutions
+// (about 1 s wall per run). The referee grades from the true geometry and DART contacts.
+#include "test_support.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace std::chrono_literals;
+using aula::testing::jsonNumber;
+using aula::testing::readFile;
+
+namespace {
+
+std::string runAutopark(const std::string& tag, const std::vector<std::string>& extra) {
+  const std::string report = ::testing::TempDir() + "autopark_" + tag + ".json";
+  const std::string log = ::testing::TempDir() + "autopark_" + tag + ".log";
+  std::remove(report.c_str());
+  std::vector<std::string> args{std::string(AULA_BIN_DIR) + "/aula", "run", "autopark", "--headless",
+                                "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  aula::process::ChildProcess run(args, log, log);
+  const auto code = run.wait(120s);
+  EXPECT_TRUE(code.has_value()) << readFile(log);
+  EXPECT_EQ(code.value_or(-1), 0) << readFile(log);
+  return readFile(report) + "\n--- log ---\n" + readFile(log);
+}
+
+std::string reportOnly(const std::string& run) { return run.substr(0, run.find("\n--- log ---\n")); }
+
+void expectParkedWell(const std::string& run) {
+  EXPECT_NE(run.find("\"parked\": true"), std::string::npos) << run;
+  EXPECT_GE(jsonNumber(run, "mark"), 9.0) << run;
+  EXPECT_EQ(jsonNumber(run, "collisions"), 0.0) << run;
+}
+
+}  // namespace
+
+TEST(AutoparkRun, ReactiveParksFromTheDefaultStartAndTheSameSeedGivesTheSameReport) {
+  const std::string a = runAutopark("default_a", {"--algorithm=reactive", "--seed=5"});
+  const std::string b = runAutopark("default_b", {"--algorithm=reactive", "--seed=5"});
+  expectParkedWell(a);
+  EXPECT_EQ(reportOnly(a), reportOnly(b)) << "the same seed must give a byte-identical report";
+  EXPECT_NE(a.find("\"exercise\": \"autopark\""), std::string::npos) << a;
+}
+
+TEST(AutoparkRun, ReactiveParksFromEightMetresFurtherBack) {
+  expectParkedWell(runAutopark("back", {"--algorithm=reactive", "--seed=6", "--Simulator.StartPose.car=-15,2.5,0"}));
+}
+
+TEST(AutoparkRun, ReactiveParksFromAlongsideTheCarAheadOfTheSlot) {
+  // The car ahead of the slot is centred at x = 14: the slot is behind the car at the start.
+  expectParkedWell(runAutopark("alongside", {"--algorithm=reactive", "--seed=7", "--Simulator.StartPose.car=14,2.5,0"}));
+}
+
+TEST(AutoparkRun, ReactiveParksTheCarLikeCar) {
+  expectParkedWell(runAutopark("ackermann", {"--algorithm=reactive", "--seed=8", "--world=worlds/autopark_ackermann.world"}));
+}
