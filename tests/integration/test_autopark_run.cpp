@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,4 +59,14 @@ TEST(AutoparkRun, ReactiveParksFromAlongsideTheCarAheadOfTheSlot) {
 
 TEST(AutoparkRun, ReactiveParksTheCarLikeCar) {
   expectParkedWell(runAutopark("ackermann", {"--algorithm=reactive", "--seed=8", "--world=worlds/autopark_ackermann.world"}));
+}
+
+TEST(AutoparkRun, PlannerParksTheCarLikeCarInTheOnePointThreeLengthSlot) {
+  // A 5.2 m slot for a 4 m car that cannot turn tighter than 5 m: many short moves (OMPL + escape).
+  const std::string run = runAutopark("planner_13", {"--algorithm=planner", "--seed=9", "--world=worlds/autopark_ackermann_1.3L.world"});
+  EXPECT_NE(run.find("\"parked\": true"), std::string::npos) << run;
+  EXPECT_EQ(jsonNumber(run, "collisions"), 0.0) << run;
+  EXPECT_LE(jsonNumber(run, "position_error_m"), 0.3) << run;
+  EXPECT_LE(std::abs(jsonNumber(run, "yaw_error_deg")), 5.0) << run;
+  EXPECT_NE(run.find("\"algorithm\": \"planner\""), std::string::npos) << run;
 }

@@ -14,7 +14,7 @@
 //   PARKED    stop.
 // Every arc has radius >= R = 5 m, so the same manoeuvre suits a car-like (Ackermann) car.
 #include <aula/autopark/autopark_algorithm.hpp>
-#include <aula/autopark/slot_detector.hpp>
+#include <aula/autopark/street_search.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -25,60 +25,46 @@ namespace {
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
-// The minimum range of a laser over the beams within +-half_width_rad of straight out.
-double ahead(const component::LaserData& scan, double half_width_rad) {
-  double m = scan.maxRange;
-  for (int i = 0; i < scan.numLaser; ++i) {
-    if (std::abs(scan.angle(i)) <= half_width_rad) m = std::min<double>(m, scan.values_m[i]);
-  }
-  return m;
-}
-
 class ReactiveParker : public AutoparkAlgorithm {
  public:
   void execute(AutoparkApi& api) override {
     t_ += api.period_s;
     const auto& front = api.laser1.getLaserData();
     const auto& rear = api.laser2.getLaserData();
-    const auto& right = api.laser3.getLaserData();
-    if (front.numLaser == 0 || rear.numLaser == 0 || right.numLaser == 0 || !api.pose3d.received()) return;
+    if (front.numLaser == 0 || rear.numLaser == 0 || api.laser3.getLaserData().numLaser == 0 || !api.pose3d.received()) return;
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
     // The point the car turns about: it moves on arcs of radius |v / w|.
     const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
-    if (!detector_) {
-      detector_.emplace(api.car_length_m + kSlotMarginM);
+    if (!search_) {
       radius_m_ = std::max(kArcRadiusM, api.min_turn_radius_m);
-    }
-    if (mode_ == Mode::Search || mode_ == Mode::Approach) {
-      detector_->addScan(x, y, yaw, api.mount1, front);
-      detector_->addScan(x, y, yaw, api.mount2, rear);
-      detector_->addScan(x, y, yaw, api.mount3, right);
+      StreetSearch::Settings settings;
+      settings.min_slot_length_m = api.car_length_m + kSlotMarginM;
+      settings.turn_radius_m = radius_m_;
+      search_.emplace(api, settings);
     }
     double v = 0, w = 0;
     switch (mode_) {
       case Mode::Search: {
-        if (auto slot = detector_->slot(x)) {
-          slot_ = *slot;
+        const StreetSearch::Step step = search_->search(api, x, y, yaw);
+        if (step.slot) {
+          slot_ = *step.slot;
           planManoeuvre(api);
           mode_ = Mode::Approach;
           break;
         }
-        // The street's end: turn back (a car reverses down the street).
-        if (direction_ > 0 && ahead(front, 0.3) < 4.0) direction_ = -1;
-        if (direction_ < 0 && ahead(rear, 0.3) < 4.0) direction_ = 1;
-        v = direction_ > 0 ? kCruiseMps : -kReverseMps;
-        w = keepLane(api, v, y, yaw);
+        v = step.v_mps;
+        w = step.w_radps;
         break;
       }
       case Mode::Approach: {
         const double to_go = start_x_m_ - x;
-        if (std::abs(to_go) < 0.05 && std::abs(y - lane_y_m_) < 0.3 && std::abs(wrap(yaw)) < 0.05) {
+        if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(wrap(yaw)) < 0.05) {
           mode_ = Mode::Arc1;
           break;
         }
         v = std::clamp(0.8 * to_go, -kReverseMps, kCruiseMps);
         if (std::abs(v) < 0.15) v = std::copysign(0.15, to_go);
-        w = keepLane(api, v, y, yaw);
+        w = search_->keepLane(v, y, yaw);
         break;
       }
       case Mode::Arc1: {
@@ -92,11 +78,11 @@ class ReactiveParker : public AutoparkAlgorithm {
         v = -kManoeuvreMps;
         w = -kManoeuvreMps / radius_m_;
         // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-        if (yaw <= 0.0 || ahead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
+        if (yaw <= 0.0 || rangeAhead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
         break;
       }
       case Mode::Centre: {
-        const double gap_front = ahead(front, 0.15), gap_rear = ahead(rear, 0.15);
+        const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
         const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
         const double yaw_error = wrap(yaw);
         if (std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03) {
@@ -131,28 +117,15 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
   static constexpr double kSlotMarginM = 0.8;      // shortest slot: the car plus this
   static constexpr double kArcRadiusM = 5.0;
-  static constexpr double kLaneClearanceM = 1.0;   // from the parked cars' side while manoeuvring
   static constexpr double kCurbClearanceM = 0.45;  // where the parked car's side ends up
   static constexpr double kBehindCentreM = 1.0;    // the arcs end this far behind the slot's centre
   static constexpr double kCruiseMps = 2.0, kReverseMps = 1.5, kManoeuvreMps = 0.8;
 
-  // Pure-pursuit on the lane line, car-like: |w| <= |v| / R.
-  double keepLane(const AutoparkApi& api, double v, double y, double yaw) {
-    if (auto edge = detector_->edgeY(); edge && !manoeuvre_planned_) lane_y_m_ = *edge + kLaneClearanceM + api.car_width_m / 2;
-    if (!std::isfinite(lane_y_m_)) lane_y_m_ = y;  // nothing known yet: keep to the present line
-    const double lookahead_m = 5.0;
-    const double heading = (v >= 0 ? 1 : -1) * std::atan2(lane_y_m_ - y, lookahead_m);
-    double w = 1.5 * wrap(heading - yaw) * std::abs(v) / 1.0;
-    const double limit = std::abs(v) / radius_m_;
-    return std::clamp(w, -limit, limit);
-  }
-
   // Where the two arcs start: they bring the centre from the lane to the slot's centre line.
   void planManoeuvre(const AutoparkApi& api) {
-    manoeuvre_planned_ = true;
-    lane_y_m_ = slot_.edge_y_m + kLaneClearanceM + api.car_width_m / 2;
+    search_->holdLane(search_->laneYFor(slot_.edge_y_m));
     goal_y_m_ = slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2;
-    const double offset = lane_y_m_ - goal_y_m_;
+    const double offset = search_->laneY() - goal_y_m_;
     const double cos_arc = std::clamp(1.0 - offset / (2 * radius_m_), -1.0, 1.0);
     const double arc_length_x = 2 * radius_m_ * std::sqrt(1 - cos_arc * cos_arc);
     // Room behind: end no closer than 0.6 m to the car behind; CENTRE then drives forward.
@@ -161,13 +134,11 @@ class ReactiveParker : public AutoparkAlgorithm {
     start_x_m_ = slot_.centreXM() - behind + arc_length_x;
   }
 
-  std::optional<SlotDetector> detector_;
+  std::optional<StreetSearch> search_;
   Slot slot_;
   Mode mode_ = Mode::Search, logged_mode_ = Mode::Parked;
-  int direction_ = 1;
   double t_ = 0, radius_m_ = kArcRadiusM;
-  double lane_y_m_ = NAN, goal_y_m_ = 0, start_x_m_ = 0;
-  bool manoeuvre_planned_ = false;
+  double goal_y_m_ = 0, start_x_m_ = 0;
   int centre_moves_ = 0;
 };
 

@@ -29,9 +29,9 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg) :
   if (!(max_v > 0) || !(max_w > 0)) throw config::ConfigError(cfg.origin("Autopark.MaxV") + ": Autopark.MaxV and Autopark.MaxW must be > 0");
   if (!(period_s_ >= 0.005 && period_s_ <= 1.0)) throw config::ConfigError(cfg.origin("Autopark.Period") + ": Autopark.Period must be in [0.005, 1] s");
   algorithm_name_ = cfg.getString("Autopark.Algorithm", "student");
-  if (algorithm_name_ != "student" && algorithm_name_ != "reactive") {
+  if (algorithm_name_ != "student" && algorithm_name_ != "reactive" && algorithm_name_ != "planner") {
     throw config::ConfigError(cfg.origin("Autopark.Algorithm") + ": Autopark.Algorithm = '" + algorithm_name_ +
-                              "': expected student or reactive");
+                              "': expected student, reactive or planner");
   }
   episode_channel_ = cfg.getString("Autopark.Episode.Channel", "AUTOPARK_EPISODE");
   autostart_ = cfg.getBool("Autopark.Autostart", false);
@@ -67,7 +67,9 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg) :
 void AutoparkComponent::step() {
   if (!algorithm_) {
     const auto seed = static_cast<uint64_t>(loop_->seed());
-    algorithm_ = algorithm_name_ == "reactive" ? makeReactiveAlgorithm(seed) : makeStudentAlgorithm(seed);
+    algorithm_ = algorithm_name_ == "reactive"  ? makeReactiveAlgorithm(seed)
+                 : algorithm_name_ == "planner" ? makePlannedAlgorithm(seed)
+                                                : makeStudentAlgorithm(seed);
   }
   algorithm_->execute(*api_);
 }

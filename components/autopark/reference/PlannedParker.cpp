@@ -1,0 +1,202 @@
+// Autopark reference solution, planned (Autopark.Algorithm = planner):
+//   SEARCH   drive down the street (StreetSearch) while every laser echo goes into an occupancy
+//            grid of the street, 0.05 m cells; the SlotDetector finds the free slot.
+//   SURVEY   drive on until the car ahead of the slot is well in view, then stop.
+//   PLAN     ParkingPlanner (OMPL Reeds-Shepp RRTConnect to a searched escape pose; see
+//            docs/planner.md) from the stopped pose to the slot's centre, on the lasers' grid.
+//   TRACK    PathTracker drives the path, forward and reverse moves split at the cusps. A car that
+//            drifts off the path stops and plans again from where it is.
+//   PARKED   stop.
+// The car model comes from the world through the API: its turning radius and the point it turns
+// about (rear axle for a car-like car, centre for one that turns in place).
+#include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/autopark/occupancy_grid.hpp>
+#include <aula/autopark/parking_planner.hpp>
+#include <aula/autopark/path_tracker.hpp>
+#include <aula/autopark/street_search.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace aula::autopark {
+namespace {
+
+class PlannedParker : public AutoparkAlgorithm {
+ public:
+  explicit PlannedParker(uint64_t seed) : seed_(static_cast<unsigned>(seed % 1000003 + 1)) {}
+
+  void execute(AutoparkApi& api) override {
+    t_ += api.period_s;
+    if (api.laser1.getLaserData().numLaser == 0 || api.laser2.getLaserData().numLaser == 0 ||
+        api.laser3.getLaserData().numLaser == 0 || !api.pose3d.received()) {
+      return;
+    }
+    const Pose2D pose{api.pose3d.getX(), api.pose3d.getY(), api.pose3d.getYaw()};
+    if (!search_) start(api, pose);
+    if (mode_ == Mode::Search || mode_ == Mode::Survey) mapScans(api, pose);
+    double v = 0, w = 0;
+    switch (mode_) {
+      case Mode::Search: {
+        const StreetSearch::Step step = search_->search(api, pose.x_m, pose.y_m, pose.yaw_rad);
+        v = step.v_mps;
+        w = step.w_radps;
+        if (step.slot) {
+          slot_ = *step.slot;
+          direction_ = search_->direction();
+          mode_ = Mode::Survey;
+        }
+        break;
+      }
+      case Mode::Survey: {
+        // The slot's far end must be mapped before planning: drive on (in the search direction)
+        // until the car is past it, then stop for a moment so the planner starts from rest.
+        search_->addScans(api, pose.x_m, pose.y_m, pose.yaw_rad);
+        if (auto slot = search_->detector().slot(slot_.centreXM())) slot_ = *slot;
+        const double past = direction_ > 0 ? pose.x_m - slot_.front_x_m : slot_.rear_x_m - pose.x_m;
+        if (past < kSurveyPastM) {
+          v = direction_ > 0 ? kSurveyMps : -kSurveyMps;
+          w = search_->keepLane(v, pose.y_m, pose.yaw_rad);
+        } else if ((still_s_ += api.period_s) >= kSettleS) {
+          mode_ = Mode::Plan;
+        }
+        break;
+      }
+      case Mode::Plan:
+        plan(api, pose);
+        break;
+      case Mode::Track: {
+        const PathTracker::Command command = tracker_->update(pose);
+        v = command.v_mps;
+        w = command.w_radps;
+        if (command.done) {
+          mode_ = Mode::Parked;
+        } else if (std::abs(tracker_->lateralError_m()) > kReplanErrorM && replans_ < kMaxReplans) {
+          ++replans_;
+          v = w = 0;
+          still_s_ = 0;
+          mode_ = Mode::Settle;
+        }
+        break;
+      }
+      case Mode::Settle:
+        if ((still_s_ += api.period_s) >= kSettleS) mode_ = Mode::Plan;
+        break;
+      case Mode::Parked:
+      case Mode::Failed:
+        break;
+    }
+    if (mode_ != logged_mode_) {
+      std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), pose.x_m, pose.y_m,
+                   pose.yaw_rad * 180 / M_PI);
+      logged_mode_ = mode_;
+    }
+    api.motors.sendV(v);
+    api.motors.sendW(w);
+  }
+
+ private:
+  enum class Mode { Search, Survey, Plan, Track, Settle, Parked, Failed };
+  static const char* name(Mode m) {
+    static const char* const names[] = {"SEARCH", "SURVEY", "PLAN", "TRACK", "SETTLE", "PARKED", "FAILED"};
+    return names[static_cast<int>(m)];
+  }
+  static constexpr double kSlotMarginM = 0.6;     // shortest slot: the car plus this
+  static constexpr double kCurbClearanceM = 0.3;  // the parked car's side from the curb
+  static constexpr double kSurveyPastM = 2.0;     // drive this far past the slot's end before planning
+  static constexpr double kSurveyMps = 1.0;
+  static constexpr double kSettleS = 0.5;         // standing still before planning
+  static constexpr double kReplanErrorM = 0.4;    // off the path by this much: stop and plan again
+  static constexpr int kMaxReplans = 3;
+  static constexpr double kGridResolutionM = 0.05;
+  static constexpr double kGridHalfLengthM = 70, kGridHalfWidthM = 15;
+
+  void start(const AutoparkApi& api, const Pose2D& pose) {
+    car_.length_m = api.car_length_m;
+    car_.width_m = api.car_width_m;
+    car_.rear_axle_from_centre_m = -api.turn_centre_x_m;
+    car_.min_turn_radius_m = std::max(api.min_turn_radius_m, 5.0);
+    StreetSearch::Settings settings;
+    settings.min_slot_length_m = api.car_length_m + kSlotMarginM;
+    settings.turn_radius_m = car_.min_turn_radius_m;
+    search_.emplace(api, settings);
+    // The map is anchored where the car starts; the street runs along x.
+    const auto cells = [](double m) { return static_cast<int>(std::lround(2 * m / kGridResolutionM)); };
+    map_ = OccupancyGrid(pose.x_m - kGridHalfLengthM, pose.y_m - kGridHalfWidthM, kGridResolutionM,
+                         cells(kGridHalfLengthM), cells(kGridHalfWidthM));
+  }
+
+  // Every echo of the three lasers marks its cell.
+  void mapScans(const AutoparkApi& api, const Pose2D& pose) {
+    const LaserMount* mounts[] = {&api.mount1, &api.mount2, &api.mount3};
+    const component::LaserProxy* lasers[] = {&api.laser1, &api.laser2, &api.laser3};
+    const double c = std::cos(pose.yaw_rad), s = std::sin(pose.yaw_rad);
+    for (int k = 0; k < 3; ++k) {
+      const component::LaserData& scan = lasers[k]->getLaserData();
+      const LaserMount& mount = *mounts[k];
+      const double lx = pose.x_m + c * mount.x_m - s * mount.y_m, ly = pose.y_m + s * mount.x_m + c * mount.y_m;
+      for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+        const double r = scan.values_m[i];
+        if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;  // no echo
+        const double a = pose.yaw_rad + mount.yaw_rad + scan.angle(i);
+        map_.markOccupied(lx + r * std::cos(a), ly + r * std::sin(a));
+      }
+    }
+  }
+
+  // The planning grid: the street around the slot, cut from the map. Above the lane, where the
+  // lasers may not have reached, the grid ends a few metres out (outside counts as occupied).
+  OccupancyGrid planningGrid(const Pose2D& pose) const {
+    const double x0 = std::min(pose.x_m, slot_.rear_x_m) - 12, x1 = std::max(pose.x_m, slot_.front_x_m) + 12;
+    const double y0 = slot_.curb_y_m - 0.5, y1 = std::max(pose.y_m, search_->laneY()) + car_.width_m / 2 + 3.0;
+    const double res = map_.resolution_m();
+    OccupancyGrid grid(x0, y0, res, static_cast<int>(std::ceil((x1 - x0) / res)), static_cast<int>(std::ceil((y1 - y0) / res)));
+    for (int row = 0; row < grid.height(); ++row) {
+      for (int col = 0; col < grid.width(); ++col) {
+        double x, y;
+        grid.cellCentre(col, row, x, y);
+        int map_col, map_row;
+        if (map_.worldToCell(x, y, map_col, map_row) && map_.occupied(map_col, map_row)) grid.markCell(col, row);
+      }
+    }
+    return grid;
+  }
+
+  void plan(const AutoparkApi& api, const Pose2D& pose) {
+    const Pose2D goal{slot_.centreXM(), slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2, 0.0};
+    ParkingPlanner::Options options;
+    options.seed = seed_ + static_cast<unsigned>(attempts_);
+    const PlannedPath path = ParkingPlanner(car_, options).plan(planningGrid(pose), pose, goal);
+    ++attempts_;
+    std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s\n",
+                 path.solved ? "path" : "no path", goal.x_m, goal.y_m, path.planning_time_s * 1e3, path.cusps,
+                 path.length_m, path.message.empty() ? "" : ": ", path.message.c_str());
+    if (!path.solved) {
+      mode_ = attempts_ < kMaxReplans + 1 ? Mode::Settle : Mode::Failed;
+      still_s_ = 0;
+      return;
+    }
+    path_ = path;
+    tracker_.emplace(path_, car_);
+    mode_ = Mode::Track;
+  }
+
+  unsigned seed_;
+  CarGeometry car_;
+  std::optional<StreetSearch> search_;
+  OccupancyGrid map_;
+  Slot slot_;
+  int direction_ = 1;
+  PlannedPath path_;
+  std::optional<PathTracker> tracker_;
+  Mode mode_ = Mode::Search, logged_mode_ = Mode::Failed;
+  double t_ = 0, still_s_ = 0;
+  int replans_ = 0, attempts_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<AutoparkAlgorithm> makePlannedAlgorithm(uint64_t seed) { return std::make_unique<PlannedParker>(seed); }
+
+}  // namespace aula::autopark

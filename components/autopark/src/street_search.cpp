@@ -1,0 +1,56 @@
+#include "aula/autopark/street_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aula::autopark {
+namespace {
+double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+}  // namespace
+
+double rangeAhead(const component::LaserData& scan, double half_width_rad) {
+  double m = scan.maxRange;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    if (std::abs(scan.angle(i)) <= half_width_rad) m = std::min<double>(m, scan.values_m[i]);
+  }
+  return m;
+}
+
+StreetSearch::StreetSearch(const AutoparkApi& api, Settings settings)
+    : settings_(settings), detector_(settings.min_slot_length_m), car_width_m_(api.car_width_m),
+      lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
+
+void StreetSearch::addScans(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) {
+  detector_.addScan(x_m, y_m, yaw_rad, api.mount1, api.laser1.getLaserData());
+  detector_.addScan(x_m, y_m, yaw_rad, api.mount2, api.laser2.getLaserData());
+  detector_.addScan(x_m, y_m, yaw_rad, api.mount3, api.laser3.getLaserData());
+}
+
+StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) {
+  addScans(api, x_m, y_m, yaw_rad);
+  Step step;
+  step.slot = detector_.slot(x_m);
+  if (step.slot) return step;
+  if (direction_ > 0 && rangeAhead(api.laser1.getLaserData(), 0.3) < settings_.street_end_m) direction_ = -1;
+  if (direction_ < 0 && rangeAhead(api.laser2.getLaserData(), 0.3) < settings_.street_end_m) direction_ = 1;
+  step.v_mps = direction_ > 0 ? settings_.cruise_mps : -settings_.reverse_mps;
+  if (!lane_held_) {
+    if (auto edge = detector_.edgeY()) lane_y_m_ = laneYFor(*edge);
+  }
+  if (!std::isfinite(lane_y_m_)) lane_y_m_ = y_m;  // nothing known yet: keep to the present line
+  step.w_radps = keepLane(step.v_mps, y_m, yaw_rad);
+  return step;
+}
+
+double StreetSearch::keepLane(double v_mps, double y_m, double yaw_rad) const {
+  const double lane_y = std::isfinite(lane_y_m_) ? lane_y_m_ : y_m;
+  // Pure pursuit of a point 5 m down the lane line, in the direction of travel.
+  const double lookahead_m = 5.0;
+  const double heading = (v_mps >= 0 ? 1 : -1) * std::atan2(lane_y - y_m, lookahead_m);
+  const double w = 1.5 * wrap(heading - yaw_rad) * std::abs(v_mps);
+  const double limit = std::abs(v_mps) / settings_.turn_radius_m;
+  return std::clamp(w, -limit, limit);
+}
+
+}  // namespace aula::autopark
