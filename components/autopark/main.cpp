@@ -1,4 +1,4 @@
-// autopark [--config=config/autopark.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png]
+// autopark [--config=config/autopark.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png [--screenshot-at=SIM_SECONDS]]
 //          [--Autopark.Key=value ...]
 // The Autopark academic component: find the free slot and park the car in it.
 #include "src/autopark_window.hpp"
@@ -9,9 +9,11 @@
 
 #include <QApplication>
 
+#include <string>
+
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/autopark.cfg", {"screenshot"});
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/autopark.cfg", {"screenshot", "screenshot-at"});
     aula::autopark::AutoparkComponent component(*setup.bus, setup.cfg);
     if (setup.headless) {
       aula::app::runHeadless(*setup.bus, [] { return false; }, [&] { component.poll(); });
@@ -23,7 +25,8 @@ int main(int argc, char** argv) {
     aula::app::BusPump pump(*setup.bus, [&] { component.poll(); });
     window.show();
     if (setup.command_line.flag("screenshot")) {
-      window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), 40'000'000);
+      const double at_s = setup.command_line.flag("screenshot-at") ? std::stod(setup.command_line.option("screenshot-at")) : 40.0;
+      window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), static_cast<int64_t>(at_s * 1e6));
     }
     const int code = app.exec();
     component.leave();

@@ -36,9 +36,9 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg) :
   episode_channel_ = cfg.getString("Autopark.Episode.Channel", "AUTOPARK_EPISODE");
   autostart_ = cfg.getBool("Autopark.Autostart", false);
   world_ = world::loadWorld(app::sourcePath(cfg, "Autopark.World", "worlds/autopark.world"));
-  const std::string robot = cfg.getString("Autopark.Robot", "car");
-  const world::RobotSpec* car = world_.findRobot(robot);
-  if (car == nullptr) throw config::ConfigError(cfg.origin("Autopark.Robot") + ": the world " + world_.source_path + " has no robot '" + robot + "'");
+  robot_name_ = cfg.getString("Autopark.Robot", "car");
+  const world::RobotSpec* car = world_.findRobot(robot_name_);
+  if (car == nullptr) throw config::ConfigError(cfg.origin("Autopark.Robot") + ": the world " + world_.source_path + " has no robot '" + robot_name_ + "'");
 
   const std::string front = cfg.getString("Autopark.Laser1.Channel", "CAR_LASER_FRONT");
   const std::string rear = cfg.getString("Autopark.Laser2.Channel", "CAR_LASER_REAR");

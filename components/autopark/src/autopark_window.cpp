@@ -39,18 +39,19 @@ QPolygonF rectangle(const component::MapView& map, const Rect2D& rect) {
 }  // namespace
 
 AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
-    : component_(component), scene_(ParkingScene::fromWorld(component.world(), "car")) {
+    : component_(component), scene_(ParkingScene::fromWorld(component.world(), component.robotName())) {
   setWindowTitle("Autopark");
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
   world::MapTransform transform;
   const QImage street = streetImage(component_.world(), transform);
   map_ = new component::MapView(street, transform, central);
-  map_->setMinimumSize(street.width(), street.height());
-  layout->addWidget(map_, 1);
+  // The whole street at 12 px/m, as tall as it is (the rest of the height goes to the lasers).
+  map_->setFixedSize(street.width(), street.height());
+  layout->addWidget(map_, 0, Qt::AlignHCenter);
   auto* bottom = new QHBoxLayout;
   lasers_ = new LaserView(component_, central);
-  lasers_->setMinimumSize(360, 300);
+  lasers_->setMinimumSize(420, 360);
   bottom->addWidget(lasers_, 1);
   auto* side = new QVBoxLayout;
   run_ = new component::RunToggle(central);
@@ -62,7 +63,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   side->addStretch(1);
   bottom->addLayout(side);
   bottom->addWidget(teleop);
-  layout->addLayout(bottom);
+  layout->addLayout(bottom, 1);
   setCentralWidget(central);
   connect(run_, &component::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
   connect(teleop, &component::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
@@ -136,15 +137,7 @@ void AutoparkWindow::refresh() {
 }
 
 void AutoparkWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  auto* poll = new QTimer(this);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, sim_us] {
-    if (component_.simTimeUs() < sim_us) return;
-    poll->stop();
-    refresh();
-    component::saveWidgetPng(*this, png_path);
-    QApplication::quit();
-  });
-  poll->start(20);
+  component::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
 }
 
 LaserView::LaserView(const AutoparkComponent& component, QWidget* parent) : QWidget(parent), component_(component) {}

@@ -65,15 +65,7 @@ void VacuumWindow::refresh() {
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  auto* poll = new QTimer(this);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, sim_us] {
-    if (component_.simTimeUs() < sim_us) return;
-    poll->stop();
-    refresh();
-    component::saveWidgetPng(*this, png_path);
-    QApplication::quit();
-  });
-  poll->start(20);
+  component::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
 }
 
 }  // namespace aula::vacuum

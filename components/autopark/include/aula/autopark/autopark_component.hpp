@@ -29,6 +29,7 @@ class AutoparkComponent {
 
   const AutoparkApi& api() const { return *api_; }
   const world::WorldSpec& world() const { return world_; }
+  const std::string& robotName() const { return robot_name_; }  // the car in the world
   int64_t simTimeUs() const { return loop_->simTimeUs(); }
   const std::string& algorithmName() const { return algorithm_name_; }
   double maxV() const { return motors_->maxV(); }
@@ -41,7 +42,7 @@ class AutoparkComponent {
 
   lcm::LCM& bus_;
   world::WorldSpec world_;
-  std::string algorithm_name_, episode_channel_;
+  std::string algorithm_name_, episode_channel_, robot_name_;
   double period_s_;
   bool autostart_ = false;
   std::unique_ptr<component::Pose3dProxy> pose_;
