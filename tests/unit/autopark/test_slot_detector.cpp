@@ -88,3 +88,26 @@ TEST(SlotDetector, SeesTheSlotBehindWithTheRearLaser) {
   ASSERT_TRUE(slot.has_value());
   EXPECT_NEAR(slot->centreXM(), 7.25, 0.15);
 }
+
+TEST(SlotDetector, TheStreetsEndWallDoesNotMoveTheCarsEdge) {
+  // Start alongside the car ahead of the slot, drive to the east end (its wall crosses the
+  // parking side up to the lane) and back: the wall is a few bins only, the cars' side is most.
+  const Street street("autopark.world");
+  SlotDetector detector(4.8);
+  drive(street, detector, 14, 31, 0.0);
+  ASSERT_TRUE(detector.edgeY().has_value());
+  EXPECT_NEAR(*detector.edgeY(), -2.1, 0.05);
+  drive(street, detector, 31, 0, 0.0);
+  const auto slot = detector.slot(7);
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->centreXM(), 7.25, 0.15);
+}
+
+TEST(SlotDetector, NoEdgeUntilBothTheCurbAndTheCarsAreSeen) {
+  SlotDetector detector(4.8);
+  for (double x = 0; x < 5; x += 0.1) detector.addPoint(x, -2.1);  // cars only: or is it the curb?
+  EXPECT_FALSE(detector.edgeY().has_value());
+  for (double x = 5; x < 8; x += 0.1) detector.addPoint(x, -4.25);  // a gap shows the curb below
+  ASSERT_TRUE(detector.edgeY().has_value());
+  EXPECT_NEAR(*detector.edgeY(), -2.1, 1e-9);
+}
