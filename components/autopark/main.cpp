@@ -9,7 +9,6 @@
 
 #include <QApplication>
 
-#include <string>
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark", [&] {
@@ -25,7 +24,7 @@ int main(int argc, char** argv) {
     aula::app::BusPump pump(*setup.bus, [&] { component.poll(); });
     window.show();
     if (setup.command_line.flag("screenshot")) {
-      const double at_s = setup.command_line.flag("screenshot-at") ? std::stod(setup.command_line.option("screenshot-at")) : 40.0;
+      const double at_s = setup.command_line.optionDouble("screenshot-at", 40.0);
       window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), static_cast<int64_t>(at_s * 1e6));
     }
     const int code = app.exec();

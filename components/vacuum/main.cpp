@@ -1,4 +1,4 @@
-// vacuum-cleaner [--config=config/vacuumCleaner.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png]
+// vacuum-cleaner [--config=config/vacuumCleaner.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png [--screenshot-at=SIM_SECONDS]]
 //                [--Vacuum.Key=value ...]
 // The vacuum cleaner academic component: clean the house without localization.
 #include "src/vacuum_window.hpp"
@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/vacuumCleaner.cfg", {"screenshot"});
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/vacuumCleaner.cfg", {"screenshot", "screenshot-at"});
     aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg);
     if (setup.headless) {
       aula::app::runHeadless(*setup.bus, [] { return false; }, [&] { component.poll(); });
@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
     aula::app::BusPump pump(*setup.bus, [&] { component.poll(); });
     window.show();
     if (setup.command_line.flag("screenshot")) {
-      window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), 60'000'000);
+      const double at_s = setup.command_line.optionDouble("screenshot-at", 60.0);
+      window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), static_cast<int64_t>(at_s * 1e6));
     }
     const int code = app.exec();
     component.leave();

@@ -20,6 +20,7 @@ VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg) : bus
   episode_channel_ = cfg.getString("Vacuum.Episode.Channel", "VACUUM_EPISODE");
   map_yaml_ = cfg.getString("Vacuum.Map", "vacuum.yaml");
   autostart_ = cfg.getBool("Vacuum.Autostart", false);
+  run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration", 900);
   pose_ = std::make_unique<component::Pose3dProxy>(bus, cfg.getString("Vacuum.Pose3D.Channel", "ROOMBA_POSE"));
   laser_ = std::make_unique<component::LaserProxy>(bus, cfg.getString("Vacuum.Laser.Channel", "ROOMBA_LASER"));
   bumper_ = std::make_unique<component::BumperProxy>(bus, cfg.getString("Vacuum.Bumper.Channel", "ROOMBA_BUMPER"));

@@ -1,7 +1,11 @@
 #include "vacuum_window.hpp"
 
+#include "coverage_plot.hpp"
+
 #include <aula/component/widgets/screenshot.hpp>
 #include <aula/world/map_transform.hpp>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include <QApplication>
 #include <QHBoxLayout>
@@ -17,8 +21,10 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   std::string image;
   const auto yaml = std::string(AULA_MAPS_DIR) + "/" + component_.mapYaml();
   const world::MapTransform transform = world::MapTransform::load(yaml, &image);
+  transform_ = transform;
   QImage map(QString::fromStdString(image));
-  if (map.isNull()) throw std::runtime_error(image + ": cannot read the map image");
+  map_image_ = cv::imread(image, cv::IMREAD_GRAYSCALE);
+  if (map.isNull() || map_image_.empty()) throw std::runtime_error(image + ": cannot read the map image");
   auto* central = new QWidget(this);
   auto* layout = new QHBoxLayout(central);
   map_ = new component::MapView(map.convertToFormat(QImage::Format_Grayscale8), transform, central);
@@ -33,7 +39,8 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   side->addWidget(run_);
   side->addWidget(status_);
   side->addWidget(teleop);
-  side->addStretch(1);
+  plot_ = new CoveragePlot(component_.runDurationS(), central);
+  side->addWidget(plot_, 1);
   layout->addLayout(side);
   setCentralWidget(central);
   connect(run_, &component::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
@@ -41,27 +48,41 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
   // not at the GUI's refresh rate, so the band has no gaps however fast the simulation runs.
-  component_.setOnTick([this](int64_t) {
-    const auto& p = component_.truePose();
-    if (p.received() && p.utime() != last_pose_utime_) {
-      last_pose_utime_ = p.utime();
-      map_->paintDisc(p.getX(), p.getY(), 0.165, QColor(80, 170, 255, 200));
-    }
-  });
+  component_.setOnTick([this](int64_t utime) { onTick(utime); });
   connect(&timer_, &QTimer::timeout, this, &VacuumWindow::refresh);
   timer_.start(50);
   refresh();
+}
+
+void VacuumWindow::onTick(int64_t utime) {
+  const auto& p = component_.truePose();
+  if (!p.received() || p.utime() == last_pose_utime_) return;
+  last_pose_utime_ = p.utime();
+  map_->paintDisc(p.getX(), p.getY(), 0.165, QColor(80, 170, 255, 200));
+  // The percentage counts from the first Run, on the referee's own grid (free floor reachable
+  // from where the robot stands), sampled once per sim second for the plot.
+  if (!component_.running() && run_start_utime_ < 0) return;
+  if (run_start_utime_ < 0) {
+    run_start_utime_ = utime;
+    coverage_ = std::make_unique<CoverageGrid>(map_image_, transform_, p.getX(), p.getY());
+  }
+  coverage_->markDisc(p.getX(), p.getY(), 0.165);
+  if (utime - last_sample_utime_ >= 1'000'000) {
+    last_sample_utime_ = utime;
+    plot_->addSample((utime - run_start_utime_) / 1e6, coverage_->coveragePercent());
+  }
 }
 
 void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 0.33, 0.33);
   run_->setRunning(component_.running());
-  status_->setText(QString("Algorithm: %1\nsim time %2 s\nv = %3 m/s   w = %4 rad/s")
+  status_->setText(QString("Algorithm: %1\nsim time %2 s\ncleaned %5 % of the floor since Run\nv = %3 m/s   w = %4 rad/s")
                        .arg(QString::fromStdString(component_.algorithmName()))
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(component_.motors().getV(), 0, 'f', 2)
-                       .arg(component_.motors().getW(), 0, 'f', 2));
+                       .arg(component_.motors().getW(), 0, 'f', 2)
+                       .arg(coverage_ ? coverage_->coveragePercent() : 0.0, 0, 'f', 1));
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {

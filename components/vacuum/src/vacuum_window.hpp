@@ -1,18 +1,25 @@
 #pragma once
 // The vacuum cleaner window: the house map with the robot and the area it has cleaned (its
 // real 0.33 m disc footprint, from the true pose: shown to the student, never given to the
-// algorithm), the "Run my algorithm" toggle, the teleoperator and Stop.
+// algorithm), the "Run my algorithm" toggle, the teleoperator and Stop, and the cleaned
+// percentage since Run (the referee's CoverageGrid on the same map) with its plot.
 
 #include <aula/component/widgets/map_view.hpp>
 #include <aula/component/widgets/run_toggle.hpp>
 #include <aula/component/widgets/teleoperator.hpp>
+#include <aula/vacuum/coverage_grid.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
 #include <QLabel>
 #include <QMainWindow>
 #include <QTimer>
 
+#include <memory>
+#include <opencv2/core.hpp>
+
 namespace aula::vacuum {
+
+class CoveragePlot;
 
 class VacuumWindow : public QMainWindow {
   Q_OBJECT
@@ -23,13 +30,19 @@ class VacuumWindow : public QMainWindow {
 
  private:
   void refresh();
+  void onTick(int64_t utime);
 
   VacuumComponent& component_;
   component::MapView* map_ = nullptr;
   component::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
   QTimer timer_;
+  CoveragePlot* plot_ = nullptr;
   int64_t last_pose_utime_ = -1;
+  cv::Mat map_image_;
+  world::MapTransform transform_;
+  std::unique_ptr<CoverageGrid> coverage_;  // from the first Run
+  int64_t run_start_utime_ = -1, last_sample_utime_ = -1;
 };
 
 }  // namespace aula::vacuum

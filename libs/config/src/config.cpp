@@ -241,6 +241,22 @@ std::string CommandLine::option(const std::string& name, const std::string& fall
   return it == options.end() ? fallback : it->second;
 }
 
+double CommandLine::optionDouble(const std::string& name, double fallback) const {
+  const auto it = options.find(name);
+  if (it == options.end()) return fallback;
+  size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(it->second, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != it->second.size() || !std::isfinite(value)) {
+    throw ConfigError("--" + name + "=" + it->second + " is not a number");
+  }
+  return value;
+}
+
 void CommandLine::requireKnown(const std::vector<std::string>& known) const {
   std::string unknown;
   for (const auto& [name, value] : options) {

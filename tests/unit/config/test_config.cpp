@@ -119,6 +119,15 @@ TEST(CommandLine, SplitsPositionalOptionsAndOverrides) {
   EXPECT_EQ(c.origin("TeleTaxi.Destination"), "command line --TeleTaxi.Destination");
 }
 
+TEST(CommandLine, NumberOptions) {
+  const char* argv[] = {"prog", "--screenshot-at=12.5", "--bad=12s", "--nan=nan"};
+  const CommandLine cl = CommandLine::parse(4, argv);
+  EXPECT_DOUBLE_EQ(cl.optionDouble("screenshot-at", 40), 12.5);
+  EXPECT_DOUBLE_EQ(cl.optionDouble("absent", 40), 40);
+  EXPECT_NE(errorOf([&] { cl.optionDouble("bad", 0); }).find("--bad=12s is not a number"), std::string::npos);
+  EXPECT_NE(errorOf([&] { cl.optionDouble("nan", 0); }).find("not a number"), std::string::npos);
+}
+
 TEST(CommandLine, RejectsMalformedAndUnknown) {
   const char* bad1[] = {"prog", "--=3"};
   EXPECT_NE(errorOf([&] { CommandLine::parse(2, bad1); }).find("malformed"), std::string::npos);

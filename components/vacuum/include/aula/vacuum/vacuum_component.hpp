@@ -34,6 +34,7 @@ class VacuumComponent {
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   std::string mapYaml() const { return map_yaml_; }
+  double runDurationS() const { return run_duration_s_; }  // the referee's Vacuum.Referee.Duration
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
 
  private:
@@ -43,6 +44,7 @@ class VacuumComponent {
   lcm::LCM& bus_;
   std::string algorithm_name_, episode_channel_, map_yaml_;
   double period_s_;
+  double run_duration_s_ = 900;
   bool autostart_ = false;
   std::unique_ptr<component::Pose3dProxy> pose_;
   std::unique_ptr<component::LaserProxy> laser_;

@@ -79,6 +79,8 @@ struct CommandLine {
 
   bool flag(const std::string& name) const { return options.count(name) != 0; }
   std::string option(const std::string& name, const std::string& fallback = "") const;
+  // A number option; throws ConfigError ("--name=VALUE is not a number") when it does not parse.
+  double optionDouble(const std::string& name, double fallback) const;
   // Rejects options not in `known` with a ConfigError listing them (usage errors, exit 2).
   void requireKnown(const std::vector<std::string>& known) const;
   void applyOverrides(Config& config) const;
