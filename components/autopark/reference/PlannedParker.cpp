@@ -55,7 +55,9 @@ class PlannedParker : public AutoparkAlgorithm {
         search_->addScans(api, pose.x_m, pose.y_m, pose.yaw_rad);
         if (auto slot = search_->detector().slot(slot_.centreXM())) slot_ = *slot;
         const double past = direction_ > 0 ? pose.x_m - slot_.front_x_m : slot_.rear_x_m - pose.x_m;
-        if (past < kSurveyPastM) {
+        // Never into something: whatever is ahead in the direction of travel ends the survey.
+        const double clear = rangeAhead(direction_ > 0 ? api.laser1.getLaserData() : api.laser2.getLaserData(), 0.3);
+        if (past < kSurveyPastM && clear > kSurveyStopM) {
           v = direction_ > 0 ? kSurveyMps : -kSurveyMps;
           w = search_->keepLane(v, pose.y_m, pose.yaw_rad);
         } else if ((still_s_ += api.period_s) >= kSettleS) {
@@ -106,6 +108,7 @@ class PlannedParker : public AutoparkAlgorithm {
   static constexpr double kCurbClearanceM = 0.3;  // the parked car's side from the curb
   static constexpr double kSurveyPastM = 2.0;     // drive this far past the slot's end before planning
   static constexpr double kSurveyMps = 1.0;
+  static constexpr double kSurveyStopM = 2.0;     // ... unless something is this close ahead
   static constexpr double kSettleS = 0.5;         // standing still before planning
   static constexpr double kReplanErrorM = 0.4;    // off the path by this much: stop and plan again
   static constexpr int kMaxReplans = 3;

@@ -9,8 +9,11 @@ namespace aula::autopark {
 namespace {
 // A bin is free when what is nearest to the lane there lies this far below the cars' side.
 constexpr double kFreeDepthM = 1.0;
-// Unseen bins tolerated inside a free run (sparse beams far away).
-constexpr int kMaxUnseenRun = 4;
+// Unseen stretch tolerated inside a free run (sparse beams far away), metres.
+constexpr double kMaxUnseenM = 0.4;
+// A slot's ends must be parked cars: no higher than the cars' side plus this. A wall across the
+// street's end rises to the lane, so a gap between the last car and the wall is not a slot.
+constexpr double kCarLevelToleranceM = 0.3;
 // Levels of the parking side are told apart in buckets of this height.
 constexpr double kLevelM = 0.1;
 }  // namespace
@@ -94,12 +97,14 @@ std::optional<Slot> SlotDetector::slot(double near_x_m) const {
         any_free = true;
         unseen = 0;
         floor_y.push_back(nearest_y_[e]);
-      } else if (++unseen > kMaxUnseenRun) {
+      } else if (++unseen * bin_m_ > kMaxUnseenM) {
         break;  // a long unseen stretch: the slot's bounds are unknown
       }
       ++e;
     }
-    if (e < n && kind(e) == Occupied && any_free) {
+    const bool cars_at_both_ends = e < n && nearest_y_[b] <= edge_y + kCarLevelToleranceM &&
+                                   nearest_y_[e] <= edge_y + kCarLevelToleranceM;
+    if (e < n && kind(e) == Occupied && any_free && cars_at_both_ends) {
       Slot s;
       s.rear_x_m = from_x_m_ + (b + 1) * bin_m_;
       s.front_x_m = from_x_m_ + e * bin_m_;

@@ -111,3 +111,17 @@ TEST(SlotDetector, NoEdgeUntilBothTheCurbAndTheCarsAreSeen) {
   ASSERT_TRUE(detector.edgeY().has_value());
   EXPECT_NEAR(*detector.edgeY(), -2.1, 1e-9);
 }
+
+TEST(SlotDetector, AGapBetweenTheLastCarAndTheEndWallIsNotASlot) {
+  // In the 1.2 L street the last car ends at x = 27.05 and the wall at 35: 8 m of curb, bounded
+  // by a wall, not by a car.
+  const Street street("autopark_ackermann_1.2L.world");
+  SlotDetector detector(4.6);
+  drive(street, detector, 20, 31, 0.0);
+  EXPECT_FALSE(detector.slot(31).has_value());
+  drive(street, detector, 31, -1, 0.0);
+  const auto slot = detector.slot(31);  // the nearest real slot, however far
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->centreXM(), 5.15, 0.1);
+  EXPECT_NEAR(slot->lengthM(), 4.8, 0.15);
+}

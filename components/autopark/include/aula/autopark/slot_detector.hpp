@@ -2,7 +2,7 @@
 // Finds a free parking slot beside the curb from laser scans, with no map given: every laser
 // point to the right of the car goes into a profile along the street (x bins); a bin whose
 // nearest point to the lane is well below the parked cars' side sees the curb, so it is free.
-// A slot is a run of free bins bounded by parked cars at both ends.
+// A slot is a run of free bins bounded by parked cars at both ends (not the wall at a street's end).
 // Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
 
 #include <aula/autopark/autopark_algorithm.hpp>
@@ -25,7 +25,7 @@ struct Slot {
 class SlotDetector {
  public:
   // min_length_m: the shortest slot worth reporting (the car's length plus a margin).
-  explicit SlotDetector(double min_length_m, double bin_m = 0.1, double from_x_m = -100, double to_x_m = 100);
+  explicit SlotDetector(double min_length_m, double bin_m = 0.05, double from_x_m = -100, double to_x_m = 100);
 
   // One scan from a laser at `mount` on a car at (x, y, yaw).
   void addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
