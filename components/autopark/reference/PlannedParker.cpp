@@ -112,7 +112,7 @@ class PlannedParker : public AutoparkAlgorithm {
   static constexpr double kSettleS = 0.5;         // standing still before planning
   static constexpr double kReplanErrorM = 0.4;    // off the path by this much: stop and plan again
   static constexpr int kMaxReplans = 3;
-  static constexpr double kGridResolutionM = 0.05;
+  static constexpr double kGridResolutionM = 0.025;
   static constexpr double kGridHalfLengthM = 70, kGridHalfWidthM = 15;
 
   void start(const AutoparkApi& api, const Pose2D& pose) {
@@ -170,6 +170,16 @@ class PlannedParker : public AutoparkAlgorithm {
     const Pose2D goal{slot_.centreXM(), slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2, 0.0};
     ParkingPlanner::Options options;
     options.seed = seed_ + static_cast<unsigned>(attempts_);
+    if (attempts_ > 0) {
+      // The way out of a tight slot may need finer moves than the first search tried: the lasers'
+      // map puts the cars' ends a cell nearer than they are.
+      options.escape_step_m = 0.02;
+      options.escape_cell_m = 0.025;
+      options.escape_cell_yaw_rad = 0.0087;
+      options.min_slot_clearance_m = 0.03;
+      options.slot_clearance_step_m = 0.02;
+      options.escape_max_expansions = 60000;
+    }
     const PlannedPath path = ParkingPlanner(car_, options).plan(planningGrid(pose), pose, goal);
     ++attempts_;
     std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s\n",
