@@ -1,5 +1,7 @@
 #include "aula/autopark/parking_geometry.hpp"
 
+#include <aula/geometry/oriented_box.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -39,10 +41,10 @@ bool segmentsCross(Point2 a, Point2 b, Point2 c, Point2 d) {
 }  // namespace
 
 std::array<Point2, 4> Rect2D::corners() const {
-  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
-  const double hl = length_m / 2, hw = width_m / 2;
-  auto at = [&](double lx, double ly) { return Point2{cx_m + c * lx - s * ly, cy_m + s * lx + c * ly}; };
-  return {at(-hl, -hw), at(hl, -hw), at(hl, hw), at(-hl, hw)};
+  const auto box = geometry::orientedBoxCorners(cx_m, cy_m, yaw_rad, length_m, width_m);
+  std::array<Point2, 4> out;
+  for (size_t i = 0; i < 4; ++i) out[i] = Point2{box[i].x(), box[i].y()};
+  return out;
 }
 
 bool rectsOverlap(const Rect2D& a, const Rect2D& b) {

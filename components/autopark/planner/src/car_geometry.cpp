@@ -1,5 +1,7 @@
 #include <aula/autopark/car_geometry.hpp>
 
+#include <aula/geometry/oriented_box.hpp>
+
 #include <cmath>
 
 namespace aula::autopark {
@@ -25,15 +27,10 @@ Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car) {
 
 std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
                                                       double inflation_m) {
-  const double hl = 0.5 * car.length_m + inflation_m;
-  const double hw = 0.5 * car.width_m + inflation_m;
-  const double c = std::cos(centre.yaw_rad), s = std::sin(centre.yaw_rad);
-  const double local[4][2] = {{-hl, -hw}, {hl, -hw}, {hl, hw}, {-hl, hw}};
+  const auto box = geometry::orientedBoxCorners(centre.x_m, centre.y_m, centre.yaw_rad, car.length_m + 2 * inflation_m,
+                                                car.width_m + 2 * inflation_m);
   std::array<std::array<double, 2>, 4> out{};
-  for (int i = 0; i < 4; ++i) {
-    out[i] = {centre.x_m + c * local[i][0] - s * local[i][1],
-              centre.y_m + s * local[i][0] + c * local[i][1]};
-  }
+  for (size_t i = 0; i < 4; ++i) out[i] = {box[i].x(), box[i].y()};
   return out;
 }
 
