@@ -3,31 +3,18 @@
 // The vacuum cleaner academic component: clean the house without localization.
 #include "src/vacuum_window.hpp"
 
-#include <aula/app/bus_pump.hpp>
-#include <aula/app/process_setup.hpp>
+#include <aula/app/run_component.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
-
-#include <QApplication>
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/vacuumCleaner.cfg", {"screenshot", "screenshot-at"});
     aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg);
-    if (setup.headless) {
-      aula::app::runHeadless(*setup.bus, [] { return false; }, [&] { component.poll(); });
-      component.leave();
-      return 0;
-    }
-    QApplication app(argc, argv);
-    aula::vacuum::VacuumWindow window(component);
-    aula::app::BusPump pump(*setup.bus, [&] { component.poll(); });
-    window.show();
-    if (setup.command_line.flag("screenshot")) {
-      const double at_s = setup.command_line.optionDouble("screenshot-at", 60.0);
-      window.screenshotAfter(QString::fromStdString(setup.command_line.option("screenshot")), static_cast<int64_t>(at_s * 1e6));
-    }
-    const int code = app.exec();
-    component.leave();
-    return code;
+    const double shot_at_s = setup.command_line.optionDouble("screenshot-at", 60.0);
+    return aula::app::runComponent<aula::vacuum::VacuumWindow>(
+        setup, component, argc, argv, [&](aula::vacuum::VacuumWindow& window, const QString& png) {
+          window.screenshotAfter(png, static_cast<int64_t>(shot_at_s * 1e6));
+          return true;
+        });
   });
 }

@@ -1,0 +1,37 @@
+#pragma once
+// The one flow of every academic component process. Headless: handle the bus (the component
+// runs the algorithm on sim time) until a signal. With a display: the component's window.
+// Either way the component leaves the lockstep at the end, so the simulator never waits for it.
+//
+// Component needs poll(), leave(); Window needs Window(Component&).
+// screenshot(window, png_path) arranges `--screenshot=FILE.png` (returns false if it cannot).
+
+#include <aula/app/bus_pump.hpp>
+#include <aula/app/process_setup.hpp>
+
+#include <QApplication>
+#include <QString>
+
+namespace aula::app {
+
+template <class Window, class Component, class Screenshot>
+int runComponent(ProcessSetup& setup, Component& component, int argc, char** argv, Screenshot screenshot) {
+  if (setup.headless) {
+    runHeadless(*setup.bus, [] { return false; }, [&] { component.poll(); });
+    component.leave();
+    return 0;
+  }
+  QApplication app(argc, argv);
+  Window window(component);
+  BusPump pump(*setup.bus, [&] { component.poll(); });
+  window.show();
+  int code = 1;
+  if (!setup.command_line.flag("screenshot") ||
+      screenshot(window, QString::fromStdString(setup.command_line.option("screenshot")))) {
+    code = app.exec();
+  }
+  component.leave();
+  return code;
+}
+
+}  // namespace aula::app
