@@ -1,14 +1,12 @@
 #include "aula/autopark/street_search.hpp"
 
+#include <aula/autopark/car_geometry.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace aula::autopark {
-namespace {
-double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
-}  // namespace
-
 double rangeAhead(const component::LaserData& scan, double half_width_rad) {
   double m = scan.maxRange;
   for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
@@ -48,7 +46,7 @@ double StreetSearch::keepLane(double v_mps, double y_m, double yaw_rad) const {
   // Pure pursuit of a point 5 m down the lane line, in the direction of travel.
   const double lookahead_m = 5.0;
   const double heading = (v_mps >= 0 ? 1 : -1) * std::atan2(lane_y - y_m, lookahead_m);
-  const double w = 1.5 * wrap(heading - yaw_rad) * std::abs(v_mps);
+  const double w = 1.5 * wrapAngle(heading - yaw_rad) * std::abs(v_mps);
   const double limit = std::abs(v_mps) / settings_.turn_radius_m;
   return std::clamp(w, -limit, limit);
 }
