@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <utility>
 
 namespace aula::autopark {
 namespace {
@@ -132,19 +133,11 @@ class PlannedParker : public AutoparkAlgorithm {
 
   // Every echo of the three lasers marks its cell.
   void mapScans(const AutoparkApi& api, const Pose2D& pose) {
-    const LaserMount* mounts[] = {&api.mount1, &api.mount2, &api.mount3};
-    const component::LaserProxy* lasers[] = {&api.laser1, &api.laser2, &api.laser3};
-    const double c = std::cos(pose.yaw_rad), s = std::sin(pose.yaw_rad);
-    for (int k = 0; k < 3; ++k) {
-      const component::LaserData& scan = lasers[k]->getLaserData();
-      const LaserMount& mount = *mounts[k];
-      const double lx = pose.x_m + c * mount.x_m - s * mount.y_m, ly = pose.y_m + s * mount.x_m + c * mount.y_m;
-      for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
-        const double r = scan.values_m[i];
-        if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;  // no echo
-        const double a = pose.yaw_rad + mount.yaw_rad + scan.angle(i);
-        map_.markOccupied(lx + r * std::cos(a), ly + r * std::sin(a));
-      }
+    const std::pair<const LaserMount*, const component::LaserProxy*> lasers[] = {
+        {&api.mount1, &api.laser1}, {&api.mount2, &api.laser2}, {&api.mount3, &api.laser3}};
+    for (const auto& [mount, laser] : lasers) {
+      forEachEcho(pose.x_m, pose.y_m, pose.yaw_rad, *mount, laser->getLaserData(),
+                  [this](double x_m, double y_m) { map_.markOccupied(x_m, y_m); });
     }
   }
 

@@ -33,17 +33,10 @@ void SlotDetector::addPoint(double x_m, double y_m) {
 
 void SlotDetector::addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
                            const component::LaserData& scan) {
-  const double c = std::cos(car_yaw_rad), s = std::sin(car_yaw_rad);
-  const double lx = car_x_m + c * mount.x_m - s * mount.y_m;
-  const double ly = car_y_m + s * mount.x_m + c * mount.y_m;
-  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
-    const double r = scan.values_m[i];
-    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;  // no echo
-    const double a = car_yaw_rad + mount.yaw_rad + scan.angle(i);
-    const double px = lx + r * std::cos(a), py = ly + r * std::sin(a);
+  forEachEcho(car_x_m, car_y_m, car_yaw_rad, mount, scan, [&](double x_m, double y_m) {
     // The parking side only: right of the car's body, not the far curb or the car's own lane.
-    if (py < car_y_m - 1.2) addPoint(px, py);
-  }
+    if (y_m < car_y_m - 1.2) addPoint(x_m, y_m);
+  });
 }
 
 std::optional<double> SlotDetector::edgeY() const {

@@ -4,6 +4,7 @@
 
 #include <aula/component/proxies.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
@@ -13,6 +14,22 @@ namespace aula::autopark {
 struct LaserMount {
   double x_m = 0, y_m = 0, yaw_rad = 0;
 };
+
+// Calls echo(x_m, y_m) with the world position of every beam of `scan` that hit something
+// (beams at max range have no echo), for a laser at `mount` on a car at (x, y, yaw).
+template <class Echo>
+void forEachEcho(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
+                 const component::LaserData& scan, Echo echo) {
+  const double c = std::cos(car_yaw_rad), s = std::sin(car_yaw_rad);
+  const double lx = car_x_m + c * mount.x_m - s * mount.y_m;
+  const double ly = car_y_m + s * mount.x_m + c * mount.y_m;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    const double r = scan.values_m[i];
+    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;  // no echo
+    const double a = car_yaw_rad + mount.yaw_rad + scan.angle(i);
+    echo(lx + r * std::cos(a), ly + r * std::sin(a));
+  }
+}
 
 struct AutoparkApi {
   component::Pose3dProxy& pose3d;  // getX(), getY(), getYaw(): the car's centre, metres, radians
