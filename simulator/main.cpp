@@ -5,6 +5,8 @@
 #include "src/sim_view.hpp"
 
 #include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/sim/simulator.hpp>
 #include <aula/world/world_spec.hpp>
@@ -34,7 +36,8 @@ int main(int argc, char** argv) {
     const auto cl = config::CommandLine::parse(
         argc, argv, {"config", "rtf", "seed", "lcm-url", "duration"});
     if (cl.flag("help")) {
-      std::cout << kUsage;
+      std::cout << kUsage << "\nSettings (in the .cfg, or --Key=value on the command line):\n"
+                << settings::simulator().help();
       return 0;
     }
     cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
@@ -42,25 +45,26 @@ int main(int argc, char** argv) {
       std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
       return 2;
     }
-    config::Config cfg;
+    config::Config file;
     if (cl.flag("config")) {
-      cfg = config::Config::fromFile(cl.option("config"));
+      file = config::Config::fromFile(cl.option("config"));
     } else {
-      const std::string fallback = std::string(AULA_SOURCE_DIR) + "/config/simulator.cfg";
-      if (std::ifstream(fallback).good()) cfg = config::Config::fromFile(fallback);
+      const std::string fallback = config::dataPath("config/simulator.cfg");
+      if (std::ifstream(fallback).good()) file = config::Config::fromFile(fallback);
     }
-    if (cl.flag("lockstep")) cfg.set("Simulator.Lockstep", "true", "command line --lockstep");
-    if (cl.flag("paused")) cfg.set("Simulator.StartPaused", "true", "command line --paused");
-    if (cl.flag("rtf")) cfg.set("Simulator.RealTimeFactor", cl.option("rtf"), "command line --rtf");
-    if (cl.flag("seed")) cfg.set("Simulator.Seed", cl.option("seed"), "command line --seed");
-    if (cl.flag("duration")) cfg.set("Simulator.Duration", cl.option("duration"), "command line --duration");
-    cl.applyOverrides(cfg);
+    if (cl.flag("lockstep")) file.set("Simulator.Lockstep", "true", "command line --lockstep");
+    if (cl.flag("paused")) file.set("Simulator.StartPaused", "true", "command line --paused");
+    if (cl.flag("rtf")) file.set("Simulator.RealTimeFactor", cl.option("rtf"), "command line --rtf");
+    if (cl.flag("seed")) file.set("Simulator.Seed", cl.option("seed"), "command line --seed");
+    if (cl.flag("duration")) file.set("Simulator.Duration", cl.option("duration"), "command line --duration");
+    cl.applyOverrides(file);
+    const config::Config cfg = settings::simulator().resolve(file);  // checks every key first
 
-    auto options = sim::SimulatorOptions::fromConfig(cfg);  // validates every key first
-    world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+    auto options = sim::SimulatorOptions::fromConfig(cfg);
+    world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(cl.positional[0], "command line: WORLD"));
     sim::applyStartPoses(cfg, spec);
-    // Like Gazebo, a world's <physics><max_step_size> chooses its step; the .cfg gives the
-    // default for worlds that do not say, and the command line overrides both.
+    // Like Gazebo, a world's <physics><max_step_size> chooses its step; Simulator.PhysicsStep is
+    // the step of worlds that do not say, and a step given on the command line overrides both.
     const bool step_on_command_line = cfg.origin("Simulator.PhysicsStep").rfind("command line", 0) == 0;
     if (spec.physics_step_s > 0 && !step_on_command_line) {
       if (!(spec.physics_step_s >= 1e-4 && spec.physics_step_s <= 0.05)) {
@@ -71,7 +75,8 @@ int main(int argc, char** argv) {
     auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
     sim::SignalWatcher signals;
     sim::Simulator simulator(std::move(spec), options, *bus);
-    std::cerr << "aula-sim: world '" << simulator.spec().name << "' with "
+    std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
+              << simulator.spec().sha256.substr(0, 12) << ") with "
               << simulator.physics().robotCount() << " robot(s), step " << options.step_s * 1e3
               << " ms, " << (options.lockstep ? "lockstep" : "free-running") << ", seed "
               << options.seed << std::endl;

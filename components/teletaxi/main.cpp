@@ -6,10 +6,17 @@
 #include <aula/app/run_component.hpp>
 #include <aula/teletaxi/taxi_component.hpp>
 
+namespace {
+constexpr const char* kUsage =
+    "usage: teletaxi [--config=config/teleTaxi.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png]\n"
+    "         [--TeleTaxi.Key=value ...]\n"
+    "The TeleTaxi academic component: the city map, your Gradient Path Planning, the taxi.\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   return aula::app::guardedMain("teletaxi", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/teleTaxi.cfg", {"screenshot"});
-    aula::teletaxi::TaxiComponent component(*setup.bus, setup.cfg);
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "teletaxi", {"screenshot"}, kUsage);
+    aula::teletaxi::TaxiComponent component(*setup.bus, setup.cfg, setup.world);
     return aula::app::runComponent<aula::teletaxi::TaxiWindow>(
         setup, component, argc, argv,
         [](aula::teletaxi::TaxiWindow& window, const QString& png) { return window.screenshotWhenReady(png); });

@@ -6,10 +6,17 @@
 #include <aula/app/run_component.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
+namespace {
+constexpr const char* kUsage =
+    "usage: vacuum-cleaner [--config=config/vacuumCleaner.cfg] [--headless] [--lcm-url=URL] [--screenshot=FILE.png [--screenshot-at=SIM_SECONDS]]\n"
+    "               [--Vacuum.Key=value ...]\n"
+    "The vacuum cleaner academic component: clean the house without localization.\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/vacuumCleaner.cfg", {"screenshot", "screenshot-at"});
-    aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg);
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "vacuum-cleaner", {"screenshot", "screenshot-at"}, kUsage);
+    aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg, setup.world);
     const double shot_at_s = setup.command_line.optionDouble("screenshot-at", 60.0);
     return aula::app::runComponent<aula::vacuum::VacuumWindow>(
         setup, component, argc, argv, [&](aula::vacuum::VacuumWindow& window, const QString& png) {

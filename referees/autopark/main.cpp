@@ -7,10 +7,18 @@
 
 #include <aula/app/run_referee.hpp>
 
+namespace {
+constexpr const char* kUsage =
+    "usage: autopark-referee [--config=config/autopark.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]\n"
+    "                 [--screenshot=FILE.png]\n"
+    "Grades an Autopark run on simulated time from the true geometry. Headless, it prints the mark\n"
+    "and writes the report when the car has parked (or at the timeout), then exits.\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark-referee", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/autopark.cfg", {"report", "screenshot"});
-    aula::autopark::ParkingRefereeNode node(*setup.bus, setup.cfg);
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "autopark-referee", {"report", "screenshot"}, kUsage);
+    aula::autopark::ParkingRefereeNode node(*setup.bus, setup.cfg, setup.world);
     return aula::app::runReferee<aula::autopark::ParkingRefereeNode, aula::autopark::ParkingRefereeWindow>(setup, node, argc, argv);
   });
 }

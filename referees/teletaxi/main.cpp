@@ -7,10 +7,18 @@
 
 #include <aula/app/run_referee.hpp>
 
+namespace {
+constexpr const char* kUsage =
+    "usage: teletaxi-referee [--config=config/teleTaxi.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]\n"
+    "                 [--screenshot=FILE.png]\n"
+    "Grades a TeleTaxi run on simulated time. Headless, it prints the mark and writes the report\n"
+    "when the episode ends, then exits.\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   return aula::app::guardedMain("teletaxi-referee", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "config/teleTaxi.cfg", {"report", "screenshot"});
-    aula::teletaxi::TaxiRefereeNode node(*setup.bus, setup.cfg);
+    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "teletaxi-referee", {"report", "screenshot"}, kUsage);
+    aula::teletaxi::TaxiRefereeNode node(*setup.bus, setup.cfg, setup.world);
     return aula::app::runReferee<aula::teletaxi::TaxiRefereeNode, aula::teletaxi::TaxiRefereeWindow>(setup, node, argc, argv);
   });
 }

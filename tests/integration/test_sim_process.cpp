@@ -59,7 +59,7 @@ struct RoombaClient {
 TEST(SimProcess, ClientDrivesTheRoombaIntoAWall) {
   const std::string url = aula::testing::privateLcmUrl();
   const std::string log = ::testing::TempDir() + "aula_sim_drive.log";
-  ChildProcess sim({AULA_SIM_PATH, kVacuumWorld, "--lockstep", "--lcm-url=" + url,
+  ChildProcess sim({AULA_SIM_PATH, kVacuumWorld, "--lockstep", "--rtf=0", "--lcm-url=" + url,
                     "--Simulator.Lockstep.WaitForClients=1"},
                    "", log);
   auto bus = aula::lcmbus::openBus(url);
@@ -90,7 +90,7 @@ TEST(SimProcess, ClientDrivesTheRoombaIntoAWall) {
 TEST(SimProcess, LockstepAdvancesOnlyWhenTheClientAcks) {
   const std::string url = aula::testing::privateLcmUrl();
   const std::string log = ::testing::TempDir() + "aula_sim_lockstep.log";
-  ChildProcess sim({AULA_SIM_PATH, kVacuumWorld, "--lockstep", "--lcm-url=" + url,
+  ChildProcess sim({AULA_SIM_PATH, kVacuumWorld, "--lockstep", "--rtf=0", "--lcm-url=" + url,
                     "--Simulator.Lockstep.DropAfterMs=60000"},
                    "", log);
   auto bus = aula::lcmbus::openBus(url);

@@ -3,7 +3,10 @@
 // Integration tests talk over a private UDP multicast port, so parallel ctest runs never cross
 // (a different group on the same port still receives the cross-talk: isolate by port).
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -15,6 +18,13 @@ namespace aula::testing {
 inline std::string privateLcmUrl() {
   const int port = 17000 + static_cast<int>(getpid() % 20000);
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
+}
+
+// A fresh folder of this test process's own under the test temp folder (never a fixed name).
+inline std::string privateDir() {
+  std::string pattern = std::filesystem::temp_directory_path().string() + "/aula_test_XXXXXX";
+  if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  return pattern;
 }
 
 inline std::string readFile(const std::string& path) {

@@ -46,7 +46,8 @@ TEST_P(TeleTaxiReference, ReachesTheDestinationWithAMarkOfAtLeastNine) {
   EXPECT_EQ(aula::testing::jsonNumber(json, "bumps"), 0.0) << "the taxi touched a wall\n" << json;
   EXPECT_NE(json.find("\"exercise\": \"teletaxi\""), std::string::npos);
   EXPECT_NE(json.find("\"algorithm\": \"reference\""), std::string::npos);
-  EXPECT_NE(json.find("\"world\": \"cityLarge\""), std::string::npos);
+  EXPECT_NE(json.find("\"world\": \"cityLarge.world\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"world_sha256\": \""), std::string::npos) << json;
 }
 
 INSTANTIATE_TEST_SUITE_P(Destinations, TeleTaxiReference,

@@ -2,6 +2,7 @@
 // A minimal academic-component stand-in: reads a robot's pose, laser and bumper from the
 // simulator and bounces around with a reactive rule, printing what it sees once per sim second.
 // It shows the whole path sensor -> LCM -> client -> LCM -> motors without any exercise code.
+#include <aula/app/process_setup.hpp>
 #include <aula/bumper_t.hpp>
 #include <aula/config/config.hpp>
 #include <aula/laser_t.hpp>
@@ -21,6 +22,10 @@
 #include <unistd.h>
 
 namespace {
+
+constexpr const char* kUsage =
+    "usage: aula-demo-client [--config=config/demo.cfg] [--duration=S] [--quiet] [--lcm-url=URL] [--Demo.Key=value]\n"
+    "A minimal client: the roomba bouncing around the house, printing what it sees once per sim second.\n";
 
 struct Demo {
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* m) { pose = *m; }
@@ -66,25 +71,24 @@ struct Demo {
 
 int main(int argc, char** argv) {
   using namespace aula;
-  try {
-    const auto cl = config::CommandLine::parse(argc, argv, {"config", "duration", "lcm-url"});
-    cl.requireKnown({"config", "duration", "lcm-url", "quiet", "headless"});
-    config::Config cfg = config::Config::fromFile(
-        cl.option("config", std::string(AULA_SOURCE_DIR) + "/config/demo.cfg"));
-    cl.applyOverrides(cfg);
+  return app::guardedMain("aula-demo-client", [&] {
+    auto setup = app::ProcessSetup::fromArgs(argc, argv, "aula-demo-client", {"duration", "quiet"}, kUsage, false);
+    const config::Config& cfg = setup.cfg;
+    const config::CommandLine& cl = setup.command_line;
     Demo demo;
-    demo.max_v = cfg.getDouble("Demo.MaxV", 0.3);
-    demo.turn_radps = cfg.getDouble("Demo.TurnW", 1.0);
-    demo.clearance_m = cfg.getDouble("Demo.Clearance", 0.4);
-    const int64_t period_us = static_cast<int64_t>(cfg.getDouble("Demo.Period", 0.08) * 1e6);
-    const double duration_s = std::stod(cl.option("duration", "0"));
-    const std::string motors = cfg.getString("Demo.Motors.Channel");
+    demo.max_v = cfg.getDouble("Demo.MaxV");
+    demo.turn_radps = cfg.getDouble("Demo.TurnW");
+    demo.clearance_m = cfg.getDouble("Demo.Clearance");
+    const int64_t period_us = static_cast<int64_t>(cfg.getDouble("Demo.Period") * 1e6);
+    const double duration_s = cl.optionDouble("duration", 0);
+    const world::RobotSpec& robot = world::requireRobot(setup.world, cfg.getString("Demo.Robot"));
+    const std::string motors = world::channelOf(robot, "motors");
     const bool quiet = cl.flag("quiet");
 
-    auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
-    bus->subscribe(cfg.getString("Demo.Pose3D.Channel"), &Demo::onPose, &demo);
-    bus->subscribe(cfg.getString("Demo.Laser.Channel"), &Demo::onLaser, &demo);
-    bus->subscribe(cfg.getString("Demo.Bumper.Channel"), &Demo::onBumper, &demo);
+    lcm::LCM* bus = setup.bus.get();
+    bus->subscribe(world::channelOf(robot, "pose3d"), &Demo::onPose, &demo);
+    bus->subscribe(world::channelOf(robot, "laser"), &Demo::onLaser, &demo);
+    bus->subscribe(world::channelOf(robot, "bumper"), &Demo::onBumper, &demo);
 
     int64_t last_print_s = -1;
     bool done = false;
@@ -119,11 +123,5 @@ int main(int argc, char** argv) {
     std::printf("aula-demo-client: done at t=%.1f s sim, %ld bump messages\n", clock.simTimeUs() / 1e6,
                 demo.bumps);
     return 0;
-  } catch (const config::ConfigError& e) {
-    std::cerr << "aula-demo-client: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "aula-demo-client: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -1,16 +1,18 @@
-// aula run EXERCISE [--headless] [--world=FILE] [--lockstep] [--rtf=X] [--seed=N]
-//                   [--duration=S] [--lcm-url=URL] [--Key=value ...]
+// aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N] [--rtf=X] ...
+// aula config EXERCISE [--world=FILE] [--Key=value ...]
 // Starts the simulator and the exercise's processes (like the original's three terminals),
 // waits for the run to end and stops everything cleanly: it never leaves a process behind
 // (children die with it: PR_SET_PDEATHSIG) and exits non-zero if any process failed.
+// Every --Key=value is checked against the declared settings (aula_settings) and handed only to
+// the processes that declare it; the world is resolved once and handed to all three.
 #include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
-#include <filesystem>
-#include <map>
 #include <memory>
 #include <thread>
 
@@ -19,167 +21,219 @@
 
 namespace {
 
-struct Exercise {
-  std::string world;        // relative to the source tree
-  std::string config;       // the exercise's .cfg, relative to the source tree
-  std::string cfg_prefix;   // its keys' section, e.g. "TeleTaxi" (for --algorithm)
-  std::string component;    // executable in the build's bin folder
-  std::string referee;      // "" when the exercise has none
-  std::string description;
-};
-
-std::map<std::string, Exercise> exercises() {
-  return {
-      {"demo", {"worlds/vacuum.world", "config/demo.cfg", "Demo", "aula-demo-client", "",
-                "the roomba bouncing around the house (no referee)"}},
-      {"teletaxi", {"worlds/cityLarge.world", "config/teleTaxi.cfg", "TeleTaxi", "teletaxi", "teletaxi-referee",
-                    "global navigation with Gradient Path Planning"}},
-      {"vacuum", {"worlds/vacuum.world", "config/vacuumCleaner.cfg", "Vacuum", "vacuum-cleaner",
-                  "vacuum-cleaner-referee", "clean the house without localization"}},
-      {"autopark", {"worlds/autopark.world", "config/autopark.cfg", "Autopark", "autopark", "autopark-referee",
-                    "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car, a tight slot)"}},
-  };
-}
+using aula::config::CommandLine;
+using aula::config::Config;
+using aula::config::ConfigError;
+using aula::config::SettingsTable;
+using aula::settings::Exercise;
 
 constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--lockstep] [--rtf=X] [--duration=SECONDS] [--lcm-url=URL]\n"
-    "                [--Key=value ...]\n"
-    "  --headless  no windows; lockstep, as fast as possible; the run ends with the referee's mark\n"
+    "                [--config=FILE.cfg] [--Key=value ...]\n"
+    "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
+    "  run         start the simulator, the component and the referee\n"
+    "  config      print the effective settings of each process and where each came from\n"
+    "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
+    "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
+    "  --Key=value a declared setting (`aula config EXERCISE` lists them), e.g. --Vacuum.Referee.Duration=300\n"
     "exercises:\n";
 
-std::string binDir(const char* argv0) {
-  std::string self = argv0;
+const char* describe(const std::string& exercise) {
+  if (exercise == "teletaxi") return "global navigation with Gradient Path Planning";
+  if (exercise == "vacuum") return "clean the house without localization";
+  if (exercise == "autopark") return "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car)";
+  return "the roomba bouncing around the house (no referee)";
+}
+
+int usage(std::ostream& out, int code) {
+  out << kUsage;
+  for (const auto& ex : aula::settings::exercises()) out << "  " << ex.name << "  " << describe(ex.name) << "\n";
+  return code;
+}
+
+// The settings of one run: the .cfg, the --Key=value overrides and what the launcher's own
+// options set, resolved for each process against its own table.
+struct RunSettings {
+  std::string cfg_path;
+  Config overrides;  // checked: each key is declared by at least one process of the run
+  std::string world;  // absolute path, handed to every process
+  std::vector<std::pair<const SettingsTable*, Config>> effective;  // simulator first
+};
+
+RunSettings resolveSettings(const Exercise& ex, const CommandLine& cl) {
+  RunSettings run;
+  run.cfg_path = cl.option("config", aula::config::dataPath(ex.config_file));
+  const Config file = Config::fromFile(run.cfg_path);
+  for (const auto& [key, value] : cl.overrides) run.overrides.set(key, value, "command line --" + key);
+  if (cl.flag("algorithm")) run.overrides.set(ex.section + ".Algorithm", cl.option("algorithm"), "command line --algorithm");
+  if (cl.flag("headless") && ex.referee_settings != nullptr) {
+    run.overrides.set(ex.section + ".Autostart", "true", "command line --headless");
+  }
+  if (cl.flag("world")) run.overrides.set(ex.section + ".World", cl.option("world"), "command line --world");
+
+  std::vector<const SettingsTable*> tables = {&aula::settings::simulator()};
+  for (const auto* t : ex.tables()) tables.push_back(t);
+  // Every override must be some process's key; the "did you mean" comes from all of them.
+  for (const std::string& key : run.overrides.keys()) {
+    bool declared = false;
+    for (const auto* t : tables) declared = declared || t->declares(key);
+    if (declared) continue;
+    std::string suggestion;
+    for (const auto* t : tables) {
+      if (suggestion.empty()) suggestion = t->suggest(key);
+    }
+    throw ConfigError(run.overrides.origin(key) + ": unknown key '" + key + "'" +
+                      (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)") + "; `aula config " +
+                      ex.name + "` lists the settings");
+  }
+  for (const auto* t : tables) {
+    // The simulator reads config/simulator.cfg (aula-sim does the same), the clients the exercise's.
+    Config mine = t == tables.front() ? Config::fromFile(aula::config::dataPath("config/simulator.cfg")) : file;
+    for (const std::string& key : run.overrides.keys()) {
+      if (t->declares(key)) mine.set(key, run.overrides.getString(key), run.overrides.origin(key));
+    }
+    std::vector<const SettingsTable*> siblings;
+    for (const auto* other : ex.tables()) {
+      if (other != t) siblings.push_back(other);
+    }
+    run.effective.emplace_back(t, t->resolve(mine, siblings));
+  }
+  // The world, from the component's settings (the .cfg or --world): resolved once for all.
+  const Config& component = run.effective[1].second;
+  const std::string world_key = ex.section + ".World";
+  run.world = aula::config::resolveWorldPath(component.getString(world_key), component.origin(world_key) + ": " + world_key);
+  return run;
+}
+
+int printConfig(const Exercise& ex, const CommandLine& cl) {
+  const RunSettings run = resolveSettings(ex, cl);
+  std::cout << "world: " << run.world << "\nconfig: " << run.cfg_path << "\n";
+  for (const auto& [table, cfg] : run.effective) {
+    std::cout << "\n" << table->owner() << ":\n" << table->describe(cfg);
+  }
+  return 0;
+}
+
+std::string binDir() {
   char buffer[4096];
   const ssize_t n = readlink("/proc/self/exe", buffer, sizeof buffer - 1);
-  if (n > 0) self.assign(buffer, n);
+  std::string self = n > 0 ? std::string(buffer, n) : std::string("./aula");
   const auto slash = self.rfind('/');
   return slash == std::string::npos ? "." : self.substr(0, slash);
+}
+
+bool noDisplay() {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
+}
+
+// The three command lines of a run: each process gets the .cfg, the world and only its own keys.
+std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const CommandLine& cl, const RunSettings& run) {
+  const std::string bin = binDir();
+  const size_t clients = ex.referee_settings == nullptr ? 1 : 2;
+  std::vector<std::string> sim = {bin + "/aula-sim", run.world};
+  if (cl.flag("lockstep") || cl.flag("headless")) {
+    sim.push_back("--lockstep");
+    sim.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
+  }
+  // Headless runs go as fast as possible unless --rtf says otherwise; --rtf counts in every mode.
+  if (cl.flag("rtf")) sim.push_back("--rtf=" + cl.option("rtf"));
+  else if (cl.flag("headless")) sim.push_back("--rtf=0");
+  if (cl.flag("seed")) sim.push_back("--seed=" + cl.option("seed"));
+  if (cl.flag("lcm-url")) sim.push_back("--lcm-url=" + cl.option("lcm-url"));
+
+  std::vector<std::vector<std::string>> lines = {sim};
+  const std::vector<std::string> programs = {ex.component, ex.referee};
+  for (size_t i = 0; i < ex.tables().size(); ++i) {
+    std::vector<std::string> args = {bin + "/" + programs[i], "--config=" + run.cfg_path,
+                                     "--" + ex.section + ".World=" + run.world};
+    if (cl.flag("headless")) args.push_back("--headless");
+    if (cl.flag("lcm-url")) args.push_back("--lcm-url=" + cl.option("lcm-url"));
+    lines.push_back(args);
+  }
+  for (const std::string& key : run.overrides.keys()) {
+    if (key == ex.section + ".World") continue;
+    const std::string arg = "--" + key + "=" + run.overrides.getString(key);
+    if (aula::settings::simulator().declares(key)) lines[0].push_back(arg);
+    for (size_t i = 0; i < ex.tables().size(); ++i) {
+      if (ex.tables()[i]->declares(key)) lines[i + 1].push_back(arg);
+    }
+  }
+  if (ex.referee_settings == nullptr && cl.flag("duration")) lines[1].push_back("--duration=" + cl.option("duration"));
+  if (ex.referee_settings != nullptr && cl.flag("report")) lines[2].push_back("--report=" + cl.option("report"));
+  return lines;
+}
+
+// Runs the processes until the primary one (the last: referee or client) ends, any fails, or
+// Ctrl-C; then stops the clients first (they send their last commands and leave lockstep).
+int supervise(const std::vector<std::vector<std::string>>& lines) {
+  sigset_t mask;
+  sigemptyset(&mask);
+  sigaddset(&mask, SIGINT);
+  sigaddset(&mask, SIGTERM);
+  sigprocmask(SIG_BLOCK, &mask, nullptr);
+  const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+
+  std::vector<std::unique_ptr<aula::process::ChildProcess>> children;
+  for (const auto& args : lines) children.push_back(std::make_unique<aula::process::ChildProcess>(args));
+  int result = 0;
+  signalfd_siginfo info;
+  for (;;) {
+    if (read(signal_fd, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+      std::cerr << "aula: stopping\n";
+      break;
+    }
+    bool finished = false;
+    for (size_t i = 0; i < children.size(); ++i) {
+      if (const auto code = children[i]->poll()) {
+        if (*code != 0) {
+          std::cerr << "aula: " << children[i]->name() << " exited with code " << *code << "\n";
+          result = *code == 2 ? 2 : 1;
+        }
+        finished = finished || *code != 0 || i + 1 == children.size() || i == 0;
+      }
+    }
+    if (finished) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  for (auto c = children.rbegin(); c != children.rend(); ++c) {
+    const int code = (*c)->stop();
+    if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != lines[0][0]) {
+      std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
+    }
+  }
+  return result;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace aula;
-  const auto table = exercises();
-  auto usage = [&] {
-    std::cerr << kUsage;
-    for (const auto& [name, ex] : table) std::cerr << "  " << name << "  " << ex.description << "\n";
-    return 2;
-  };
   try {
-    auto cl = config::CommandLine::parse(argc, argv, {});
-    cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url", "help"});
-    if (cl.flag("help")) return usage(), 0;
-    if (cl.positional.size() != 2 || cl.positional[0] != "run") return usage();
-    const auto it = table.find(cl.positional[1]);
-    if (it == table.end()) {
-      std::cerr << "aula: unknown exercise '" << cl.positional[1] << "'\n";
-      return usage();
+    auto cl = CommandLine::parse(argc, argv, {});
+    cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url",
+                     "config", "help"});
+    if (cl.flag("help")) return usage(std::cout, 0);
+    if (cl.positional.size() != 2 || (cl.positional[0] != "run" && cl.positional[0] != "config")) {
+      return usage(std::cerr, 2);
     }
-    const Exercise& ex = it->second;
-    const char* display = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    const bool no_display = (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
-    if (!cl.flag("headless") && no_display) {
+    const Exercise* ex = aula::settings::exerciseNamed(cl.positional[1]);
+    if (ex == nullptr) {
+      std::cerr << "aula: unknown exercise '" << cl.positional[1] << "'\n";
+      return usage(std::cerr, 2);
+    }
+    if (cl.positional[0] == "config") return printConfig(*ex, cl);
+    if (!cl.flag("headless") && noDisplay()) {
       std::cerr << "aula: no display (DISPLAY is not set): running headless; the mark is printed at the end\n";
       cl.options["headless"] = "";
     }
-    const std::string bin = binDir(argv[0]);
-    const std::string source = AULA_SOURCE_DIR;
-
-    // The world: a path from here, or from the source tree, or a file name in worlds/. The
-    // clients get it too (Autopark's component and referee read the slot from it).
-    std::string world = source + "/" + ex.world;
-    if (cl.flag("world")) {
-      world = cl.option("world");
-      namespace fs = std::filesystem;
-      if (!fs::path(world).is_absolute()) {
-        if (fs::exists(world)) world = fs::absolute(world).string();
-        else if (fs::exists(source + "/" + world)) world = source + "/" + world;
-        else if (fs::exists(source + "/worlds/" + world)) world = source + "/worlds/" + world;
-      }
-      if (!fs::exists(world)) throw config::ConfigError("--world=" + cl.option("world") + ": no such world file");
-    }
-
-    std::vector<std::string> shared;  // options every process understands
-    if (cl.flag("lcm-url")) shared.push_back("--lcm-url=" + cl.option("lcm-url"));
-    for (const auto& [key, value] : cl.overrides) shared.push_back("--" + key + "=" + value);
-    if (cl.flag("algorithm")) shared.push_back("--" + ex.cfg_prefix + ".Algorithm=" + cl.option("algorithm"));
-    if (cl.flag("headless")) shared.push_back("--" + ex.cfg_prefix + ".Autostart=true");
-    if (cl.flag("world")) shared.push_back("--" + ex.cfg_prefix + ".World=" + world);
-
-    const size_t clients = ex.referee.empty() ? 1 : 2;
-    std::vector<std::string> sim_args = {bin + "/aula-sim", world};
-    if (cl.flag("lockstep") || cl.flag("headless")) {
-      sim_args.push_back("--lockstep");
-      sim_args.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
-    }
-    if (cl.flag("headless") && !cl.flag("rtf")) sim_args.push_back("--rtf=0");
-    if (cl.flag("rtf")) sim_args.push_back("--rtf=" + cl.option("rtf"));
-    if (cl.flag("seed")) sim_args.push_back("--seed=" + cl.option("seed"));
-    if (cl.flag("lcm-url")) sim_args.push_back("--lcm-url=" + cl.option("lcm-url"));
-    for (const auto& [key, value] : cl.overrides) {
-      if (key.rfind("Simulator.", 0) == 0 || key.rfind("Aula.", 0) == 0) sim_args.push_back("--" + key + "=" + value);
-    }
-
-    sigset_t mask;
-    sigemptyset(&mask);
-    sigaddset(&mask, SIGINT);
-    sigaddset(&mask, SIGTERM);
-    sigprocmask(SIG_BLOCK, &mask, nullptr);
-    const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
-
-    auto client_args = [&](const std::string& program) {
-      std::vector<std::string> args = {bin + "/" + program, "--config=" + source + "/" + ex.config};
-      if (cl.flag("headless")) args.push_back("--headless");
-      args.insert(args.end(), shared.begin(), shared.end());
-      return args;
-    };
-    std::vector<std::unique_ptr<process::ChildProcess>> children;
-    children.push_back(std::make_unique<process::ChildProcess>(sim_args));
-    auto component_args = client_args(ex.component);
-    if (ex.referee.empty() && cl.flag("duration")) component_args.push_back("--duration=" + cl.option("duration"));
-    children.push_back(std::make_unique<process::ChildProcess>(component_args));
-    if (!ex.referee.empty()) {
-      auto referee_args = client_args(ex.referee);
-      if (cl.flag("report")) referee_args.push_back("--report=" + cl.option("report"));
-      children.push_back(std::make_unique<process::ChildProcess>(referee_args));
-    }
-
-    // The run ends when the primary process (the last one: referee or client) ends, when any
-    // process fails, or on Ctrl-C.
-    int result = 0;
-    signalfd_siginfo info;
-    for (;;) {
-      if (read(signal_fd, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
-        std::cerr << "aula: stopping\n";
-        break;
-      }
-      bool finished = false;
-      for (size_t i = 0; i < children.size(); ++i) {
-        if (const auto code = children[i]->poll()) {
-          if (*code != 0) {
-            std::cerr << "aula: " << children[i]->name() << " exited with code " << *code << "\n";
-            result = *code == 2 ? 2 : 1;
-          }
-          finished = finished || *code != 0 || i + 1 == children.size() || i == 0;
-        }
-      }
-      if (finished) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    // Stop clients first (they send their last commands and leave lockstep), then the simulator.
-    for (auto c = children.rbegin(); c != children.rend(); ++c) {
-      const int code = (*c)->stop();
-      if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != sim_args[0]) {
-        std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
-      }
-    }
-    return result;
-  } catch (const config::ConfigError& e) {
+    if (cl.flag("rtf")) cl.optionDouble("rtf", 0);  // a number, or a usage error now
+    const RunSettings run = resolveSettings(*ex, cl);
+    return supervise(commandLines(*ex, cl, run));
+  } catch (const ConfigError& e) {
     std::cerr << "aula: " << e.what() << "\n";
-    return usage();
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "aula: " << e.what() << "\n";
     return 1;

@@ -50,31 +50,22 @@ int main(int argc, char** argv) {
     const double resolution = pairOf(cl.option("resolution") + ",0", ',', "resolution").first;
     if (!(resolution > 0)) throw config::ConfigError("command line: --resolution must be > 0");
     const world::WorldSpec spec = world::loadWorld(cl.positional[0]);
-    if (spec.statics.empty()) throw world::WorldError(cl.positional[0] + ": no static geometry to map");
-
-    const Eigen::Vector4d bounds = world::staticBounds(spec);
-    double cx = (bounds[0] + bounds[2]) / 2, cy = (bounds[1] + bounds[3]) / 2;
-    // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
-    int width = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution - 1e-6));
-    int height = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution - 1e-6));
+    world::MapTransform t = world::fitTransform(spec, resolution);
+    double cx = t.origin_x_m + t.width_px * resolution / 2, cy = t.origin_y_m - t.height_px * resolution / 2;
     if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
     if (cl.flag("size")) {
       const auto [w, h] = pairOf(cl.option("size"), 'x', "size");
-      width = static_cast<int>(w);
-      height = static_cast<int>(h);
+      t.width_px = static_cast<int>(w);
+      t.height_px = static_cast<int>(h);
     }
-    if (width <= 0 || height <= 0 || width > 20000 || height > 20000) {
+    if (t.width_px <= 0 || t.height_px <= 0 || t.width_px > 20000 || t.height_px > 20000) {
       throw config::ConfigError("command line: map size must be 1..20000 px per side");
     }
+    t.origin_x_m = cx - t.width_px * resolution / 2;
+    t.origin_y_m = cy + t.height_px * resolution / 2;
     double z_min = 0.01, z_max = 100.0;
     if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
 
-    world::MapTransform t;
-    t.resolution_m = resolution;
-    t.width_px = width;
-    t.height_px = height;
-    t.origin_x_m = cx - width * resolution / 2;
-    t.origin_y_m = cy + height * resolution / 2;
     const cv::Mat map = world::rasterizeOccupancy(spec, t, z_min, z_max);
     if (!cv::imwrite(out, map)) throw std::runtime_error(out + ": cannot write the map image");
     const auto slash = out.rfind('/');

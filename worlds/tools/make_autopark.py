@@ -14,9 +14,34 @@ at (-7, 2.5) facing +x.
 
 The car model is written inline (from worlds/models/taxi_holo_laser/model.sdf) so a variant can
 change its kinematics. Deterministic: rerun after editing and commit the result.
+
+Usage:
+  make_autopark.py              rewrites the shipped worlds above (and only those)
+  make_autopark.py --out FILE.world [--slot-length M] [--slot-x M] [--curb-offset M]
+                   [--kinematics diff|ackermann] [--start X,Y[,YAW]]
+                                writes one street to FILE.world ("-": standard output):
+    --slot-length M   free slot length, m (default 9 = 2.25 car lengths); must be > 3 m, the
+                      widest gap between the other parked cars, since the referee takes the
+                      widest gap as the slot
+    --slot-x M        x of the slot's start, the front bumper of the car before it (default
+                      2.75); every parked car moves with it, same spacing; the road and its end
+                      walls grow (never shrink below x -25..35) to keep all cars and the start
+                      on the road
+    --curb-offset M   how far the parking-side curb and the parked cars move away from the road
+                      centre, in -y (default 0; >= -2, so the lane stays >= 5 m wide)
+    --kinematics K    "diff" (default, turns in place) or "ackermann" (car-like)
+    --start X,Y,YAW   the car's start pose (default -7,2.5,0; yaw in rad, 0 = facing +x); its
+                      4 x 2 m body must not touch a curb or a parked car
+  The names the referee relies on stay: parked_car_<i> (static includes), the collision
+  curb_parking_side, the car model "car". A comment in the world lists the parameters used, as
+  name=value (an XML comment cannot hold "--").
+  A bad parameter: one line on stderr naming it, exit status 2.
 """
+import argparse
+import math
 import os
 import re
+import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 WORLDS = os.path.dirname(HERE)
@@ -25,6 +50,13 @@ SLOT_START_X = 2.75  # front bumper of the parked car at x = 0.5
 PARKED_BEFORE = [-20.0, -13.5, -7.0, 0.5]
 PARKED_AFTER_OFFSETS = [0.0, 7.5, 15.0]  # the default street: cars at 14, 21.5, 29
 PARKED_HALF_LENGTH = 2.25
+PARKED_HALF_WIDTH = 0.9
+PARKED_Y = -3.0
+CURB_FACE_Y = -4.25   # parking-side curb face (its box: 1 m deep, 0.2 m high)
+FAR_CURB_FACE_Y = 5.0
+ROAD_WEST, ROAD_EAST = -25.0, 35.0  # the default road; a street never gets shorter
+WIDEST_OTHER_GAP_M = 3.0  # between the parked cars after the slot (7.5 - 4.5)
+DEFAULT_START = (-7.0, 2.5, 0.0)
 
 
 def box(name, x, y, z, sx, sy, sz):
@@ -34,49 +66,119 @@ def box(name, x, y, z, sx, sy, sz):
             f"        <visual name=\"{name}\">{pose}{geometry}</visual>\n")
 
 
-def car_model(kinematics):
+def num(v):
+    """Shortest readable form: 14.0 -> "14", -13.5 -> "-13.5", 0.45000000001 -> "0.45"."""
+    v = round(v, 9) + 0.0  # + 0.0 turns -0.0 into 0.0
+    return f"{v:.12g}"
+
+
+def car_text():
     with open(os.path.join(WORLDS, "models", "taxi_holo_laser", "model.sdf")) as f:
-        text = f.read()
+        return f.read()
+
+
+def car_size():
+    """(length, width) of the car's body box, from the model."""
+    m = re.search(r"<collision name=\"body\">.*?<size>([\d.]+) ([\d.]+) [\d.]+</size>", car_text(), re.S)
+    return float(m.group(1)), float(m.group(2))
+
+
+def car_model(kinematics, start=DEFAULT_START):
+    text = car_text()
+    x, y, yaw = start
     model = re.search(r"<model name=\"taxi_holo_laser\">.*</model>", text, re.S).group(0)
-    model = model.replace("<model name=\"taxi_holo_laser\">", "<model name=\"car\">\n    <pose>-7 2.5 0 0 0 0</pose>")
+    model = model.replace("<model name=\"taxi_holo_laser\">",
+                          f"<model name=\"car\">\n    <pose>{num(x)} {num(y)} 0 0 0 {num(yaw)}</pose>")
     model = re.sub(r"<kinematics>\w+</kinematics>", f"<kinematics>{kinematics}</kinematics>", model)
     return "    " + model.replace("\n", "\n  ") + "\n"
 
 
-def world(slot_m, kinematics, title):
-    after_first = SLOT_START_X + slot_m + PARKED_HALF_LENGTH
-    parked = PARKED_BEFORE + [after_first + d for d in PARKED_AFTER_OFFSETS]
-    ideal_x = SLOT_START_X + slot_m / 2.0
+def parked_xs(slot_m, slot_x):
+    if slot_x == SLOT_START_X:
+        before = list(PARKED_BEFORE)
+    else:
+        before = [slot_x + (x - SLOT_START_X) for x in PARKED_BEFORE]
+    after_first = slot_x + slot_m + PARKED_HALF_LENGTH
+    return before + [after_first + d for d in PARKED_AFTER_OFFSETS]
+
+
+def corners(cx, cy, yaw, length, width):
+    c, s = math.cos(yaw), math.sin(yaw)
+    return [(cx + c * u - s * v, cy + s * u + c * v)
+            for u, v in ((length / 2, width / 2), (-length / 2, width / 2),
+                         (-length / 2, -width / 2), (length / 2, -width / 2))]
+
+
+def boxes_overlap(a, b):
+    """Separating-axis test of two convex quadrilaterals (lists of 4 corners)."""
+    for poly in (a, b):
+        for i in range(4):
+            (x0, y0), (x1, y1) = poly[i], poly[(i + 1) % 4]
+            nx, ny = y0 - y1, x1 - x0
+            pa = [nx * x + ny * y for x, y in a]
+            pb = [nx * x + ny * y for x, y in b]
+            if max(pa) <= min(pb) or max(pb) <= min(pa):
+                return False
+    return True
+
+
+def road_extent(parked, start):
+    """The road's x range: the default one, grown to keep every car and the start on it."""
+    west = min(ROAD_WEST, min(parked) - PARKED_HALF_LENGTH - 2.75)
+    east = max(ROAD_EAST, max(parked) + PARKED_HALF_LENGTH + 3.75)
+    if start is not None:
+        length, width = car_size()
+        xs = [p[0] for p in corners(start[0], 0.0, start[2], length, width)]
+        west = min(west, min(xs) - 3.0)
+        east = max(east, max(xs) + 3.0)
+    return float(math.floor(west)), float(math.ceil(east))
+
+
+def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start=DEFAULT_START,
+          parameters=None):
+    parked = parked_xs(slot_m, slot_x)
+    west, east = road_extent(parked, start)
+    car_y = PARKED_Y - curb_offset
+    curb_face = CURB_FACE_Y - curb_offset
+    ideal_x = slot_x + slot_m / 2.0
+    sx, sy, syaw = start
+    facing = "facing +x" if syaw == 0 else f"with yaw {num(syaw)} rad"
     out = ['<?xml version="1.0"?>',
            f"<!-- {title}: generated by worlds/tools/make_autopark.py, edit that and rerun.",
-           "     Road along x from -25 to 35; curbs are 0.2 m high boxes with faces at y = -4.25 (parking",
-           f"     side) and y = +5; parked cars (4.5 x 1.8 m) centred at y = -3 leave a {slot_m:.2f} m slot",
-           f"     ({slot_m / CAR_LENGTH_M:.2f} car lengths) between x = {SLOT_START_X:.2f} and {SLOT_START_X + slot_m:.2f};"
-           f" ideal parked pose ({ideal_x:.2f}, -3), yaw 0.",
-           f"     The car starts at (-7, 2.5) facing +x; kinematics \"{kinematics}\". -->",
-           '<sdf version="1.9">',
-           '  <world name="autopark">',
-           '    <physics type="dart"><max_step_size>0.005</max_step_size></physics>',
-           '    <model name="street">',
-           '      <static>true</static>',
-           '      <link name="curbs">']
-    body = box("curb_parking_side", 5.0, -4.75, 0.1, 60.0, 1.0, 0.2)
-    body += box("curb_far_side", 5.0, 5.5, 0.1, 60.0, 1.0, 0.2)
-    body += box("end_wall_west", -25.5, 0.375, 0.5, 1.0, 11.25, 1.0)
-    body += box("end_wall_east", 35.5, 0.375, 0.5, 1.0, 11.25, 1.0)
+           f"     Road along x from {num(west)} to {num(east)}; curbs are 0.2 m high boxes with faces at"
+           f" y = {num(curb_face)} (parking",
+           f"     side) and y = +5; parked cars (4.5 x 1.8 m) centred at y = {num(car_y)} leave a {slot_m:.2f} m slot",
+           f"     ({slot_m / CAR_LENGTH_M:.2f} car lengths) between x = {slot_x:.2f} and {slot_x + slot_m:.2f};"
+           f" ideal parked pose ({ideal_x:.2f}, {num(car_y)}), yaw 0.",
+           f"     The car starts at ({num(sx)}, {num(sy)}) {facing}; kinematics \"{kinematics}\". -->"]
+    if parameters is not None:
+        out.append(f"<!-- parameters: {parameters} -->")
+    out += ['<sdf version="1.9">',
+            '  <world name="autopark">',
+            '    <physics type="dart"><max_step_size>0.005</max_step_size></physics>',
+            '    <model name="street">',
+            '      <static>true</static>',
+            '      <link name="curbs">']
+    mid, length = (west + east) / 2.0, east - west
+    # End walls: from the parking-side curb's back (face - 1 m) to the far curb's back (face + 1 m).
+    wall_y0, wall_y1 = curb_face - 1.0, FAR_CURB_FACE_Y + 1.0
+    body = box("curb_parking_side", mid, curb_face - 0.5, 0.1, length, 1.0, 0.2)
+    body += box("curb_far_side", mid, FAR_CURB_FACE_Y + 0.5, 0.1, length, 1.0, 0.2)
+    body += box("end_wall_west", west - 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
+    body += box("end_wall_east", east + 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out.append(body.rstrip("\n"))
     out += ['      </link>', '    </model>']
     for i, x in enumerate(parked):
-        if x + PARKED_HALF_LENGTH > 35.0:
-            continue  # beyond the east wall
+        if x + PARKED_HALF_LENGTH > east or x - PARKED_HALF_LENGTH < west:
+            continue  # beyond an end wall (never, the road grows)
         out += ['    <include>', '      <uri>model://parked_car</uri>', f'      <name>parked_car_{i}</name>',
-                f'      <pose>{x:g} -3 0 0 0 0</pose>', '    </include>']
-    out.append(car_model(kinematics).rstrip("\n"))
+                f'      <pose>{num(x)} {num(car_y)} 0 0 0 0</pose>', '    </include>']
+    out.append(car_model(kinematics, start).rstrip("\n"))
     out += ['  </world>', '</sdf>', '']
     return "\n".join(out)
 
 
-def main():
+def write_shipped():
     variants = [("autopark.world", 9.0, "diff", "autopark"),
                 ("autopark_ackermann.world", 9.0, "ackermann", "autopark_ackermann")]
     for k in (1.6, 1.4, 1.3, 1.2):
@@ -87,5 +189,123 @@ def main():
         print(f"{filename}: slot {slot_m:.2f} m, {kinematics}")
 
 
+# ---- command line -------------------------------------------------------------------------
+
+class UsageError(Exception):
+    pass
+
+
+class Parser(argparse.ArgumentParser):
+    def error(self, message):  # one line, exit status 2 (argparse's own prints the usage too)
+        raise UsageError(message)
+
+
+def finite(option):
+    def parse(text):
+        try:
+            v = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a number: {text!r}")
+        if not math.isfinite(v):
+            raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+        return v
+    parse.__name__ = option
+    return parse
+
+
+def pose(text):
+    parts = text.split(",")
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        values = []
+    if len(values) not in (2, 3) or not all(math.isfinite(v) for v in values):
+        raise argparse.ArgumentTypeError(f"expected X,Y,YAW (numbers), got {text!r}")
+    return tuple(values) if len(values) == 3 else (values[0], values[1], 0.0)
+
+
+VALUE_OPTIONS = ("--out", "--slot-length", "--slot-x", "--curb-offset", "--kinematics", "--start")
+
+
+def join_negative_values(argv):
+    """`--start -7,2.5,0` -> `--start=-7,2.5,0` (argparse takes "-7,..." for an option)."""
+    out, i = [], 0
+    while i < len(argv):
+        if argv[i] in VALUE_OPTIONS and i + 1 < len(argv) and re.match(r"-[\d.]", argv[i + 1]):
+            out.append(f"{argv[i]}={argv[i + 1]}")
+            i += 2
+        else:
+            out.append(argv[i])
+            i += 1
+    return out
+
+
+def parse_args(argv):
+    p = Parser(prog="make_autopark.py", description="Writes an Autopark street (see the module docstring).")
+    p.add_argument("--out", required=True, help="the world file to write ('-': standard output)")
+    p.add_argument("--slot-length", type=finite("slot-length"), default=9.0)
+    p.add_argument("--slot-x", type=finite("slot-x"), default=SLOT_START_X)
+    p.add_argument("--curb-offset", type=finite("curb-offset"), default=0.0)
+    p.add_argument("--kinematics", choices=("diff", "ackermann"), default="diff")
+    p.add_argument("--start", type=pose, default=DEFAULT_START)
+    a = p.parse_args(join_negative_values(argv))
+    if not a.slot_length > WIDEST_OTHER_GAP_M:
+        raise UsageError(f"--slot-length must be > {WIDEST_OTHER_GAP_M:g} m (the widest gap between the other"
+                         f" parked cars; the referee takes the widest gap as the slot), got {a.slot_length:g}")
+    if a.slot_length > 1000 or abs(a.slot_x) > 1000:
+        raise UsageError("--slot-length and --slot-x must stay within 1000 m")
+    if not a.curb_offset >= -2.0 or a.curb_offset > 100:
+        raise UsageError(f"--curb-offset must be in [-2, 100] m (the lane must stay >= 5 m wide), got {a.curb_offset:g}")
+    check_start(a)
+    return a
+
+
+def check_start(a):
+    x, y, yaw = a.start
+    if abs(x) > 1000:
+        raise UsageError(f"--start x must stay within 1000 m, got {x:g}")
+    length, width = car_size()
+    car = corners(x, y, yaw, length, width)
+    ys = [c[1] for c in car]
+    curb_face = CURB_FACE_Y - a.curb_offset
+    if min(ys) <= curb_face or max(ys) >= FAR_CURB_FACE_Y:
+        raise UsageError(f"--start: the car ({length:g} x {width:g} m) at ({x:g}, {y:g}, yaw {yaw:g}) is not on the"
+                         f" road between the curbs (y {curb_face:g} .. {FAR_CURB_FACE_Y:g})")
+    for i, px in enumerate(parked_xs(a.slot_length, a.slot_x)):
+        parked = corners(px, PARKED_Y - a.curb_offset, 0.0, 2 * PARKED_HALF_LENGTH, 2 * PARKED_HALF_WIDTH)
+        if boxes_overlap(car, parked):
+            raise UsageError(f"--start: the car at ({x:g}, {y:g}, yaw {yaw:g}) overlaps parked_car_{i} at x = {px:g}")
+
+
+def main(argv):
+    if not argv:
+        write_shipped()
+        return 0
+    try:
+        a = parse_args(argv)
+    except UsageError as e:
+        print(f"make_autopark.py: error: {e}", file=sys.stderr)
+        return 2
+    x, y, yaw = a.start
+    # (an XML comment cannot hold "--": name=value for each option)
+    parameters = (f"slot-length={num(a.slot_length)} slot-x={num(a.slot_x)} curb-offset={num(a.curb_offset)}"
+                  f" kinematics={a.kinematics} start={num(x)},{num(y)},{num(yaw)}")
+    title = "autopark" if a.out == "-" else os.path.splitext(os.path.basename(a.out))[0]
+    title = re.sub(r"-{2,}", "-", title)  # it goes in an XML comment
+    text = world(a.slot_length, a.kinematics, title, a.slot_x, a.curb_offset, a.start, parameters)
+    if a.out == "-":
+        sys.stdout.write(text)
+    else:
+        try:
+            with open(a.out, "w") as f:
+                f.write(text)
+        except OSError as e:
+            print(f"make_autopark.py: error: --out: cannot write {a.out}: {e.strerror}", file=sys.stderr)
+            return 2
+        print(f"{a.out}: slot {a.slot_length:.2f} m at x = {a.slot_x:.2f}, curb offset {a.curb_offset:g} m,"
+              f" {a.kinematics}")
+    return 0
+
+
 if __name__ == "__main__":
-    main()
+    sys.exit(main(sys.argv[1:]))

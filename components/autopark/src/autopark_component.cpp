@@ -1,6 +1,5 @@
 #include "aula/autopark/autopark_component.hpp"
 
-#include <aula/app/process_setup.hpp>
 #include <aula/episode_t.hpp>
 #include <aula/world/car_kinematics.hpp>
 
@@ -10,47 +9,32 @@ namespace aula::autopark {
 
 namespace {
 
-LaserMount mountOf(const world::RobotSpec& car, const std::string& channel, const std::string& where) {
-  for (const auto& p : car.plugins) {
-    if (p.type == "laser" && p.getString("channel", "") == channel) {
-      const Eigen::Isometry3d pose = p.getPose("pose");
-      return LaserMount{pose.translation().x(), pose.translation().y(), world::yawOf(pose)};
-    }
-  }
-  throw config::ConfigError(where + ": the car in the world has no laser on channel '" + channel + "'");
+LaserMount mountOf(const world::RobotSpec& car, const std::string& plugin_name) {
+  world::channelOf(car, "laser", plugin_name);  // says what is missing when there is no such laser
+  const Eigen::Isometry3d pose = car.findPluginNamed(plugin_name)->getPose("pose");
+  return LaserMount{pose.translation().x(), pose.translation().y(), world::yawOf(pose)};
 }
 
 }  // namespace
 
-AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg) : bus_(bus) {
-  const double max_v = cfg.getDouble("Autopark.MaxV", 3.0);
-  const double max_w = cfg.getDouble("Autopark.MaxW", 1.0);
-  period_s_ = cfg.getDouble("Autopark.Period", 0.05);
-  if (!(max_v > 0) || !(max_w > 0)) throw config::ConfigError(cfg.origin("Autopark.MaxV") + ": Autopark.MaxV and Autopark.MaxW must be > 0");
-  if (!(period_s_ >= 0.005 && period_s_ <= 1.0)) throw config::ConfigError(cfg.origin("Autopark.Period") + ": Autopark.Period must be in [0.005, 1] s");
-  algorithm_name_ = cfg.getString("Autopark.Algorithm", "student");
-  if (algorithm_name_ != "student" && algorithm_name_ != "reactive" && algorithm_name_ != "planner") {
-    throw config::ConfigError(cfg.origin("Autopark.Algorithm") + ": Autopark.Algorithm = '" + algorithm_name_ +
-                              "': expected student, reactive or planner");
-  }
-  episode_channel_ = cfg.getString("Autopark.Episode.Channel", "AUTOPARK_EPISODE");
-  autostart_ = cfg.getBool("Autopark.Autostart", false);
-  world_ = world::loadWorld(app::sourcePath(cfg, "Autopark.World", "worlds/autopark.world"));
-  robot_name_ = cfg.getString("Autopark.Robot", "car");
-  const world::RobotSpec* car = world_.findRobot(robot_name_);
-  if (car == nullptr) throw config::ConfigError(cfg.origin("Autopark.Robot") + ": the world " + world_.source_path + " has no robot '" + robot_name_ + "'");
-
-  const std::string front = cfg.getString("Autopark.Laser1.Channel", "CAR_LASER_FRONT");
-  const std::string rear = cfg.getString("Autopark.Laser2.Channel", "CAR_LASER_REAR");
-  const std::string right = cfg.getString("Autopark.Laser3.Channel", "CAR_LASER_RIGHT");
-  pose_ = std::make_unique<component::Pose3dProxy>(bus, cfg.getString("Autopark.Pose3D.Channel", "CAR_POSE"));
-  front_ = std::make_unique<component::LaserProxy>(bus, front);
-  rear_ = std::make_unique<component::LaserProxy>(bus, rear);
-  right_ = std::make_unique<component::LaserProxy>(bus, right);
-  motors_ = std::make_unique<component::MotorsProxy>(bus, cfg.getString("Autopark.Motors.Channel", "CAR_MOTORS"), max_v, max_w);
+AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+    : bus_(bus), world_(world) {
+  period_s_ = cfg.getDouble("Autopark.Period");
+  algorithm_name_ = cfg.getString("Autopark.Algorithm");
+  episode_channel_ = cfg.getString("Autopark.Episode.Channel");
+  autostart_ = cfg.getBool("Autopark.Autostart");
+  robot_name_ = cfg.getString("Autopark.Robot");
+  const world::RobotSpec* car = &world::requireRobot(world_, robot_name_);
+  // The car's three lasers are its plugins named laser_front, laser_rear and laser_right.
+  pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(*car, "pose3d"));
+  front_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(*car, "laser", "laser_front"));
+  rear_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(*car, "laser", "laser_rear"));
+  right_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(*car, "laser", "laser_right"));
+  motors_ = std::make_unique<component::MotorsProxy>(bus, world::channelOf(*car, "motors"), cfg.getDouble("Autopark.MaxV"),
+                                                     cfg.getDouble("Autopark.MaxW"));
   api_ = std::make_unique<AutoparkApi>(AutoparkApi{*pose_, *front_, *rear_, *right_, *motors_, period_s_,
-                                                    mountOf(*car, front, world_.source_path), mountOf(*car, rear, world_.source_path),
-                                                    mountOf(*car, right, world_.source_path)});
+                                                    mountOf(*car, "laser_front"), mountOf(*car, "laser_rear"),
+                                                    mountOf(*car, "laser_right")});
   api_->car_length_m = car->shape.box_size_m.x();
   api_->car_width_m = car->shape.box_size_m.y();
   if (const world::PluginSpec* motors = car->findPlugin("motors")) {

@@ -1,66 +1,65 @@
 #include "aula/teletaxi/taxi_component.hpp"
 
+#include <aula/teletaxi/gradient_field.hpp>
 #include <aula/world/map_transform.hpp>
 
 #include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace aula::teletaxi {
-namespace {
+TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world) : bus_(bus) {
+  const double period_s = cfg.getDouble("TeleTaxi.Period");
+  episode_channel_ = cfg.getString("TeleTaxi.Episode.Channel");
+  algorithm_name_ = cfg.getString("TeleTaxi.Algorithm");
+  algorithm_ = algorithm_name_ == "reference" ? makeReferenceAlgorithm() : makeStudentAlgorithm();
 
-std::string resolveMapPath(const std::string& value) {
-  if (!value.empty() && value.front() == '/') return value;
-  return std::string(AULA_MAPS_DIR) + "/" + value;
-}
+  const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
+  world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});
+  grid_ = std::make_unique<Grid>(map.image, map.transform);
+  map_ = std::move(map);
 
-}  // namespace
-
-TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg) : bus_(bus) {
-  const double max_v = cfg.getDouble("TeleTaxi.MaxV", 20.0);
-  const double max_w = cfg.getDouble("TeleTaxi.MaxW", 2.0);
-  const double period_s = cfg.getDouble("TeleTaxi.Period", 0.08);
-  if (!(max_v > 0) || !(max_w > 0)) throw config::ConfigError(cfg.origin("TeleTaxi.MaxV") + ": TeleTaxi.MaxV and TeleTaxi.MaxW must be > 0");
-  if (!(period_s >= 0.005 && period_s <= 1.0)) {
-    throw config::ConfigError(cfg.origin("TeleTaxi.Period") + ": TeleTaxi.Period must be in [0.005, 1] s");
+  const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
+  start_xy_m_ = {robot.pose.translation().x(), robot.pose.translation().y()};
+  // The configured destination must be one the taxi can reach: refused at once, with the reason.
+  const auto d = cfg.getDoubleList("TeleTaxi.Destination");
+  if (const auto problem = destinationProblem(d[0], d[1])) {
+    throw config::ConfigError(cfg.origin("TeleTaxi.Destination") + ": TeleTaxi.Destination = " + cfg.getString("TeleTaxi.Destination") +
+                              ": " + *problem);
   }
-  episode_channel_ = cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE");
-  algorithm_name_ = cfg.getString("TeleTaxi.Algorithm", "student");
-  if (algorithm_name_ == "student") {
-    algorithm_ = makeStudentAlgorithm();
-  } else if (algorithm_name_ == "reference") {
-    algorithm_ = makeReferenceAlgorithm();
-  } else {
-    throw config::ConfigError(cfg.origin("TeleTaxi.Algorithm") + ": TeleTaxi.Algorithm = '" +
-                              algorithm_name_ + "': expected student or reference");
-  }
-
-  std::string image_path;
-  const std::string yaml = resolveMapPath(cfg.getString("TeleTaxi.Map", "cityLarge.yaml"));
-  const world::MapTransform transform = world::MapTransform::load(yaml, &image_path);
-  cv::Mat map = cv::imread(image_path, cv::IMREAD_GRAYSCALE);
-  if (map.empty()) throw std::runtime_error(image_path + ": cannot read the map image");
-  grid_ = std::make_unique<Grid>(map, transform);
-
-  pose_ = std::make_unique<component::Pose3dProxy>(bus, cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"));
-  motors_ = std::make_unique<component::MotorsProxy>(
-      bus, cfg.getString("TeleTaxi.Motors.Channel", "TAXI_MOTORS"), max_v, max_w);
+  pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
+  motors_ = std::make_unique<component::MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble("TeleTaxi.MaxV"),
+                                                     cfg.getDouble("TeleTaxi.MaxW"));
   api_ = std::make_unique<TaxiApi>(*pose_, *motors_, *grid_);
   loop_ = std::make_unique<component::ControlLoop>(
       bus, "teletaxi", static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
       [this] { algorithm_->execute(*api_); });
   loop_->setOnTick([this](int64_t utime) { tick(utime); });
 
-  autostart_ = cfg.getBool("TeleTaxi.Autostart", false);
-  if (cfg.has("TeleTaxi.Destination")) {
-    const auto d = cfg.getDoubleList("TeleTaxi.Destination");
-    if (d.size() != 2) {
-      throw config::ConfigError(cfg.origin("TeleTaxi.Destination") +
-                                ": TeleTaxi.Destination needs two numbers: x, y in metres");
-    }
-    setDestination(d[0], d[1]);
+  autostart_ = cfg.getBool("TeleTaxi.Autostart");
+  setDestination(d[0], d[1]);
+}
+
+std::optional<std::string> TaxiComponent::destinationProblem(double x_m, double y_m) const {
+  char where[96];
+  std::snprintf(where, sizeof where, "(%.1f, %.1f)", x_m, y_m);
+  if (const auto problem = world::pointProblem(map_, x_m, y_m)) return std::string(where) + " " + *problem;
+  const double dx = x_m - start_xy_m_.first, dy = y_m - start_xy_m_.second;
+  if (std::hypot(dx, dy) < kMinTripM) {
+    return std::string(where) + " is closer than " + std::to_string(static_cast<int>(kMinTripM)) +
+           " m to the taxi's start: choose a destination to drive to";
   }
+  // Reachable: the GPP field grown from the destination covers the start.
+  GradientField field(map_.image);
+  const auto [gx, gy] = grid_->worldToGrid(x_m, y_m);
+  if (!field.compute({gx, gy})) return std::string(where) + " is too close to a building for the taxi";
+  const auto [sx, sy] = grid_->worldToGrid(start_xy_m_.first, start_xy_m_.second);
+  if (!std::isfinite(field.value(sx, sy))) {
+    return std::string(where) + " cannot be reached from the taxi's start: it is walled off";
+  }
+  return std::nullopt;
 }
 
 void TaxiComponent::setDestination(double x_m, double y_m) {

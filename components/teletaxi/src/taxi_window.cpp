@@ -54,6 +54,10 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   setCentralWidget(central);
 
   connect(map_, &component::MapView::worldDoubleClicked, this, [this](double x, double y) {
+    if (const auto problem = component_.destinationProblem(x, y)) {
+      status_label_->setText("Destination refused: " + QString::fromStdString(*problem));
+      return;
+    }
     component_.setDestination(x, y);
     map_->setPath({});
     path_shown_ = false;

@@ -6,25 +6,23 @@
 
 namespace aula::vacuum {
 
-VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg) : bus_(bus) {
-  const double max_v = cfg.getDouble("Vacuum.MaxV", 0.5);
-  const double max_w = cfg.getDouble("Vacuum.MaxW", 3.0);
-  period_s_ = cfg.getDouble("Vacuum.Period", 0.08);
-  if (!(max_v > 0) || !(max_w > 0)) throw config::ConfigError(cfg.origin("Vacuum.MaxV") + ": Vacuum.MaxV and Vacuum.MaxW must be > 0");
-  if (!(period_s_ >= 0.005 && period_s_ <= 1.0)) throw config::ConfigError(cfg.origin("Vacuum.Period") + ": Vacuum.Period must be in [0.005, 1] s");
-  algorithm_name_ = cfg.getString("Vacuum.Algorithm", "student");
-  if (algorithm_name_ != "student" && algorithm_name_ != "reference" && algorithm_name_ != "bounce") {
-    throw config::ConfigError(cfg.origin("Vacuum.Algorithm") + ": Vacuum.Algorithm = '" + algorithm_name_ +
-                              "': expected student, reference or bounce");
-  }
-  episode_channel_ = cfg.getString("Vacuum.Episode.Channel", "VACUUM_EPISODE");
-  map_yaml_ = cfg.getString("Vacuum.Map", "vacuum.yaml");
-  autostart_ = cfg.getBool("Vacuum.Autostart", false);
-  run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration", 900);
-  pose_ = std::make_unique<component::Pose3dProxy>(bus, cfg.getString("Vacuum.Pose3D.Channel", "ROOMBA_POSE"));
-  laser_ = std::make_unique<component::LaserProxy>(bus, cfg.getString("Vacuum.Laser.Channel", "ROOMBA_LASER"));
-  bumper_ = std::make_unique<component::BumperProxy>(bus, cfg.getString("Vacuum.Bumper.Channel", "ROOMBA_BUMPER"));
-  motors_ = std::make_unique<component::MotorsProxy>(bus, cfg.getString("Vacuum.Motors.Channel", "ROOMBA_MOTORS"), max_v, max_w);
+VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+    : bus_(bus) {
+  period_s_ = cfg.getDouble("Vacuum.Period");
+  algorithm_name_ = cfg.getString("Vacuum.Algorithm");
+  episode_channel_ = cfg.getString("Vacuum.Episode.Channel");
+  autostart_ = cfg.getBool("Vacuum.Autostart");
+  run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration");
+  const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
+  map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});
+  const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("Vacuum.Robot"));
+  robot_radius_m_ = robot.shape.kind == world::ShapeKind::Cylinder ? robot.shape.radius_m
+                                                                    : 0.5 * robot.shape.box_size_m.head<2>().norm();
+  pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
+  laser_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(robot, "laser"));
+  bumper_ = std::make_unique<component::BumperProxy>(bus, world::channelOf(robot, "bumper"));
+  motors_ = std::make_unique<component::MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble("Vacuum.MaxV"),
+                                                     cfg.getDouble("Vacuum.MaxW"));
   yaw_ = std::make_unique<YawSensor>(*pose_);
   api_ = std::make_unique<VacuumApi>(VacuumApi{*yaw_, *laser_, *bumper_, *motors_, period_s_});
   loop_ = std::make_unique<component::ControlLoop>(bus, "vacuum-cleaner", static_cast<int64_t>(std::llround(period_s_ * 1e6)),

@@ -18,16 +18,14 @@ namespace aula::vacuum {
 
 VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   setWindowTitle("Vacuum cleaner");
-  std::string image;
-  const auto yaml = std::string(AULA_MAPS_DIR) + "/" + component_.mapYaml();
-  const world::MapTransform transform = world::MapTransform::load(yaml, &image);
+  const world::MapTransform& transform = component_.map().transform;
   transform_ = transform;
-  QImage map(QString::fromStdString(image));
-  map_image_ = cv::imread(image, cv::IMREAD_GRAYSCALE);
-  if (map.isNull() || map_image_.empty()) throw std::runtime_error(image + ": cannot read the map image");
+  map_image_ = component_.map().image;
+  const QImage map(map_image_.data, map_image_.cols, map_image_.rows, static_cast<int>(map_image_.step),
+                   QImage::Format_Grayscale8);
   auto* central = new QWidget(this);
   auto* layout = new QHBoxLayout(central);
-  map_ = new component::MapView(map.convertToFormat(QImage::Format_Grayscale8), transform, central);
+  map_ = new component::MapView(map.copy(), transform, central);
   map_->setMinimumSize(560, 560);
   layout->addWidget(map_, 1);
   auto* side = new QVBoxLayout;
@@ -58,7 +56,7 @@ void VacuumWindow::onTick(int64_t utime) {
   const auto& p = component_.truePose();
   if (!p.received() || p.utime() == last_pose_utime_) return;
   last_pose_utime_ = p.utime();
-  map_->paintDisc(p.getX(), p.getY(), 0.165, QColor(80, 170, 255, 200));
+  map_->paintDisc(p.getX(), p.getY(), component_.robotRadiusM(), QColor(80, 170, 255, 200));
   // The percentage counts from the first Run, on the referee's own grid (free floor reachable
   // from where the robot stands), sampled once per sim second for the plot.
   if (!component_.running() && run_start_utime_ < 0) return;
@@ -66,7 +64,7 @@ void VacuumWindow::onTick(int64_t utime) {
     run_start_utime_ = utime;
     coverage_ = std::make_unique<CoverageGrid>(map_image_, transform_, p.getX(), p.getY());
   }
-  coverage_->markDisc(p.getX(), p.getY(), 0.165);
+  coverage_->markDisc(p.getX(), p.getY(), component_.robotRadiusM());
   if (utime - last_sample_utime_ >= 1'000'000) {
     last_sample_utime_ = utime;
     plot_->addSample((utime - run_start_utime_) / 1e6, coverage_->coveragePercent());
@@ -75,7 +73,7 @@ void VacuumWindow::onTick(int64_t utime) {
 
 void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
-  if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 0.33, 0.33);
+  if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 2 * component_.robotRadiusM(), 2 * component_.robotRadiusM());
   run_->setRunning(component_.running());
   status_->setText(QString("Algorithm: %1\nsim time %2 s\ncleaned %5 % of the floor since Run\nv = %3 m/s   w = %4 rad/s")
                        .arg(QString::fromStdString(component_.algorithmName()))

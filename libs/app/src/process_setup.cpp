@@ -1,40 +1,79 @@
 #include "aula/app/process_setup.hpp"
 
+#include <aula/config/paths.hpp>
 #include <aula/lcm/bus.hpp>
-#include <aula/world/world_spec.hpp>
+#include <aula/settings/tables.hpp>
 
+#include <cstdlib>
 #include <iostream>
 
 namespace aula::app {
+namespace {
 
-ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std::string& default_cfg,
-                                    const std::vector<std::string>& extra_options) {
+bool haveDisplay() {
+  for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
+    const char* value = std::getenv(name);
+    if (value != nullptr && *value != '\0') return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std::string& program,
+                                    const std::vector<std::string>& extra_options, const std::string& usage,
+                                    bool opens_window) {
+  const config::SettingsTable& table = settings::tableOf(program);
+  const settings::Exercise* exercise = settings::exerciseOfProgram(program);
   std::vector<std::string> takes_value = {"config", "lcm-url"};
   std::vector<std::string> known = {"config", "lcm-url", "headless", "help"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
   ProcessSetup setup;
+  setup.program = program;
   setup.command_line = config::CommandLine::parse(argc, argv, takes_value);
+  if (setup.command_line.flag("help")) {
+    std::cout << usage << "\nSettings (in the .cfg, or --Key=value on the command line):\n" << table.help();
+    throw HelpShown();
+  }
   setup.command_line.requireKnown(known);
   if (!setup.command_line.positional.empty()) {
-    throw config::ConfigError("command line: unexpected argument '" +
-                              setup.command_line.positional.front() + "'");
+    throw config::ConfigError("command line: unexpected argument '" + setup.command_line.positional.front() + "'");
   }
-  setup.cfg_path = setup.command_line.option("config", std::string(AULA_SOURCE_DIR) + "/" + default_cfg);
-  setup.cfg = config::Config::fromFile(setup.cfg_path);
-  setup.command_line.applyOverrides(setup.cfg);
   setup.headless = setup.command_line.flag("headless");
+  if (opens_window && !setup.headless && !haveDisplay()) {
+    throw config::ConfigError("no display (DISPLAY is not set): use --headless");
+  }
+
+  setup.cfg_path = setup.command_line.option("config", exercise != nullptr ? config::dataPath(exercise->config_file) : "");
+  config::Config file = setup.cfg_path.empty() ? config::Config() : config::Config::fromFile(setup.cfg_path);
+  // Command-line keys must be this program's own; the .cfg may also hold its siblings' keys.
+  config::Config overrides;
+  setup.command_line.applyOverrides(overrides);
+  table.resolve(overrides);
+  file.merge(overrides);
+  std::vector<const config::SettingsTable*> siblings;
+  if (exercise != nullptr) {
+    for (const auto* t : exercise->tables()) {
+      if (t != &table) siblings.push_back(t);
+    }
+  }
+  setup.cfg = table.resolve(file, siblings);
+
+  if (exercise != nullptr) {
+    const std::string key = exercise->section + ".World";
+    setup.world = world::loadWorld(config::resolveWorldPath(setup.cfg.getString(key), setup.cfg.origin(key) + ": " + key));
+    std::cerr << program << ": world " << setup.world.source_path << " (sha256 " << setup.world.sha256.substr(0, 12)
+              << ")" << std::endl;
+  }
   setup.bus = lcmbus::openBus(lcmbus::resolveUrl(setup.command_line, setup.cfg));
   return setup;
-}
-
-std::string sourcePath(const config::Config& cfg, const std::string& key, const std::string& fallback) {
-  const std::string path = cfg.getString(key, fallback);
-  return !path.empty() && path[0] == '/' ? path : std::string(AULA_SOURCE_DIR) + "/" + path;
 }
 
 int guardedMain(const std::string& program, const std::function<int()>& body) {
   try {
     return body();
+  } catch (const HelpShown&) {
+    return 0;
   } catch (const config::ConfigError& e) {
     std::cerr << program << ": " << e.what() << "\n";
     return 2;

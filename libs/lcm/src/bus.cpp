@@ -9,7 +9,8 @@ namespace aula::lcmbus {
 std::string resolveUrl(const config::CommandLine& cl, const config::Config& cfg) {
   const std::string from_option = cl.option("lcm-url");
   if (!from_option.empty()) return from_option;
-  if (cfg.has("Aula.LcmUrl")) return cfg.getString("Aula.LcmUrl");
+  // A declared default does not hide LCM's own environment variable.
+  if (cfg.has("Aula.LcmUrl") && cfg.origin("Aula.LcmUrl") != "default") return cfg.getString("Aula.LcmUrl");
   if (const char* env = std::getenv("LCM_DEFAULT_URL"); env != nullptr && *env != '\0') return env;
   return kDefaultUrl;
 }

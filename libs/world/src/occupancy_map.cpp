@@ -1,8 +1,18 @@
 #include "aula/world/occupancy_map.hpp"
 
+#include <aula/config/paths.hpp>
+
+#include <opencv2/imgcodecs.hpp>
+
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
+#include <filesystem>
+#include <iomanip>
 #include <limits>
+#include <sstream>
+
+#include <unistd.h>
 
 namespace aula::world {
 namespace {
@@ -73,6 +83,68 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double
     }
   }
   return map;
+}
+
+}  // namespace aula::world
+
+namespace aula::world {
+
+MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
+  if (world.statics.empty()) throw WorldError(world.source_path + ": no static geometry to map");
+  const Eigen::Vector4d bounds = staticBounds(world);
+  MapTransform t;
+  t.resolution_m = resolution_m;
+  // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
+  t.width_px = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution_m - 1e-6));
+  t.height_px = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution_m - 1e-6));
+  const double cx = (bounds[0] + bounds[2]) / 2, cy = (bounds[1] + bounds[3]) / 2;
+  t.origin_x_m = cx - t.width_px * resolution_m / 2;
+  t.origin_y_m = cy + t.height_px * resolution_m / 2;
+  return t;
+}
+
+OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
+  OccupancyMap out;
+  out.transform = fitTransform(world, params.resolution_m);
+  if (out.transform.width_px > 20000 || out.transform.height_px > 20000) {
+    throw WorldError(world.source_path + ": the map would be " + std::to_string(out.transform.width_px) + " x " +
+                     std::to_string(out.transform.height_px) + " px; use a coarser Map.Resolution");
+  }
+  // Key: everything the raster depends on, printed exactly.
+  std::ostringstream key;
+  key << std::setprecision(17) << "aula-map-v1 " << params.resolution_m << ' ' << params.z_min_m << ' '
+      << params.z_max_m << '\n';
+  for (const auto& o : world.statics) {
+    key << static_cast<int>(o.shape.kind) << ' ' << o.shape.box_size_m.transpose() << ' ' << o.shape.radius_m << ' '
+        << o.shape.length_m << ' ' << o.pose.matrix().reshaped().transpose() << '\n';
+  }
+  const std::string folder = config::cacheDir() + "/maps";
+  const std::string png = folder + "/" + sha256Hex(key.str()) + ".png";
+  out.image = cv::imread(png, cv::IMREAD_GRAYSCALE);
+  if (!out.image.empty() && out.image.cols == out.transform.width_px && out.image.rows == out.transform.height_px) {
+    return out;
+  }
+  out.image = rasterizeOccupancy(world, out.transform, params.z_min_m, params.z_max_m);
+  // Written aside and renamed, so a parallel run never reads half a file. A cache that cannot
+  // be written only costs the next run the raster.
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  const std::string partial = png + "." + std::to_string(::getpid()) + ".tmp.png";
+  if (!error && cv::imwrite(partial, out.image)) std::filesystem::rename(partial, png, error);
+  return out;
+}
+
+std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m) {
+  const MapTransform& t = map.transform;
+  const int col = t.worldToCol(x_m), row = t.worldToRow(y_m);
+  if (!t.contains(col, row) || !std::isfinite(x_m) || !std::isfinite(y_m)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "is off the map (x in [%.1f, %.1f], y in [%.1f, %.1f] m)", t.origin_x_m,
+                  t.origin_x_m + t.width_px * t.resolution_m, t.origin_y_m - t.height_px * t.resolution_m, t.origin_y_m);
+    return std::string(text);
+  }
+  if (map.image.at<uint8_t>(row, col) == 0) return std::string("is inside a building or obstacle");
+  return std::nullopt;
 }
 
 }  // namespace aula::world

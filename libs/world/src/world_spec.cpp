@@ -3,6 +3,9 @@
 // Nested models of static models are flattened; <plane> collisions (ground) are ignored.
 #include "aula/world/world_spec.hpp"
 
+#include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
+
 #include <sdf/Box.hh>
 #include <sdf/Collision.hh>
 #include <sdf/Cylinder.hh>
@@ -177,6 +180,13 @@ const PluginSpec* RobotSpec::findPlugin(const std::string& type) const {
   return nullptr;
 }
 
+const PluginSpec* RobotSpec::findPluginNamed(const std::string& plugin_name) const {
+  for (const auto& p : plugins) {
+    if (p.name == plugin_name) return &p;
+  }
+  return nullptr;
+}
+
 const RobotSpec* WorldSpec::findRobot(const std::string& robot) const {
   for (const auto& r : robots) {
     if (r.name == robot) return &r;
@@ -231,22 +241,40 @@ void checkXml(const std::string& path) {
 
 }  // namespace
 
-WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
+std::vector<std::string> modelSearchPath(const std::string& world_path) {
+  std::vector<std::string> folders;
+  if (const char* env = std::getenv("AULA_MODEL_PATH")) {
+    std::stringstream list(env);
+    std::string folder;
+    while (std::getline(list, folder, ':')) {
+      if (!folder.empty()) folders.push_back(folder);
+    }
+  }
+  const auto slash = world_path.rfind('/');
+  folders.push_back((slash == std::string::npos ? std::string(".") : world_path.substr(0, slash)) + "/models");
+  try {
+    folders.push_back(config::dataDir() + "/worlds/models");
+  } catch (const config::ConfigError&) {
+    // No installed data (a test binary with AULA_DATA_DIR unset): the other folders still count.
+  }
+  return folders;
+}
+
+WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path) {
   if (!std::ifstream(path).good()) throw WorldError(path + ": cannot open world file");
   checkXml(path);
-  std::string models = models_dir;
-  if (models.empty()) {
-    const auto slash = path.rfind('/');
-    models = (slash == std::string::npos ? std::string(".") : path.substr(0, slash)) + "/models";
-  }
-  // model://NAME -> MODELS/NAME (a folder with model.config and model.sdf), Gazebo style.
+  const std::vector<std::string> folders = model_path.empty() ? modelSearchPath(path) : model_path;
+  // model://NAME -> the first FOLDER/NAME with a model.config, Gazebo style (GAZEBO_MODEL_PATH).
   sdf::ParserConfig config;
-  config.AddURIPath("model://", models);
   auto unresolved = std::make_shared<std::vector<std::string>>();
-  config.SetFindCallback([unresolved](const std::string& uri) -> std::string {
-    // Only called for what the URI path above does not resolve; "" makes sdformat report it.
+  config.SetFindCallback([folders, unresolved](const std::string& uri) -> std::string {
+    const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
+    for (const auto& folder : folders) {
+      const std::string candidate = folder + "/" + name;
+      if (std::ifstream(candidate + "/model.config").good()) return candidate;
+    }
     unresolved->push_back(uri);
-    return "";
+    return "";  // sdformat reports it; the message below says where we looked
   });
   sdf::Root root;
   const sdf::Errors errors = root.Load(path, config);
@@ -260,8 +288,9 @@ WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
     }
     for (const auto& uri : *unresolved) {
       const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
-      text += "\n  model '" + name + "' not found: expected " + models + "/" + name +
-              "/model.config and model.sdf";
+      text += "\n  model '" + name + "' not found: looked for " + name + "/model.config in";
+      for (const auto& folder : folders) text += " " + folder;
+      text += " (add a folder with AULA_MODEL_PATH)";
     }
     throw WorldError(text);
   }
@@ -271,7 +300,13 @@ WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
   WorldSpec spec;
   spec.name = world->Name();
   spec.source_path = path;
-  if (world->PhysicsCount() > 0) spec.physics_step_s = world->PhysicsByIndex(0)->MaxStepSize();
+  spec.sha256 = sha256OfFile(path);
+  // sdformat adds a default <physics> (1 ms) to every world: only a step the file states counts.
+  const sdf::ElementPtr physics = world->Element()->HasElement("physics") ? world->Element()->GetElement("physics") : nullptr;
+  if (physics != nullptr && physics->GetExplicitlySetInFile() && physics->HasElement("max_step_size") &&
+      physics->GetElement("max_step_size")->GetExplicitlySetInFile() && world->PhysicsCount() > 0) {
+    spec.physics_step_s = world->PhysicsByIndex(0)->MaxStepSize();
+  }
 
   for (uint64_t m = 0; m < world->ModelCount(); ++m) {
     const sdf::Model* model = world->ModelByIndex(m);
@@ -306,6 +341,28 @@ WorldSpec loadWorld(const std::string& path, const std::string& models_dir) {
     spec.robots.push_back(std::move(robot));
   }
   return spec;
+}
+
+const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name) {
+  if (const RobotSpec* robot = world.findRobot(name)) return *robot;
+  std::string names;
+  for (const auto& r : world.robots) names += (names.empty() ? "" : ", ") + r.name;
+  throw WorldError(world.source_path + ": no robot named '" + name + "' (robots: " +
+                          (names.empty() ? "none" : names) + ")");
+}
+
+std::string channelOf(const RobotSpec& robot, const std::string& type, const std::string& name) {
+  for (const auto& plugin : robot.plugins) {
+    if (plugin.type == type && (name.empty() || plugin.name == name)) {
+      const std::string channel = plugin.getString("channel", "");
+      if (channel.empty()) {
+        throw WorldError("robot '" + robot.name + "', plugin '" + plugin.name + "': no <channel>");
+      }
+      return channel;
+    }
+  }
+  throw WorldError("robot '" + robot.name + "' has no " + type + " plugin" +
+                          (name.empty() ? "" : " named '" + name + "'") + ", which this exercise needs");
 }
 
 }  // namespace aula::world

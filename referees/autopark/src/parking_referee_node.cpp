@@ -1,29 +1,27 @@
 #include "parking_referee_node.hpp"
 
-#include <aula/app/process_setup.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 
 namespace aula::autopark {
 
 ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
   ParkingRefereeSettings s;
-  s.timeout_s = cfg.getDouble("Autopark.Referee.Timeout", s.timeout_s);
-  s.still_hold_s = cfg.getDouble("Autopark.Referee.StillHold", s.still_hold_s);
-  s.full_time_s = cfg.getDouble("Autopark.Referee.FullMarkTime", s.full_time_s);
-  const auto gaps = cfg.getDoubleList("Autopark.Referee.GapBands", {s.gap_half_from_m, s.gap_full_from_m, s.gap_full_to_m});
-  const auto curb = cfg.getDoubleList("Autopark.Referee.CurbBands", {s.curb_full_m, s.curb_half_m});
+  s.timeout_s = cfg.getDouble("Autopark.Referee.Timeout");
+  s.still_hold_s = cfg.getDouble("Autopark.Referee.StillHold");
+  s.full_time_s = cfg.getDouble("Autopark.Referee.FullMarkTime");
+  const auto gaps = cfg.getDoubleList("Autopark.Referee.GapBands");
+  const auto curb = cfg.getDoubleList("Autopark.Referee.CurbBands");
+  // The ranges of each number are declared (aula_settings); their order is checked here.
   auto bad = [&](const std::string& key, const std::string& what) {
-    throw config::ConfigError(cfg.origin(key) + ": " + key + ": " + what);
+    throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) + ": " + what);
   };
-  if (!(s.timeout_s > 0)) bad("Autopark.Referee.Timeout", "must be > 0");
-  if (!(s.still_hold_s > 0)) bad("Autopark.Referee.StillHold", "must be > 0");
-  if (!(s.full_time_s > 0)) bad("Autopark.Referee.FullMarkTime", "must be > 0");
-  if (gaps.size() != 3 || !(gaps[0] <= gaps[1] && gaps[1] < gaps[2])) bad("Autopark.Referee.GapBands", "expected half_from <= full_from < full_to (m)");
-  if (curb.size() != 2 || !(curb[0] > 0 && curb[0] <= curb[1])) bad("Autopark.Referee.CurbBands", "expected 0 < full <= half (m)");
+  if (!(gaps[0] <= gaps[1] && gaps[1] < gaps[2])) bad("Autopark.Referee.GapBands", "expected half_from <= full_from < full_to (m)");
+  if (!(curb[0] > 0 && curb[0] <= curb[1])) bad("Autopark.Referee.CurbBands", "expected 0 < full <= half (m)");
   s.gap_half_from_m = gaps[0];
   s.gap_full_from_m = gaps[1];
   s.gap_full_to_m = gaps[2];
@@ -32,17 +30,14 @@ ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
   return s;
 }
 
-ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg) {
-  const world::WorldSpec world = world::loadWorld(app::sourcePath(cfg, "Autopark.World", "worlds/autopark.world"));
-  referee_ = std::make_unique<ParkingReferee>(ParkingScene::fromWorld(world, cfg.getString("Autopark.Robot", "car")),
-                                              parkingRefereeSettings(cfg));
-  lcmbus::subscribe(bus, cfg.getString("Autopark.Pose3D.Channel", "CAR_POSE"), &ParkingRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, cfg.getString("Autopark.Bumper.Channel", "CAR_BUMPER"), &ParkingRefereeNode::onBumper, this);
-  lcmbus::subscribe(bus, cfg.getString("Autopark.Episode.Channel", "AUTOPARK_EPISODE"), &ParkingRefereeNode::onEpisode, this);
-  const double period_s = cfg.getDouble("Autopark.Referee.Period", 0.1);
-  if (!(period_s >= 0.005 && period_s <= 1.0)) {
-    throw config::ConfigError(cfg.origin("Autopark.Referee.Period") + ": Autopark.Referee.Period must be in [0.005, 1] s");
-  }
+ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+    : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+  const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
+  referee_ = std::make_unique<ParkingReferee>(ParkingScene::fromWorld(world, car.name), parkingRefereeSettings(cfg));
+  lcmbus::subscribe(bus, world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
+  lcmbus::subscribe(bus, cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
+  const double period_s = cfg.getDouble("Autopark.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
                                                     [this](int64_t utime) { onTick(utime); });
 }
@@ -85,7 +80,8 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("mark", s.mark);
   out.set("sim_time_s", clock_->simTimeUs() / 1e6);
   out.set("seed", static_cast<long long>(tick.seed));
-  out.set("world", tick.world);
+  out.set("world", world_file_);
+  out.set("world_sha256", world_sha256_);
   out.set("algorithm", algorithm_);
   out.set("finished", r.finished());
   out.set("parked", r.parked());

@@ -5,6 +5,7 @@
 #include <aula/autopark/parking_referee.hpp>
 #include <aula/bumper_t.hpp>
 #include <aula/config/config.hpp>
+#include <aula/world/world_spec.hpp>
 #include <aula/episode_t.hpp>
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/pose3d_t.hpp>
@@ -20,7 +21,7 @@ namespace aula::autopark {
 
 class ParkingRefereeNode {
  public:
-  ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+  ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const ParkingReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished(); }
@@ -41,6 +42,7 @@ class ParkingRefereeNode {
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   bool announced_ = false;
+  std::string world_file_, world_sha256_;  // the file name and its content's hash
 };
 
 // Autopark.Referee.* keys; throws config::ConfigError naming the key.

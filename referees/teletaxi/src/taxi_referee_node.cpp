@@ -2,27 +2,26 @@
 
 #include <aula/lcm/bus.hpp>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 
 namespace aula::teletaxi {
 
 TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
   TaxiRefereeSettings s;
-  s.timeout_s = cfg.getDouble("TeleTaxi.Referee.Timeout", s.timeout_s);
-  s.stop_speed_mps = cfg.getDouble("TeleTaxi.Referee.StopSpeed", s.stop_speed_mps);
-  s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold", s.stop_hold_s);
-  if (!(s.timeout_s > 0)) {
-    throw config::ConfigError(cfg.origin("TeleTaxi.Referee.Timeout") + ": TeleTaxi.Referee.Timeout must be > 0");
-  }
+  s.timeout_s = cfg.getDouble("TeleTaxi.Referee.Timeout");
+  s.stop_speed_mps = cfg.getDouble("TeleTaxi.Referee.StopSpeed");
+  s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold");
   return s;
 }
 
-TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg)
-    : referee_(taxiRefereeSettings(cfg)) {
-  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Pose3D.Channel", "TAXI_POSE"), &TaxiRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel", "TELETAXI_EPISODE"), &TaxiRefereeNode::onEpisode, this);
-  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Bumper.Channel", "TAXI_BUMPER"), &TaxiRefereeNode::onBumper, this);
-  const double period_s = cfg.getDouble("TeleTaxi.Referee.Period", 0.1);
+TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+    : referee_(taxiRefereeSettings(cfg)), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+  const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
+  lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
+  lcmbus::subscribe(bus, world::channelOf(robot, "bumper"), &TaxiRefereeNode::onBumper, this);
+  const double period_s = cfg.getDouble("TeleTaxi.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
       [this](int64_t utime) { onTick(utime); });
@@ -60,7 +59,8 @@ aula::referee::Report TaxiRefereeNode::report() const {
   r.set("mark", g.mark);
   r.set("sim_time_s", simTimeUs() / 1e6);
   r.set("seed", static_cast<long long>(tick.seed));
-  r.set("world", tick.world);
+  r.set("world", world_file_);
+  r.set("world_sha256", world_sha256_);
   r.set("algorithm", algorithm_);
   r.set("finished", referee_.finished());
   r.set("reached", g.reached);

@@ -9,6 +9,7 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/teletaxi/taxi_referee.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -20,7 +21,7 @@ namespace aula::teletaxi {
 
 class TaxiRefereeNode {
  public:
-  TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+  TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const TaxiReferee& referee() const { return referee_; }
   bool finished() const { return referee_.finished(); }
@@ -39,6 +40,7 @@ class TaxiRefereeNode {
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
 
   TaxiReferee referee_;
+  std::string world_file_, world_sha256_;  // the file name and its content's hash
   std::string algorithm_ = "unknown";
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;

@@ -7,33 +7,34 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <stdexcept>
 
 namespace aula::vacuum {
 
-CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg) {
+CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+    : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
   CoverageSettings s;
-  s.duration_s = cfg.getDouble("Vacuum.Referee.Duration", s.duration_s);
-  s.full_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.FullMarkCoverage", s.full_mark_coverage_percent);
-  s.robot_radius_m = cfg.getDouble("Vacuum.Referee.RobotRadius", s.robot_radius_m);
-  if (!(s.duration_s > 0)) throw config::ConfigError(cfg.origin("Vacuum.Referee.Duration") + ": Vacuum.Referee.Duration must be > 0");
-  if (!(s.full_mark_coverage_percent > 0 && s.full_mark_coverage_percent <= 100)) {
-    throw config::ConfigError(cfg.origin("Vacuum.Referee.FullMarkCoverage") + ": Vacuum.Referee.FullMarkCoverage must be in (0, 100]");
+  s.duration_s = cfg.getDouble("Vacuum.Referee.Duration");
+  s.full_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.FullMarkCoverage");
+  s.robot_radius_m = cfg.getDouble("Vacuum.Referee.RobotRadius");
+  const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
+  map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});
+  // The floor is the free space reachable from where the robot starts in the world.
+  const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("Vacuum.Robot"));
+  const Eigen::Vector3d start = robot.pose.translation();
+  try {
+    referee_ = std::make_unique<CoverageReferee>(CoverageGrid(map_.image, map_.transform, start.x(), start.y()), s);
+  } catch (const std::exception& e) {
+    throw world::WorldError(world.source_path + ": robot '" + robot.name + "' starts at (" + std::to_string(start.x()) +
+                            ", " + std::to_string(start.y()) + "), which is not on the floor of the map (" + e.what() + ")");
   }
-  map_yaml_ = cfg.getString("Vacuum.Map", "vacuum.yaml");
-  std::string image;
-  const world::MapTransform t = world::MapTransform::load(std::string(AULA_MAPS_DIR) + "/" + map_yaml_, &image);
-  const cv::Mat map = cv::imread(image, cv::IMREAD_GRAYSCALE);
-  if (map.empty()) throw std::runtime_error(image + ": cannot read the map image");
-  const auto start = cfg.getDoubleList("Vacuum.Referee.FloorPoint", {-1.0, 1.5});
-  if (start.size() != 2) throw config::ConfigError(cfg.origin("Vacuum.Referee.FloorPoint") + ": needs x, y");
-  referee_ = std::make_unique<CoverageReferee>(CoverageGrid(map, t, start[0], start[1]), s);
 
-  lcmbus::subscribe(bus, cfg.getString("Vacuum.Pose3D.Channel", "ROOMBA_POSE"), &CoverageRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, cfg.getString("Vacuum.Bumper.Channel", "ROOMBA_BUMPER"), &CoverageRefereeNode::onBumper, this);
-  lcmbus::subscribe(bus, cfg.getString("Vacuum.Episode.Channel", "VACUUM_EPISODE"), &CoverageRefereeNode::onEpisode, this);
-  const double period_s = cfg.getDouble("Vacuum.Referee.Period", 0.2);
+  lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &CoverageRefereeNode::onPose, this);
+  lcmbus::subscribe(bus, world::channelOf(robot, "bumper"), &CoverageRefereeNode::onBumper, this);
+  lcmbus::subscribe(bus, cfg.getString("Vacuum.Episode.Channel"), &CoverageRefereeNode::onEpisode, this);
+  const double period_s = cfg.getDouble("Vacuum.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
         referee_->onTick(utime);
@@ -66,7 +67,8 @@ referee::Report CoverageRefereeNode::report() const {
   out.set("mark", r.mark());
   out.set("sim_time_s", r.elapsedS());
   out.set("seed", static_cast<long long>(tick.seed));
-  out.set("world", tick.world);
+  out.set("world", world_file_);
+  out.set("world_sha256", world_sha256_);
   out.set("algorithm", algorithm_);
   out.set("finished", r.finished());
   out.set("coverage_percent", r.coveragePercent());

@@ -9,6 +9,8 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/vacuum/coverage_referee.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <functional>
 #include <memory>
@@ -17,7 +19,7 @@ namespace aula::vacuum {
 
 class CoverageRefereeNode {
  public:
-  CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg);
+  CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
   const CoverageReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished(); }
   referee::Report report() const;
@@ -27,7 +29,7 @@ class CoverageRefereeNode {
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
   // Called for every pose (GUI painting).
   void setOnPose(std::function<void(double, double, double)> hook) { on_pose_ = std::move(hook); }
-  std::string mapYaml() const { return map_yaml_; }
+  const world::OccupancyMap& map() const { return map_; }
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -36,7 +38,9 @@ class CoverageRefereeNode {
 
   std::unique_ptr<CoverageReferee> referee_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
-  std::string algorithm_ = "unknown", map_yaml_;
+  std::string algorithm_ = "unknown";
+  std::string world_file_, world_sha256_;  // the file name and its content's hash
+  world::OccupancyMap map_;
   std::function<void()> on_finished_;
   std::function<void(double, double, double)> on_pose_;
   bool announced_ = false;

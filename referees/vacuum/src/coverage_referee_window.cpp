@@ -14,14 +14,15 @@ namespace aula::vacuum {
 
 CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(node) {
   setWindowTitle("Vacuum cleaner referee");
-  std::string image;
-  const auto t = world::MapTransform::load(std::string(AULA_MAPS_DIR) + "/" + node_.mapYaml(), &image);
-  map_ = new component::MapView(QImage(QString::fromStdString(image)).convertToFormat(QImage::Format_Grayscale8), t, this);
+  const cv::Mat& image = node_.map().image;
+  map_ = new component::MapView(
+      QImage(image.data, image.cols, image.rows, static_cast<int>(image.step), QImage::Format_Grayscale8).copy(),
+      node_.map().transform, this);
   map_->setMinimumSize(480, 480);
   // The cleaned area, painted from the same true poses the referee counts.
   node_.setOnPose([this](double x, double y, double yaw) {
     map_->paintDisc(x, y, node_.referee().settings().robot_radius_m, QColor(80, 170, 255, 200));
-    map_->setRobot(x, y, yaw, 0.33, 0.33);
+    map_->setRobot(x, y, yaw, 2 * node_.referee().settings().robot_radius_m, 2 * node_.referee().settings().robot_radius_m);
   });
   auto* layout = new QGridLayout(this);
   percent_ = new QLabel(this);

@@ -1,5 +1,6 @@
 #include <aula/config/config.hpp>
 #include <aula/sim/lockstep_server.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/sim/simulator.hpp>
 
 #include <gtest/gtest.h>
@@ -67,18 +68,19 @@ TEST(LockstepServer, LeaveAndReset) {
 }
 
 TEST(SimulatorOptions, RejectsBadValuesNamingTheKey) {
-  const auto cfg = aula::config::Config::fromString(
-      "Simulator.PhysicsStep = 0.5\n", "simulator.cfg");
+  const auto& table = aula::settings::simulator();
+  const auto cfg = aula::config::Config::fromString("Simulator.PhysicsStep = 0.5\n", "simulator.cfg");
   try {
-    aula::sim::SimulatorOptions::fromConfig(cfg);
+    table.resolve(cfg);
     FAIL() << "expected an error";
   } catch (const aula::config::ConfigError& e) {
-    EXPECT_STREQ(e.what(), "simulator.cfg:1: Simulator.PhysicsStep: must be in [0.0001, 0.05] s");
+    EXPECT_STREQ(e.what(), "simulator.cfg:1: Simulator.PhysicsStep = '0.5': out of range [0.0001, 0.05] s");
   }
   const auto ok = aula::config::Config::fromString(
       "Simulator.PhysicsStep = 0.002\nSimulator.Lockstep = yes\nSimulator.Seed = 42\n", "s.cfg");
-  const auto o = aula::sim::SimulatorOptions::fromConfig(ok);
+  const auto o = aula::sim::SimulatorOptions::fromConfig(table.resolve(ok));
   EXPECT_DOUBLE_EQ(o.step_s, 0.002);
   EXPECT_TRUE(o.lockstep);
   EXPECT_EQ(o.seed, 42);
+  EXPECT_DOUBLE_EQ(o.duration_s, 0.0);  // the declared default
 }

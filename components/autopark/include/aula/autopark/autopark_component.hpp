@@ -19,7 +19,7 @@ namespace aula::autopark {
 
 class AutoparkComponent {
  public:
-  AutoparkComponent(lcm::LCM& bus, const config::Config& cfg);
+  AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   void setRunning(bool running);  // "Run my algorithm" toggle
   bool running() const { return loop_->running(); }

@@ -9,6 +9,8 @@
 #include <aula/episode_t.hpp>
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -21,9 +23,13 @@ namespace aula::teletaxi {
 
 class TaxiComponent {
  public:
-  // Reads TeleTaxi.* keys (channels, limits, period, map, algorithm, destination, autostart).
-  // Throws config::ConfigError for bad keys and std::runtime_error for an unreadable map.
-  TaxiComponent(lcm::LCM& bus, const config::Config& cfg);
+  // `cfg`: the effective settings; the robot, its channels and the map come from `world`.
+  // Throws config::ConfigError for a destination the taxi cannot drive to.
+  TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // Why the taxi cannot drive to (x, y) from its start (off the map, inside a building,
+  // walled off, too close to the start), or nothing when it can.
+  std::optional<std::string> destinationProblem(double x_m, double y_m) const;
+  static constexpr double kMinTripM = 2.0;
 
   void setDestination(double x_m, double y_m);  // world metres; clears any previous path
   // Runs the algorithm's generatePath(); false (with a reason) when not possible yet.
@@ -61,6 +67,8 @@ class TaxiComponent {
   std::unique_ptr<component::Pose3dProxy> pose_;
   std::unique_ptr<component::MotorsProxy> motors_;
   std::unique_ptr<Grid> grid_;
+  world::OccupancyMap map_;
+  std::pair<double, double> start_xy_m_{0, 0};  // the robot's pose in the world
   std::unique_ptr<TaxiAlgorithm> algorithm_;
   std::unique_ptr<TaxiApi> api_;
   std::unique_ptr<component::ControlLoop> loop_;

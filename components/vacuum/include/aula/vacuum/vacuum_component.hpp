@@ -7,6 +7,8 @@
 #include <aula/component/proxies.hpp>
 #include <aula/config/config.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -18,7 +20,9 @@ namespace aula::vacuum {
 
 class VacuumComponent {
  public:
-  VacuumComponent(lcm::LCM& bus, const config::Config& cfg);
+  // `cfg`: the effective settings (aula_settings); the robot, its channels and the map come
+  // from `world`.
+  VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   void setRunning(bool running);  // "Run my algorithm" toggle
   bool running() const { return loop_->running(); }
@@ -33,7 +37,8 @@ class VacuumComponent {
   const std::string& algorithmName() const { return algorithm_name_; }
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
-  std::string mapYaml() const { return map_yaml_; }
+  const world::OccupancyMap& map() const { return map_; }
+  double robotRadiusM() const { return robot_radius_m_; }
   double runDurationS() const { return run_duration_s_; }  // the referee's Vacuum.Referee.Duration
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
 
@@ -42,7 +47,9 @@ class VacuumComponent {
   void step();
 
   lcm::LCM& bus_;
-  std::string algorithm_name_, episode_channel_, map_yaml_;
+  std::string algorithm_name_, episode_channel_;
+  world::OccupancyMap map_;
+  double robot_radius_m_ = 0;
   double period_s_;
   double run_duration_s_ = 900;
   bool autostart_ = false;

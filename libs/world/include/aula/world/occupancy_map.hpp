@@ -9,6 +9,9 @@
 
 #include <opencv2/core.hpp>
 
+#include <optional>
+#include <string>
+
 namespace aula::world {
 
 cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& transform, double z_min_m,
@@ -16,5 +19,30 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& transform
 
 // Axis-aligned bounds (x_min, y_min, x_max, y_max) of the static geometry's footprints.
 Eigen::Vector4d staticBounds(const WorldSpec& world);
+
+// A grid of `resolution_m` over the static geometry's bounds exactly (WorldError if the world
+// has no static geometry).
+MapTransform fitTransform(const WorldSpec& world, double resolution_m);
+
+// What an exercise draws from a world: the resolution and the heights that count.
+struct MapParams {
+  double resolution_m = 0.05;
+  double z_min_m = 0.01;
+  double z_max_m = 100.0;
+};
+
+struct OccupancyMap {
+  cv::Mat image;            // CV_8UC1, 0 obstacle, 255 free
+  MapTransform transform;
+};
+
+// The occupancy map of `world` over its bounds (fitTransform), from the per-user cache
+// (config::cacheDir()/maps) when it is there, else rasterised and stored. The cache key is a
+// hash of the static geometry and the parameters, so an edited world never gets a stale map.
+OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params);
+
+// Why a point is no place for a robot on this map ("is off the map (x in [..], y in [..])",
+// "is inside an obstacle"), or nothing when its cell is free.
+std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m);
 
 }  // namespace aula::world

@@ -67,11 +67,13 @@ struct RobotSpec {
   std::vector<PluginSpec> plugins;
 
   const PluginSpec* findPlugin(const std::string& type) const;
+  const PluginSpec* findPluginNamed(const std::string& name) const;
 };
 
 struct WorldSpec {
   std::string name;
   std::string source_path;
+  std::string sha256;           // of the world file's bytes: reports name exactly what was run
   double physics_step_s = 0.0;  // <physics><max_step_size>; 0 when the world does not say
   std::vector<StaticObject> statics;
   std::vector<RobotSpec> robots;
@@ -79,14 +81,29 @@ struct WorldSpec {
   const RobotSpec* findRobot(const std::string& name) const;
 };
 
-// Reads an SDF world with libsdformat. `model://NAME` includes resolve in models_dir
-// (default: the "models" folder beside the world file). Throws WorldError.
+// Where `model://NAME` includes are looked for, in order: the folders of $AULA_MODEL_PATH
+// (colon-separated), the "models" folder beside the world file, <data folder>/worlds/models.
+std::vector<std::string> modelSearchPath(const std::string& world_path);
+
+// Reads an SDF world with libsdformat. `model://NAME` includes resolve through `model_path`
+// (default: modelSearchPath(path)). Throws WorldError.
 // Static models: every box/cylinder collision becomes a StaticObject (nested models flattened;
 // <plane> collisions, i.e. a Gazebo ground plane, are ignored; any other geometry is an error).
 // Non-static models are robots: one link, one box/cylinder collision, mass > 0, plugins whose
 // filename is a known driver type (pose3d, motors, laser, bumper). Poses are raw SDF poses
-// composed parent * child; `relative_to` is rejected.
-WorldSpec loadWorld(const std::string& path, const std::string& models_dir = "");
+// composed parent * child; `relative_to` is rejected. physics_step_s is set only when the file
+// states <physics><max_step_size>.
+WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path = {});
+
+// SHA-256 in lowercase hex, of bytes and of a file's content (WorldError if unreadable).
+std::string sha256Hex(const std::string& bytes);
+std::string sha256OfFile(const std::string& path);
+
+// The robot `name` of a world, or a WorldError naming the world and the robots it has.
+const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name);
+// The channel of the robot's plugin of `type` (and instance name, when given), or a WorldError
+// saying what the exercise needs from the robot. Robot channels are named here, in the world.
+std::string channelOf(const RobotSpec& robot, const std::string& type, const std::string& name = "");
 
 // Extracts the yaw of a pose (rotation about world z).
 double yawOf(const Eigen::Isometry3d& pose);

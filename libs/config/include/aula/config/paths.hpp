@@ -1,0 +1,21 @@
+#pragma once
+// Where Aula's data lives, found at run time so the same binaries work from the build tree and
+// from an install prefix: $AULA_DATA_DIR, else <folder of the executable>/../share/aula (the
+// build tree has one too: symbolic links to the source's worlds/ and config/).
+
+#include <string>
+
+namespace aula::config {
+
+// The data folder (worlds/, config/); throws ConfigError naming what it tried.
+std::string dataDir();
+// A data file: absolute as given, else relative to the data folder.
+std::string dataPath(const std::string& relative);
+// A world named on a command line or in a .cfg: an existing path as given (made absolute),
+// else relative to the data folder, else a file name in <data>/worlds. Throws ConfigError
+// ("`what`: no such world file ...") when none exists.
+std::string resolveWorldPath(const std::string& value, const std::string& what);
+// The per-user cache ($XDG_CACHE_HOME/aula, else ~/.cache/aula), created on demand.
+std::string cacheDir();
+
+}  // namespace aula::config

@@ -1,0 +1,70 @@
+#include "aula/config/paths.hpp"
+
+#include <aula/config/config.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <unistd.h>
+
+namespace aula::config {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string environment(const char* name) {
+  const char* value = std::getenv(name);
+  return value == nullptr ? std::string() : std::string(value);
+}
+
+}  // namespace
+
+std::string dataDir() {
+  const std::string from_env = environment("AULA_DATA_DIR");
+  if (!from_env.empty()) {
+    if (!fs::is_directory(from_env)) throw ConfigError("AULA_DATA_DIR=" + from_env + ": not a folder");
+    return fs::absolute(from_env).lexically_normal().string();
+  }
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  if (error) throw ConfigError("cannot find Aula's data folder (/proc/self/exe unreadable); set AULA_DATA_DIR");
+  const fs::path share = self.parent_path().parent_path() / "share" / "aula";
+  if (!fs::is_directory(share / "worlds")) {
+    throw ConfigError("cannot find Aula's data folder: " + share.string() + "/worlds does not exist; set AULA_DATA_DIR");
+  }
+  return share.lexically_normal().string();
+}
+
+std::string dataPath(const std::string& relative) {
+  if (!relative.empty() && relative.front() == '/') return relative;
+  return dataDir() + "/" + relative;
+}
+
+std::string resolveWorldPath(const std::string& value, const std::string& what) {
+  if (value.empty()) throw ConfigError(what + ": no world file given");
+  if (fs::is_regular_file(value)) return fs::absolute(value).lexically_normal().string();
+  if (value.front() != '/') {
+    const std::string data = dataDir();
+    for (const std::string& candidate : {data + "/" + value, data + "/worlds/" + value}) {
+      if (fs::is_regular_file(candidate)) return fs::path(candidate).lexically_normal().string();
+    }
+    throw ConfigError(what + ": no such world file '" + value + "' (looked here, in " + data + " and in " + data +
+                      "/worlds)");
+  }
+  throw ConfigError(what + ": no such world file '" + value + "'");
+}
+
+std::string cacheDir() {
+  std::string base = environment("XDG_CACHE_HOME");
+  if (base.empty()) {
+    const std::string home = environment("HOME");
+    base = (home.empty() ? fs::temp_directory_path().string() : home + "/.cache");
+  }
+  const fs::path dir = fs::path(base) / "aula";
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw ConfigError("cannot create the cache folder " + dir.string() + ": " + error.message());
+  return dir.string();
+}
+
+}  // namespace aula::config

@@ -1,0 +1,266 @@
+#include "aula/config/settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+
+namespace aula::config {
+namespace {
+
+std::string numberText(double v) {
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  std::ostringstream out;
+  out << std::setprecision(10) << v;
+  return out.str();
+}
+
+bool isFamily(const std::string& key) { return key.size() > 2 && key.compare(key.size() - 2, 2, ".*") == 0; }
+
+bool matches(const SettingSpec& spec, const std::string& key) {
+  if (isFamily(spec.key)) {
+    const std::string prefix = spec.key.substr(0, spec.key.size() - 1);  // keeps the dot
+    return key.size() > prefix.size() && key.compare(0, prefix.size(), prefix) == 0;
+  }
+  return spec.key == key;
+}
+
+}  // namespace
+
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string SettingSpec::typeName() const {
+  switch (type) {
+    case SettingType::String: return "text";
+    case SettingType::Int: return "integer";
+    case SettingType::Double: return "number";
+    case SettingType::Bool: return "boolean";
+    case SettingType::DoubleList:
+      return list_size == 0 ? "list of numbers" : std::to_string(list_size) + " numbers";
+    case SettingType::Choice: return "choice";
+  }
+  return "text";
+}
+
+std::string SettingSpec::rangeText() const {
+  if (type == SettingType::Choice) {
+    std::string out = "one of: ";
+    for (size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : "") + choices[i];
+    return out;
+  }
+  if (type != SettingType::Int && type != SettingType::Double && type != SettingType::DoubleList) return "";
+  if (std::isinf(min) && std::isinf(max)) return unit;
+  std::string out = (min_exclusive ? "(" : "[") + numberText(min) + ", " + numberText(max) + "]";
+  return unit.empty() ? out : out + " " + unit;
+}
+
+SettingsTable& SettingsTable::add(SettingSpec spec) {
+  if (find(spec.key) != nullptr) throw std::logic_error("setting '" + spec.key + "' declared twice in " + owner_);
+  if (!isFamily(spec.key)) check(spec, spec.key, spec.default_value, "default of " + owner_);
+  specs_.push_back(std::move(spec));
+  return *this;
+}
+
+SettingsTable& SettingsTable::text(const std::string& key, const std::string& def, const std::string& help) {
+  SettingSpec s;
+  s.key = key;
+  s.default_value = def;
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
+                                     const std::string& help) {
+  SettingSpec s;
+  s.key = key;
+  s.type = SettingType::Choice;
+  s.default_value = def;
+  s.choices = std::move(choices);
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::real(const std::string& key, double def, const std::string& unit, double min, double max,
+                                   const std::string& help, bool min_exclusive) {
+  SettingSpec s;
+  s.key = key;
+  s.type = SettingType::Double;
+  s.default_value = numberText(def);
+  s.unit = unit;
+  s.min = min;
+  s.max = max;
+  s.min_exclusive = min_exclusive;
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::integer(const std::string& key, long long def, const std::string& unit, long long min,
+                                      long long max, const std::string& help) {
+  SettingSpec s;
+  s.key = key;
+  s.type = SettingType::Int;
+  s.default_value = std::to_string(def);
+  s.unit = unit;
+  s.min = static_cast<double>(min);
+  s.max = static_cast<double>(max);
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::flag(const std::string& key, bool def, const std::string& help) {
+  SettingSpec s;
+  s.key = key;
+  s.type = SettingType::Bool;
+  s.default_value = def ? "true" : "false";
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::reals(const std::string& key, const std::string& def, size_t count,
+                                    const std::string& unit, double min, double max, const std::string& help) {
+  SettingSpec s;
+  s.key = key;
+  s.type = SettingType::DoubleList;
+  s.default_value = def;
+  s.list_size = count;
+  s.unit = unit;
+  s.min = min;
+  s.max = max;
+  s.help = help;
+  return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::include(const SettingsTable& other) {
+  for (const auto& spec : other.specs_) add(spec);
+  return *this;
+}
+
+const SettingSpec* SettingsTable::find(const std::string& key) const {
+  for (const auto& spec : specs_) {
+    if (matches(spec, key)) return &spec;
+  }
+  return nullptr;
+}
+
+std::string SettingsTable::suggest(const std::string& key) const {
+  std::string best;
+  size_t best_distance = std::max<size_t>(3, key.size() / 3) + 1;
+  for (const auto& spec : specs_) {
+    const size_t d = editDistance(key, spec.key);
+    if (d < best_distance) {
+      best_distance = d;
+      best = spec.key;
+    }
+  }
+  return best;
+}
+
+void SettingsTable::check(const SettingSpec& spec, const std::string& key, const std::string& value,
+                          const std::string& origin) const {
+  // Config's typed getters parse the one way every value is parsed; a scratch Config lends
+  // them the origin for their messages.
+  Config one;
+  one.set(key, value, origin);
+  auto fail = [&](const std::string& what) {
+    throw ConfigError(origin + ": " + key + " = '" + value + "': " + what);
+  };
+  auto inRange = [&](double v) {
+    const bool low_ok = spec.min_exclusive ? v > spec.min : v >= spec.min;
+    if (!low_ok || v > spec.max) fail("out of range " + spec.rangeText());
+  };
+  switch (spec.type) {
+    case SettingType::String:
+      break;
+    case SettingType::Choice:
+      if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
+        fail("expected " + spec.rangeText());
+      }
+      break;
+    case SettingType::Bool:
+      one.getBool(key);
+      break;
+    case SettingType::Int:
+      inRange(static_cast<double>(one.getInt64(key)));
+      break;
+    case SettingType::Double:
+      inRange(one.getDouble(key));
+      break;
+    case SettingType::DoubleList: {
+      const auto items = one.getDoubleList(key);
+      if (spec.list_size != 0 && items.size() != spec.list_size) {
+        fail("expected " + std::to_string(spec.list_size) + " comma-separated numbers" +
+             (spec.unit.empty() ? "" : " (" + spec.unit + ")") + ", got " + std::to_string(items.size()));
+      }
+      for (double v : items) inRange(v);
+      break;
+    }
+  }
+}
+
+Config SettingsTable::resolve(const Config& cfg, const std::vector<const SettingsTable*>& siblings) const {
+  Config out;
+  for (const std::string& key : cfg.keys()) {
+    if (const SettingSpec* spec = find(key)) {
+      check(*spec, key, cfg.getString(key), cfg.origin(key));
+      out.set(key, cfg.getString(key), cfg.origin(key));
+      continue;
+    }
+    const bool theirs = std::any_of(siblings.begin(), siblings.end(),
+                                    [&](const SettingsTable* t) { return t->declares(key); });
+    if (theirs) continue;
+    std::string message = cfg.origin(key) + ": unknown key '" + key + "'";
+    std::string suggestion = suggest(key);
+    for (const SettingsTable* t : siblings) {
+      if (!suggestion.empty()) break;
+      suggestion = t->suggest(key);
+    }
+    if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+    throw ConfigError(message + "; `" + owner_ + " --help` lists the settings");
+  }
+  for (const auto& spec : specs_) {
+    if (isFamily(spec.key) || out.has(spec.key)) continue;
+    out.set(spec.key, spec.default_value, "default");
+  }
+  return out;
+}
+
+std::string SettingsTable::help() const {
+  std::ostringstream out;
+  for (const auto& spec : specs_) {
+    out << "  " << spec.key << "  (" << spec.typeName();
+    if (!isFamily(spec.key)) out << ", default '" << spec.default_value << "'";
+    const std::string range = spec.rangeText();
+    if (!range.empty()) out << ", " << range;
+    out << ")\n      " << spec.help << "\n";
+  }
+  return out.str();
+}
+
+std::string SettingsTable::describe(const Config& effective) const {
+  std::ostringstream out;
+  for (const std::string& key : effective.keys()) {
+    const SettingSpec* spec = find(key);
+    out << "  " << key << " = " << effective.getString(key);
+    if (spec != nullptr && !spec->unit.empty()) out << " " << spec->unit;
+    out << "    [" << effective.origin(key) << "]\n";
+  }
+  return out.str();
+}
+
+}  // namespace aula::config

@@ -1,0 +1,208 @@
+#include "aula/settings/tables.hpp"
+
+#include <stdexcept>
+
+namespace aula::settings {
+namespace {
+
+using config::SettingsTable;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+SettingsTable common(const std::string& owner) {
+  SettingsTable t(owner);
+  t.text("Aula.LcmUrl", "udpm://239.255.76.67:7667?ttl=0",
+         "LCM bus shared by the simulator, the component and the referee (--lcm-url overrides it)");
+  return t;
+}
+
+// The world and robot every process of an exercise shares; the launcher sets World for all three.
+void worldKeys(SettingsTable& t, const std::string& section, const std::string& world, const std::string& robot) {
+  t.text(section + ".World", world,
+         "the SDF world (absolute, or relative to the data folder); `aula run --world=FILE` sets it for all processes");
+  t.text(section + ".Robot", robot, "the robot's model name in the world; its plugins name its channels");
+  t.text(section + ".Episode.Channel", section == "TeleTaxi" ? "TELETAXI_EPISODE"
+                                       : section == "Vacuum" ? "VACUUM_EPISODE"
+                                                             : "AUTOPARK_EPISODE",
+         "channel of the component's episode messages to the referee");
+}
+
+// The occupancy map both the component and the referee draw from the world.
+void mapKeys(SettingsTable& t, const std::string& section, double resolution_m, const std::string& z_band) {
+  t.real(section + ".Map.Resolution", resolution_m, "m/px", 0.001, 100, "occupancy map resolution", true);
+  t.reals(section + ".Map.ZBand", z_band, 2, "m", -1000, 1000,
+          "heights of the geometry drawn into the map (what the robot can touch): min, max");
+}
+
+// Limits are bounded by what the exercise's robot could ever do (its motors driver clamps too).
+void motionKeys(SettingsTable& t, const std::string& section, double max_v, double max_w, double period_s,
+                double v_bound_mps, double w_bound_radps) {
+  t.real(section + ".MaxV", max_v, "m/s", 0, v_bound_mps, "speed limit the motors proxy clamps the student's commands to", true);
+  t.real(section + ".MaxW", max_w, "rad/s", 0, w_bound_radps, "turn-rate limit the motors proxy clamps to", true);
+  t.real(section + ".Period", period_s, "s", 0.005, 1, "execute() period, seconds of simulated time");
+  t.flag(section + ".Autostart", false, "start the algorithm at once (set by `aula run --headless`)");
+}
+
+SettingsTable makeSimulator() {
+  SettingsTable t = common("aula-sim");
+  t.real("Simulator.PhysicsStep", 0.005, "s", 1e-4, 0.05,
+         "physics step for worlds without <physics><max_step_size> (the world's own step wins)");
+  t.real("Simulator.RealTimeFactor", 1.0, "", 0, 1e6, "pacing: 1 = real time, 0 = as fast as possible");
+  t.flag("Simulator.Lockstep", false, "advance only when every registered client has acknowledged");
+  t.integer("Simulator.Lockstep.WaitForClients", 0, "clients", 0, 64, "lockstep: wait for this many clients before the first step");
+  t.integer("Simulator.Lockstep.ResendMs", 20, "ms", 1, 60000, "lockstep: re-send an unacknowledged tick after this wall time");
+  t.integer("Simulator.Lockstep.DropAfterMs", 5000, "ms", 1, 86400000, "lockstep: drop a client silent for this wall time");
+  t.real("Simulator.ClockPeriod", 0.02, "s", 1e-4, 10, "SIM_CLOCK tick period, seconds of simulated time");
+  t.integer("Simulator.Seed", 0, "", -9223372036854775807LL, 9223372036854775807LL, "seed of every random process (sensor noise)");
+  t.real("Simulator.Duration", 0, "s", 0, 1e9, "stop after this much simulated time (0: run until stopped)");
+  t.flag("Simulator.StartPaused", false, "start paused (resume from SIM_CONTROL)");
+  config::SettingSpec start;
+  start.key = "Simulator.StartPose.*";
+  start.type = config::SettingType::DoubleList;
+  start.list_size = 3;
+  start.unit = "m, m, rad";
+  start.min = -1e6;
+  start.max = 1e6;
+  start.help = "Simulator.StartPose.<robot> = x, y, yaw: where a robot starts instead of its world pose";
+  t.add(start);
+  return t;
+}
+
+SettingsTable makeDemo() {
+  SettingsTable t = common("aula-demo-client");
+  t.text("Demo.World", "worlds/vacuum.world", "the SDF world (absolute, or relative to the data folder)");
+  t.text("Demo.Robot", "roomba", "the robot's model name in the world; its plugins name its channels");
+  t.real("Demo.Period", 0.08, "s", 0.005, 1, "control period, seconds of simulated time");
+  t.real("Demo.MaxV", 0.3, "m/s", 0, 10, "forward speed", true);
+  t.real("Demo.TurnW", 1.0, "rad/s", 0, 20, "turn rate when blocked", true);
+  t.real("Demo.Clearance", 0.4, "m", 0, 10, "turn when the laser sees anything closer", true);
+  return t;
+}
+
+SettingsTable makeTaxiComponent() {
+  SettingsTable t = common("teletaxi");
+  worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
+  mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
+  motionKeys(t, "TeleTaxi", 20, 2, 0.08, 50, 10);
+  t.choice("TeleTaxi.Algorithm", "student", {"student", "reference"}, "the algorithm that drives the taxi");
+  t.reals("TeleTaxi.Destination", "120, -40", 2, "m", -1e6, 1e6,
+          "destination x, y: pre-selected in the window, the one headless runs drive to");
+  return t;
+}
+
+SettingsTable makeTaxiReferee() {
+  SettingsTable t = common("teletaxi-referee");
+  worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
+  mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
+  t.real("TeleTaxi.Referee.Timeout", 600, "s", 0, 1e6, "give up this long after GO! (simulated time)", true);
+  t.real("TeleTaxi.Referee.StopSpeed", 0.05, "m/s", 0, 10, "'stopped' means slower than this...", true);
+  t.real("TeleTaxi.Referee.StopHold", 1.0, "s", 0, 600, "...for this long", true);
+  t.real("TeleTaxi.Referee.Period", 0.1, "s", 0.005, 10, "how often the referee syncs with the simulator (simulated time)");
+  return t;
+}
+
+void vacuumDuration(SettingsTable& t) {
+  t.real("Vacuum.Referee.Duration", 900, "s", 0, 1e6, "length of a run (simulated time); the component shows the time left", true);
+}
+
+SettingsTable makeVacuumComponent() {
+  SettingsTable t = common("vacuum-cleaner");
+  worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
+  mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
+  motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
+  t.choice("Vacuum.Algorithm", "student", {"student", "reference", "bounce"},
+           "the algorithm that drives the roomba (bounce: the random-bounce baseline)");
+  vacuumDuration(t);
+  return t;
+}
+
+SettingsTable makeVacuumReferee() {
+  SettingsTable t = common("vacuum-cleaner-referee");
+  worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
+  mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
+  vacuumDuration(t);
+  t.real("Vacuum.Referee.FullMarkCoverage", 30, "%", 0, 100, "coverage worth a 10 (the original's bar)", true);
+  t.real("Vacuum.Referee.RobotRadius", 0.165, "m", 0, 10, "radius of the footprint that cleans", true);
+  t.real("Vacuum.Referee.Period", 1.0, "s", 0.005, 10,
+         "how often the referee syncs with the simulator (simulated time; it counts every pose in between)");
+  return t;
+}
+
+SettingsTable makeAutoparkComponent() {
+  SettingsTable t = common("autopark");
+  worldKeys(t, "Autopark", "worlds/autopark.world", "car");
+  motionKeys(t, "Autopark", 3, 1, 0.05, 10, 5);
+  t.choice("Autopark.Algorithm", "student", {"student", "reactive", "planner"},
+           "reactive: the thesis's two arcs; planner: laser map + OMPL Reeds-Shepp path (docs/planner.md)");
+  return t;
+}
+
+SettingsTable makeAutoparkReferee() {
+  SettingsTable t = common("autopark-referee");
+  worldKeys(t, "Autopark", "worlds/autopark.world", "car");
+  t.real("Autopark.Referee.Timeout", 300, "s", 0, 1e6, "the run ends 'not parked' this long after Run", true);
+  t.real("Autopark.Referee.StillHold", 3, "s", 0, 600, "parked = still inside the slot for this long", true);
+  t.real("Autopark.Referee.FullMarkTime", 170, "s", 0, 1e6, "parked in under this time: full time score", true);
+  t.reals("Autopark.Referee.GapBands", "1.0, 1.5, 3.5", 3, "m", 0, 100,
+          "gaps to the front and rear cars: half marks from [0], full marks in [[1], [2])");
+  t.reals("Autopark.Referee.CurbBands", "0.75, 1.5", 2, "m", 0, 100,
+          "nearest corner to the curb: full marks within [0], half within [1]");
+  t.real("Autopark.Referee.Period", 0.1, "s", 0.005, 10, "how often the referee syncs with the simulator (simulated time)");
+  return t;
+}
+
+}  // namespace
+
+std::vector<const config::SettingsTable*> Exercise::tables() const {
+  std::vector<const config::SettingsTable*> out = {component_settings};
+  if (referee_settings != nullptr) out.push_back(referee_settings);
+  return out;
+}
+
+const config::SettingsTable& simulator() {
+  static const SettingsTable table = makeSimulator();  // immutable after construction
+  return table;
+}
+
+const config::SettingsTable& demo() {
+  static const SettingsTable table = makeDemo();
+  return table;
+}
+
+const std::vector<Exercise>& exercises() {
+  static const SettingsTable taxi = makeTaxiComponent(), taxi_referee = makeTaxiReferee();
+  static const SettingsTable vacuum = makeVacuumComponent(), vacuum_referee = makeVacuumReferee();
+  static const SettingsTable park = makeAutoparkComponent(), park_referee = makeAutoparkReferee();
+  static const std::vector<Exercise> all = {
+      {"teletaxi", "TeleTaxi", "config/teleTaxi.cfg", "teletaxi", "teletaxi-referee", &taxi, &taxi_referee},
+      {"vacuum", "Vacuum", "config/vacuumCleaner.cfg", "vacuum-cleaner", "vacuum-cleaner-referee", &vacuum,
+       &vacuum_referee},
+      {"autopark", "Autopark", "config/autopark.cfg", "autopark", "autopark-referee", &park, &park_referee},
+      {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr},
+  };
+  return all;
+}
+
+const Exercise* exerciseOfProgram(const std::string& program) {
+  for (const auto& e : exercises()) {
+    if (e.component == program || e.referee == program) return &e;
+  }
+  return nullptr;
+}
+
+const Exercise* exerciseNamed(const std::string& name) {
+  for (const auto& e : exercises()) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+const config::SettingsTable& tableOf(const std::string& program) {
+  if (program == "aula-sim") return simulator();
+  for (const auto& e : exercises()) {
+    if (e.component == program) return *e.component_settings;
+    if (e.referee == program) return *e.referee_settings;
+  }
+  throw std::logic_error("no settings table for program '" + program + "'");
+}
+
+}  // namespace aula::settings

@@ -1,0 +1,198 @@
+// Worlds and settings with one source of truth, tried as a user would: misspelt keys fail at
+// once, a world carries its own channel names and models, a destination the taxi cannot reach
+// is refused before anything drives.
+#include "test_support.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+using namespace std::chrono_literals;
+using aula::process::ChildProcess;
+using aula::testing::readFile;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBin = AULA_BIN_DIR;
+const std::string kWorlds = std::string(AULA_SOURCE_DIR) + "/worlds/";
+
+struct Outcome {
+  std::optional<int> code;
+  std::string output;
+  double wall_s = 0;
+};
+
+// Runs a program to its end (or `limit`), stdout and stderr together.
+Outcome runToEnd(std::vector<std::string> args, std::chrono::seconds limit = 60s) {
+  const std::string log = aula::testing::privateDir() + "/run.log";
+  const auto start = std::chrono::steady_clock::now();
+  ChildProcess child(std::move(args), log, log);
+  Outcome out;
+  out.code = child.wait(limit);
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!out.code) child.stop();
+  out.output = readFile(log);
+  return out;
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path) << text;
+}
+
+// The roomba model as an inline <model>, channels renamed, at (x, y).
+std::string inlineRoomba(const std::string& name, const std::string& channel_prefix, double x, double y) {
+  std::string sdf = readFile(kWorlds + "models/roomba/model.sdf");
+  const auto begin = sdf.find("<model name=\"roomba\">");
+  const auto end = sdf.rfind("</model>") + 8;
+  std::string model = sdf.substr(begin, end - begin);
+  model = std::regex_replace(model, std::regex("ROOMBA_"), channel_prefix);
+  model = std::regex_replace(model, std::regex("<model name=\"roomba\">"),
+                             "<model name=\"" + name + "\"><pose>" + std::to_string(x) + " " + std::to_string(y) +
+                                 " 0 0 0 0</pose>");
+  return model;
+}
+
+// The shipped house with its <include> of the roomba replaced by `robot`.
+std::string houseWith(const std::string& robot) {
+  const std::string house = readFile(kWorlds + "vacuum.world");
+  const auto begin = house.find("<include>");
+  const auto end = house.find("</include>") + 10;
+  return house.substr(0, begin) + robot + house.substr(end);
+}
+
+}  // namespace
+
+TEST(Settings, AMisspeltSimulatorKeyExitsTwoAtOnce) {
+  const Outcome out = runToEnd({kBin + "/aula-sim", kWorlds + "vacuum.world", "--Simulator.Duratoin=0.5"}, 10s);
+  ASSERT_TRUE(out.code.has_value()) << "aula-sim did not stop";
+  EXPECT_EQ(*out.code, 2) << out.output;
+  EXPECT_LT(out.wall_s, 1.0);
+  EXPECT_NE(out.output.find("command line --Simulator.Duratoin: unknown key 'Simulator.Duratoin' (did you mean "
+                            "'Simulator.Duration'?)"),
+            std::string::npos)
+      << out.output;
+}
+
+TEST(Settings, TheLauncherChecksEveryKeyBeforeStartingAnything) {
+  const std::string url = "--lcm-url=" + aula::testing::privateLcmUrl();
+  Outcome out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--Vacuum.MaxVV=9", url}, 10s);
+  ASSERT_TRUE(out.code.has_value());
+  EXPECT_EQ(*out.code, 2) << out.output;
+  EXPECT_NE(out.output.find("unknown key 'Vacuum.MaxVV' (did you mean 'Vacuum.MaxV'?)"), std::string::npos) << out.output;
+  EXPECT_EQ(out.output.find("aula-sim"), std::string::npos) << "a process was started\n" << out.output;
+
+  out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--Vacuum.MaxV=9", url}, 10s);
+  EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+  EXPECT_NE(out.output.find("command line --Vacuum.MaxV: Vacuum.MaxV = '9': out of range (0, 2] m/s"),
+            std::string::npos)
+      << out.output;
+}
+
+TEST(Settings, ABadKeyInACfgFileNamesFileAndLine) {
+  const std::string dir = aula::testing::privateDir();
+  std::string cfg = readFile(std::string(AULA_SOURCE_DIR) + "/config/vacuumCleaner.cfg");
+  cfg += "Vacuum.Referee.Duraton = 60\n";
+  const int line = static_cast<int>(std::count(cfg.begin(), cfg.end(), '\n'));
+  writeFile(dir + "/my.cfg", cfg);
+  const Outcome out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--config=" + dir + "/my.cfg",
+                                "--lcm-url=" + aula::testing::privateLcmUrl()},
+                               10s);
+  EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+  EXPECT_NE(out.output.find(dir + "/my.cfg:" + std::to_string(line) +
+                            ": unknown key 'Vacuum.Referee.Duraton' (did you mean 'Vacuum.Referee.Duration'?)"),
+            std::string::npos)
+      << out.output;
+}
+
+TEST(Settings, AulaConfigPrintsEachProcessWithWhereEachValueCameFrom) {
+  const Outcome out = runToEnd({kBin + "/aula", "config", "vacuum", "--Vacuum.Referee.Duration=60"}, 10s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_NE(out.output.find("vacuum-cleaner-referee:\n"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("Vacuum.Referee.Duration = 60 s    [command line --Vacuum.Referee.Duration]"), std::string::npos)
+      << out.output;
+  EXPECT_NE(out.output.find("Vacuum.Robot = roomba    [default]"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("Simulator.PhysicsStep = 0.005 s    ["), std::string::npos) << out.output;
+}
+
+TEST(Worlds, AllThreeProcessesFollowTheRobotChannelsOfTheWorldGiven) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = dir + "/house_other_channels.world";
+  writeFile(world, houseWith(inlineRoomba("roomba", "CLEANER_", -1, 1.5)));
+  const std::string report = dir + "/report.json";
+  const Outcome out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--world=" + world,
+                                "--algorithm=reference", "--Vacuum.Referee.Duration=60", "--report=" + report,
+                                "--lcm-url=" + aula::testing::privateLcmUrl()},
+                               120s);
+  ASSERT_EQ(out.code.value_or(-1), 0) << out.output;
+  const std::string json = readFile(report);
+  EXPECT_EQ(aula::testing::jsonNumber(json, "pose_messages"), 3001) << json;  // the referee heard CLEANER_POSE
+  EXPECT_GT(aula::testing::jsonNumber(json, "coverage_percent"), 5.0) << json;  // the component drove CLEANER_MOTORS
+  EXPECT_NE(json.find("\"world\": \"house_other_channels.world\""), std::string::npos) << json;
+  EXPECT_EQ(out.output.find("ROOMBA_"), std::string::npos) << out.output;
+}
+
+TEST(Worlds, TeleTaxiDestinationsTheTaxiCannotReachAreRefusedAtOnce) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"60,60", "(60.0, 60.0) is inside a building or obstacle"},
+      {"5000,0", "(5000.0, 0.0) is off the map (x in [-250.0, 250.0], y in [-250.0, 250.0] m)"},
+      {"0.5,0.5", "is closer than 2 m to the taxi's start"},
+  };
+  for (const auto& [destination, reason] : cases) {
+    const Outcome out = runToEnd({kBin + "/aula", "run", "teletaxi", "--headless", "--algorithm=reference",
+                                  "--TeleTaxi.Destination=" + destination, "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                 30s);
+    ASSERT_TRUE(out.code.has_value()) << destination;
+    EXPECT_EQ(*out.code, 2) << out.output;
+    EXPECT_LT(out.wall_s, 1.0) << destination;
+    EXPECT_NE(out.output.find("TeleTaxi.Destination = " + destination + ": " + reason.substr(0, 0)), std::string::npos)
+        << out.output;
+    EXPECT_NE(out.output.find(reason), std::string::npos) << out.output;
+  }
+}
+
+TEST(Worlds, ModelsResolveThroughAulaModelPathAndAWorldWithoutPhysicsStepsAtTheSetting) {
+  const std::string dir = aula::testing::privateDir();
+  // A model only this test has, in a folder of its own; the world in another, with no models/.
+  std::string model = inlineRoomba("tinybot", "TINY_", 0, 0);
+  model = std::regex_replace(model, std::regex("<pose>0\\.0+ 0\\.0+ 0 0 0 0</pose>"), "");
+  writeFile(dir + "/my_models/tinybot/model.config",
+            "<?xml version=\"1.0\"?><model><name>tinybot</name><sdf version=\"1.9\">model.sdf</sdf></model>\n");
+  writeFile(dir + "/my_models/tinybot/model.sdf", "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n" + model + "\n</sdf>\n");
+  std::string world = houseWith("<include><uri>model://tinybot</uri><name>tinybot</name><pose>-1 1.5 0 0 0 0</pose></include>");
+  world = std::regex_replace(world, std::regex("<physics[^>]*>.*</physics>"), "");
+  ASSERT_EQ(world.find("<physics"), std::string::npos);
+  writeFile(dir + "/worlds/house.world", world);
+  const std::vector<std::string> sim = {kBin + "/aula-sim", dir + "/worlds/house.world", "--duration=0.2", "--rtf=0",
+                                        "--lcm-url=" + aula::testing::privateLcmUrl()};
+
+  unsetenv("AULA_MODEL_PATH");
+  Outcome out = runToEnd(sim, 20s);
+  EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+  EXPECT_NE(out.output.find("model 'tinybot' not found"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("AULA_MODEL_PATH"), std::string::npos) << out.output;
+
+  setenv("AULA_MODEL_PATH", ("/nonexistent:" + dir + "/my_models").c_str(), 1);
+  out = runToEnd(sim, 20s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_NE(out.output.find("with 1 robot(s), step 5 ms"), std::string::npos) << "Simulator.PhysicsStep's 5 ms\n" << out.output;
+
+  std::vector<std::string> faster = sim;
+  faster.push_back("--Simulator.PhysicsStep=0.004");
+  out = runToEnd(faster, 20s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_NE(out.output.find("step 4 ms"), std::string::npos) << out.output;
+  unsetenv("AULA_MODEL_PATH");
+
+  // The shipped house states its own 10 ms step, and that wins over the setting.
+  out = runToEnd({kBin + "/aula-sim", kWorlds + "vacuum.world", "--duration=0.2", "--rtf=0",
+                  "--lcm-url=" + aula::testing::privateLcmUrl()},
+                 20s);
+  EXPECT_NE(out.output.find("step 10 ms"), std::string::npos) << out.output;
+}
