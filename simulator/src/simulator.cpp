@@ -167,6 +167,7 @@ void Simulator::publishClock() {
   tick.real_time_factor = measured_rtf_;
   tick.seed = options_.seed;
   tick.world = spec_.name;
+  tick.world_sha256 = spec_.sha256;
   tick.clients = lockstep_.clients();
   tick.num_clients = static_cast<int32_t>(tick.clients.size());
   bus_.publish(lcmbus::kClockChannel, &tick);

@@ -9,6 +9,8 @@
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/settings/tables.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <csignal>
 #include <cstdlib>
@@ -50,6 +52,24 @@ int usage(std::ostream& out, int code) {
   out << kUsage;
   for (const auto& ex : aula::settings::exercises()) out << "  " << ex.name << "  " << describe(ex.name) << "\n";
   return code;
+}
+
+// Points the component will drive to must be free floor of the world's map: refused here, before
+// any process starts, with the reason (the component checks what needs its planner).
+void checkPointsOnTheMap(const Exercise& ex, const Config& component, const std::string& world_path) {
+  std::optional<aula::world::OccupancyMap> map;
+  for (const auto& spec : ex.component_settings->specs()) {
+    if (!spec.free_point) continue;
+    if (!map) {
+      const auto world = aula::world::loadWorld(world_path);
+      const auto z_band = component.getDoubleList(ex.section + ".Map.ZBand");
+      map = aula::world::occupancyMapOf(world, {component.getDouble(ex.section + ".Map.Resolution"), z_band[0], z_band[1]});
+    }
+    const auto xy = component.getDoubleList(spec.key);
+    if (const auto problem = aula::world::pointProblem(*map, xy[0], xy[1])) {
+      throw ConfigError(component.origin(spec.key) + ": " + spec.key + " = " + component.getString(spec.key) + ": " + *problem);
+    }
+  }
 }
 
 // The settings of one run: the .cfg, the --Key=value overrides and what the launcher's own
@@ -103,6 +123,7 @@ RunSettings resolveSettings(const Exercise& ex, const CommandLine& cl) {
   const Config& component = run.effective[1].second;
   const std::string world_key = ex.section + ".World";
   run.world = aula::config::resolveWorldPath(component.getString(world_key), component.origin(world_key) + ": " + world_key);
+  checkPointsOnTheMap(ex, component, run.world);
   return run;
 }
 
@@ -232,6 +253,9 @@ int main(int argc, char** argv) {
     const RunSettings run = resolveSettings(*ex, cl);
     return supervise(commandLines(*ex, cl, run));
   } catch (const ConfigError& e) {
+    std::cerr << "aula: " << e.what() << "\n";
+    return 2;
+  } catch (const aula::world::WorldError& e) {
     std::cerr << "aula: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

@@ -37,14 +37,17 @@ Usage:
   name=value (an XML comment cannot hold "--").
   A bad parameter: one line on stderr naming it, exit status 2.
 """
-import argparse
 import math
 import os
 import re
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-WORLDS = os.path.dirname(HERE)
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sdfgen import (WORLDS, Parser, UsageError, box, boxes_overlap, check_range, corners, fail, finite,  # noqa: E402
+                    include, join_negative_values, num, parse_pose, physics, static_model_open, world_open,
+                    write_file, write_output)
+
 CAR_LENGTH_M = 4.0
 SLOT_START_X = 2.75  # front bumper of the parked car at x = 0.5
 PARKED_BEFORE = [-20.0, -13.5, -7.0, 0.5]
@@ -57,19 +60,11 @@ FAR_CURB_FACE_Y = 5.0
 ROAD_WEST, ROAD_EAST = -25.0, 35.0  # the default road; a street never gets shorter
 WIDEST_OTHER_GAP_M = 3.0  # between the parked cars after the slot (7.5 - 4.5)
 DEFAULT_START = (-7.0, 2.5, 0.0)
+PROG = "make_autopark.py"
 
 
-def box(name, x, y, z, sx, sy, sz):
-    geometry = f"<geometry><box><size>{sx:.2f} {sy:.2f} {sz:.2f}</size></box></geometry>"
-    pose = f"<pose>{x:.3f} {y:.3f} {z:.3f} 0 0 0</pose>"
-    return (f"        <collision name=\"{name}\">{pose}{geometry}</collision>\n"
-            f"        <visual name=\"{name}\">{pose}{geometry}</visual>\n")
-
-
-def num(v):
-    """Shortest readable form: 14.0 -> "14", -13.5 -> "-13.5", 0.45000000001 -> "0.45"."""
-    v = round(v, 9) + 0.0  # + 0.0 turns -0.0 into 0.0
-    return f"{v:.12g}"
+def street_box(name, x, y, z, sx, sy, sz):
+    return box(name, x, y, z, sx, sy, sz, size_digits=2)
 
 
 def car_text():
@@ -100,26 +95,6 @@ def parked_xs(slot_m, slot_x):
         before = [slot_x + (x - SLOT_START_X) for x in PARKED_BEFORE]
     after_first = slot_x + slot_m + PARKED_HALF_LENGTH
     return before + [after_first + d for d in PARKED_AFTER_OFFSETS]
-
-
-def corners(cx, cy, yaw, length, width):
-    c, s = math.cos(yaw), math.sin(yaw)
-    return [(cx + c * u - s * v, cy + s * u + c * v)
-            for u, v in ((length / 2, width / 2), (-length / 2, width / 2),
-                         (-length / 2, -width / 2), (length / 2, -width / 2))]
-
-
-def boxes_overlap(a, b):
-    """Separating-axis test of two convex quadrilaterals (lists of 4 corners)."""
-    for poly in (a, b):
-        for i in range(4):
-            (x0, y0), (x1, y1) = poly[i], poly[(i + 1) % 4]
-            nx, ny = y0 - y1, x1 - x0
-            pa = [nx * x + ny * y for x, y in a]
-            pb = [nx * x + ny * y for x, y in b]
-            if max(pa) <= min(pb) or max(pb) <= min(pa):
-                return False
-    return True
 
 
 def road_extent(parked, start):
@@ -153,26 +128,19 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
            f"     The car starts at ({num(sx)}, {num(sy)}) {facing}; kinematics \"{kinematics}\". -->"]
     if parameters is not None:
         out.append(f"<!-- parameters: {parameters} -->")
-    out += ['<sdf version="1.9">',
-            '  <world name="autopark">',
-            '    <physics type="dart"><max_step_size>0.005</max_step_size></physics>',
-            '    <model name="street">',
-            '      <static>true</static>',
-            '      <link name="curbs">']
+    out += world_open("autopark") + [physics("0.005")] + static_model_open("street", "curbs")
     mid, length = (west + east) / 2.0, east - west
     # End walls: from the parking-side curb's back (face - 1 m) to the far curb's back (face + 1 m).
     wall_y0, wall_y1 = curb_face - 1.0, FAR_CURB_FACE_Y + 1.0
-    body = box("curb_parking_side", mid, curb_face - 0.5, 0.1, length, 1.0, 0.2)
-    body += box("curb_far_side", mid, FAR_CURB_FACE_Y + 0.5, 0.1, length, 1.0, 0.2)
-    body += box("end_wall_west", west - 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
-    body += box("end_wall_east", east + 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
-    out.append(body.rstrip("\n"))
+    out += street_box("curb_parking_side", mid, curb_face - 0.5, 0.1, length, 1.0, 0.2)
+    out += street_box("curb_far_side", mid, FAR_CURB_FACE_Y + 0.5, 0.1, length, 1.0, 0.2)
+    out += street_box("end_wall_west", west - 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
+    out += street_box("end_wall_east", east + 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out += ['      </link>', '    </model>']
     for i, x in enumerate(parked):
         if x + PARKED_HALF_LENGTH > east or x - PARKED_HALF_LENGTH < west:
             continue  # beyond an end wall (never, the road grows)
-        out += ['    <include>', '      <uri>model://parked_car</uri>', f'      <name>parked_car_{i}</name>',
-                f'      <pose>{num(x)} {num(car_y)} 0 0 0 0</pose>', '    </include>']
+        out += include("parked_car", f"parked_car_{i}", x, car_y, "0")
     out.append(car_model(kinematics, start).rstrip("\n"))
     out += ['  </world>', '</sdf>', '']
     return "\n".join(out)
@@ -184,78 +152,30 @@ def write_shipped():
     for k in (1.6, 1.4, 1.3, 1.2):
         variants.append((f"autopark_ackermann_{k}L.world", k * CAR_LENGTH_M, "ackermann", f"autopark_ackermann_{k}L"))
     for filename, slot_m, kinematics, title in variants:
-        with open(os.path.join(WORLDS, filename), "w") as f:
-            f.write(world(slot_m, kinematics, title))
+        write_file(os.path.join(WORLDS, filename), world(slot_m, kinematics, title))
         print(f"{filename}: slot {slot_m:.2f} m, {kinematics}")
 
 
 # ---- command line -------------------------------------------------------------------------
 
-class UsageError(Exception):
-    pass
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # one line, exit status 2 (argparse's own prints the usage too)
-        raise UsageError(message)
-
-
-def finite(option):
-    def parse(text):
-        try:
-            v = float(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"not a number: {text!r}")
-        if not math.isfinite(v):
-            raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
-        return v
-    parse.__name__ = option
-    return parse
-
-
-def pose(text):
-    parts = text.split(",")
-    try:
-        values = [float(p) for p in parts]
-    except ValueError:
-        values = []
-    if len(values) not in (2, 3) or not all(math.isfinite(v) for v in values):
-        raise argparse.ArgumentTypeError(f"expected X,Y,YAW (numbers), got {text!r}")
-    return tuple(values) if len(values) == 3 else (values[0], values[1], 0.0)
-
-
 VALUE_OPTIONS = ("--out", "--slot-length", "--slot-x", "--curb-offset", "--kinematics", "--start")
 
 
-def join_negative_values(argv):
-    """`--start -7,2.5,0` -> `--start=-7,2.5,0` (argparse takes "-7,..." for an option)."""
-    out, i = [], 0
-    while i < len(argv):
-        if argv[i] in VALUE_OPTIONS and i + 1 < len(argv) and re.match(r"-[\d.]", argv[i + 1]):
-            out.append(f"{argv[i]}={argv[i + 1]}")
-            i += 2
-        else:
-            out.append(argv[i])
-            i += 1
-    return out
-
-
 def parse_args(argv):
-    p = Parser(prog="make_autopark.py", description="Writes an Autopark street (see the module docstring).")
+    p = Parser(prog=PROG, description="Writes an Autopark street (see the module docstring).")
     p.add_argument("--out", required=True, help="the world file to write ('-': standard output)")
-    p.add_argument("--slot-length", type=finite("slot-length"), default=9.0)
-    p.add_argument("--slot-x", type=finite("slot-x"), default=SLOT_START_X)
-    p.add_argument("--curb-offset", type=finite("curb-offset"), default=0.0)
+    p.add_argument("--slot-length", type=finite, default=9.0)
+    p.add_argument("--slot-x", type=finite, default=SLOT_START_X)
+    p.add_argument("--curb-offset", type=finite, default=0.0)
     p.add_argument("--kinematics", choices=("diff", "ackermann"), default="diff")
-    p.add_argument("--start", type=pose, default=DEFAULT_START)
-    a = p.parse_args(join_negative_values(argv))
+    p.add_argument("--start", type=parse_pose, default=DEFAULT_START)
+    a = p.parse_args(join_negative_values(argv, VALUE_OPTIONS))
     if not a.slot_length > WIDEST_OTHER_GAP_M:
         raise UsageError(f"--slot-length must be > {WIDEST_OTHER_GAP_M:g} m (the widest gap between the other"
                          f" parked cars; the referee takes the widest gap as the slot), got {a.slot_length:g}")
     if a.slot_length > 1000 or abs(a.slot_x) > 1000:
         raise UsageError("--slot-length and --slot-x must stay within 1000 m")
-    if not a.curb_offset >= -2.0 or a.curb_offset > 100:
-        raise UsageError(f"--curb-offset must be in [-2, 100] m (the lane must stay >= 5 m wide), got {a.curb_offset:g}")
+    check_range("curb-offset", a.curb_offset, -2.0, 100.0, "m", " (the lane must stay >= 5 m wide)")
     check_start(a)
     return a
 
@@ -284,8 +204,7 @@ def main(argv):
     try:
         a = parse_args(argv)
     except UsageError as e:
-        print(f"make_autopark.py: error: {e}", file=sys.stderr)
-        return 2
+        return fail(PROG, e)
     x, y, yaw = a.start
     # (an XML comment cannot hold "--": name=value for each option)
     parameters = (f"slot-length={num(a.slot_length)} slot-x={num(a.slot_x)} curb-offset={num(a.curb_offset)}"
@@ -293,18 +212,8 @@ def main(argv):
     title = "autopark" if a.out == "-" else os.path.splitext(os.path.basename(a.out))[0]
     title = re.sub(r"-{2,}", "-", title)  # it goes in an XML comment
     text = world(a.slot_length, a.kinematics, title, a.slot_x, a.curb_offset, a.start, parameters)
-    if a.out == "-":
-        sys.stdout.write(text)
-    else:
-        try:
-            with open(a.out, "w") as f:
-                f.write(text)
-        except OSError as e:
-            print(f"make_autopark.py: error: --out: cannot write {a.out}: {e.strerror}", file=sys.stderr)
-            return 2
-        print(f"{a.out}: slot {a.slot_length:.2f} m at x = {a.slot_x:.2f}, curb offset {a.curb_offset:g} m,"
-              f" {a.kinematics}")
-    return 0
+    return write_output(PROG, a.out, text, f"slot {a.slot_length:.2f} m at x = {a.slot_x:.2f},"
+                                           f" curb offset {a.curb_offset:g} m, {a.kinematics}")
 
 
 if __name__ == "__main__":

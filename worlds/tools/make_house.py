@@ -45,12 +45,17 @@ parameters and seed always give the same bytes. A bad parameter: one line on std
 exit status 2. The coverage referee and the vacuum component read a map (Vacuum.Map): make one
 for a generated house with aula-mapgen (like worlds/vacuum.world's in tools/mapgen).
 """
-import argparse
 import math
 import os
 import random
-import re
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sdfgen import (Parser, UsageError, box, check_int_range, check_range, fail, finite, include,  # noqa: E402
+                    join_negative_values, num, parse_pose, physics, static_model_open, world_open, write_output)
+
+PROG = "make_house.py"
 
 WALL_T = 0.2        # wall thickness, m
 WALL_H = 2.5        # wall height, m
@@ -66,17 +71,9 @@ GRID = 0.05         # cell of the reachability check, m
 TRIES = 200         # placement attempts per furniture box
 
 
-def num(v):
-    """Shortest readable form: 2.0 -> "2", 0.45000000001 -> "0.45"."""
-    v = round(v, 9) + 0.0
-    return f"{v:.12g}"
-
-
 def box_xml(name, cx, cy, sx, sy, h):
-    pose = f"<pose>{cx:.3f} {cy:.3f} {h / 2:.3f} 0 0 0</pose>"
-    geometry = f"<geometry><box><size>{sx:.3f} {sy:.3f} {h:.3f}</size></box></geometry>"
-    return [f'        <collision name="{name}">{pose}{geometry}</collision>',
-            f'        <visual name="{name}">{pose}{geometry}</visual>']
+    """A box standing on the floor, h high."""
+    return box(name, cx, cy, h / 2, sx, sy, h)
 
 
 def rect_point_distance(r, x, y):
@@ -282,30 +279,20 @@ class House:
                f"     joined by {len(self.doors)} doors {num(a.door_width)} m wide: {door_text or 'none'}; no door to the outside.",
                f"     {self.placed} of {requested} furniture boxes placed; all stand on the floor and block the robot.",
                f"     The roomba starts at ({num(x)}, {num(y)}), yaw {num(yaw)}.",
-               f"     parameters: {parameters} -->",
-               '<sdf version="1.9">',
-               '  <world name="house">']
+               f"     parameters: {parameters} -->"]
+        out += world_open("house")
         if a.step is not None:
-            out.append(f'    <physics type="dart"><max_step_size>{num(a.step)}</max_step_size></physics>')
-        out += ['    <model name="house">',
-                '      <static>true</static>',
-                '      <link name="walls">']
+            out.append(physics(num(a.step)))
+        out += static_model_open("house", "walls")
         for name, x0, y0, x1, y1 in self.walls:
             out += box_xml(name, (x0 + x1) / 2, (y0 + y1) / 2, x1 - x0, y1 - y0, WALL_H)
         out.append('      </link>')
         out.append('      <link name="furniture">')
         for name, r, height in self.furniture:
             out += box_xml(name, (r[0] + r[2]) / 2, (r[1] + r[3]) / 2, r[2] - r[0], r[3] - r[1], height)
-        out += ['      </link>',
-                '    </model>',
-                '    <include>',
-                '      <uri>model://roomba</uri>',
-                '      <name>roomba</name>',
-                f'      <pose>{num(x)} {num(y)} 0 0 0 {num(yaw)}</pose>',
-                '    </include>',
-                '  </world>',
-                '</sdf>',
-                '']
+        out += ['      </link>', '    </model>']
+        out += include("roomba", "roomba", x, y, num(yaw))
+        out += ['  </world>', '</sdf>', '']
         return "\n".join(out)
 
 
@@ -363,55 +350,12 @@ class Reach:
 
 # ---- command line -------------------------------------------------------------------------
 
-class UsageError(Exception):
-    pass
-
-
-class Parser(argparse.ArgumentParser):
-    def error(self, message):  # one line, exit status 2 (argparse's own prints the usage too)
-        raise UsageError(message)
-
-
-def finite(text):
-    try:
-        v = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
-    if not math.isfinite(v):
-        raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
-    return v
-
-
-def pose(text):
-    parts = text.split(",")
-    try:
-        values = [float(p) for p in parts]
-    except ValueError:
-        values = []
-    if len(values) not in (2, 3) or not all(math.isfinite(v) for v in values):
-        raise argparse.ArgumentTypeError(f"expected X,Y,YAW (numbers), got {text!r}")
-    return tuple(values) if len(values) == 3 else (values[0], values[1], 0.0)
-
-
 VALUE_OPTIONS = ("--out", "--seed", "--rooms-x", "--rooms-y", "--room-size", "--door-width", "--furniture",
                  "--start", "--step")
 
 
-def join_negative_values(argv):
-    """`--start -1,1.5,0` -> `--start=-1,1.5,0` (argparse takes "-1,..." for an option)."""
-    out, i = [], 0
-    while i < len(argv):
-        if argv[i] in VALUE_OPTIONS and i + 1 < len(argv) and re.match(r"-[\d.]", argv[i + 1]):
-            out.append(f"{argv[i]}={argv[i + 1]}")
-            i += 2
-        else:
-            out.append(argv[i])
-            i += 1
-    return out
-
-
 def parse_args(argv):
-    p = Parser(prog="make_house.py", description="Writes a generated house (see the module docstring).")
+    p = Parser(prog=PROG, description="Writes a generated house (see the module docstring).")
     p.add_argument("--out", required=True)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--rooms-x", type=int, default=3)
@@ -419,24 +363,21 @@ def parse_args(argv):
     p.add_argument("--room-size", type=finite, default=3.2)
     p.add_argument("--door-width", type=finite, default=0.9)
     p.add_argument("--furniture", type=int, default=2)
-    p.add_argument("--start", type=pose)
+    p.add_argument("--start", type=parse_pose)
     physics = p.add_mutually_exclusive_group()
     physics.add_argument("--step", type=finite)
     physics.add_argument("--no-physics", action="store_true")
-    a = p.parse_args(join_negative_values(argv))
-    for name, v in (("rooms-x", a.rooms_x), ("rooms-y", a.rooms_y)):
-        if not 1 <= v <= 20:
-            raise UsageError(f"--{name} must be in 1..20, got {v}")
-    if not 2.0 <= a.room_size <= 10.0:
-        raise UsageError(f"--room-size must be in [2, 10] m, got {a.room_size:g}")
+    a = p.parse_args(join_negative_values(argv, VALUE_OPTIONS))
+    check_int_range("rooms-x", a.rooms_x, 1, 20)
+    check_int_range("rooms-y", a.rooms_y, 1, 20)
+    check_range("room-size", a.room_size, 2.0, 10.0, "m")
     widest_door = round(a.room_size * (1 - JITTER) - WALL_T - 2 * DOOR_MARGIN, 2) - 0.01
     if not 0.5 <= a.door_width <= widest_door:
         raise UsageError(f"--door-width must be in [0.5, {widest_door:.2f}] m for --room-size {a.room_size:g},"
                          f" got {a.door_width:g}")
-    if not 0 <= a.furniture <= 20:
-        raise UsageError(f"--furniture must be in 0..20, got {a.furniture}")
-    if a.step is not None and not 0.0001 <= a.step <= 0.05:
-        raise UsageError(f"--step must be in [0.0001, 0.05] s, got {a.step:g}")
+    check_int_range("furniture", a.furniture, 0, 20)
+    if a.step is not None:
+        check_range("step", a.step, 0.0001, 0.05, "s")
     return a
 
 
@@ -445,26 +386,15 @@ def main(argv):
         a = parse_args(argv)
         house = House(a)
     except UsageError as e:
-        print(f"make_house.py: error: {e}", file=sys.stderr)
-        return 2
+        return fail(PROG, e)
     x, y, yaw = house.start
     # (an XML comment cannot hold "--": name=value for each option)
     parameters = (f"seed={a.seed} rooms-x={a.rooms_x} rooms-y={a.rooms_y} room-size={num(a.room_size)}"
                   f" door-width={num(a.door_width)} furniture={a.furniture} start={num(x)},{num(y)},{num(yaw)}"
                   + (f" step={num(a.step)}" if a.step is not None else ""))
-    text = house.xml(parameters)
-    if a.out == "-":
-        sys.stdout.write(text)
-        return 0
-    try:
-        with open(a.out, "w") as f:
-            f.write(text)
-    except OSError as e:
-        print(f"make_house.py: error: --out: cannot write {a.out}: {e.strerror}", file=sys.stderr)
-        return 2
-    print(f"{a.out}: {a.rooms_x} x {a.rooms_y} rooms, {len(house.doors)} doors,"
-          f" {house.placed} furniture boxes, roomba at ({num(x)}, {num(y)})")
-    return 0
+    return write_output(PROG, a.out, house.xml(parameters),
+                        f"{a.rooms_x} x {a.rooms_y} rooms, {len(house.doors)} doors,"
+                        f" {house.placed} furniture boxes, roomba at ({num(x)}, {num(y)})")
 
 
 if __name__ == "__main__":

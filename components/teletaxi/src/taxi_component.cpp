@@ -45,7 +45,7 @@ TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const wor
 std::optional<std::string> TaxiComponent::destinationProblem(double x_m, double y_m) const {
   char where[96];
   std::snprintf(where, sizeof where, "(%.1f, %.1f)", x_m, y_m);
-  if (const auto problem = world::pointProblem(map_, x_m, y_m)) return std::string(where) + " " + *problem;
+  if (const auto problem = world::pointProblem(map_, x_m, y_m)) return problem;
   const double dx = x_m - start_xy_m_.first, dy = y_m - start_xy_m_.second;
   if (std::hypot(dx, dy) < kMinTripM) {
     return std::string(where) + " is closer than " + std::to_string(static_cast<int>(kMinTripM)) +

@@ -1,5 +1,7 @@
 #include "aula/lcm/lockstep_client.hpp"
 
+#include <aula/config/config.hpp>
+
 #include "aula/lcm/bus.hpp"
 
 #include <aula/lockstep_ack_t.hpp>
@@ -26,6 +28,7 @@ LockstepClient::~LockstepClient() {
 }
 
 void LockstepClient::poll() {
+  if (!world_mismatch_.empty()) throw config::ConfigError(world_mismatch_);
   if (left_ || registered_) return;
   if (std::chrono::steady_clock::now() - last_register_ >= kRegisterResend) sendRegister(false);
 }
@@ -53,8 +56,20 @@ void LockstepClient::sendAck(int64_t seq, int64_t utime) {
   bus_.publish(kLockstepAckChannel, &ack);
 }
 
+void LockstepClient::expectWorld(const std::string& sha256, const std::string& path) {
+  expected_world_sha256_ = sha256;
+  expected_world_path_ = path;
+}
+
 void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string&,
                              const aula::sim_clock_t* tick) {
+  if (!expected_world_sha256_.empty() && tick->world_sha256 != expected_world_sha256_) {
+    world_mismatch_ = "the simulator runs world '" + tick->world + "' (sha256 " + tick->world_sha256.substr(0, 12) +
+                      ") but this process was given " + expected_world_path_ + " (sha256 " +
+                      expected_world_sha256_.substr(0, 12) + "): it will not grade another world; give all "
+                      "three processes the same --world";
+    return;
+  }
   lockstep_ = tick->lockstep;
   paused_ = tick->paused;
   rtf_ = tick->real_time_factor;

@@ -84,8 +84,17 @@ SettingsTable makeTaxiComponent() {
   mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
   motionKeys(t, "TeleTaxi", 20, 2, 0.08, 50, 10);
   t.choice("TeleTaxi.Algorithm", "student", {"student", "reference"}, "the algorithm that drives the taxi");
-  t.reals("TeleTaxi.Destination", "120, -40", 2, "m", -1e6, 1e6,
-          "destination x, y: pre-selected in the window, the one headless runs drive to");
+  config::SettingSpec destination;
+  destination.key = "TeleTaxi.Destination";
+  destination.type = config::SettingType::DoubleList;
+  destination.default_value = "120, -40";
+  destination.list_size = 2;
+  destination.unit = "m";
+  destination.min = -1e6;
+  destination.max = 1e6;
+  destination.free_point = true;  // the launcher refuses one off the map or in a building at once
+  destination.help = "destination x, y: pre-selected in the window, the one headless runs drive to";
+  t.add(destination);
   return t;
 }
 

@@ -135,15 +135,17 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
 }
 
 std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m) {
+  char where[96];
+  std::snprintf(where, sizeof where, "(%.1f, %.1f) ", x_m, y_m);
   const MapTransform& t = map.transform;
   const int col = t.worldToCol(x_m), row = t.worldToRow(y_m);
   if (!t.contains(col, row) || !std::isfinite(x_m) || !std::isfinite(y_m)) {
     char text[160];
     std::snprintf(text, sizeof text, "is off the map (x in [%.1f, %.1f], y in [%.1f, %.1f] m)", t.origin_x_m,
                   t.origin_x_m + t.width_px * t.resolution_m, t.origin_y_m - t.height_px * t.resolution_m, t.origin_y_m);
-    return std::string(text);
+    return where + std::string(text);
   }
-  if (map.image.at<uint8_t>(row, col) == 0) return std::string("is inside a building or obstacle");
+  if (map.image.at<uint8_t>(row, col) == 0) return where + std::string("is inside a building or obstacle");
   return std::nullopt;
 }
 

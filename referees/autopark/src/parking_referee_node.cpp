@@ -40,6 +40,7 @@ ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg,
   const double period_s = cfg.getDouble("Autopark.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
                                                     [this](int64_t utime) { onTick(utime); });
+  clock_->expectWorld(world.sha256, world.source_path);
 }
 
 void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {

@@ -25,6 +25,7 @@ TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
       [this](int64_t utime) { onTick(utime); });
+  clock_->expectWorld(world.sha256, world.source_path);
 }
 
 void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {

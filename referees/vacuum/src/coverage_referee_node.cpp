@@ -43,6 +43,7 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
           if (on_finished_) on_finished_();
         }
       });
+  clock_->expectWorld(world.sha256, world.source_path);
 }
 
 void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {

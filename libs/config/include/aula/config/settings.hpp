@@ -26,6 +26,7 @@ struct SettingSpec {
   bool min_exclusive = false;      // (min, max] instead of [min, max]
   size_t list_size = 0;            // DoubleList: exact number of items (0: any)
   std::vector<std::string> choices;  // Choice: the allowed words
+  bool free_point = false;         // DoubleList of 2: x, y that must be free floor on the exercise's map
   std::string help;
 
   std::string typeName() const;

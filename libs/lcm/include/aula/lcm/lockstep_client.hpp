@@ -32,6 +32,10 @@ class LockstepClient {
   // Call regularly (e.g. every 50 ms wall, or after each lcm.handle()): re-sends the
   // registration until the simulator lists this client.
   void poll();
+  // A client that must run on the same world as the simulator (a referee grading it): ticks
+  // of another world are not followed, and the next poll() throws config::ConfigError saying
+  // which world each side has.
+  void expectWorld(const std::string& sha256, const std::string& path);
   // Leave lockstep (the simulator stops waiting). Also done by the destructor.
   void leave();
 
@@ -64,6 +68,8 @@ class LockstepClient {
   double rtf_ = 0.0;
   aula::sim_clock_t last_tick_{};
   std::chrono::steady_clock::time_point last_register_{};
+  std::string expected_world_sha256_, expected_world_path_;
+  std::string world_mismatch_;  // set by a tick of another world
 };
 
 }  // namespace aula::lcmbus

@@ -41,8 +41,8 @@ struct OccupancyMap {
 // hash of the static geometry and the parameters, so an edited world never gets a stale map.
 OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params);
 
-// Why a point is no place for a robot on this map ("is off the map (x in [..], y in [..])",
-// "is inside an obstacle"), or nothing when its cell is free.
+// Why a point is no place for a robot on this map ("(x, y) is off the map (x in [..], y in
+// [..] m)", "(x, y) is inside a building or obstacle"), or nothing when its cell is free.
 std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m);
 
 }  // namespace aula::world

@@ -1,0 +1,72 @@
+// Each exercise's reference, end to end, on a world the test generates with worlds/tools:
+// a layout, slot and start that no shipped world has. A teacher's world must just work.
+#include "test_support.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <gtest/gtest.h>
+
+using namespace std::chrono_literals;
+using aula::process::ChildProcess;
+using aula::testing::jsonNumber;
+using aula::testing::readFile;
+
+namespace {
+
+// Writes a world with a generator of worlds/tools; returns its path.
+std::string generate(const std::string& dir, const std::string& tool, std::vector<std::string> args) {
+  const std::string world = dir + "/" + tool + ".world";
+  std::vector<std::string> command = {AULA_PYTHON, std::string(AULA_SOURCE_DIR) + "/worlds/tools/" + tool + ".py",
+                                      "--out", world};
+  command.insert(command.end(), args.begin(), args.end());
+  ChildProcess gen(command, dir + "/gen.log", dir + "/gen.log");
+  EXPECT_EQ(gen.wait(30s).value_or(-1), 0) << readFile(dir + "/gen.log");
+  return world;
+}
+
+// Runs an exercise headless on `world`; returns the report.
+std::string runOn(const std::string& dir, const std::string& exercise, const std::string& world,
+                  std::vector<std::string> extra) {
+  const std::string report = dir + "/report.json", log = dir + "/run.log";
+  std::vector<std::string> args = {std::string(AULA_BIN_DIR) + "/aula", "run", exercise, "--headless", "--world=" + world,
+                                   "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  ChildProcess run(args, log, log);
+  const auto code = run.wait(120s);
+  EXPECT_EQ(code.value_or(-1), 0) << readFile(log);
+  const std::string json = readFile(report);
+  EXPECT_NE(json.find("\"world_sha256\": \"" ), std::string::npos) << json << readFile(log);
+  return json;
+}
+
+}  // namespace
+
+TEST(GeneratedWorlds, TheVacuumReferenceCleansAHouseOfFourRoomsFromAnotherStart) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_house", {"--seed", "11", "--rooms-x", "2", "--rooms-y", "2",
+                                                         "--room-size", "3.6", "--start=1.5,1.5,1.0"});
+  const std::string json = runOn(dir, "vacuum", world, {"--algorithm=reference"});
+  // The reference covers 66-70 % of the shipped house in 900 s; this house is smaller.
+  EXPECT_GE(jsonNumber(json, "coverage_percent"), 55.0) << json;
+  EXPECT_LT(jsonNumber(json, "floor_area_m2"), 50.0) << json;  // this house's floor, not the shipped one's
+  EXPECT_EQ(jsonNumber(json, "pose_messages"), 45001) << json;
+}
+
+TEST(GeneratedWorlds, TheTeleTaxiReferenceCrossesAGeneratedCity) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_city", {"--seed", "5", "--blocks", "3"});
+  // Roads' centre lines are at -141, -47, 47 and 141; the taxi starts at (-47, -47).
+  const std::string json = runOn(dir, "teletaxi", world, {"--algorithm=reference", "--TeleTaxi.Destination=141,47"});
+  EXPECT_NE(json.find("\"reached\": true"), std::string::npos) << json;
+  EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
+  EXPECT_EQ(jsonNumber(json, "bumps"), 0.0) << json;
+}
+
+TEST(GeneratedWorlds, TheReactiveParkerParksInAnotherSlotFromAnotherStart) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_autopark", {"--slot-length", "8", "--slot-x", "6", "--start=-12,2.5,0"});
+  const std::string json = runOn(dir, "autopark", world, {"--algorithm=reactive"});
+  EXPECT_NE(json.find("\"parked\": true"), std::string::npos) << json;
+  EXPECT_EQ(jsonNumber(json, "collisions"), 0.0) << json;
+  EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
+}
