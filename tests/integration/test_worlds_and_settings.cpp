@@ -216,3 +216,43 @@ TEST(Worlds, ARefereeGivenAnotherWorldThanTheSimulatorsRefusesToGrade) {
   EXPECT_NE(out.output.find("but this process was given " + std::string(AULA_SOURCE_DIR)), std::string::npos) << out.output;
   EXPECT_NE(out.output.find("give all three processes the same --world"), std::string::npos) << out.output;
 }
+
+TEST(Settings, EveryProgramPrintsItsUsageAndDeclaredSettingsWithoutADisplay) {
+  const char* display = std::getenv("DISPLAY");
+  const std::string saved = display != nullptr ? display : "";
+  unsetenv("DISPLAY");
+  const std::vector<std::pair<std::string, std::string>> programs = {
+      {"aula-sim", "Simulator.PhysicsStep"},        {"teletaxi", "TeleTaxi.Destination"},
+      {"teletaxi-referee", "TeleTaxi.Referee.Timeout"}, {"vacuum-cleaner", "Vacuum.Algorithm"},
+      {"vacuum-cleaner-referee", "Vacuum.Referee.FullMarkCoverage"}, {"autopark", "Autopark.Algorithm"},
+      {"autopark-referee", "Autopark.Referee.GapBands"}, {"aula-demo-client", "Demo.MaxV"}};
+  for (const auto& [program, key] : programs) {
+    const Outcome out = runToEnd({kBin + "/" + program, "--help"}, 10s);
+    EXPECT_EQ(out.code.value_or(-1), 0) << program << "\n" << out.output;
+    EXPECT_NE(out.output.find("usage: " + program), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("  " + key + "  ("), std::string::npos) << program << "\n" << out.output;
+  }
+  // Without --help and without a display, a window process says what to do instead of aborting.
+  const Outcome out = runToEnd({kBin + "/vacuum-cleaner"}, 10s);
+  EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+  EXPECT_NE(out.output.find("no display (DISPLAY is not set): use --headless"), std::string::npos) << out.output;
+  if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
+}
+
+TEST(Worlds, CheckWorldSaysWhatEachExerciseWouldMiss) {
+  const Outcome out = runToEnd({kBin + "/aula", "check-world", kWorlds + "vacuum.world"}, 20s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_NE(out.output.find("robot 'roomba' at (-1, 1.5)"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("  laser 'laser' on ROOMBA_LASER"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("vacuum: ok"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("teletaxi: cannot run; the world needs a robot named 'taxi_holo' (TeleTaxi.Robot)"),
+            std::string::npos)
+      << out.output;
+  // A roomba without its laser: the vacuum exercise says so.
+  const std::string dir = aula::testing::privateDir();
+  std::string robot = inlineRoomba("roomba", "ROOMBA_", -1, 1.5);
+  robot = std::regex_replace(robot, std::regex("<plugin name=\"laser\"[^]*?</plugin>"), "");
+  writeFile(dir + "/blind.world", houseWith(robot));
+  const Outcome blind = runToEnd({kBin + "/aula", "check-world", dir + "/blind.world"}, 20s);
+  EXPECT_NE(blind.output.find("vacuum: cannot run; the world needs a laser plugin"), std::string::npos) << blind.output;
+}

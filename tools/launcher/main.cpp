@@ -12,6 +12,9 @@
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <opencv2/imgcodecs.hpp>
+
+#include <algorithm>
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
@@ -34,7 +37,9 @@ constexpr const char* kUsage =
     "                [--report=FILE.json] [--lockstep] [--rtf=X] [--duration=SECONDS] [--lcm-url=URL]\n"
     "                [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
+    "       aula check-world FILE [--map=FILE.png]\n"
     "  run         start the simulator, the component and the referee\n"
+    "  check-world load a world, list its robots, sensors and channels, say what each exercise would miss\n"
     "  config      print the effective settings of each process and where each came from\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
@@ -125,6 +130,75 @@ RunSettings resolveSettings(const Exercise& ex, const CommandLine& cl) {
   run.world = aula::config::resolveWorldPath(component.getString(world_key), component.origin(world_key) + ": " + world_key);
   checkPointsOnTheMap(ex, component, run.world);
   return run;
+}
+
+// aula check-world FILE [--map=FILE.png]: what a teacher runs on a new world.
+int checkWorld(const CommandLine& cl) {
+  namespace world = aula::world;
+  const std::string path = aula::config::resolveWorldPath(cl.positional[1], "command line: FILE");
+  const world::WorldSpec spec = world::loadWorld(path);
+  std::cout << "world '" << spec.name << "': " << spec.source_path << "\n  sha256 " << spec.sha256 << "\n";
+  if (spec.physics_step_s > 0) {
+    std::cout << "  physics step " << spec.physics_step_s * 1e3 << " ms (<physics><max_step_size>)\n";
+  } else {
+    std::cout << "  physics step: not stated, so Simulator.PhysicsStep (default 5 ms)\n";
+  }
+  if (!spec.statics.empty()) {
+    const Eigen::Vector4d b = world::staticBounds(spec);
+    std::cout << "  " << spec.statics.size() << " static primitives, x [" << b[0] << ", " << b[2] << "] y [" << b[1]
+              << ", " << b[3] << "] m\n";
+  }
+  for (const auto& robot : spec.robots) {
+    const Eigen::Vector3d p = robot.pose.translation();
+    std::cout << "robot '" << robot.name << "' at (" << p.x() << ", " << p.y() << "), yaw "
+              << world::yawOf(robot.pose) << " rad, " << robot.mass_kg << " kg\n";
+    for (const auto& plugin : robot.plugins) {
+      std::cout << "  " << plugin.type << " '" << plugin.name << "' on " << plugin.getString("channel", "(no channel)") << "\n";
+    }
+  }
+  // Each exercise: its robot, the plugins it needs, and a free start on its map.
+  for (const auto& ex : aula::settings::exercises()) {
+    if (ex.referee_settings == nullptr) continue;
+    const Config cfg = ex.component_settings->resolve(Config());
+    std::vector<std::string> missing;
+    const world::RobotSpec* robot = spec.findRobot(cfg.getString(ex.section + ".Robot"));
+    if (robot == nullptr) {
+      missing.push_back("a robot named '" + cfg.getString(ex.section + ".Robot") + "' (" + ex.section + ".Robot)");
+    } else {
+      for (const std::string& need : ex.required_plugins) {
+        const auto colon = need.find(':');
+        try {
+          world::channelOf(*robot, need.substr(0, colon), colon == std::string::npos ? "" : need.substr(colon + 1));
+        } catch (const world::WorldError&) {
+          missing.push_back("a " + need.substr(0, colon) + " plugin" +
+                            (colon == std::string::npos ? "" : " named '" + need.substr(colon + 1) + "'"));
+        }
+      }
+      if (cfg.has(ex.section + ".Map.Resolution") && !spec.statics.empty()) {
+        const auto z = cfg.getDoubleList(ex.section + ".Map.ZBand");
+        const auto map = world::occupancyMapOf(spec, {cfg.getDouble(ex.section + ".Map.Resolution"), z[0], z[1]});
+        const Eigen::Vector3d p = robot->pose.translation();
+        if (const auto problem = world::pointProblem(map, p.x(), p.y())) missing.push_back("a start on free floor: " + *problem);
+      }
+    }
+    std::cout << ex.name << ": ";
+    if (missing.empty()) {
+      std::cout << "ok\n";
+    } else {
+      std::cout << "cannot run; the world needs";
+      for (size_t i = 0; i < missing.size(); ++i) std::cout << (i ? "; " : " ") << missing[i];
+      std::cout << "\n";
+    }
+  }
+  if (cl.flag("map")) {
+    const Eigen::Vector4d b = world::staticBounds(spec);
+    const double resolution_m = std::max(0.01, std::max(b[2] - b[0], b[3] - b[1]) / 1000.0);
+    const auto map = world::occupancyMapOf(spec, {resolution_m, 0.01, 100.0});
+    if (!cv::imwrite(cl.option("map"), map.image)) throw ConfigError("--map=" + cl.option("map") + ": cannot write");
+    std::cout << "map: " << cl.option("map") << " (" << map.image.cols << " x " << map.image.rows << " px, "
+              << resolution_m << " m/px; black = what a robot touches)\n";
+  }
+  return 0;
 }
 
 int printConfig(const Exercise& ex, const CommandLine& cl) {
@@ -234,8 +308,9 @@ int main(int argc, char** argv) {
   try {
     auto cl = CommandLine::parse(argc, argv, {});
     cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url",
-                     "config", "help"});
+                     "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
+    if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
     if (cl.positional.size() != 2 || (cl.positional[0] != "run" && cl.positional[0] != "config")) {
       return usage(std::cerr, 2);
     }

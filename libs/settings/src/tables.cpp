@@ -182,11 +182,13 @@ const std::vector<Exercise>& exercises() {
   static const SettingsTable vacuum = makeVacuumComponent(), vacuum_referee = makeVacuumReferee();
   static const SettingsTable park = makeAutoparkComponent(), park_referee = makeAutoparkReferee();
   static const std::vector<Exercise> all = {
-      {"teletaxi", "TeleTaxi", "config/teleTaxi.cfg", "teletaxi", "teletaxi-referee", &taxi, &taxi_referee},
+      {"teletaxi", "TeleTaxi", "config/teleTaxi.cfg", "teletaxi", "teletaxi-referee", &taxi, &taxi_referee,
+       {"pose3d", "motors", "bumper"}},
       {"vacuum", "Vacuum", "config/vacuumCleaner.cfg", "vacuum-cleaner", "vacuum-cleaner-referee", &vacuum,
-       &vacuum_referee},
-      {"autopark", "Autopark", "config/autopark.cfg", "autopark", "autopark-referee", &park, &park_referee},
-      {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr},
+       &vacuum_referee, {"pose3d", "motors", "laser", "bumper"}},
+      {"autopark", "Autopark", "config/autopark.cfg", "autopark", "autopark-referee", &park, &park_referee,
+       {"pose3d", "motors", "bumper", "laser:laser_front", "laser:laser_rear", "laser:laser_right"}},
+      {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr, {"pose3d", "motors", "laser", "bumper"}},
   };
   return all;
 }

@@ -120,7 +120,7 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
   }
   const std::string folder = config::cacheDir() + "/maps";
   const std::string png = folder + "/" + sha256Hex(key.str()) + ".png";
-  out.image = cv::imread(png, cv::IMREAD_GRAYSCALE);
+  if (std::filesystem::exists(png)) out.image = cv::imread(png, cv::IMREAD_GRAYSCALE);
   if (!out.image.empty() && out.image.cols == out.transform.width_px && out.image.rows == out.transform.height_px) {
     return out;
   }

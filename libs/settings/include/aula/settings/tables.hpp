@@ -23,6 +23,8 @@ struct Exercise {
   std::string referee;
   const config::SettingsTable* component_settings;
   const config::SettingsTable* referee_settings;  // nullptr when the exercise has none
+  // What the exercise needs of its robot's plugins: "TYPE" or "TYPE:NAME" (`aula check-world`).
+  std::vector<std::string> required_plugins;
 
   std::vector<const config::SettingsTable*> tables() const;
 };
