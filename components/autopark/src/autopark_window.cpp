@@ -1,7 +1,7 @@
 #include "autopark_window.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
-#include <aula/component/widgets/teleoperator.hpp>
+#include <aula/gui/screenshot.hpp>
+#include <aula/gui/teleoperator.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <QApplication>
@@ -30,7 +30,7 @@ QImage streetImage(const world::WorldSpec& world, world::MapTransform& transform
   return image;
 }
 
-QPolygonF rectangle(const component::MapView& map, const Rect2D& rect) {
+QPolygonF rectangle(const gui::MapView& map, const Rect2D& rect) {
   QPolygonF poly;
   for (const auto& c : rect.corners()) poly << map.worldToWidget(c.x_m, c.y_m);
   return poly;
@@ -45,7 +45,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   auto* layout = new QVBoxLayout(central);
   world::MapTransform transform;
   const QImage street = streetImage(component_.world(), transform);
-  map_ = new component::MapView(street, transform, central);
+  map_ = new gui::MapView(street, transform, central);
   // The whole street at 12 px/m, as tall as it is (the rest of the height goes to the lasers).
   map_->setFixedSize(street.width(), street.height());
   layout->addWidget(map_, 0, Qt::AlignHCenter);
@@ -54,10 +54,10 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   lasers_->setMinimumSize(420, 360);
   bottom->addWidget(lasers_, 1);
   auto* side = new QVBoxLayout;
-  run_ = new component::RunToggle(central);
+  run_ = new gui::RunToggle(central);
   status_ = new QLabel(central);
   status_->setMinimumWidth(240);
-  auto* teleop = new component::Teleoperator(component_.maxV(), component_.maxW(), central);
+  auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   side->addWidget(run_);
   side->addWidget(status_);
   side->addStretch(1);
@@ -65,8 +65,8 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   bottom->addWidget(teleop);
   layout->addLayout(bottom, 1);
   setCentralWidget(central);
-  connect(run_, &component::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
-  connect(teleop, &component::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
+  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
+  connect(teleop, &gui::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
   map_->setOverlay([this](QPainter& p) { drawCar(p); });
   // The trail is sampled on sim time (every control tick), not at the GUI's refresh rate.
   component_.setOnTick([this](int64_t) {
@@ -137,7 +137,7 @@ void AutoparkWindow::refresh() {
 }
 
 void AutoparkWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  component::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
+  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
 }
 
 LaserView::LaserView(const AutoparkComponent& component, QWidget* parent) : QWidget(parent), component_(component) {}

@@ -6,9 +6,9 @@
 // teleoperator and Stop.
 
 #include <aula/autopark/autopark_component.hpp>
-#include <aula/autopark/parking_geometry.hpp>
-#include <aula/component/widgets/map_view.hpp>
-#include <aula/component/widgets/run_toggle.hpp>
+#include <aula/scoring/parking_geometry.hpp>
+#include <aula/gui/map_view.hpp>
+#include <aula/gui/run_toggle.hpp>
 
 #include <QLabel>
 #include <QMainWindow>
@@ -42,9 +42,9 @@ class AutoparkWindow : public QMainWindow {
 
   AutoparkComponent& component_;
   ParkingScene scene_;
-  component::MapView* map_ = nullptr;
+  gui::MapView* map_ = nullptr;
   LaserView* lasers_ = nullptr;
-  component::RunToggle* run_ = nullptr;
+  gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
   QTimer timer_;
   std::deque<QPointF> trail_;  // recent positions (a ring of the last kTrail)

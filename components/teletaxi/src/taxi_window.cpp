@@ -1,6 +1,6 @@
 #include "taxi_window.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
+#include <aula/gui/screenshot.hpp>
 
 #include <QApplication>
 #include <QPainter>
@@ -22,7 +22,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   setWindowTitle("TeleTaxi - Gradient Path Planning");
   auto* central = new QWidget(this);
   auto* layout = new QHBoxLayout(central);
-  map_ = new component::MapView(toQImage(component_.grid().getMap()), component_.grid().transform(), central);
+  map_ = new gui::MapView(toQImage(component_.grid().getMap()), component_.grid().transform(), central);
   map_->setMinimumSize(600, 600);
   layout->addWidget(map_, 1);
 
@@ -47,13 +47,13 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   side->addWidget(generate);
   side->addWidget(go);
   side->addWidget(stop);
-  auto* teleop = new component::Teleoperator(component_.maxV(), component_.maxW(), central);
+  auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   side->addWidget(teleop);
   side->addStretch(1);
   layout->addLayout(side);
   setCentralWidget(central);
 
-  connect(map_, &component::MapView::worldDoubleClicked, this, [this](double x, double y) {
+  connect(map_, &gui::MapView::worldDoubleClicked, this, [this](double x, double y) {
     if (const auto problem = component_.destinationProblem(x, y)) {
       status_label_->setText("Destination refused: " + QString::fromStdString(*problem));
       return;
@@ -77,7 +77,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
     teleop->stop();
     status_label_->setText("Stopped");
   });
-  connect(teleop, &component::Teleoperator::velocityChanged, this,
+  connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   component_.grid().setShowGridHandler([this] { showGridField(); });
   connect(&timer_, &QTimer::timeout, this, &TaxiWindow::refresh);
@@ -151,8 +151,8 @@ bool TaxiWindow::screenshotWhenReady(const QString& png_path) {
                        (!component_.autostart() || (component_.grid().isPathFinded() && component_.simTimeUs() > 8'000'000));
     if (ready || ++*started > 100) {
       poll->stop();
-      component::saveWidgetPng(*this, png_path);
-      if (grid_window_ != nullptr) component::saveWidgetPng(*grid_window_, QString(png_path).replace(".png", "_grid.png"));
+      gui::saveWidgetPng(*this, png_path);
+      if (grid_window_ != nullptr) gui::saveWidgetPng(*grid_window_, QString(png_path).replace(".png", "_grid.png"));
       QApplication::quit();
     }
   });

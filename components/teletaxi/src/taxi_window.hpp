@@ -3,8 +3,8 @@
 // Stop, the taxi and its path, labels, and the teleoperator. Refreshed every 50 ms of wall time;
 // the algorithm runs on sim time in TaxiComponent.
 
-#include <aula/component/widgets/map_view.hpp>
-#include <aula/component/widgets/teleoperator.hpp>
+#include <aula/gui/map_view.hpp>
+#include <aula/gui/teleoperator.hpp>
 #include <aula/teletaxi/taxi_component.hpp>
 
 #include <QLabel>
@@ -26,7 +26,7 @@ class TaxiWindow : public QMainWindow {
   void updatePathOverlay();
 
   TaxiComponent& component_;
-  component::MapView* map_ = nullptr;
+  gui::MapView* map_ = nullptr;
   QLabel* destination_label_ = nullptr;
   QLabel* position_label_ = nullptr;
   QLabel* velocity_label_ = nullptr;

@@ -2,7 +2,7 @@
 
 #include "coverage_plot.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
+#include <aula/gui/screenshot.hpp>
 #include <aula/world/map_transform.hpp>
 
 #include <opencv2/imgcodecs.hpp>
@@ -25,15 +25,15 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
                    QImage::Format_Grayscale8);
   auto* central = new QWidget(this);
   auto* layout = new QHBoxLayout(central);
-  map_ = new component::MapView(map.copy(), transform, central);
+  map_ = new gui::MapView(map.copy(), transform, central);
   map_->setMinimumSize(560, 560);
   layout->addWidget(map_, 1);
   auto* side = new QVBoxLayout;
-  run_ = new component::RunToggle(central);
+  run_ = new gui::RunToggle(central);
   status_ = new QLabel(central);
   status_->setWordWrap(true);
   status_->setMinimumWidth(260);
-  auto* teleop = new component::Teleoperator(component_.maxV(), component_.maxW(), central);
+  auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   side->addWidget(run_);
   side->addWidget(status_);
   side->addWidget(teleop);
@@ -41,8 +41,8 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   side->addWidget(plot_, 1);
   layout->addLayout(side);
   setCentralWidget(central);
-  connect(run_, &component::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
-  connect(teleop, &component::Teleoperator::velocityChanged, this,
+  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
+  connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
   // not at the GUI's refresh rate, so the band has no gaps however fast the simulation runs.
@@ -84,7 +84,7 @@ void VacuumWindow::refresh() {
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  component::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
+  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
 }
 
 }  // namespace aula::vacuum

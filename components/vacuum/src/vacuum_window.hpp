@@ -4,10 +4,10 @@
 // algorithm), the "Run my algorithm" toggle, the teleoperator and Stop, and the cleaned
 // percentage since Run (the referee's CoverageGrid on the same map) with its plot.
 
-#include <aula/component/widgets/map_view.hpp>
-#include <aula/component/widgets/run_toggle.hpp>
-#include <aula/component/widgets/teleoperator.hpp>
-#include <aula/vacuum/coverage_grid.hpp>
+#include <aula/gui/map_view.hpp>
+#include <aula/gui/run_toggle.hpp>
+#include <aula/gui/teleoperator.hpp>
+#include <aula/scoring/coverage_grid.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
 #include <QLabel>
@@ -33,8 +33,8 @@ class VacuumWindow : public QMainWindow {
   void onTick(int64_t utime);
 
   VacuumComponent& component_;
-  component::MapView* map_ = nullptr;
-  component::RunToggle* run_ = nullptr;
+  gui::MapView* map_ = nullptr;
+  gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
   QTimer timer_;
   CoveragePlot* plot_ = nullptr;

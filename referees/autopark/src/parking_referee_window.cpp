@@ -1,6 +1,6 @@
 #include "parking_referee_window.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
+#include <aula/gui/screenshot.hpp>
 
 #include <QApplication>
 #include <QGridLayout>
@@ -21,7 +21,7 @@ ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(nod
   mark_ = new QLabel("Mark: -", this);
   mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
   mark_->setWordWrap(true);
-  orientation_ = new component::Gauge("Orientation", "deg", -90, 90, 180, this);
+  orientation_ = new gui::Gauge("Orientation", "deg", -90, 90, 180, this);
   const QColor green(90, 190, 90), orange(240, 160, 40), red(220, 60, 60);
   orientation_->setBands({{-90, -45, red}, {-45, -15, orange}, {-15, 15, green}, {15, 45, orange}, {45, 90, red}});
   orientation_->setMinimumSize(200, 200);
@@ -81,7 +81,7 @@ void ParkingRefereeWindow::screenshotWhenFinished(const QString& png_path) {
     if (node_.finished() || ++*ticks > 600) {
       poll->stop();
       showMark();
-      component::saveWidgetPng(*this, png_path);
+      gui::saveWidgetPng(*this, png_path);
       QApplication::quit();
     }
   });

@@ -5,7 +5,7 @@
 
 #include "parking_referee_node.hpp"
 
-#include <aula/component/widgets/gauge.hpp>
+#include <aula/gui/gauge.hpp>
 
 #include <QLabel>
 #include <QProgressBar>
@@ -28,7 +28,7 @@ class ParkingRefereeWindow : public QWidget {
   QLabel* distances_ = nullptr;
   QLabel* mark_ = nullptr;
   QProgressBar* collisions_ = nullptr;
-  component::Gauge* orientation_ = nullptr;
+  gui::Gauge* orientation_ = nullptr;
   QTimer timer_;
 };
 

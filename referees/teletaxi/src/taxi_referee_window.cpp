@@ -1,6 +1,6 @@
 #include "taxi_referee_window.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
+#include <aula/gui/screenshot.hpp>
 
 #include <QApplication>
 #include <QGridLayout>
@@ -19,9 +19,9 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
   mark_ = new QLabel("Mark: -", this);
   mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
   mark_->setWordWrap(true);
-  speed_ = new component::Gauge("Speed", "km/h", 0, 80, 270, this);
+  speed_ = new gui::Gauge("Speed", "km/h", 0, 80, 270, this);
   speed_->setBands({{0, 50, QColor(90, 190, 90)}, {50, 65, QColor(240, 160, 40)}, {65, 80, QColor(220, 60, 60)}});
-  heading_ = new component::Gauge("Heading", "deg", 0, 360, 360, this);
+  heading_ = new gui::Gauge("Heading", "deg", 0, 360, 360, this);
   auto* show = new QPushButton("Show me my mark", this);
   layout->addWidget(new QLabel("Sim time since GO!", this), 0, 0, 1, 2);
   layout->addWidget(clock_, 1, 0, 1, 2);
@@ -72,7 +72,7 @@ void TaxiRefereeWindow::screenshotWhenFinished(const QString& png_path) {
     if (node_.finished() || ++*ticks > 300) {
       poll->stop();
       showMark();
-      component::saveWidgetPng(*this, png_path);
+      gui::saveWidgetPng(*this, png_path);
       QApplication::quit();
     }
   });

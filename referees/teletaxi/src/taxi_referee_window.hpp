@@ -4,7 +4,7 @@
 
 #include "taxi_referee_node.hpp"
 
-#include <aula/component/widgets/gauge.hpp>
+#include <aula/gui/gauge.hpp>
 
 #include <QLabel>
 #include <QTimer>
@@ -25,8 +25,8 @@ class TaxiRefereeWindow : public QWidget {
   QLabel* clock_ = nullptr;
   QLabel* distances_ = nullptr;
   QLabel* mark_ = nullptr;
-  component::Gauge* speed_ = nullptr;
-  component::Gauge* heading_ = nullptr;
+  gui::Gauge* speed_ = nullptr;
+  gui::Gauge* heading_ = nullptr;
   QTimer timer_;
 };
 

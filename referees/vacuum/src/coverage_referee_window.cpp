@@ -1,6 +1,6 @@
 #include "coverage_referee_window.hpp"
 
-#include <aula/component/widgets/screenshot.hpp>
+#include <aula/gui/screenshot.hpp>
 
 #include <aula/world/map_transform.hpp>
 
@@ -15,7 +15,7 @@ namespace aula::vacuum {
 CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(node) {
   setWindowTitle("Vacuum cleaner referee");
   const cv::Mat& image = node_.map().image;
-  map_ = new component::MapView(
+  map_ = new gui::MapView(
       QImage(image.data, image.cols, image.rows, static_cast<int>(image.step), QImage::Format_Grayscale8).copy(),
       node_.map().transform, this);
   map_->setMinimumSize(480, 480);
@@ -32,7 +32,7 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   bar_->setFormat("%p% of the full mark");
   countdown_ = new QLabel(this);
   countdown_->setStyleSheet("font-size: 22px; font-family: monospace;");
-  clock_ = new component::Gauge("sim time", "s", 0, 60, 360, this);
+  clock_ = new gui::Gauge("sim time", "s", 0, 60, 360, this);
   clock_->setMinimumSize(170, 170);
   mark_ = new QLabel("Mark: -", this);
   mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
@@ -76,7 +76,7 @@ void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {
     poll->stop();
     refresh();
     showMark();
-    component::saveWidgetPng(*this, png_path);
+    gui::saveWidgetPng(*this, png_path);
     QApplication::quit();
   });
   poll->start(50);

@@ -4,8 +4,8 @@
 
 #include "coverage_referee_node.hpp"
 
-#include <aula/component/widgets/gauge.hpp>
-#include <aula/component/widgets/map_view.hpp>
+#include <aula/gui/gauge.hpp>
+#include <aula/gui/map_view.hpp>
 
 #include <QLabel>
 #include <QProgressBar>
@@ -24,11 +24,11 @@ class CoverageRefereeWindow : public QWidget {
  private:
   void refresh();
   CoverageRefereeNode& node_;
-  component::MapView* map_ = nullptr;
+  gui::MapView* map_ = nullptr;
   QLabel* percent_ = nullptr;
   QProgressBar* bar_ = nullptr;
   QLabel* countdown_ = nullptr;
-  component::Gauge* clock_ = nullptr;
+  gui::Gauge* clock_ = nullptr;
   QLabel* mark_ = nullptr;
   QTimer timer_;
 };

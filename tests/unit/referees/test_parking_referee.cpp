@@ -1,6 +1,6 @@
 // Autopark referee: footprint geometry (minimum distances about the car's own centre), the
 // slot read from the worlds, the sub-scores and the episode on sim time.
-#include <aula/autopark/parking_geometry.hpp>
+#include <aula/scoring/parking_geometry.hpp>
 #include <aula/autopark/parking_referee.hpp>
 #include <aula/world/world_spec.hpp>
 

@@ -12,7 +12,7 @@
 //      100, in [gap_half_from, gap_full_from) 50; curb distance <= curb_full 100, < curb_half 50
 //   C  100 without a collision, else 0
 
-#include <aula/autopark/parking_geometry.hpp>
+#include <aula/scoring/parking_geometry.hpp>
 
 #include <cstdint>
 #include <optional>

@@ -3,7 +3,7 @@
 // true disc footprint, its gain per 100 s, bumps and time stuck; the mark at the end.
 //   mark = min(10, 10 * coverage / full_mark_coverage)   (the original bar: 30 %)
 
-#include <aula/vacuum/coverage_grid.hpp>
+#include <aula/scoring/coverage_grid.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -6,7 +6,7 @@
 
 class QLabel;
 
-namespace aula::component {
+namespace aula::gui {
 
 class TeleoperatorPad : public QWidget {
   Q_OBJECT
@@ -45,4 +45,4 @@ class Teleoperator : public QWidget {
   QLabel* label_;
 };
 
-}  // namespace aula::component
+}  // namespace aula::gui

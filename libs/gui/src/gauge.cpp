@@ -1,11 +1,11 @@
-#include "aula/component/widgets/gauge.hpp"
+#include "aula/gui/gauge.hpp"
 
 #include <QPainter>
 
 #include <algorithm>
 #include <cmath>
 
-namespace aula::component {
+namespace aula::gui {
 
 Gauge::Gauge(QString title, QString unit, double min, double max, double sweep_deg, QWidget* parent)
     : QWidget(parent), title_(std::move(title)), unit_(std::move(unit)), min_(min), max_(max), sweep_deg_(sweep_deg) {
@@ -44,4 +44,4 @@ void Gauge::paintEvent(QPaintEvent*) {
   p.drawText(QRectF(dial.left(), c.y() - side * 0.3, side, 20), Qt::AlignCenter, title_);
 }
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -1,4 +1,4 @@
-#include "aula/vacuum/coverage_grid.hpp"
+#include "aula/scoring/coverage_grid.hpp"
 
 #include <opencv2/imgproc.hpp>
 

@@ -3,7 +3,7 @@
 
 #include <QPushButton>
 
-namespace aula::component {
+namespace aula::gui {
 
 class RunToggle : public QPushButton {
   Q_OBJECT
@@ -19,4 +19,4 @@ class RunToggle : public QPushButton {
   bool running_ = false;
 };
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace aula::component {
+namespace aula::gui {
 
 class Gauge : public QWidget {
   Q_OBJECT
@@ -34,4 +34,4 @@ class Gauge : public QWidget {
   std::vector<Band> bands_;
 };
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -1,7 +1,7 @@
 // Shared widgets, drawn offscreen (QT_QPA_PLATFORM=offscreen).
-#include <aula/component/widgets/map_view.hpp>
-#include <aula/component/widgets/run_toggle.hpp>
-#include <aula/component/widgets/teleoperator.hpp>
+#include <aula/gui/map_view.hpp>
+#include <aula/gui/run_toggle.hpp>
+#include <aula/gui/teleoperator.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ QImage blankMap() {
 }  // namespace
 
 TEST(MapView, WorldAndWidgetCoordinatesRoundTrip) {
-  aula::component::MapView view(blankMap(), cityTransform());
+  aula::gui::MapView view(blankMap(), cityTransform());
   for (QSize size : {QSize(400, 400), QSize(800, 600), QSize(300, 700)}) {
     view.resize(size);
     for (double x : {-200.0, 0.0, 123.4}) {
@@ -42,7 +42,7 @@ TEST(MapView, WorldAndWidgetCoordinatesRoundTrip) {
 }
 
 TEST(MapView, TheRobotGlyphPointsAlongItsYaw) {
-  aula::component::MapView view(blankMap(), cityTransform());
+  aula::gui::MapView view(blankMap(), cityTransform());
   view.resize(400, 400);
   view.setRobot(0, 0, M_PI / 2, 40, 20);  // facing north: the nose is above the centre
   const QImage image = view.grab().toImage();
@@ -56,9 +56,9 @@ TEST(MapView, TheRobotGlyphPointsAlongItsYaw) {
 }
 
 TEST(Teleoperator, StopSendsZeros) {
-  aula::component::Teleoperator teleop(20.0, 2.0);
+  aula::gui::Teleoperator teleop(20.0, 2.0);
   double v = -1, w = -1;
-  QObject::connect(&teleop, &aula::component::Teleoperator::velocityChanged, [&](double a, double b) {
+  QObject::connect(&teleop, &aula::gui::Teleoperator::velocityChanged, [&](double a, double b) {
     v = a;
     w = b;
   });
@@ -68,9 +68,9 @@ TEST(Teleoperator, StopSendsZeros) {
 }
 
 TEST(RunToggle, GreenWhenRunningRedWhenStopped) {
-  aula::component::RunToggle toggle;
+  aula::gui::RunToggle toggle;
   bool seen = false;
-  QObject::connect(&toggle, &aula::component::RunToggle::runningChanged, [&](bool on) { seen = on; });
+  QObject::connect(&toggle, &aula::gui::RunToggle::runningChanged, [&](bool on) { seen = on; });
   EXPECT_FALSE(toggle.running());
   EXPECT_NE(toggle.styleSheet().indexOf("#d33"), -1);
   toggle.click();

@@ -1,4 +1,4 @@
-#include "aula/autopark/parking_geometry.hpp"
+#include "aula/scoring/parking_geometry.hpp"
 
 #include <aula/geometry/oriented_box.hpp>
 

@@ -1,4 +1,4 @@
-#include "aula/component/widgets/teleoperator.hpp"
+#include "aula/gui/teleoperator.hpp"
 
 #include <QLabel>
 #include <QMouseEvent>
@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace aula::component {
+namespace aula::gui {
 
 TeleoperatorPad::TeleoperatorPad(QWidget* parent) : QWidget(parent) { setMinimumSize(140, 140); }
 
@@ -69,4 +69,4 @@ void Teleoperator::update(double forward, double left) {
   emit velocityChanged(v, w);
 }
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -1,4 +1,4 @@
-#include "aula/component/widgets/map_view.hpp"
+#include "aula/gui/map_view.hpp"
 
 #include <QMouseEvent>
 #include <QPainter>
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace aula::component {
+namespace aula::gui {
 
 MapView::MapView(QImage map, world::MapTransform transform, QWidget* parent)
     : QWidget(parent), map_(std::move(map)), transform_(transform) {
@@ -125,4 +125,4 @@ void MapView::mouseDoubleClickEvent(QMouseEvent* event) {
   emit worldDoubleClicked(w.x(), w.y());
 }
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -1,6 +1,6 @@
-#include "aula/component/widgets/run_toggle.hpp"
+#include "aula/gui/run_toggle.hpp"
 
-namespace aula::component {
+namespace aula::gui {
 
 RunToggle::RunToggle(QWidget* parent) : QPushButton(parent) {
   setMinimumHeight(40);
@@ -18,4 +18,4 @@ void RunToggle::setRunning(bool running) {
                         : "background-color: #d33; color: white; font-weight: bold;");
 }
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <functional>
 
-namespace aula::component {
+namespace aula::gui {
 inline bool saveWidgetPng(QWidget& widget, const QString& path) { return widget.grab().save(path, "PNG"); }
 
 // Once the simulated clock reaches sim_us: refresh the window, save it as png_path and quit the
@@ -26,4 +26,4 @@ inline void screenshotAtSimTime(QWidget& window, std::function<int64_t()> sim_ti
   });
   poll->start(20);
 }
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-namespace aula::component {
+namespace aula::gui {
 
 class MapView : public QWidget {
   Q_OBJECT
@@ -56,4 +56,4 @@ class MapView : public QWidget {
   std::function<void(QPainter&)> overlay_;
 };
 
-}  // namespace aula::component
+}  // namespace aula::gui

@@ -1,0 +1,1 @@
+#include <aula/r/grade.hpp>
