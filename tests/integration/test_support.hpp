@@ -3,6 +3,7 @@
 // Integration tests talk over a private UDP multicast port, so parallel ctest runs never cross
 // (a different group on the same port still receives the cross-talk: isolate by port).
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,8 @@
 #include <regex>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include <unistd.h>
 
@@ -34,10 +37,14 @@ inline std::string readFile(const std::string& path) {
   return ss.str();
 }
 
-// A number field of a referee's JSON report (-1 when absent).
+// A number field of a referee's JSON report. A missing field fails the test (and gives NaN, so
+// no comparison with it can pass by accident).
 inline double jsonNumber(const std::string& json, const std::string& key) {
   std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.]+)"))) return -1;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([-0-9.eE+]+)"))) {
+    ADD_FAILURE() << "the report has no number field '" << key << "':\n" << json;
+    return std::nan("");
+  }
   return std::stod(m[1]);
 }
 

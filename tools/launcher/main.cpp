@@ -132,11 +132,9 @@ RunSettings resolveSettings(const Exercise& ex, const CommandLine& cl) {
   return run;
 }
 
-// aula check-world FILE [--map=FILE.png]: what a teacher runs on a new world.
-int checkWorld(const CommandLine& cl) {
+// `aula check-world`: the world's facts, one line each.
+void printWorld(const aula::world::WorldSpec& spec) {
   namespace world = aula::world;
-  const std::string path = aula::config::resolveWorldPath(cl.positional[1], "command line: FILE");
-  const world::WorldSpec spec = world::loadWorld(path);
   std::cout << "world '" << spec.name << "': " << spec.source_path << "\n  sha256 " << spec.sha256 << "\n";
   if (spec.physics_step_s > 0) {
     std::cout << "  physics step " << spec.physics_step_s * 1e3 << " ms (<physics><max_step_size>)\n";
@@ -156,39 +154,46 @@ int checkWorld(const CommandLine& cl) {
       std::cout << "  " << plugin.type << " '" << plugin.name << "' on " << plugin.getString("channel", "(no channel)") << "\n";
     }
   }
-  // Each exercise: its robot, the plugins it needs, and a free start on its map.
+}
+
+// What `ex` would miss in `spec` with its default settings: its robot, the plugins it needs,
+// a start on free floor of its map.
+std::vector<std::string> exerciseProblems(const Exercise& ex, const aula::world::WorldSpec& spec) {
+  namespace world = aula::world;
+  const Config cfg = ex.component_settings->resolve(Config());
+  const std::string robot_key = ex.section + ".Robot";
+  const world::RobotSpec* robot = spec.findRobot(cfg.getString(robot_key));
+  if (robot == nullptr) return {"a robot named '" + cfg.getString(robot_key) + "' (" + robot_key + ")"};
+  std::vector<std::string> missing;
+  for (const std::string& need : ex.required_plugins) {
+    const auto colon = need.find(':');
+    try {
+      world::channelOf(*robot, need.substr(0, colon), colon == std::string::npos ? "" : need.substr(colon + 1));
+    } catch (const world::WorldError&) {
+      missing.push_back("a " + need.substr(0, colon) + " plugin" +
+                        (colon == std::string::npos ? "" : " named '" + need.substr(colon + 1) + "'"));
+    }
+  }
+  if (cfg.has(ex.section + ".Map.Resolution") && !spec.statics.empty()) {
+    const auto z = cfg.getDoubleList(ex.section + ".Map.ZBand");
+    const auto map = world::occupancyMapOf(spec, {cfg.getDouble(ex.section + ".Map.Resolution"), z[0], z[1]});
+    const Eigen::Vector3d p = robot->pose.translation();
+    if (const auto problem = world::pointProblem(map, p.x(), p.y())) missing.push_back("a start on free floor: " + *problem);
+  }
+  return missing;
+}
+
+// aula check-world FILE [--map=FILE.png]: what a teacher runs on a new world.
+int checkWorld(const CommandLine& cl) {
+  namespace world = aula::world;
+  const world::WorldSpec spec = world::loadWorld(aula::config::resolveWorldPath(cl.positional[1], "command line: FILE"));
+  printWorld(spec);
   for (const auto& ex : aula::settings::exercises()) {
     if (ex.referee_settings == nullptr) continue;
-    const Config cfg = ex.component_settings->resolve(Config());
-    std::vector<std::string> missing;
-    const world::RobotSpec* robot = spec.findRobot(cfg.getString(ex.section + ".Robot"));
-    if (robot == nullptr) {
-      missing.push_back("a robot named '" + cfg.getString(ex.section + ".Robot") + "' (" + ex.section + ".Robot)");
-    } else {
-      for (const std::string& need : ex.required_plugins) {
-        const auto colon = need.find(':');
-        try {
-          world::channelOf(*robot, need.substr(0, colon), colon == std::string::npos ? "" : need.substr(colon + 1));
-        } catch (const world::WorldError&) {
-          missing.push_back("a " + need.substr(0, colon) + " plugin" +
-                            (colon == std::string::npos ? "" : " named '" + need.substr(colon + 1) + "'"));
-        }
-      }
-      if (cfg.has(ex.section + ".Map.Resolution") && !spec.statics.empty()) {
-        const auto z = cfg.getDoubleList(ex.section + ".Map.ZBand");
-        const auto map = world::occupancyMapOf(spec, {cfg.getDouble(ex.section + ".Map.Resolution"), z[0], z[1]});
-        const Eigen::Vector3d p = robot->pose.translation();
-        if (const auto problem = world::pointProblem(map, p.x(), p.y())) missing.push_back("a start on free floor: " + *problem);
-      }
-    }
-    std::cout << ex.name << ": ";
-    if (missing.empty()) {
-      std::cout << "ok\n";
-    } else {
-      std::cout << "cannot run; the world needs";
-      for (size_t i = 0; i < missing.size(); ++i) std::cout << (i ? "; " : " ") << missing[i];
-      std::cout << "\n";
-    }
+    const auto missing = exerciseProblems(ex, spec);
+    std::cout << ex.name << ": " << (missing.empty() ? "ok" : "cannot run; the world needs");
+    for (size_t i = 0; i < missing.size(); ++i) std::cout << (i ? "; " : " ") << missing[i];
+    std::cout << "\n";
   }
   if (cl.flag("map")) {
     const Eigen::Vector4d b = world::staticBounds(spec);
