@@ -256,3 +256,19 @@ TEST(Worlds, CheckWorldSaysWhatEachExerciseWouldMiss) {
   const Outcome blind = runToEnd({kBin + "/aula", "check-world", dir + "/blind.world"}, 20s);
   EXPECT_NE(blind.output.find("vacuum: cannot run; the world needs a laser plugin"), std::string::npos) << blind.output;
 }
+
+TEST(Settings, TheRealTimeFactorIsHonouredInHeadlessLockstepRuns) {
+  // 20 s of sim: as fast as possible well under a second; at --rtf=20 one second or more.
+  auto run = [](const std::string& rtf) {
+    std::vector<std::string> args = {kBin + "/aula", "run", "teletaxi", "--headless", "--algorithm=student",
+                                     "--TeleTaxi.Referee.Timeout=20", "--lcm-url=" + aula::testing::privateLcmUrl()};
+    if (!rtf.empty()) args.push_back("--rtf=" + rtf);
+    return runToEnd(args, 60s);
+  };
+  const Outcome fast = run("");
+  const Outcome paced = run("20");
+  EXPECT_EQ(fast.code.value_or(-1), 0) << fast.output;
+  EXPECT_EQ(paced.code.value_or(-1), 0) << paced.output;
+  EXPECT_GE(paced.wall_s, 1.0) << paced.output;
+  EXPECT_LT(fast.wall_s, paced.wall_s - 0.5) << fast.output;
+}
