@@ -1,7 +1,7 @@
 // aula-sim WORLD [--config simulator.cfg] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]
 //                [--duration S] [--Simulator.Key=value ...]
 // Headless by default, like gzserver.
-#include "src/signal_watcher.hpp"
+#include <aula/process/signal_watcher.hpp>
 #include "src/sim_view.hpp"
 
 #include <aula/config/config.hpp>
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
       options.step_s = spec.physics_step_s;
     }
     auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
-    sim::SignalWatcher signals;
+    process::SignalWatcher signals;
     sim::Simulator simulator(std::move(spec), options, *bus);
     std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
               << simulator.spec().sha256.substr(0, 12) << ") with "

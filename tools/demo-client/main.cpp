@@ -2,6 +2,7 @@
 // A minimal academic-component stand-in: reads a robot's pose, laser and bumper from the
 // simulator and bounces around with a reactive rule, printing what it sees once per sim second.
 // It shows the whole path sensor -> LCM -> client -> LCM -> motors without any exercise code.
+#include <aula/app/bus_pump.hpp>
 #include <aula/app/process_setup.hpp>
 #include <aula/bumper_t.hpp>
 #include <aula/config/config.hpp>
@@ -14,11 +15,9 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 
-#include <sys/signalfd.h>
 #include <unistd.h>
 
 namespace {
@@ -106,17 +105,7 @@ int main(int argc, char** argv) {
       if (duration_s > 0 && utime >= duration_s * 1e6) done = true;
     });
 
-    sigset_t mask;
-    sigemptyset(&mask);
-    sigaddset(&mask, SIGINT);
-    sigaddset(&mask, SIGTERM);
-    sigprocmask(SIG_BLOCK, &mask, nullptr);
-    const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK);
-    signalfd_siginfo info;
-    while (!done && read(signal_fd, &info, sizeof info) != static_cast<ssize_t>(sizeof info)) {
-      bus->handleTimeout(50);
-      clock.poll();
-    }
+    app::runHeadless(*bus, [&] { return done; }, [&] { clock.poll(); });
     clock.leave();
     aula::motors_t stop{};
     bus->publish(motors, &stop);

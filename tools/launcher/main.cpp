@@ -21,7 +21,7 @@
 #include <memory>
 #include <thread>
 
-#include <sys/signalfd.h>
+#include <aula/process/signal_watcher.hpp>
 #include <unistd.h>
 
 namespace {
@@ -269,19 +269,13 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Com
 // Runs the processes until the primary one (the last: referee or client) ends, any fails, or
 // Ctrl-C; then stops the clients first (they send their last commands and leave lockstep).
 int supervise(const std::vector<std::vector<std::string>>& lines) {
-  sigset_t mask;
-  sigemptyset(&mask);
-  sigaddset(&mask, SIGINT);
-  sigaddset(&mask, SIGTERM);
-  sigprocmask(SIG_BLOCK, &mask, nullptr);
-  const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+  aula::process::SignalWatcher signals;  // before the children start: they unblock for themselves
 
   std::vector<std::unique_ptr<aula::process::ChildProcess>> children;
   for (const auto& args : lines) children.push_back(std::make_unique<aula::process::ChildProcess>(args));
   int result = 0;
-  signalfd_siginfo info;
   for (;;) {
-    if (read(signal_fd, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+    if (signals.stopRequested()) {
       std::cerr << "aula: stopping\n";
       break;
     }

@@ -3,7 +3,7 @@
 #include <csignal>
 
 #include <poll.h>
-#include <sys/signalfd.h>
+#include <aula/process/signal_watcher.hpp>
 #include <unistd.h>
 
 namespace aula::app {
@@ -29,16 +29,10 @@ void BusPump::drain() {
 
 bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
                  const std::function<void()>& housekeeping) {
-  sigset_t mask;
-  sigemptyset(&mask);
-  sigaddset(&mask, SIGINT);
-  sigaddset(&mask, SIGTERM);
-  sigprocmask(SIG_BLOCK, &mask, nullptr);
-  const int signal_fd = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+  process::SignalWatcher stop_signals;  // not "signals": a Qt macro
   bool signalled = false;
   while (!done()) {
-    signalfd_siginfo info;
-    if (read(signal_fd, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+    if (stop_signals.stopRequested()) {
       signalled = true;
       break;
     }
@@ -47,7 +41,6 @@ bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
     }
     if (housekeeping) housekeeping();
   }
-  close(signal_fd);
   return signalled;
 }
 

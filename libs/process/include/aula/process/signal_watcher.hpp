@@ -6,7 +6,7 @@
 #include <sys/signalfd.h>
 #include <unistd.h>
 
-namespace aula::sim {
+namespace aula::process {
 
 class SignalWatcher {
  public:
@@ -37,4 +37,4 @@ class SignalWatcher {
   bool stop_ = false;
 };
 
-}  // namespace aula::sim
+}  // namespace aula::process
