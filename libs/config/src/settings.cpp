@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <iomanip>
 #include <sstream>
 
@@ -77,78 +78,58 @@ SettingsTable& SettingsTable::add(SettingSpec spec) {
   return *this;
 }
 
-SettingsTable& SettingsTable::text(const std::string& key, const std::string& def, const std::string& help) {
+namespace {
+
+SettingSpec spec(const std::string& key, SettingType type, std::string def, const std::string& unit, double min,
+                 double max, const std::string& help) {
   SettingSpec s;
   s.key = key;
-  s.default_value = def;
+  s.type = type;
+  s.default_value = std::move(def);
+  s.unit = unit;
+  s.min = min;
+  s.max = max;
   s.help = help;
-  return add(std::move(s));
+  return s;
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+SettingsTable& SettingsTable::text(const std::string& key, const std::string& def, const std::string& help) {
+  return add(spec(key, SettingType::String, def, "", -kInf, kInf, help));
 }
 
 SettingsTable& SettingsTable::choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
                                      const std::string& help) {
-  SettingSpec s;
-  s.key = key;
-  s.type = SettingType::Choice;
-  s.default_value = def;
+  SettingSpec s = spec(key, SettingType::Choice, def, "", -kInf, kInf, help);
   s.choices = std::move(choices);
-  s.help = help;
   return add(std::move(s));
 }
 
 SettingsTable& SettingsTable::real(const std::string& key, double def, const std::string& unit, double min, double max,
                                    const std::string& help, bool min_exclusive) {
-  SettingSpec s;
-  s.key = key;
-  s.type = SettingType::Double;
-  s.default_value = numberText(def);
-  s.unit = unit;
-  s.min = min;
-  s.max = max;
+  SettingSpec s = spec(key, SettingType::Double, numberText(def), unit, min, max, help);
   s.min_exclusive = min_exclusive;
-  s.help = help;
   return add(std::move(s));
 }
 
 SettingsTable& SettingsTable::integer(const std::string& key, long long def, const std::string& unit, long long min,
                                       long long max, const std::string& help) {
-  SettingSpec s;
-  s.key = key;
-  s.type = SettingType::Int;
-  s.default_value = std::to_string(def);
-  s.unit = unit;
-  s.min = static_cast<double>(min);
-  s.max = static_cast<double>(max);
-  s.help = help;
-  return add(std::move(s));
+  return add(spec(key, SettingType::Int, std::to_string(def), unit, static_cast<double>(min), static_cast<double>(max),
+                  help));
 }
 
 SettingsTable& SettingsTable::flag(const std::string& key, bool def, const std::string& help) {
-  SettingSpec s;
-  s.key = key;
-  s.type = SettingType::Bool;
-  s.default_value = def ? "true" : "false";
-  s.help = help;
-  return add(std::move(s));
+  return add(spec(key, SettingType::Bool, def ? "true" : "false", "", -kInf, kInf, help));
 }
 
 SettingsTable& SettingsTable::reals(const std::string& key, const std::string& def, size_t count,
                                     const std::string& unit, double min, double max, const std::string& help) {
-  SettingSpec s;
-  s.key = key;
-  s.type = SettingType::DoubleList;
-  s.default_value = def;
+  SettingSpec s = spec(key, SettingType::DoubleList, def, unit, min, max, help);
   s.list_size = count;
-  s.unit = unit;
-  s.min = min;
-  s.max = max;
-  s.help = help;
   return add(std::move(s));
-}
-
-SettingsTable& SettingsTable::include(const SettingsTable& other) {
-  for (const auto& spec : other.specs_) add(spec);
-  return *this;
 }
 
 const SettingSpec* SettingsTable::find(const std::string& key) const {

@@ -6,7 +6,6 @@ namespace aula::settings {
 namespace {
 
 using config::SettingsTable;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 SettingsTable common(const std::string& owner) {
   SettingsTable t(owner);
@@ -101,7 +100,6 @@ SettingsTable makeTaxiComponent() {
 SettingsTable makeTaxiReferee() {
   SettingsTable t = common("teletaxi-referee");
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
-  mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
   t.real("TeleTaxi.Referee.Timeout", 600, "s", 0, 1e6, "give up this long after GO! (simulated time)", true);
   t.real("TeleTaxi.Referee.StopSpeed", 0.05, "m/s", 0, 10, "'stopped' means slower than this...", true);
   t.real("TeleTaxi.Referee.StopHold", 1.0, "s", 0, 600, "...for this long", true);

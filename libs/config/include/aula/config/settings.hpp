@@ -49,8 +49,6 @@ class SettingsTable {
   SettingsTable& reals(const std::string& key, const std::string& def, size_t count, const std::string& unit,
                        double min, double max, const std::string& help);
   SettingsTable& add(SettingSpec spec);
-  // Every key of `other` (shared keys such as Aula.LcmUrl).
-  SettingsTable& include(const SettingsTable& other);
 
   const std::string& owner() const { return owner_; }
   const std::vector<SettingSpec>& specs() const { return specs_; }
