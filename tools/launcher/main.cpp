@@ -21,7 +21,11 @@
 #include <memory>
 #include <thread>
 
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/signal_watcher.hpp>
+
+#include <fcntl.h>
+#include <sstream>
 #include <unistd.h>
 
 namespace {
@@ -266,14 +270,54 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Com
   return lines;
 }
 
+std::string programName(const std::string& path) {
+  const auto slash = path.rfind('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// Why a component that ran the student's algorithm ended, in words, or "" when it is not the
+// student's doing.
+std::string componentFault(int code, double execute_budget_s) {
+  if (code == aula::process::kExitAlgorithmHung) {
+    std::ostringstream text;
+    text << "execute() did not return within " << execute_budget_s << " s";
+    return text.str();
+  }
+  if (code > 128) {
+    const char* name = sigabbrev_np(code - 128);
+    return std::string("component crashed (SIG") + (name != nullptr ? name : std::to_string(code - 128)) + ")";
+  }
+  return "";
+}
+
+// What the launcher knows of the run it supervises.
+struct Supervision {
+  std::vector<std::vector<std::string>> lines;  // simulator, component, referee
+  bool has_referee = false;
+  std::string algorithm;        // what the component runs ("student", "libmy_algorithm.so")
+  double execute_budget_s = 2;  // Component.ExecuteBudget
+};
+
 // Runs the processes until the primary one (the last: referee or client) ends, any fails, or
 // Ctrl-C; then stops the clients first (they send their last commands and leave lockstep).
-int supervise(const std::vector<std::vector<std::string>>& lines) {
+// When the component dies (a crash, a hung execute()), the referee is told over its private
+// control pipe, grades what there is, writes its report and ends the run.
+int supervise(const Supervision& run) {
   aula::process::SignalWatcher signals;  // before the children start: they unblock for themselves
+  const auto& lines = run.lines;
 
+  int control[2] = {-1, -1};
+  if (run.has_referee && pipe2(control, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
   std::vector<std::unique_ptr<aula::process::ChildProcess>> children;
-  for (const auto& args : lines) children.push_back(std::make_unique<aula::process::ChildProcess>(args));
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const bool referee = run.has_referee && i == 2;
+    std::vector<std::string> args = lines[i];
+    if (referee) args.push_back("--control-fd=" + std::to_string(aula::process::ChildProcess::kPassedFd));
+    children.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", referee ? control[0] : -1));
+  }
+  if (control[0] >= 0) close(control[0]);
   int result = 0;
+  bool told_referee = false;
   for (;;) {
     if (signals.stopRequested()) {
       std::cerr << "aula: stopping\n";
@@ -281,17 +325,28 @@ int supervise(const std::vector<std::vector<std::string>>& lines) {
     }
     bool finished = false;
     for (size_t i = 0; i < children.size(); ++i) {
-      if (const auto code = children[i]->poll()) {
-        if (*code != 0) {
-          std::cerr << "aula: " << children[i]->name() << " exited with code " << *code << "\n";
-          result = *code == 2 ? 2 : 1;
-        }
-        finished = finished || *code != 0 || i + 1 == children.size() || i == 0;
+      const auto code = children[i]->poll();
+      if (!code) continue;
+      const std::string fault = run.has_referee && i == 1 ? componentFault(*code, run.execute_budget_s) : "";
+      if (!fault.empty() && !told_referee) {
+        std::cerr << "aula: " << programName(children[i]->name()) << " (running the algorithm '" << run.algorithm
+                  << "') ended the run: " << fault << "\n";
+        const std::string line = "abort " + fault + "\n";
+        (void)!write(control[1], line.data(), line.size());
+        told_referee = true;
+        result = 1;
+        continue;  // the referee grades what there is and ends the run
       }
+      if (*code != 0 && !(told_referee && i == 1)) {
+        std::cerr << "aula: " << programName(children[i]->name()) << " exited with code " << *code << "\n";
+        result = *code == 2 ? 2 : 1;
+      }
+      finished = finished || (*code != 0 && !(told_referee && i == 1)) || i + 1 == children.size() || i == 0;
     }
     if (finished) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  if (control[1] >= 0) close(control[1]);
   for (auto c = children.rbegin(); c != children.rend(); ++c) {
     const int code = (*c)->stop();
     if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != lines[0][0]) {
@@ -325,7 +380,15 @@ int main(int argc, char** argv) {
     }
     if (cl.flag("rtf")) cl.optionDouble("rtf", 0);  // a number, or a usage error now
     const RunSettings run = resolveSettings(*ex, cl);
-    return supervise(commandLines(*ex, cl, run));
+    Supervision supervision;
+    supervision.lines = commandLines(*ex, cl, run);
+    supervision.has_referee = ex->referee_settings != nullptr;
+    if (supervision.has_referee) {
+      const Config& component = run.effective[1].second;
+      supervision.algorithm = component.getString(ex->section + ".Algorithm");
+      supervision.execute_budget_s = component.getDouble("Component.ExecuteBudget");
+    }
+    return supervise(supervision);
   } catch (const ConfigError& e) {
     std::cerr << "aula: " << e.what() << "\n";
     return 2;

@@ -133,7 +133,7 @@ class PlannedParker : public AutoparkAlgorithm {
 
   // Every echo of the three lasers marks its cell.
   void mapScans(const AutoparkApi& api, const Pose2D& pose) {
-    const std::pair<const LaserMount*, const component::LaserProxy*> lasers[] = {
+    const std::pair<const LaserMount*, const component::Laser*> lasers[] = {
         {&api.mount1, &api.laser1}, {&api.mount2, &api.laser2}, {&api.mount3, &api.laser3}};
     for (const auto& [mount, laser] : lasers) {
       forEachEcho(pose.x_m, pose.y_m, pose.yaw_rad, *mount, laser->getLaserData(),

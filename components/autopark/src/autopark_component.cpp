@@ -1,6 +1,5 @@
 #include "aula/autopark/autopark_component.hpp"
 
-#include <aula/episode_t.hpp>
 #include <aula/world/car_kinematics.hpp>
 
 #include <cmath>
@@ -43,25 +42,27 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, c
     api_->turn_centre_x_m = kinematics.rear_axle_x_m;
     api_->wheelbase_m = kinematics.wheelbase_m;
   }
+  host_ = std::make_unique<component::AlgorithmHost<AutoparkAlgorithm>>(
+      "autopark", "autopark",
+      std::map<std::string, component::AlgorithmHost<AutoparkAlgorithm>::Factory>{
+          {"reactive", makeReactiveAlgorithm}, {"planner", makePlannedAlgorithm}},
+      algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
+  episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "autopark", *host_);
   loop_ = std::make_unique<component::ControlLoop>(bus, "autopark", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
                                                    *motors_, [this] { step(); });
   loop_->setOnTick([this](int64_t utime) { tick(utime); });
 }
 
 void AutoparkComponent::step() {
-  if (!algorithm_) {
-    const auto seed = static_cast<uint64_t>(loop_->seed());
-    algorithm_ = algorithm_name_ == "reactive"  ? makeReactiveAlgorithm(seed)
-                 : algorithm_name_ == "planner" ? makePlannedAlgorithm(seed)
-                                                : makeStudentAlgorithm(seed);
+  if (!host_->call(static_cast<uint64_t>(loop_->seed()), "execute()", [this](AutoparkAlgorithm& a) { a.execute(*api_); })) {
+    setRunning(false);
   }
-  algorithm_->execute(*api_);
 }
 
 void AutoparkComponent::setRunning(bool running) {
   loop_->setRunning(running);
   if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
-  episode_dirty_ = true;
+  episode_->markChanged();
 }
 
 void AutoparkComponent::teleoperate(double v_mps, double w_radps) {
@@ -72,19 +73,7 @@ void AutoparkComponent::teleoperate(double v_mps, double w_radps) {
 
 void AutoparkComponent::tick(int64_t utime) {
   if (autostart_ && !running() && utime == 0) setRunning(true);
-  if (episode_dirty_ || utime - last_episode_utime_ >= 1'000'000) {
-    aula::episode_t msg;
-    msg.utime = utime;
-    msg.exercise = "autopark";
-    msg.algorithm = algorithm_name_;
-    msg.goal_set = false;
-    msg.goal_x = msg.goal_y = 0;
-    msg.running = running();
-    msg.started_utime = started_utime_;
-    bus_.publish(episode_channel_, &msg);
-    last_episode_utime_ = utime;
-    episode_dirty_ = false;
-  }
+  episode_->tick(utime, {running(), started_utime_, std::nullopt, generation_});
   if (on_tick_) on_tick_(utime);
 }
 

@@ -156,7 +156,7 @@ void LaserView::paintEvent(QPaintEvent*) {
   const double hl = api.car_length_m / 2, hw = api.car_width_m / 2;
   p.drawPolygon(QPolygonF({toWidget(hl, hw), toWidget(hl, -hw), toWidget(-hl, -hw), toWidget(-hl, hw)}));
   const struct {
-    const component::LaserProxy* laser;
+    const component::Laser* laser;
     LaserMount mount;
     QColor color;
     const char* name;

@@ -14,7 +14,6 @@ TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const wor
   const double period_s = cfg.getDouble("TeleTaxi.Period");
   episode_channel_ = cfg.getString("TeleTaxi.Episode.Channel");
   algorithm_name_ = cfg.getString("TeleTaxi.Algorithm");
-  algorithm_ = algorithm_name_ == "reference" ? makeReferenceAlgorithm() : makeStudentAlgorithm();
 
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});
@@ -32,10 +31,17 @@ TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const wor
   pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
   motors_ = std::make_unique<component::MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble("TeleTaxi.MaxV"),
                                                      cfg.getDouble("TeleTaxi.MaxW"));
+  host_ = std::make_unique<component::AlgorithmHost<TaxiAlgorithm>>(
+      "teletaxi", "teletaxi",
+      std::map<std::string, component::AlgorithmHost<TaxiAlgorithm>::Factory>{
+          {"reference", [](uint64_t) { return makeReferenceAlgorithm(); }}},
+      algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
+  episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "teletaxi", *host_);
   api_ = std::make_unique<TaxiApi>(*pose_, *motors_, *grid_);
   loop_ = std::make_unique<component::ControlLoop>(
-      bus, "teletaxi", static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
-      [this] { algorithm_->execute(*api_); });
+      bus, "teletaxi", static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_, [this] {
+        if (!host_->call(0, "execute()", [this](TaxiAlgorithm& a) { a.execute(*api_); })) stop();
+      });
   loop_->setOnTick([this](int64_t utime) { tick(utime); });
 
   autostart_ = cfg.getBool("TeleTaxi.Autostart");
@@ -69,7 +75,7 @@ void TaxiComponent::setDestination(double x_m, double y_m) {
   grid_->setDestiny(gx, gy);
   grid_->resetPath();
   path_generated_ = false;
-  episode_dirty_ = true;
+  episode_->markChanged();
 }
 
 bool TaxiComponent::generatePath(std::string* why) {
@@ -82,7 +88,10 @@ bool TaxiComponent::generatePath(std::string* why) {
   const auto [px, py] = grid_->worldToGrid(pose_->getX(), pose_->getY());
   grid_->setPose(px, py);
   grid_->resetPath();
-  algorithm_->generatePath(*api_);
+  if (!host_->call(0, "generatePath()", [this](TaxiAlgorithm& a) { a.generatePath(*api_); })) {
+    episode_->markChanged();
+    return fail("the algorithm failed in generatePath(); see the message");
+  }
   path_generated_ = true;
   return true;
 }
@@ -94,13 +103,13 @@ bool TaxiComponent::go(std::string* why) {
   }
   if (started_utime_ < 0) started_utime_ = loop_->simTimeUs();
   loop_->setRunning(true);
-  episode_dirty_ = true;
+  episode_->markChanged();
   return true;
 }
 
 void TaxiComponent::stop() {
   loop_->setRunning(false);
-  episode_dirty_ = true;
+  episode_->markChanged();
 }
 
 void TaxiComponent::teleoperate(double v_mps, double w_radps) {
@@ -121,25 +130,11 @@ void TaxiComponent::tick(int64_t utime) {
     // GO! takes effect from this tick: the first execute() runs at the next period.
     started_utime_ = utime;
     loop_->setRunning(true);
-    episode_dirty_ = true;
+    episode_->markChanged();
   }
-  if (episode_dirty_ || utime - last_episode_utime_ >= 1'000'000) publishEpisode(utime);
+  episode_->tick(utime, {running(), started_utime_, destination_, generation_});
   if (on_tick_) on_tick_(utime);
 }
 
-void TaxiComponent::publishEpisode(int64_t utime) {
-  aula::episode_t msg;
-  msg.utime = utime;
-  msg.exercise = "teletaxi";
-  msg.algorithm = algorithm_name_;
-  msg.goal_set = destination_.has_value();
-  msg.goal_x = destination_ ? destination_->first : 0.0;
-  msg.goal_y = destination_ ? destination_->second : 0.0;
-  msg.running = running();
-  msg.started_utime = started_utime_;
-  bus_.publish(episode_channel_, &msg);
-  last_episode_utime_ = utime;
-  episode_dirty_ = false;
-}
 
 }  // namespace aula::teletaxi

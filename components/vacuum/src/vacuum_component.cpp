@@ -1,6 +1,5 @@
 #include "aula/vacuum/vacuum_component.hpp"
 
-#include <aula/episode_t.hpp>
 
 #include <cmath>
 
@@ -23,6 +22,12 @@ VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const
   bumper_ = std::make_unique<component::BumperProxy>(bus, world::channelOf(robot, "bumper"));
   motors_ = std::make_unique<component::MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble("Vacuum.MaxV"),
                                                      cfg.getDouble("Vacuum.MaxW"));
+  host_ = std::make_unique<component::AlgorithmHost<VacuumAlgorithm>>(
+      "vacuum-cleaner", "vacuum",
+      std::map<std::string, component::AlgorithmHost<VacuumAlgorithm>::Factory>{
+          {"reference", makeReferenceAlgorithm}, {"bounce", makeRandomBounceAlgorithm}},
+      algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
+  episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "vacuum", *host_);
   yaw_ = std::make_unique<YawSensor>(*pose_);
   api_ = std::make_unique<VacuumApi>(VacuumApi{*yaw_, *laser_, *bumper_, *motors_, period_s_});
   loop_ = std::make_unique<component::ControlLoop>(bus, "vacuum-cleaner", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
@@ -31,18 +36,21 @@ VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const
 }
 
 void VacuumComponent::step() {
-  if (!algorithm_) {
-    const auto seed = static_cast<uint64_t>(loop_->seed());
-    algorithm_ = algorithm_name_ == "reference" ? makeReferenceAlgorithm(seed)
-                 : algorithm_name_ == "bounce"  ? makeRandomBounceAlgorithm(seed)
-                                                : makeStudentAlgorithm(seed);
+  if (!host_->call(static_cast<uint64_t>(loop_->seed()), "execute()", [this](VacuumAlgorithm& a) { a.execute(*api_); })) {
+    setRunning(false);
   }
-  algorithm_->execute(*api_);
+}
+
+void VacuumComponent::reloadAlgorithm() {
+  setRunning(false);
+  host_->reload();
+  ++generation_;
+  episode_->markChanged();
 }
 
 void VacuumComponent::setRunning(bool running) {
   loop_->setRunning(running);
-  episode_dirty_ = true;
+  episode_->markChanged();
 }
 
 void VacuumComponent::teleoperate(double v_mps, double w_radps) {
@@ -53,19 +61,7 @@ void VacuumComponent::teleoperate(double v_mps, double w_radps) {
 
 void VacuumComponent::tick(int64_t utime) {
   if (autostart_ && !running() && utime == 0) setRunning(true);
-  if (episode_dirty_ || utime - last_episode_utime_ >= 1'000'000) {
-    aula::episode_t msg;
-    msg.utime = utime;
-    msg.exercise = "vacuum";
-    msg.algorithm = algorithm_name_;
-    msg.goal_set = false;
-    msg.goal_x = msg.goal_y = 0;
-    msg.running = running();
-    msg.started_utime = -1;
-    bus_.publish(episode_channel_, &msg);
-    last_episode_utime_ = utime;
-    episode_dirty_ = false;
-  }
+  episode_->tick(utime, {running(), -1, std::nullopt, generation_});
   if (on_tick_) on_tick_(utime);
 }
 

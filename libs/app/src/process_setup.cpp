@@ -26,7 +26,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   const config::SettingsTable& table = settings::tableOf(program);
   const settings::Exercise* exercise = settings::exerciseOfProgram(program);
   std::vector<std::string> takes_value = {"config", "lcm-url"};
-  std::vector<std::string> known = {"config", "lcm-url", "headless", "help"};
+  std::vector<std::string> known = {"config", "lcm-url", "headless", "help", "control-fd"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
   ProcessSetup setup;
   setup.program = program;

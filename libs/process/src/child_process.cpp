@@ -22,7 +22,7 @@ int decode(int status) {
 }  // namespace
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
-                           const std::string& stderr_path) {
+                           const std::string& stderr_path, int pass_fd) {
   if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
   name_ = argv[0];
   // A pipe closed on exec tells the parent whether exec succeeded.
@@ -49,6 +49,11 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     };
     redirect(stdout_path, STDOUT_FILENO);
     redirect(stderr_path, STDERR_FILENO);
+    if (pass_fd == kPassedFd) {
+      fcntl(kPassedFd, F_SETFD, 0);  // keep it across exec
+    } else if (pass_fd >= 0) {
+      dup2(pass_fd, kPassedFd);  // the copy has no FD_CLOEXEC
+    }
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());
     args.push_back(nullptr);

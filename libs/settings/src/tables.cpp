@@ -39,6 +39,8 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
   t.real(section + ".MaxW", max_w, "rad/s", 0, w_bound_radps, "turn-rate limit the motors proxy clamps to", true);
   t.real(section + ".Period", period_s, "s", 0.005, 1, "execute() period, seconds of simulated time");
   t.flag(section + ".Autostart", false, "start the algorithm at once (set by `aula run --headless`)");
+  t.real("Component.ExecuteBudget", 2.0, "s", 0, 86400,
+         "wall time one call of the student's execute() may take before the run is ended (0: no limit, for a debugger)");
 }
 
 SettingsTable makeSimulator() {
@@ -82,7 +84,8 @@ SettingsTable makeTaxiComponent() {
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
   mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
   motionKeys(t, "TeleTaxi", 20, 2, 0.08, 50, 10);
-  t.choice("TeleTaxi.Algorithm", "student", {"student", "reference"}, "the algorithm that drives the taxi");
+  t.algorithm("TeleTaxi.Algorithm", "student", {"student", "reference"},
+              "the algorithm that drives the taxi (student: the template; PATH.so: a plugin built with aula_add_algorithm)");
   config::SettingSpec destination;
   destination.key = "TeleTaxi.Destination";
   destination.type = config::SettingType::DoubleList;
@@ -116,8 +119,8 @@ SettingsTable makeVacuumComponent() {
   worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
-  t.choice("Vacuum.Algorithm", "student", {"student", "reference", "bounce"},
-           "the algorithm that drives the roomba (bounce: the random-bounce baseline)");
+  t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "bounce"},
+              "the algorithm that drives the roomba (bounce: the random-bounce baseline; PATH.so: a plugin)");
   vacuumDuration(t);
   return t;
 }
@@ -138,8 +141,8 @@ SettingsTable makeAutoparkComponent() {
   SettingsTable t = common("autopark");
   worldKeys(t, "Autopark", "worlds/autopark.world", "car");
   motionKeys(t, "Autopark", 3, 1, 0.05, 10, 5);
-  t.choice("Autopark.Algorithm", "student", {"student", "reactive", "planner"},
-           "reactive: the thesis's two arcs; planner: laser map + OMPL Reeds-Shepp path (docs/planner.md)");
+  t.algorithm("Autopark.Algorithm", "student", {"student", "reactive", "planner"},
+              "PATH.so: a plugin; reactive: the thesis's two arcs; planner: laser map + OMPL Reeds-Shepp path (docs/planner.md)");
   return t;
 }
 

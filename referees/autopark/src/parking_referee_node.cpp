@@ -59,16 +59,14 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&,
 }
 
 void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  algorithm_ = msg->algorithm;
+  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  announceIfEnded();
   if (msg->started_utime >= 0) referee_->start(msg->started_utime);
 }
 
 void ParkingRefereeNode::onTick(int64_t utime) {
   referee_->onTick(utime);
-  if (referee_->finished() && !announced_) {
-    announced_ = true;
-    if (on_finished_) on_finished_();
-  }
+  announceIfEnded();
 }
 
 aula::referee::Report ParkingRefereeNode::report() const {
@@ -83,7 +81,6 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("seed", static_cast<long long>(tick.seed));
   out.set("world", world_file_);
   out.set("world_sha256", world_sha256_);
-  out.set("algorithm", algorithm_);
   out.set("finished", r.finished());
   out.set("parked", r.parked());
   out.set("park_time_s", r.elapsedS());
@@ -101,6 +98,7 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("score_time", s.time);
   out.set("score_distance", s.distance);
   out.set("score_collision", s.collision);
+  outcome_.addTo(out);
   return out;
 }
 
@@ -115,7 +113,19 @@ std::string ParkingRefereeNode::summary() const {
                 "  gaps: front %.2f m, rear %.2f m, curb %.2f m; collisions %lld (%.1f s in contact)\n",
                 s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
                 m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.curb_gap_m, r.collisions(), r.contactS());
-  return text;
+  return std::string(text) + outcome_.summary();
+}
+
+void ParkingRefereeNode::abort(const std::string& reason) {
+  outcome_.abort(reason);
+  announceIfEnded();
+}
+
+void ParkingRefereeNode::announceIfEnded() {
+  if (finished() && !announced_) {
+    announced_ = true;
+    if (on_finished_) on_finished_();
+  }
 }
 
 }  // namespace aula::autopark

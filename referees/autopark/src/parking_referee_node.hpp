@@ -10,6 +10,7 @@
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
+#include <aula/referee/run_outcome.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -24,7 +25,10 @@ class ParkingRefereeNode {
   ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const ParkingReferee& referee() const { return *referee_; }
-  bool finished() const { return referee_->finished(); }
+  bool finished() const { return referee_->finished() || outcome_.ended(); }
+  // The launcher says the run cannot go on (a process died...): grade what there is, and end.
+  void abort(const std::string& reason);
+  bool endedEarly() const { return outcome_.ended(); }
   aula::referee::Report report() const;
   std::string summary() const;
   void poll() { clock_->poll(); }
@@ -34,11 +38,12 @@ class ParkingRefereeNode {
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
+  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
 
   std::unique_ptr<ParkingReferee> referee_;
-  std::string algorithm_ = "unknown";
+  aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   bool announced_ = false;

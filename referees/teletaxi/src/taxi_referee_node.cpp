@@ -33,7 +33,8 @@ void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, cons
 }
 
 void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  algorithm_ = msg->algorithm;
+  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  announceIfEnded();
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
 }
@@ -46,10 +47,7 @@ void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, co
 
 void TaxiRefereeNode::onTick(int64_t utime) {
   referee_.onTick(utime);
-  if (referee_.finished() && !announced_) {
-    announced_ = true;
-    if (on_finished_) on_finished_();
-  }
+  announceIfEnded();
 }
 
 aula::referee::Report TaxiRefereeNode::report() const {
@@ -62,7 +60,6 @@ aula::referee::Report TaxiRefereeNode::report() const {
   r.set("seed", static_cast<long long>(tick.seed));
   r.set("world", world_file_);
   r.set("world_sha256", world_sha256_);
-  r.set("algorithm", algorithm_);
   r.set("finished", referee_.finished());
   r.set("reached", g.reached);
   r.set("final_distance_m", referee_.distanceToGoalM());
@@ -75,6 +72,7 @@ aula::referee::Report TaxiRefereeNode::report() const {
   r.set("bumps", bumps_);
   r.set("destination_m", std::vector<double>{referee_.goalX(), referee_.goalY()});
   r.set("verdict", g.verdict);
+  outcome_.addTo(r);
   return r;
 }
 
@@ -89,7 +87,19 @@ std::string TaxiRefereeNode::summary() const {
                 g.mark, g.verdict.c_str(), g.base_mark, referee_.distanceToGoalM(), g.speed_mark,
                 g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
                 referee_.elapsedS(), referee_.straightDistanceM(), bumps_);
-  return text;
+  return std::string(text) + outcome_.summary();
+}
+
+void TaxiRefereeNode::abort(const std::string& reason) {
+  outcome_.abort(reason);
+  announceIfEnded();
+}
+
+void TaxiRefereeNode::announceIfEnded() {
+  if (finished() && !announced_) {
+    announced_ = true;
+    if (on_finished_) on_finished_();
+  }
 }
 
 }  // namespace aula::teletaxi

@@ -8,6 +8,7 @@
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
+#include <aula/referee/run_outcome.hpp>
 #include <aula/teletaxi/taxi_referee.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -24,7 +25,10 @@ class TaxiRefereeNode {
   TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const TaxiReferee& referee() const { return referee_; }
-  bool finished() const { return referee_.finished(); }
+  bool finished() const { return referee_.finished() || outcome_.ended(); }
+  // The launcher says the run cannot go on (a process died...): grade what there is, and end.
+  void abort(const std::string& reason);
+  bool endedEarly() const { return outcome_.ended(); }
   aula::referee::Report report() const;
   std::string summary() const;  // the mark and its breakdown, for the terminal
   void poll() { clock_->poll(); }
@@ -35,13 +39,14 @@ class TaxiRefereeNode {
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
+  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
 
   TaxiReferee referee_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
-  std::string algorithm_ = "unknown";
+  aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   bool announced_ = false;

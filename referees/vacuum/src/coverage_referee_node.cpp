@@ -38,10 +38,7 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
         referee_->onTick(utime);
-        if (referee_->finished() && !announced_) {
-          announced_ = true;
-          if (on_finished_) on_finished_();
-        }
+        announceIfEnded();
       });
   clock_->expectWorld(world.sha256, world.source_path);
 }
@@ -57,7 +54,8 @@ void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&
 }
 
 void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  algorithm_ = msg->algorithm;
+  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  announceIfEnded();
 }
 
 referee::Report CoverageRefereeNode::report() const {
@@ -70,7 +68,6 @@ referee::Report CoverageRefereeNode::report() const {
   out.set("seed", static_cast<long long>(tick.seed));
   out.set("world", world_file_);
   out.set("world_sha256", world_sha256_);
-  out.set("algorithm", algorithm_);
   out.set("finished", r.finished());
   out.set("coverage_percent", r.coveragePercent());
   out.set("full_mark_coverage_percent", r.settings().full_mark_coverage_percent);
@@ -81,6 +78,7 @@ referee::Report CoverageRefereeNode::report() const {
   out.set("stuck_s", r.stuckS());
   // 50 Hz x the run: fewer means the bus lost messages and the coverage is an underestimate.
   out.set("pose_messages", pose_messages_);
+  outcome_.addTo(out);
   return out;
 }
 
@@ -93,7 +91,19 @@ std::string CoverageRefereeNode::summary() const {
                 "  bumps %lld, time stuck %.1f s\n",
                 r.mark(), r.coveragePercent(), r.grid().floorAreaM2(), r.elapsedS(),
                 r.settings().full_mark_coverage_percent, r.bumps(), r.stuckS());
-  return text;
+  return std::string(text) + outcome_.summary();
+}
+
+void CoverageRefereeNode::abort(const std::string& reason) {
+  outcome_.abort(reason);
+  announceIfEnded();
+}
+
+void CoverageRefereeNode::announceIfEnded() {
+  if (finished() && !announced_) {
+    announced_ = true;
+    if (on_finished_) on_finished_();
+  }
 }
 
 }  // namespace aula::vacuum

@@ -8,6 +8,7 @@
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
+#include <aula/referee/run_outcome.hpp>
 #include <aula/vacuum/coverage_referee.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -21,7 +22,10 @@ class CoverageRefereeNode {
  public:
   CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
   const CoverageReferee& referee() const { return *referee_; }
-  bool finished() const { return referee_->finished(); }
+  bool finished() const { return referee_->finished() || outcome_.ended(); }
+  // The launcher says the run cannot go on (a process died...): grade what there is, and end.
+  void abort(const std::string& reason);
+  bool endedEarly() const { return outcome_.ended(); }
   referee::Report report() const;
   std::string summary() const;
   void poll() { clock_->poll(); }
@@ -34,11 +38,12 @@ class CoverageRefereeNode {
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
+  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
 
   std::unique_ptr<CoverageReferee> referee_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
-  std::string algorithm_ = "unknown";
+  aula::referee::RunOutcome outcome_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   world::OccupancyMap map_;
   std::function<void()> on_finished_;

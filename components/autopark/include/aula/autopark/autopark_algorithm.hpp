@@ -2,7 +2,7 @@
 // What the Autopark student writes: execute(), every control period of simulated time, with the
 // car's pose, its three lasers and its motors (the original's API).
 
-#include <aula/component/proxies.hpp>
+#include <aula/component/devices.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -32,11 +32,11 @@ void forEachEcho(double car_x_m, double car_y_m, double car_yaw_rad, const Laser
 }
 
 struct AutoparkApi {
-  component::Pose3dProxy& pose3d;  // getX(), getY(), getYaw(): the car's centre, metres, radians
-  component::LaserProxy& laser1;   // front: 180 beams over -90..90 degrees, metres and mm
-  component::LaserProxy& laser2;   // rear
-  component::LaserProxy& laser3;   // right
-  component::MotorsProxy& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
+  component::Pose3d& pose3d;  // getX(), getY(), getYaw(): the car's centre, metres, radians
+  component::Laser& laser1;   // front: 180 beams over -90..90 degrees, metres and mm
+  component::Laser& laser2;   // rear
+  component::Laser& laser3;   // right
+  component::Motors& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
   double period_s;                 // sim seconds between execute() calls
   LaserMount mount1, mount2, mount3;  // the lasers' mounting poses (from the world)
   double car_length_m = 4.0, car_width_m = 2.0;

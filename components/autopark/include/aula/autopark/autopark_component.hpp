@@ -4,7 +4,9 @@
 // referee.
 
 #include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/component/algorithm_host.hpp>
 #include <aula/component/control_loop.hpp>
+#include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
 #include <aula/config/config.hpp>
 #include <aula/world/world_spec.hpp>
@@ -32,6 +34,7 @@ class AutoparkComponent {
   const std::string& robotName() const { return robot_name_; }  // the car in the world
   int64_t simTimeUs() const { return loop_->simTimeUs(); }
   const std::string& algorithmName() const { return algorithm_name_; }
+  const component::AlgorithmHostBase& algorithm() const { return *host_; }
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
@@ -49,11 +52,11 @@ class AutoparkComponent {
   std::unique_ptr<component::LaserProxy> front_, rear_, right_;
   std::unique_ptr<component::MotorsProxy> motors_;
   std::unique_ptr<AutoparkApi> api_;
-  std::unique_ptr<AutoparkAlgorithm> algorithm_;  // created at the first tick, with the run's seed
+  std::unique_ptr<component::AlgorithmHost<AutoparkAlgorithm>> host_;  // the algorithm is created at the first tick
+  std::unique_ptr<component::EpisodeSender> episode_;
+  int generation_ = 0;
   std::unique_ptr<component::ControlLoop> loop_;
   int64_t started_utime_ = -1;
-  int64_t last_episode_utime_ = -1'000'000'000;
-  bool episode_dirty_ = true;
   std::function<void(int64_t)> on_tick_;
 };
 

@@ -6,7 +6,7 @@
 // Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
 
 #include <aula/autopark/autopark_algorithm.hpp>
-#include <aula/component/proxies.hpp>
+#include <aula/component/devices.hpp>
 
 #include <optional>
 #include <vector>

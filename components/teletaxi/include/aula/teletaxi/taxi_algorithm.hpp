@@ -3,7 +3,7 @@
 // "Generate Path") and execute() (runs every control period of sim time after "GO!").
 // The API mirrors the original exercise: sensor/pose3d, vel/motors and the Grid.
 
-#include <aula/component/proxies.hpp>
+#include <aula/component/devices.hpp>
 #include <aula/teletaxi/grid.hpp>
 
 #include <memory>
@@ -12,14 +12,14 @@
 namespace aula::teletaxi {
 
 struct TaxiApi {
-  component::Pose3dProxy& pose3d;  // getX/getY/getYaw, or getRobotX/getRobotY/getRobotTheta
-  component::MotorsProxy& motors;  // sendV/sendW, or setV/setW (clamped to MaxV/MaxW)
+  component::Pose3d& pose3d;  // getX/getY/getYaw, or getRobotX/getRobotY/getRobotTheta
+  component::Motors& motors;  // sendV/sendW, or setV/setW (clamped to MaxV/MaxW)
   Grid& grid;
   // The original names.
-  component::Pose3dProxy& sensor;
-  component::MotorsProxy& vel;
+  component::Pose3d& sensor;
+  component::Motors& vel;
 
-  TaxiApi(component::Pose3dProxy& p, component::MotorsProxy& m, Grid& g)
+  TaxiApi(component::Pose3d& p, component::Motors& m, Grid& g)
       : pose3d(p), motors(m), grid(g), sensor(p), vel(m) {}
 };
 

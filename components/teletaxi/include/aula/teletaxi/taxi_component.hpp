@@ -3,10 +3,11 @@
 // algorithm, the sim-time control loop and the episode messages for the referee. The Qt window
 // (taxi_window.hpp) and the headless main both drive this one object.
 
+#include <aula/component/algorithm_host.hpp>
 #include <aula/component/control_loop.hpp>
+#include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
 #include <aula/config/config.hpp>
-#include <aula/episode_t.hpp>
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -52,6 +53,7 @@ class TaxiComponent {
   std::optional<std::pair<double, double>> destination() const { return destination_; }
   int64_t simTimeUs() const { return loop_->simTimeUs(); }
   const std::string& algorithmName() const { return algorithm_name_; }
+  const component::AlgorithmHostBase& algorithm() const { return *host_; }
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   // Called after every control tick (GUI refresh hooks, tests).
@@ -59,7 +61,6 @@ class TaxiComponent {
 
  private:
   void tick(int64_t utime);
-  void publishEpisode(int64_t utime);
 
   lcm::LCM& bus_;
   std::string episode_channel_;
@@ -69,15 +70,15 @@ class TaxiComponent {
   std::unique_ptr<Grid> grid_;
   world::OccupancyMap map_;
   std::pair<double, double> start_xy_m_{0, 0};  // the robot's pose in the world
-  std::unique_ptr<TaxiAlgorithm> algorithm_;
+  std::unique_ptr<component::AlgorithmHost<TaxiAlgorithm>> host_;
+  int generation_ = 0;
   std::unique_ptr<TaxiApi> api_;
   std::unique_ptr<component::ControlLoop> loop_;
   std::optional<std::pair<double, double>> destination_;
   bool path_generated_ = false;
   bool autostart_ = false;
   int64_t started_utime_ = -1;
-  int64_t last_episode_utime_ = -1'000'000'000;
-  bool episode_dirty_ = true;
+  std::unique_ptr<component::EpisodeSender> episode_;
   std::function<void(int64_t)> on_tick_;
 };
 

@@ -3,7 +3,7 @@
 // There is no localization in this exercise: the API gives the yaw, the laser, the bumper and
 // the motors, and nothing that tells where the robot is.
 
-#include <aula/component/proxies.hpp>
+#include <aula/component/devices.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -14,18 +14,18 @@ namespace aula::vacuum {
 // The only part of the pose the student gets.
 class YawSensor {
  public:
-  explicit YawSensor(const component::Pose3dProxy& pose) : pose_(pose) {}
+  explicit YawSensor(const component::Pose3d& pose) : pose_(pose) {}
   double getYaw() const { return pose_.getYaw(); }  // radians, CCW
 
  private:
-  const component::Pose3dProxy& pose_;
+  const component::Pose3d& pose_;
 };
 
 struct VacuumApi {
   YawSensor& pose3d;               // getYaw()
-  component::LaserProxy& laser;    // getLaserData(): 180 beams over -90..90 degrees, m and mm
-  component::BumperProxy& bumper;  // getBumperData().state == 1 when pressed
-  component::MotorsProxy& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
+  component::Laser& laser;    // getLaserData(): 180 beams over -90..90 degrees, m and mm
+  component::Bumper& bumper;  // getBumperData().state == 1 when pressed
+  component::Motors& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
   double period_s;                 // the control period (sim seconds between execute() calls)
 };
 

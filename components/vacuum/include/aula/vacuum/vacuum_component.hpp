@@ -3,7 +3,9 @@
 // on sim time, the episode messages for the referee. The true pose is read only for the GUI
 // (robot glyph and cleaned area); the algorithm never sees it.
 
+#include <aula/component/algorithm_host.hpp>
 #include <aula/component/control_loop.hpp>
+#include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
 #include <aula/config/config.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
@@ -35,6 +37,9 @@ class VacuumComponent {
   const component::MotorsProxy& motors() const { return *motors_; }
   int64_t simTimeUs() const { return loop_->simTimeUs(); }
   const std::string& algorithmName() const { return algorithm_name_; }
+  const component::AlgorithmHostBase& algorithm() const { return *host_; }
+  // A rebuilt plugin: load it, put the robot back at its start, start a new episode.
+  void reloadAlgorithm();
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   const world::OccupancyMap& map() const { return map_; }
@@ -59,10 +64,10 @@ class VacuumComponent {
   std::unique_ptr<component::MotorsProxy> motors_;
   std::unique_ptr<YawSensor> yaw_;
   std::unique_ptr<VacuumApi> api_;
-  std::unique_ptr<VacuumAlgorithm> algorithm_;  // created at the first tick, with the run's seed
+  std::unique_ptr<component::AlgorithmHost<VacuumAlgorithm>> host_;  // created at the first tick, with the run's seed
   std::unique_ptr<component::ControlLoop> loop_;
-  int64_t last_episode_utime_ = -1'000'000'000;
-  bool episode_dirty_ = true;
+  std::unique_ptr<component::EpisodeSender> episode_;
+  int generation_ = 0;
   std::function<void(int64_t)> on_tick_;
 };
 

@@ -3,10 +3,15 @@
 // signal), then print the mark and write the report. With a display: the referee's window,
 // which shows the mark by itself at the end (the same summary and report are written then).
 //
-// Node needs finished(), poll(), leave(), summary(), report(), setOnFinished(hook);
+// The launcher's `--control-fd` pipe can end the run early ("abort <reason>"): the node grades
+// what it has and says why; such a run exits 1 (it did not finish).
+//
+// Node needs finished(), endedEarly(), abort(reason), poll(), leave(), summary(), report(),
+// setOnFinished(hook);
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
 #include <aula/app/bus_pump.hpp>
+#include <aula/app/control_pipe.hpp>
 #include <aula/app/process_setup.hpp>
 
 #include <QApplication>
@@ -19,20 +24,29 @@ namespace aula::app {
 template <class Node, class Window>
 int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   const std::string report_path = setup.command_line.option("report");
+  ControlPipe control(setup.command_line.flag("control-fd")
+                          ? static_cast<int>(setup.command_line.optionDouble("control-fd", -1))
+                          : -1);
+  auto housekeeping = [&] {
+    node.poll();
+    for (const std::string& line : control.lines()) {
+      if (line.rfind("abort ", 0) == 0) node.abort(line.substr(6));
+    }
+  };
   auto finish = [&] {
     std::cout << node.summary() << std::flush;
     if (!report_path.empty()) node.report().writeAtomically(report_path);
   };
   if (setup.headless) {
-    const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, [&] { node.poll(); });
+    const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);
     node.leave();
     if (signalled && !node.finished()) std::cout << "(stopped before the end of the episode)\n";
     finish();
-    return 0;
+    return node.endedEarly() ? 1 : 0;
   }
   QApplication app(argc, argv);
   Window window(node);
-  BusPump pump(*setup.bus, [&] { node.poll(); });
+  BusPump pump(*setup.bus, housekeeping);
   node.setOnFinished([&] {
     window.showMark();
     finish();

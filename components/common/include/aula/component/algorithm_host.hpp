@@ -1,0 +1,112 @@
+#pragma once
+// Which algorithm a component runs, and running it with the student's faults contained. One
+// table by name, like the drivers' registry: the exercise's built-ins (references, baselines),
+// "student" (the in-tree template, built as a plugin like any student's) or the path of a plugin
+// (.so, built with aula_add_algorithm). Around every call into the algorithm:
+// - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
+// - a call that does not return within the execute budget (wall seconds) ends the process
+//   (ExecuteWatchdog) with its own exit code, which the launcher explains;
+// - non-finite motor commands are counted, and said once in the log.
+
+#include <aula/component/devices.hpp>
+#include <aula/component/execute_watchdog.hpp>
+#include <aula/component/plugin_library.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace aula::component {
+
+// The non-template half: the plugin, the fault, the counters and the log lines.
+class AlgorithmHostBase {
+ public:
+  // The in-tree student template's plugin: <bin>/../lib/aula/algorithms/libaula_<exercise>_student.so.
+  static std::string studentPluginPath(const std::string& exercise);
+  // Is `choice` a plugin file rather than a built-in's name?
+  static bool namesPlugin(const std::string& choice);
+
+  const std::string& choice() const { return choice_; }
+  // For reports: a built-in's name, or the plugin's file name ("libmy_algorithm.so").
+  std::string name() const;
+  bool isPlugin() const { return plugin_ != nullptr; }
+  // What runs, for windows and logs: "reference", or "libmy_algorithm.so (built 2026-11-23 17:04:12)".
+  std::string label() const;
+  // A rebuilt plugin waits on disk (hot reload: the window offers it at the next Run).
+  bool pluginChanged() const { return plugin_ != nullptr && plugin_->changedOnDisk(); }
+  // Why the algorithm was halted ("execute() threw std::runtime_error: ..."), or "".
+  const std::string& fault() const { return fault_; }
+  int64_t nonFiniteCommands() const { return motors_.nonFiniteTotal(); }
+  // One line for the end of the run when commands were refused, else "".
+  std::string nonFiniteSummary() const;
+
+ protected:
+  AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
+                    double execute_budget_s);
+  void loadPlugin();
+  // Runs `call` under the watchdog; an exception becomes the fault. False when it threw.
+  bool guarded(const char* what, const std::function<void()>& call);
+
+  std::string program_, exercise_, choice_;
+  Motors& motors_;
+  std::unique_ptr<PluginLibrary> plugin_;
+  std::string fault_;
+
+ private:
+  void noteNonFinite();
+  ExecuteWatchdog watchdog_;
+  int64_t non_finite_said_ = 0;
+};
+
+template <class Algorithm>
+class AlgorithmHost : public AlgorithmHostBase {
+ public:
+  using Factory = std::function<std::unique_ptr<Algorithm>(uint64_t seed)>;
+
+  // Throws PluginError (exit 2) for an unknown name or a plugin that cannot be used, at once.
+  AlgorithmHost(std::string program, std::string exercise, std::map<std::string, Factory> builtins,
+                std::string choice, Motors& motors, double execute_budget_s)
+      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, execute_budget_s),
+        builtins_(std::move(builtins)) {
+    if (builtins_.count(choice_) == 0) loadPlugin();
+  }
+  ~AlgorithmHost() { algorithm_.reset(); }  // the algorithm's code lives in the plugin
+
+  // Calls `use(algorithm)` (creating it with `seed` on first use) with faults contained.
+  // Does nothing once halted by a fault. False when it threw now.
+  bool call(uint64_t seed, const char* what, const std::function<void(Algorithm&)>& use) {
+    if (!fault_.empty()) return false;
+    return guarded(what, [&] {
+      if (!algorithm_) algorithm_ = create(seed);
+      use(*algorithm_);
+    });
+  }
+
+  // Drops the algorithm and, for a plugin, loads the file again (a new build). The next call
+  // creates a fresh algorithm. Throws PluginError when the new file is unusable (the old one is
+  // then gone too: nothing half-loaded runs).
+  void reload() {
+    algorithm_.reset();
+    fault_.clear();
+    if (plugin_ != nullptr) {
+      plugin_.reset();
+      loadPlugin();
+    }
+  }
+
+ private:
+  std::unique_ptr<Algorithm> create(uint64_t seed) {
+    const auto builtin = builtins_.find(choice_);
+    auto made = builtin != builtins_.end() ? builtin->second(seed) : plugin_->make<Algorithm>(seed);
+    if (!made) throw std::runtime_error("the algorithm's factory returned no algorithm");
+    return made;
+  }
+
+  std::map<std::string, Factory> builtins_;
+  std::unique_ptr<Algorithm> algorithm_;
+};
+
+}  // namespace aula::component

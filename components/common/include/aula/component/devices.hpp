@@ -1,0 +1,126 @@
+#pragma once
+// The student's robot, as plain data: what an algorithm reads (pose, laser, bumper) and writes
+// (motor commands). No LCM and no Qt here, so an algorithm can be unit-tested on synthetic or
+// recorded scans, and built as a plugin against nothing but these headers. The component's
+// proxies (proxies.hpp) are these devices fed from the bus; the names are the original
+// JdeRobot API's (getLaserData, sendV, getRobotTheta...), kept for students.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace aula::component {
+
+class Pose3d {
+ public:
+  double getX() const { return x_m_; }      // metres
+  double getY() const { return y_m_; }      // metres
+  double getYaw() const { return yaw_rad_; }  // radians, counter-clockwise from +x
+  // TeleTaxi's original names.
+  double getRobotX() const { return getX(); }
+  double getRobotY() const { return getY(); }
+  double getRobotTheta() const { return getYaw(); }
+  bool received() const { return received_; }
+  int64_t utime() const { return utime_; }  // sim time of the reading, microseconds
+
+  void set(double x_m, double y_m, double yaw_rad, int64_t utime) {
+    x_m_ = x_m;
+    y_m_ = y_m;
+    yaw_rad_ = yaw_rad;
+    utime_ = utime;
+    received_ = true;
+  }
+
+ private:
+  double x_m_ = 0, y_m_ = 0, yaw_rad_ = 0;
+  int64_t utime_ = 0;
+  bool received_ = false;
+};
+
+// Like JdeRobot's LaserData: ranges in metres, plus the original's millimetre view.
+struct LaserData {
+  std::vector<float> values_m;        // metres, beam i at minAngle + i * angleIncrement
+  std::vector<int> distanceData;      // the same ranges in millimetres (the original's ints)
+  int numLaser = 0;
+  double minAngle = 0, maxAngle = 0, angleIncrement = 0;  // radians
+  double minRange = 0, maxRange = 0;                      // metres
+  int64_t timeStamp = 0;                                  // sim time, microseconds
+
+  double angle(int i) const { return minAngle + i * angleIncrement; }
+};
+
+class Laser {
+ public:
+  const LaserData& getLaserData() const { return data_; }
+  bool received() const { return data_.numLaser > 0; }
+
+  // A scan in metres; the millimetre view is derived here, once.
+  void set(LaserData data) {
+    data.distanceData.resize(data.values_m.size());
+    for (size_t i = 0; i < data.values_m.size(); ++i) {
+      data.distanceData[i] = static_cast<int>(std::lround(data.values_m[i] * 1000.0));
+    }
+    data_ = std::move(data);
+  }
+
+ private:
+  LaserData data_;
+};
+
+struct BumperData {
+  int bumper = 1;  // 0 left, 1 centre, 2 right
+  int state = 0;   // 1 pressed
+  int64_t timeStamp = 0;
+};
+
+class Bumper {
+ public:
+  const BumperData& getBumperData() const { return data_; }
+  void set(const BumperData& data) { data_ = data; }
+
+ private:
+  BumperData data_;
+};
+
+// Motor commands, clamped to the exercise's limits. A non-finite command (NaN, inf) stops that
+// axis (the safe choice) and is counted, so the window and the log can say so.
+class Motors {
+ public:
+  Motors(double max_v_mps, double max_w_radps) : max_v_(max_v_mps), max_w_(max_w_radps) {}
+
+  void sendV(double v_mps) { v_ = accept(v_mps, max_v_, non_finite_v_); }
+  void sendW(double w_radps) { w_ = accept(w_radps, max_w_, non_finite_w_); }
+  void sendL(double l_mps) { l_ = accept(l_mps, max_v_, non_finite_l_); }
+  // TeleTaxi's original names.
+  void setV(double v_mps) { sendV(v_mps); }
+  void setW(double w_radps) { sendW(w_radps); }
+  void stop() { v_ = w_ = l_ = 0.0; }
+
+  double getV() const { return v_; }
+  double getW() const { return w_; }
+  double getL() const { return l_; }
+  double maxV() const { return max_v_; }
+  double maxW() const { return max_w_; }
+
+  // How many commands were not finite, per axis, since the start.
+  int64_t nonFiniteV() const { return non_finite_v_; }
+  int64_t nonFiniteW() const { return non_finite_w_; }
+  int64_t nonFiniteL() const { return non_finite_l_; }
+  int64_t nonFiniteTotal() const { return non_finite_v_ + non_finite_w_ + non_finite_l_; }
+
+ private:
+  static double accept(double value, double limit, int64_t& non_finite) {
+    if (!std::isfinite(value)) {
+      ++non_finite;
+      return 0.0;
+    }
+    return std::clamp(value, -limit, limit);
+  }
+
+  double max_v_, max_w_;
+  double v_ = 0, w_ = 0, l_ = 0;
+  int64_t non_finite_v_ = 0, non_finite_w_ = 0, non_finite_l_ = 0;
+};
+
+}  // namespace aula::component

@@ -1,0 +1,52 @@
+#pragma once
+// One algorithm plugin (a shared library built with aula_add_algorithm), loaded for one
+// exercise. Every way a file can fail to be a usable plugin is a PluginError (a ConfigError:
+// exit code 2) that names the file and says what is wrong: missing, not a shared library, an
+// undefined symbol (dlerror's text), not an Aula algorithm, another exercise's, another ABI.
+//
+// The file is copied before dlopen and the copy unlinked at once, so rebuilding the plugin while
+// it runs never touches the mapped code, and loading it again loads the new build (hot reload).
+
+#include <aula/config/config.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace aula::component {
+
+class PluginError : public config::ConfigError {
+ public:
+  using config::ConfigError::ConfigError;
+};
+
+class PluginLibrary {
+ public:
+  // Throws PluginError.
+  PluginLibrary(const std::string& path, const std::string& exercise);
+  ~PluginLibrary();
+  PluginLibrary(const PluginLibrary&) = delete;
+  PluginLibrary& operator=(const PluginLibrary&) = delete;
+
+  // The exercise's factory `aula_<exercise>_algorithm_v1(seed)`; the caller owns the result and
+  // must delete it before this library is destroyed.
+  template <class Algorithm>
+  std::unique_ptr<Algorithm> make(uint64_t seed) const {
+    using Factory = Algorithm* (*)(uint64_t);
+    return std::unique_ptr<Algorithm>(reinterpret_cast<Factory>(factory_)(seed));
+  }
+
+  const std::string& path() const { return path_; }
+  // The plugin file's modification time when it was loaded ("2026-11-23 17:04:12").
+  const std::string& builtAt() const { return built_at_; }
+  // True when the file on disk is newer than what is loaded (a rebuild since).
+  bool changedOnDisk() const;
+
+ private:
+  std::string path_, built_at_;
+  int64_t mtime_ns_ = 0;
+  void* handle_ = nullptr;
+  void* factory_ = nullptr;
+};
+
+}  // namespace aula::component

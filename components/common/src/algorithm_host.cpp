@@ -1,0 +1,103 @@
+#include "aula/component/algorithm_host.hpp"
+
+#include <cxxabi.h>
+
+#include <filesystem>
+#include <iostream>
+#include <typeinfo>
+
+namespace aula::component {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string typeName(const std::type_info& type) {
+  int status = 0;
+  char* demangled = abi::__cxa_demangle(type.name(), nullptr, nullptr, &status);
+  std::string name = status == 0 && demangled != nullptr ? demangled : type.name();
+  std::free(demangled);
+  return name;
+}
+
+}  // namespace
+
+std::string AlgorithmHostBase::studentPluginPath(const std::string& exercise) {
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  const fs::path bin = error ? fs::path(".") : self.parent_path();
+  return (bin.parent_path() / "lib" / "aula" / "algorithms" / ("libaula_" + exercise + "_student.so"))
+      .lexically_normal()
+      .string();
+}
+
+bool AlgorithmHostBase::namesPlugin(const std::string& choice) {
+  return choice.find('/') != std::string::npos || fs::path(choice).extension() == ".so";
+}
+
+AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
+                                     double execute_budget_s)
+    : program_(std::move(program)),
+      exercise_(std::move(exercise)),
+      choice_(std::move(choice)),
+      motors_(motors),
+      watchdog_(program_, execute_budget_s) {}
+
+void AlgorithmHostBase::loadPlugin() {
+  if (choice_ == "student") {
+    plugin_ = std::make_unique<PluginLibrary>(studentPluginPath(exercise_), exercise_);
+    return;
+  }
+  if (!namesPlugin(choice_)) {
+    throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ +
+                      " and not a plugin file (PATH.so)");
+  }
+  plugin_ = std::make_unique<PluginLibrary>(fs::absolute(choice_).lexically_normal().string(), exercise_);
+}
+
+std::string AlgorithmHostBase::name() const {
+  return plugin_ == nullptr || choice_ == "student" ? choice_ : fs::path(plugin_->path()).filename().string();
+}
+
+std::string AlgorithmHostBase::label() const {
+  if (plugin_ == nullptr) return choice_;
+  return fs::path(plugin_->path()).filename().string() + " (built " + plugin_->builtAt() + ")";
+}
+
+bool AlgorithmHostBase::guarded(const char* what, const std::function<void()>& call) {
+  watchdog_.arm(what);
+  try {
+    call();
+  } catch (const std::exception& e) {
+    fault_ = std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
+  } catch (...) {
+    fault_ = std::string(what) + " threw an exception that is not a std::exception";
+  }
+  watchdog_.disarm();
+  noteNonFinite();
+  if (fault_.empty()) return true;
+  motors_.stop();
+  std::cerr << program_ << ": the student's algorithm failed: " << fault_ << "; the robot is stopped" << std::endl;
+  return false;
+}
+
+void AlgorithmHostBase::noteNonFinite() {
+  const int64_t total = motors_.nonFiniteTotal();
+  if (total == 0 || non_finite_said_ != 0) return;
+  non_finite_said_ = total;
+  std::cerr << program_ << ": the algorithm sent a motor command that is not a finite number (NaN or inf): that axis "
+            << "is set to 0; every such command is counted in the window and the report" << std::endl;
+}
+
+std::string AlgorithmHostBase::nonFiniteSummary() const {
+  std::string out;
+  auto add = [&](const char* call, int64_t count) {
+    if (count == 0) return;
+    out += std::string(out.empty() ? "" : ", ") + call + "(nan/inf) ignored: " + std::to_string(count) + " times";
+  };
+  add("sendV", motors_.nonFiniteV());
+  add("sendW", motors_.nonFiniteW());
+  add("sendL", motors_.nonFiniteL());
+  return out;
+}
+
+}  // namespace aula::component

@@ -1,0 +1,26 @@
+#include "aula/component/episode_sender.hpp"
+
+#include <aula/episode_t.hpp>
+
+namespace aula::component {
+
+void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
+  if (!changed_ && utime - last_utime_ < 1'000'000) return;
+  aula::episode_t msg;
+  msg.utime = utime;
+  msg.exercise = exercise_;
+  msg.algorithm = host_.name();
+  msg.goal_set = state.goal_xy_m.has_value();
+  msg.goal_x = state.goal_xy_m ? state.goal_xy_m->first : 0.0;
+  msg.goal_y = state.goal_xy_m ? state.goal_xy_m->second : 0.0;
+  msg.running = state.running;
+  msg.started_utime = state.started_utime;
+  msg.fault = host_.fault();
+  msg.non_finite_commands = host_.nonFiniteCommands();
+  msg.generation = state.generation;
+  bus_.publish(channel_, &msg);
+  last_utime_ = utime;
+  changed_ = false;
+}
+
+}  // namespace aula::component

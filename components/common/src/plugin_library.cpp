@@ -1,0 +1,123 @@
+#include "aula/component/plugin_library.hpp"
+
+#include <aula/component/algorithm_plugin.hpp>
+#include <aula/config/paths.hpp>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+
+#include <dlfcn.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace aula::component {
+namespace fs = std::filesystem;
+
+namespace {
+
+int64_t mtimeNs(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return -1;
+  return static_cast<int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec;
+}
+
+std::string localTime(int64_t ns) {
+  const std::time_t t = static_cast<std::time_t>(ns / 1'000'000'000);
+  std::tm tm{};
+  localtime_r(&t, &tm);
+  std::array<char, 32> text{};
+  std::strftime(text.data(), text.size(), "%Y-%m-%d %H:%M:%S", &tm);
+  return text.data();
+}
+
+bool looksLikeElf(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::array<char, 4> magic{};
+  in.read(magic.data(), magic.size());
+  return in && magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F';
+}
+
+// A private copy to dlopen: the build may overwrite the original at any time, and glibc would
+// hand back the already-loaded object for the same path.
+std::string privateCopy(const std::string& path) {
+  const fs::path dir = fs::path(config::cacheDir()) / "plugins";
+  std::error_code error;
+  fs::create_directories(dir, error);
+  static_assert(sizeof(pid_t) <= sizeof(long), "pid fits a long");
+  for (int attempt = 0;; ++attempt) {
+    const fs::path copy = dir / (fs::path(path).stem().string() + "." + std::to_string(static_cast<long>(::getpid())) +
+                                 "." + std::to_string(attempt) + ".so");
+    if (fs::exists(copy)) continue;
+    fs::copy_file(path, copy, error);
+    if (error) throw PluginError(path + ": cannot copy the plugin to " + copy.string() + ": " + error.message());
+    return copy.string();
+  }
+}
+
+}  // namespace
+
+PluginLibrary::PluginLibrary(const std::string& path, const std::string& exercise) : path_(path) {
+  if (!fs::exists(path)) throw PluginError(path + ": no such plugin file (build it with cmake --build)");
+  if (!fs::is_regular_file(path)) throw PluginError(path + ": not a file");
+  if (!looksLikeElf(path)) throw PluginError(path + ": not a shared library (no ELF header)");
+  mtime_ns_ = mtimeNs(path);
+  built_at_ = localTime(mtime_ns_);
+
+  const std::string copy = privateCopy(path);
+  dlerror();
+  handle_ = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
+  const char* load_error = handle_ == nullptr ? dlerror() : nullptr;
+  std::string why = load_error == nullptr ? "" : load_error;
+  ::unlink(copy.c_str());  // mapped (or not) either way: the copy has done its job
+  if (handle_ == nullptr) {
+    // dlerror names the private copy; name the student's file instead.
+    const auto at = why.find(copy);
+    if (at != std::string::npos) why.replace(at, copy.size(), fs::path(path).filename().string());
+    if (why.find("undefined symbol") != std::string::npos) {
+      throw PluginError(path + ": undefined symbol: " + why +
+                        " (the plugin calls something this Aula does not have; rebuild it against this Aula)");
+    }
+    throw PluginError(path + ": cannot load this shared library: " + why);
+  }
+
+  auto symbol = [&](const std::string& name) { return dlsym(handle_, name.c_str()); };
+  const auto exercise_of = reinterpret_cast<const char* (*)()>(symbol("aula_algorithm_exercise"));
+  const auto abi_of = reinterpret_cast<int (*)()>(symbol("aula_algorithm_abi_version"));
+  if (exercise_of == nullptr || abi_of == nullptr) {
+    dlclose(handle_);
+    throw PluginError(path + ": not an Aula algorithm plugin (no aula_algorithm_exercise()); build it with "
+                      "aula_add_algorithm(NAME ... EXERCISE " + exercise + " SOURCES MyAlgorithm.cpp)");
+  }
+  const std::string built_for = exercise_of();
+  if (built_for != exercise) {
+    dlclose(handle_);
+    throw PluginError(path + ": wrong exercise: this is a " + built_for + " algorithm, not a " + exercise + " one");
+  }
+  if (abi_of() != kAlgorithmAbiVersion) {
+    const int abi = abi_of();
+    dlclose(handle_);
+    throw PluginError(path + ": ABI mismatch: built for algorithm ABI " + std::to_string(abi) + ", this Aula has ABI " +
+                      std::to_string(kAlgorithmAbiVersion) + "; rebuild it against this Aula");
+  }
+  const std::string factory = "aula_" + exercise + "_algorithm_v1";
+  factory_ = symbol(factory);
+  if (factory_ == nullptr) {
+    dlclose(handle_);
+    throw PluginError(path + ": has no " + factory + "(); build it with aula_add_algorithm");
+  }
+}
+
+PluginLibrary::~PluginLibrary() {
+  if (handle_ != nullptr) dlclose(handle_);
+}
+
+bool PluginLibrary::changedOnDisk() const {
+  const int64_t now = mtimeNs(path_);
+  return now >= 0 && now != mtime_ns_;
+}
+
+}  // namespace aula::component

@@ -1,0 +1,35 @@
+#pragma once
+// What a referee learns about a run besides the robot's truth: the algorithm's name, a fault
+// that halted the student's algorithm (from the component's episode messages), motor commands
+// it refused, and an abort from the launcher (a process died, execute() hung). A fault or an
+// abort ends the grading: the report keeps the mark earned so far and says why it stopped,
+// with "finished": false.
+
+#include <aula/referee/report.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace aula::referee {
+
+class RunOutcome {
+ public:
+  void onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands);
+  void abort(const std::string& reason);  // the first reason wins
+
+  bool ended() const { return !fault_.empty() || !aborted_.empty(); }
+  const std::string& algorithm() const { return algorithm_; }
+  const std::string& fault() const { return fault_; }
+  const std::string& aborted() const { return aborted_; }
+  // The report's fields: algorithm, and when they apply algorithm_error, aborted,
+  // non_finite_commands; "finished" becomes false when the run ended early.
+  void addTo(Report& report) const;
+  // "" or one line per reason, for the printed summary.
+  std::string summary() const;
+
+ private:
+  std::string algorithm_ = "unknown", fault_, aborted_;
+  int64_t non_finite_commands_ = 0;
+};
+
+}  // namespace aula::referee

@@ -1,0 +1,33 @@
+#include "aula/referee/run_outcome.hpp"
+
+namespace aula::referee {
+
+void RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands) {
+  algorithm_ = algorithm;
+  if (fault_.empty()) fault_ = fault;
+  non_finite_commands_ = non_finite_commands;
+}
+
+void RunOutcome::abort(const std::string& reason) {
+  if (aborted_.empty()) aborted_ = reason;
+}
+
+void RunOutcome::addTo(Report& report) const {
+  report.set("algorithm", algorithm_);
+  if (ended()) report.set("finished", false);
+  if (!fault_.empty()) report.set("algorithm_error", fault_);
+  if (!aborted_.empty()) report.set("aborted", aborted_);
+  if (non_finite_commands_ > 0) report.set("non_finite_commands", static_cast<long long>(non_finite_commands_));
+}
+
+std::string RunOutcome::summary() const {
+  std::string out;
+  if (!fault_.empty()) out += "  the student's algorithm failed: " + fault_ + "\n";
+  if (!aborted_.empty()) out += "  the run was aborted: " + aborted_ + "\n";
+  if (non_finite_commands_ > 0) {
+    out += "  " + std::to_string(non_finite_commands_) + " motor commands were not finite numbers (set to 0)\n";
+  }
+  return out;
+}
+
+}  // namespace aula::referee
