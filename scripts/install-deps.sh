@@ -16,6 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
   iproute2 procps python3 bc
+  dpkg-dev bubblewrap ccache
 )
 
 missing=()

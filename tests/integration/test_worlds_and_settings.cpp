@@ -153,9 +153,11 @@ TEST(Worlds, TeleTaxiDestinationsTheTaxiCannotReachAreRefusedAtOnce) {
     EXPECT_EQ(*out.code, 2) << out.output;
     // The launcher refuses what the map alone says before starting anything; the component
     // refuses what needs its planner (too close, walled off) as soon as it has loaded the world.
+    // Generous bounds: this tells "refused at once" from "waited out a run" (600 s of sim), on
+    // a loaded machine under parallel ctest; the typical figures (0.3 s, 1.5 s) are measured.
     EXPECT_LT(out.wall_s, reason.find("off the map") != std::string::npos || reason.find("inside") != std::string::npos
-                              ? 1.0
-                              : 5.0)
+                              ? 3.0
+                              : 8.0)
         << destination;
     EXPECT_NE(out.output.find("TeleTaxi.Destination = " + destination + ": "), std::string::npos)
         << out.output;

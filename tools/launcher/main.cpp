@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -42,9 +44,13 @@ constexpr const char* kUsage =
     "                [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
+    "       aula new EXERCISE DIR\n"
     "  run         start the simulator, the component and the referee\n"
     "  check-world load a world, list its robots, sensors and channels, say what each exercise would miss\n"
     "  config      print the effective settings of each process and where each came from\n"
+    "  new         start your own algorithm in DIR: MyAlgorithm.cpp, CMakeLists.txt, README.md;\n"
+    "              build it with `cmake -S DIR -B DIR/build && cmake --build DIR/build`, run it with\n"
+    "              `aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so`\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
     "  --Key=value a declared setting (`aula config EXERCISE` lists them), e.g. --Vacuum.Referee.Duration=300\n"
@@ -219,6 +225,45 @@ int printConfig(const Exercise& ex, const CommandLine& cl) {
   return 0;
 }
 
+std::string binDir();
+
+// `aula new EXERCISE DIR`: a student's own project, outside Aula's tree. Never overwrites.
+int newProject(const Exercise& ex, const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (ex.referee_settings == nullptr) throw ConfigError("aula new: '" + ex.name + "' has no student algorithm");
+  const fs::path root(dir);
+  for (const char* name : {"MyAlgorithm.cpp", "CMakeLists.txt", "README.md"}) {
+    if (fs::exists(root / name)) {
+      throw ConfigError("aula new: " + (root / name).string() + " already exists; nothing was written (choose a new folder)");
+    }
+  }
+  const std::string template_path = aula::config::dataPath("templates/" + ex.name + "/MyAlgorithm.cpp");
+  if (!fs::is_regular_file(template_path)) throw ConfigError("aula new: no template at " + template_path);
+  std::error_code error;
+  fs::create_directories(root, error);
+  if (error) throw ConfigError("aula new: cannot create " + dir + ": " + error.message());
+  fs::copy_file(template_path, root / "MyAlgorithm.cpp", error);
+  if (error) throw ConfigError("aula new: cannot write " + (root / "MyAlgorithm.cpp").string() + ": " + error.message());
+  // This Aula's own package first (installed: <prefix>/lib/cmake/Aula; a build tree: build/).
+  const fs::path prefix = fs::path(binDir()).parent_path();
+  std::ofstream cmake(root / "CMakeLists.txt");
+  cmake << "# Your " << ex.name << " algorithm as a plugin: libmy_algorithm.so in build/.\n"
+        << "cmake_minimum_required(VERSION 3.16)\n"
+        << "project(my_algorithm CXX)\n"
+        << "find_package(Aula REQUIRED HINTS \"" << (prefix / "lib" / "cmake" / "Aula").string() << "\" \""
+        << prefix.string() << "\")\n"
+        << "aula_add_algorithm(NAME my_algorithm EXERCISE " << ex.name << " SOURCES MyAlgorithm.cpp)\n";
+  std::ofstream readme(root / "README.md");
+  readme << "# My " << ex.name << " algorithm\n"
+         << "Edit `MyAlgorithm.cpp` (the API is at its top), then `cmake -S . -B build && cmake --build build`.\n"
+         << "Run it: `aula run " << ex.name << " --algorithm=build/libmy_algorithm.so` (add `--headless` for no windows).\n";
+  if (!cmake || !readme) throw ConfigError("aula new: cannot write into " + dir);
+  std::cout << "aula new: " << ex.name << " project in " << dir << "\n"
+            << "  cmake -S " << dir << " -B " << dir << "/build && cmake --build " << dir << "/build\n"
+            << "  aula run " << ex.name << " --algorithm=" << dir << "/build/libmy_algorithm.so\n";
+  return 0;
+}
+
 std::string binDir() {
   char buffer[4096];
   const ssize_t n = readlink("/proc/self/exe", buffer, sizeof buffer - 1);
@@ -365,6 +410,15 @@ int main(int argc, char** argv) {
                      "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
+    if (!cl.positional.empty() && cl.positional[0] == "new") {
+      if (cl.positional.size() != 3) return usage(std::cerr, 2);
+      const Exercise* ex = aula::settings::exerciseNamed(cl.positional[1]);
+      if (ex == nullptr) {
+        std::cerr << "aula: unknown exercise '" << cl.positional[1] << "'\n";
+        return usage(std::cerr, 2);
+      }
+      return newProject(*ex, cl.positional[2]);
+    }
     if (cl.positional.size() != 2 || (cl.positional[0] != "run" && cl.positional[0] != "config")) {
       return usage(std::cerr, 2);
     }

@@ -1,0 +1,84 @@
+# What `cmake --install` puts in a prefix, and the .deb CPack makes of it:
+#   bin/                     every program (aula, aula-sim, the components and referees, tools)
+#   lib/aula/algorithms/     the in-tree templates, built as plugins (--algorithm=student)
+#   include/aula/            the student API (plain-data devices, the plugin ABI, the three
+#                            *_algorithm.hpp and what they include), the proxies and the
+#                            generated LCM types
+#   lib/cmake/Aula/          find_package(Aula): Aula::<exercise>_api and aula_add_algorithm
+#   share/aula/              worlds (with models and generators), configs, student templates
+# Nothing in a binary names the source or build tree: programs find share/aula next to their
+# own bin/ (config::dataDir), and maps are drawn into the user's cache.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client
+    teletaxi teletaxi-referee vacuum-cleaner vacuum-cleaner-referee autopark autopark-referee)
+install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
+        LIBRARY DESTINATION lib/aula/algorithms)
+
+# The API a plugin compiles against.
+set(_src ${PROJECT_SOURCE_DIR})
+install(FILES
+  ${_src}/components/common/include/aula/component/devices.hpp
+  ${_src}/components/common/include/aula/component/algorithm_plugin.hpp
+  ${_src}/components/common/include/aula/component/proxies.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/component)
+install(DIRECTORY ${_src}/components/vacuum/include/aula/vacuum DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula
+        FILES_MATCHING PATTERN "vacuum_algorithm.hpp")
+install(FILES
+  ${_src}/components/teletaxi/include/aula/teletaxi/taxi_algorithm.hpp
+  ${_src}/components/teletaxi/include/aula/teletaxi/grid.hpp
+  ${_src}/components/teletaxi/include/aula/teletaxi/gradient_field.hpp
+  ${_src}/components/teletaxi/include/aula/teletaxi/path_pilot.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/teletaxi)
+install(FILES ${_src}/libs/world/include/aula/world/map_transform.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/world)
+install(FILES
+  ${_src}/components/autopark/include/aula/autopark/autopark_algorithm.hpp
+  ${_src}/components/autopark/include/aula/autopark/slot_detector.hpp
+  ${_src}/components/autopark/include/aula/autopark/street_search.hpp
+  ${_src}/components/autopark/planner/include/aula/autopark/car_geometry.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/autopark)
+install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+
+# find_package(Aula)
+foreach(_exercise component vacuum teletaxi autopark)
+  set_target_properties(aula_${_exercise}_api PROPERTIES EXPORT_NAME ${_exercise}_api)
+endforeach()
+install(TARGETS aula_component_api aula_vacuum_api aula_teletaxi_api aula_autopark_api EXPORT AulaTargets)
+# Always lib/ (not the multiarch libdir): programs find their plugins at <bin>/../lib/aula.
+set(AULA_CMAKE_DIR lib/cmake/Aula)
+install(EXPORT AulaTargets NAMESPACE Aula:: DESTINATION ${AULA_CMAKE_DIR})
+configure_package_config_file(${_src}/cmake/AulaConfig.cmake.in ${PROJECT_BINARY_DIR}/AulaConfig.cmake
+                              INSTALL_DESTINATION ${AULA_CMAKE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/AulaConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/AulaConfig.cmake ${PROJECT_BINARY_DIR}/AulaConfigVersion.cmake
+              ${_src}/cmake/AulaAlgorithm.cmake ${_src}/cmake/aula_algorithm_entry.cpp.in
+        DESTINATION ${AULA_CMAKE_DIR})
+# The build tree is a package too (`aula new` from build/bin finds it): same config, targets
+# pointing at the sources.
+export(EXPORT AulaTargets NAMESPACE Aula:: FILE ${PROJECT_BINARY_DIR}/AulaTargets.cmake)
+configure_file(${_src}/cmake/AulaAlgorithm.cmake ${PROJECT_BINARY_DIR}/AulaAlgorithm.cmake COPYONLY)
+configure_file(${_src}/cmake/aula_algorithm_entry.cpp.in ${PROJECT_BINARY_DIR}/aula_algorithm_entry.cpp.in COPYONLY)
+
+# Data.
+install(DIRECTORY ${_src}/worlds ${_src}/config DESTINATION ${CMAKE_INSTALL_DATADIR}/aula
+        PATTERN "__pycache__" EXCLUDE)
+foreach(_exercise teletaxi vacuum autopark)
+  install(FILES ${_src}/components/${_exercise}/student/MyAlgorithm.cpp
+          DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise})
+endforeach()
+
+# cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps; a student's
+# plugin build needs a compiler, CMake and the headers the API includes.
+set(CPACK_PACKAGE_NAME aula)
+set(CPACK_PACKAGE_VENDOR "Aula")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Robotics teaching environment: TeleTaxi, Vacuum cleaner and Autopark exercises")
+set(CPACK_PACKAGE_CONTACT "Aula developers <aula@localhost>")
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev")
+include(CPack)

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# An installed Aula, used the way a student uses it: install into a prefix, then - with the
+# source and build trees hidden (an empty folder mounted over each, bubblewrap) - scaffold a
+# project with `aula new`, build it against the prefix only, run it headless and get a report.
+# Usage: test_install.sh SOURCE_DIR BUILD_DIR EXERCISE
+set -euo pipefail
+src="$1"; build="$2"; exercise="$3"
+work="$(mktemp -d "${TMPDIR:-/tmp}/aula-install-XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+# Nothing but the prefix from here on: the trees are empty folders inside the sandbox.
+port=$((20000 + RANDOM % 20000))
+case "$exercise" in
+  vacuum) short="--Vacuum.Referee.Duration=20" ;;
+  teletaxi) short="--TeleTaxi.Referee.Timeout=20" ;;
+  autopark) short="--Autopark.Referee.Timeout=20" ;;
+esac
+run() {
+  bwrap --dev-bind / / --tmpfs "$src" --tmpfs "$build" --die-with-parent \
+    --setenv XDG_CACHE_HOME "$work/cache" --unsetenv AULA_DATA_DIR --unsetenv DISPLAY \
+    bash -c "$1"
+}
+run "set -e
+  test ! -e '$src/CMakeLists.txt' && test ! -e '$build/CMakeCache.txt'
+  '$work/prefix/bin/aula' new $exercise '$work/student'
+  cmake -S '$work/student' -B '$work/student/build' >/dev/null
+  cmake --build '$work/student/build' >/dev/null
+  test -f '$work/student/build/libmy_algorithm.so'
+  cd '$work'
+  '$work/prefix/bin/aula' run $exercise --headless --algorithm='$work/student/build/libmy_algorithm.so' \
+      --report=r.json --lcm-url='udpm://239.255.76.67:$port?ttl=0' \
+      $short >'$work/out.txt' 2>&1 || true
+"
+if [ ! -s "$work/r.json" ]; then
+  echo "no report; the run printed:"; cat "$work/out.txt"; exit 1
+fi
+grep -q "\"exercise\": \"$exercise\"" "$work/r.json" || { echo "report is not $exercise's:"; cat "$work/r.json"; exit 1; }
+grep -q '"algorithm": "libmy_algorithm.so"' "$work/r.json" || { echo "report does not name the plugin:"; cat "$work/r.json"; exit 1; }
+if grep -rq -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; then
+  echo "an installed binary names the source or build tree:"; grep -rl -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; exit 1
+fi
+echo "ok: $exercise from the prefix alone"; cat "$work/r.json"

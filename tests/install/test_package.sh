@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# cpack -G DEB gives aula_<version>_amd64.deb, with Depends from dpkg-shlibdeps, listing the
+# programs, the student API headers, the worlds and the CMake package.
+# Usage: test_package.sh BUILD_DIR
+set -euo pipefail
+build="$1"
+work="$(mktemp -d "${TMPDIR:-/tmp}/aula-deb-XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+(cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work" >/dev/null)
+deb="$(ls "$work"/aula_*_amd64.deb)"
+contents="$(dpkg-deb -c "$deb")"
+for path in ./usr/bin/aula ./usr/bin/aula-sim ./usr/bin/vacuum-cleaner ./usr/bin/teletaxi-referee \
+    ./usr/include/aula/vacuum/vacuum_algorithm.hpp ./usr/include/aula/component/devices.hpp \
+    ./usr/include/aula/episode_t.hpp ./usr/share/aula/worlds/vacuum.world ./usr/share/aula/config/vacuumCleaner.cfg \
+    ./usr/lib/cmake/Aula/AulaConfig.cmake ./usr/lib/aula/algorithms/libaula_vacuum_student.so \
+    ./usr/share/aula/templates/teletaxi/MyAlgorithm.cpp; do
+  grep -q " $path\$" <<<"$contents" || { echo "missing from $deb: $path"; exit 1; }
+done
+depends="$(dpkg-deb -f "$deb" Depends)"
+for lib in libdart libsdformat liblcm libqt5widgets libopencv-core; do
+  grep -q "$lib" <<<"$depends" || { echo "Depends lacks $lib (dpkg-shlibdeps): $depends"; exit 1; }
+done
+grep -q "cmake" <<<"$depends" || { echo "Depends lacks what a plugin build needs: $depends"; exit 1; }
+echo "ok: $(basename "$deb")"; echo "Depends: $depends"
