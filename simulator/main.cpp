@@ -1,13 +1,14 @@
 // aula-sim WORLD [--config simulator.cfg] [--lockstep] [--rtf X] [--seed N] [--lcm-url URL]
 //                [--duration S] [--Simulator.Key=value ...]
 // Headless by default, like gzserver.
-#include <aula/process/signal_watcher.hpp>
 #include "src/sim_view.hpp"
 
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/process/guarded_main.hpp>
+#include <aula/process/signal_watcher.hpp>
 #include <aula/sim/simulator.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -28,86 +29,92 @@ constexpr const char* kUsage =
     "  --rtf X      real-time factor in free-running mode (0 = as fast as possible)\n"
     "  --duration   stop after this many simulated seconds\n";
 
+// The simulator settings: the .cfg (--config, else the data folder's if present), then the
+// command-line flags and --Simulator.Key=value, checked against the declared table.
+aula::config::Config simulatorConfig(const aula::config::CommandLine& cl) {
+  using namespace aula;
+  config::Config file;
+  if (cl.flag("config")) {
+    file = config::Config::fromFile(cl.option("config"));
+  } else {
+    const std::string fallback = config::dataPath("config/simulator.cfg");
+    if (std::ifstream(fallback).good()) file = config::Config::fromFile(fallback);
+  }
+  if (cl.flag("lockstep")) file.set("Simulator.Lockstep", "true", "command line --lockstep");
+  if (cl.flag("paused")) file.set("Simulator.StartPaused", "true", "command line --paused");
+  if (cl.flag("rtf")) file.set("Simulator.RealTimeFactor", cl.option("rtf"), "command line --rtf");
+  if (cl.flag("seed")) file.set("Simulator.Seed", cl.option("seed"), "command line --seed");
+  if (cl.flag("duration")) file.set("Simulator.Duration", cl.option("duration"), "command line --duration");
+  cl.applyOverrides(file);
+  return settings::simulator().resolve(file);  // checks every key first
+}
+
+// Like Gazebo, a world's <physics><max_step_size> chooses its step; Simulator.PhysicsStep is
+// the step of worlds that do not say, and a step given on the command line overrides both.
+void takeWorldStep(const aula::config::Config& cfg, const aula::world::WorldSpec& spec,
+                   aula::sim::SimulatorOptions& options) {
+  const bool step_on_command_line = cfg.origin("Simulator.PhysicsStep").rfind("command line", 0) == 0;
+  if (spec.physics_step_s > 0 && !step_on_command_line) {
+    if (!(spec.physics_step_s >= 1e-4 && spec.physics_step_s <= 0.05)) {
+      throw aula::world::WorldError(spec.source_path + ": <max_step_size> must be in [0.0001, 0.05] s");
+    }
+    options.step_s = spec.physics_step_s;
+  }
+}
+
+// --gui: runs with a 3D view looking at the first robot, from a distance that fits the world.
+void runWithView(aula::sim::Simulator& simulator, const std::string& screenshot,
+                 aula::process::SignalWatcher& signals) {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  if (simulator.physics().robotCount() > 0) center = simulator.physics().robotState(0).position_m;
+  double size_m = 10.0;
+  for (const auto& o : simulator.spec().statics) {
+    size_m = std::max(size_m, 0.5 * (o.pose.translation().head<2>() - center.head<2>()).norm());
+  }
+  aula::sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0));
+  int frames = 0;
+  simulator.run([&] { return signals.stopRequested(); }, [&] {
+    if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
+    return view.frame();
+  });
+}
+
+int runSimulator(int argc, char** argv) {
+  using namespace aula;
+  const auto cl = config::CommandLine::parse(argc, argv, {"config", "rtf", "seed", "lcm-url", "duration"});
+  if (cl.flag("help")) {
+    std::cout << kUsage << "\nSettings (in the .cfg, or --Key=value on the command line):\n"
+              << settings::simulator().help();
+    return 0;
+  }
+  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
+  if (cl.positional.size() != 1) {
+    std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
+    return 2;
+  }
+  const config::Config cfg = simulatorConfig(cl);
+  auto options = sim::SimulatorOptions::fromConfig(cfg);
+  world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(cl.positional[0], "command line: WORLD"));
+  sim::applyStartPoses(cfg, spec);
+  takeWorldStep(cfg, spec, options);
+  auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
+  process::SignalWatcher signals;
+  sim::Simulator simulator(std::move(spec), options, *bus);
+  std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
+            << simulator.spec().sha256.substr(0, 12) << ") with " << simulator.physics().robotCount()
+            << " robot(s), step " << options.step_s * 1e3 << " ms, " << (options.lockstep ? "lockstep" : "free-running")
+            << ", seed " << options.seed << std::endl;
+  if (cl.flag("gui")) {
+    runWithView(simulator, cl.option("screenshot"), signals);
+  } else {
+    simulator.run([&] { return signals.stopRequested(); });
+  }
+  std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace aula;
-  try {
-    const auto cl = config::CommandLine::parse(
-        argc, argv, {"config", "rtf", "seed", "lcm-url", "duration"});
-    if (cl.flag("help")) {
-      std::cout << kUsage << "\nSettings (in the .cfg, or --Key=value on the command line):\n"
-                << settings::simulator().help();
-      return 0;
-    }
-    cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
-    if (cl.positional.size() != 1) {
-      std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
-      return 2;
-    }
-    config::Config file;
-    if (cl.flag("config")) {
-      file = config::Config::fromFile(cl.option("config"));
-    } else {
-      const std::string fallback = config::dataPath("config/simulator.cfg");
-      if (std::ifstream(fallback).good()) file = config::Config::fromFile(fallback);
-    }
-    if (cl.flag("lockstep")) file.set("Simulator.Lockstep", "true", "command line --lockstep");
-    if (cl.flag("paused")) file.set("Simulator.StartPaused", "true", "command line --paused");
-    if (cl.flag("rtf")) file.set("Simulator.RealTimeFactor", cl.option("rtf"), "command line --rtf");
-    if (cl.flag("seed")) file.set("Simulator.Seed", cl.option("seed"), "command line --seed");
-    if (cl.flag("duration")) file.set("Simulator.Duration", cl.option("duration"), "command line --duration");
-    cl.applyOverrides(file);
-    const config::Config cfg = settings::simulator().resolve(file);  // checks every key first
-
-    auto options = sim::SimulatorOptions::fromConfig(cfg);
-    world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(cl.positional[0], "command line: WORLD"));
-    sim::applyStartPoses(cfg, spec);
-    // Like Gazebo, a world's <physics><max_step_size> chooses its step; Simulator.PhysicsStep is
-    // the step of worlds that do not say, and a step given on the command line overrides both.
-    const bool step_on_command_line = cfg.origin("Simulator.PhysicsStep").rfind("command line", 0) == 0;
-    if (spec.physics_step_s > 0 && !step_on_command_line) {
-      if (!(spec.physics_step_s >= 1e-4 && spec.physics_step_s <= 0.05)) {
-        throw world::WorldError(spec.source_path + ": <max_step_size> must be in [0.0001, 0.05] s");
-      }
-      options.step_s = spec.physics_step_s;
-    }
-    auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
-    process::SignalWatcher signals;
-    sim::Simulator simulator(std::move(spec), options, *bus);
-    std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
-              << simulator.spec().sha256.substr(0, 12) << ") with "
-              << simulator.physics().robotCount() << " robot(s), step " << options.step_s * 1e3
-              << " ms, " << (options.lockstep ? "lockstep" : "free-running") << ", seed "
-              << options.seed << std::endl;
-    if (cl.flag("gui")) {
-      // Look at the first robot, from a distance that fits the world.
-      Eigen::Vector3d center = Eigen::Vector3d::Zero();
-      if (simulator.physics().robotCount() > 0) center = simulator.physics().robotState(0).position_m;
-      double size_m = 10.0;
-      for (const auto& o : simulator.spec().statics) {
-        size_m = std::max(size_m, 0.5 * (o.pose.translation().head<2>() - center.head<2>()).norm());
-      }
-      sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0));
-      int frames = 0;
-      const std::string screenshot = cl.option("screenshot");
-      simulator.run([&] { return signals.stopRequested(); }, [&] {
-        if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
-        return view.frame();
-      });
-    } else {
-      simulator.run([&] { return signals.stopRequested(); });
-    }
-    std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time\n";
-    return 0;
-  } catch (const config::ConfigError& e) {
-    std::cerr << "aula-sim: " << e.what() << "\n";
-    return 2;
-  } catch (const world::WorldError& e) {
-    std::cerr << "aula-sim: " << e.what() << "\n";
-    return 2;
-  } catch (const lcmbus::BusError& e) {
-    std::cerr << "aula-sim: " << e.what() << "\n";
-    return 1;
-  }
+  return aula::process::guardedMain("aula-sim", [&] { return runSimulator(argc, argv); });
 }

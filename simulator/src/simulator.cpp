@@ -189,87 +189,109 @@ void Simulator::advanceToNextTick() {
   publishClock();
 }
 
+// The wall-clock bookkeeping of one run(): where pacing counts from, the window the real-time
+// factor is measured over, and when the clock and the viewer last went out.
+struct Simulator::RunClocks {
+  WallClock::time_point pace_origin;
+  int64_t pace_origin_us;
+  WallClock::time_point rtf_window_start;
+  int64_t rtf_window_us;
+  WallClock::time_point last_publish;
+  WallClock::time_point last_frame;
+};
+
 void Simulator::run(const std::function<bool()>& should_stop, const std::function<bool()>& frame) {
   const int64_t duration_us = secondsToUs(options_.duration_s);
-  auto pace_origin = WallClock::now();
-  int64_t pace_origin_us = physics_->timeUs();
-  auto rtf_window_start = WallClock::now();
-  int64_t rtf_window_us = physics_->timeUs();
-  auto last_publish = WallClock::now();
-  auto last_frame = WallClock::now();
-  constexpr auto kFramePeriod = std::chrono::milliseconds(33);
-
-
+  const auto start = WallClock::now();
+  RunClocks clocks{start, physics_->timeUs(), start, physics_->timeUs(), start, start};
   while (!should_stop()) {
     if (duration_us > 0 && physics_->timeUs() >= duration_us) break;
-    if (frame && WallClock::now() - last_frame >= kFramePeriod) {
-      if (!frame()) break;
-      last_frame = WallClock::now();
-    }
+    if (!drawFrameIfDue(frame, clocks)) break;
     while (bus_.handleTimeout(0) > 0) {
     }
-
     const auto now = WallClock::now();
-    const bool waiting_for_clients =
-        !started_ && options_.lockstep && static_cast<int>(lockstep_.size()) < options_.lockstep_wait_clients;
-    if (!started_ && !waiting_for_clients && !paused_) {
-      // Tick 0, once every expected client is listening: sensors at t = 0, then the clock, so
-      // each client sees the same first messages whatever the order the processes started in.
-      started_ = true;
-      for (auto& d : drivers_) d->step(physics_->timeUs());
-      publishClock();
-      last_publish = now;
-      if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), now);
-      continue;
-    }
-    if (paused_ || waiting_for_clients) {
-      if (now - last_publish > std::chrono::milliseconds(100)) {
-        publishClock();
-        last_publish = now;
-      }
-      bus_.handleTimeout(20);
-      pace_origin = WallClock::now();
-      pace_origin_us = physics_->timeUs();
-      continue;
-    }
-
-    if (options_.lockstep) {
-      for (const auto& name : lockstep_.dropStale(now)) {
-        log("lockstep client '" + name + "' dropped: no ack for " +
-            std::to_string(options_.lockstep_drop.count()) + " ms (wall)");
-      }
-      if (lockstep_.waiting()) {
-        const int ready = bus_.handleTimeout(static_cast<int>(options_.lockstep_resend.count()));
-        if (ready == 0 && lockstep_.waiting()) publishClock();  // a tick or an ack was lost
-        continue;
-      }
-    }
+    if (startIfReady(now, clocks) || holdWhilePausedOrWaiting(now, clocks)) continue;
+    if (options_.lockstep && awaitLockstepAcks(now)) continue;
 
     advanceToNextTick();
-    last_publish = WallClock::now();
-    if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), last_publish);
+    clocks.last_publish = WallClock::now();
+    if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), clocks.last_publish);
+    measureRealTimeFactor(clocks);
+    paceToRealTime(clocks, should_stop);
+  }
+}
 
-    // Real-time factor over the last second of wall time, published in the clock.
-    const auto after = WallClock::now();
-    const double window_s = std::chrono::duration<double>(after - rtf_window_start).count();
-    if (window_s >= 1.0) {
-      measured_rtf_ = (physics_->timeUs() - rtf_window_us) / 1e6 / window_s;
-      rtf_window_start = after;
-      rtf_window_us = physics_->timeUs();
-    }
+bool Simulator::drawFrameIfDue(const std::function<bool()>& frame, RunClocks& clocks) {
+  constexpr auto kFramePeriod = std::chrono::milliseconds(33);  // about 30 frames per wall second
+  if (frame && WallClock::now() - clocks.last_frame >= kFramePeriod) {
+    if (!frame()) return false;
+    clocks.last_frame = WallClock::now();
+  }
+  return true;
+}
 
-    // Paced in lockstep too: the slowest of the clients and the real-time factor sets the pace.
-    if (options_.real_time_factor > 0) {
-      const double sim_s = (physics_->timeUs() - pace_origin_us) / 1e6;
-      const auto target = pace_origin + std::chrono::duration_cast<WallClock::duration>(
-                                            std::chrono::duration<double>(sim_s / options_.real_time_factor));
-      // Sleep by waiting on the bus, so commands are handled while we wait.
-      while (!should_stop()) {
-        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(target - WallClock::now());
-        if (left.count() <= 0) break;
-        bus_.handleTimeout(static_cast<int>(left.count()));
-      }
-    }
+bool Simulator::waitingForClients() const {
+  return !started_ && options_.lockstep && static_cast<int>(lockstep_.size()) < options_.lockstep_wait_clients;
+}
+
+bool Simulator::startIfReady(WallTime now, RunClocks& clocks) {
+  if (started_ || waitingForClients() || paused_) return false;
+  // Tick 0, once every expected client is listening: sensors at t = 0, then the clock, so
+  // each client sees the same first messages whatever the order the processes started in.
+  started_ = true;
+  for (auto& d : drivers_) d->step(physics_->timeUs());
+  publishClock();
+  clocks.last_publish = now;
+  if (options_.lockstep) lockstep_.tick(seq_, physics_->timeUs(), now);
+  return true;
+}
+
+bool Simulator::holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks) {
+  if (!paused_ && !waitingForClients()) return false;
+  // Keep ticking the (unchanged) clock so clients see the pause and know they are listed.
+  if (now - clocks.last_publish > std::chrono::milliseconds(100)) {
+    publishClock();
+    clocks.last_publish = now;
+  }
+  bus_.handleTimeout(20);
+  clocks.pace_origin = WallClock::now();
+  clocks.pace_origin_us = physics_->timeUs();
+  return true;
+}
+
+bool Simulator::awaitLockstepAcks(WallTime now) {
+  for (const auto& name : lockstep_.dropStale(now)) {
+    log("lockstep client '" + name + "' dropped: no ack for " + std::to_string(options_.lockstep_drop.count()) +
+        " ms (wall)");
+  }
+  if (!lockstep_.waiting()) return false;
+  const int ready = bus_.handleTimeout(static_cast<int>(options_.lockstep_resend.count()));
+  if (ready == 0 && lockstep_.waiting()) publishClock();  // a tick or an ack was lost
+  return true;
+}
+
+// Real-time factor over the last second of wall time, published in the clock.
+void Simulator::measureRealTimeFactor(RunClocks& clocks) {
+  const auto now = WallClock::now();
+  const double window_s = std::chrono::duration<double>(now - clocks.rtf_window_start).count();
+  if (window_s >= 1.0) {
+    measured_rtf_ = (physics_->timeUs() - clocks.rtf_window_us) / 1e6 / window_s;
+    clocks.rtf_window_start = now;
+    clocks.rtf_window_us = physics_->timeUs();
+  }
+}
+
+// Paced in lockstep too: the slowest of the clients and the real-time factor sets the pace.
+void Simulator::paceToRealTime(const RunClocks& clocks, const std::function<bool()>& should_stop) {
+  if (options_.real_time_factor <= 0) return;
+  const double sim_s = (physics_->timeUs() - clocks.pace_origin_us) / 1e6;
+  const auto target = clocks.pace_origin + std::chrono::duration_cast<WallClock::duration>(
+                                               std::chrono::duration<double>(sim_s / options_.real_time_factor));
+  // Sleep by waiting on the bus, so commands are handled while we wait.
+  while (!should_stop()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(target - WallClock::now());
+    if (left.count() <= 0) break;
+    bus_.handleTimeout(static_cast<int>(left.count()));
   }
 }
 

@@ -11,6 +11,7 @@
 #include <aula/lcm/lockstep_client.hpp>
 #include <aula/motors_t.hpp>
 #include <aula/pose3d_t.hpp>
+#include <aula/process/guarded_main.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -70,7 +71,7 @@ struct Demo {
 
 int main(int argc, char** argv) {
   using namespace aula;
-  return app::guardedMain("aula-demo-client", [&] {
+  return process::guardedMain("aula-demo-client", [&] {
     auto setup = app::ProcessSetup::fromArgs(argc, argv, "aula-demo-client", {"duration", "quiet"}, kUsage, false);
     const config::Config& cfg = setup.cfg;
     const config::CommandLine& cl = setup.command_line;

@@ -3,6 +3,7 @@
 // Rasterises a world's static geometry into a binary occupancy PNG (0 obstacle, 255 free) and
 // writes NAME.yaml beside it: the one world-to-map transform of every GUI and referee.
 #include <aula/config/config.hpp>
+#include <aula/process/guarded_main.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -32,54 +33,57 @@ std::pair<double, double> pairOf(const std::string& text, char sep, const std::s
   }
 }
 
+// The map's pixels and placement: by default the bounding box of the static geometry, resized
+// by --size and moved by --center (both keep the other's default).
+aula::world::MapTransform mapTransform(const aula::config::CommandLine& cl, const aula::world::WorldSpec& spec,
+                                       double resolution) {
+  using namespace aula;
+  world::MapTransform t = world::fitTransform(spec, resolution);
+  double cx = t.origin_x_m + t.width_px * resolution / 2, cy = t.origin_y_m - t.height_px * resolution / 2;
+  if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
+  if (cl.flag("size")) {
+    const auto [w, h] = pairOf(cl.option("size"), 'x', "size");
+    t.width_px = static_cast<int>(w);
+    t.height_px = static_cast<int>(h);
+  }
+  if (t.width_px <= 0 || t.height_px <= 0 || t.width_px > 20000 || t.height_px > 20000) {
+    throw config::ConfigError("command line: map size must be 1..20000 px per side");
+  }
+  t.origin_x_m = cx - t.width_px * resolution / 2;
+  t.origin_y_m = cy + t.height_px * resolution / 2;
+  return t;
+}
+
+int generateMap(int argc, char** argv) {
+  using namespace aula;
+  const auto cl = config::CommandLine::parse(argc, argv, {"out", "resolution", "size", "center", "z-band"});
+  cl.requireKnown({"out", "resolution", "size", "center", "z-band"});
+  if (cl.positional.size() != 1 || !cl.flag("out") || !cl.flag("resolution")) {
+    std::cerr << kUsage;
+    return 2;
+  }
+  const std::string out = cl.option("out");
+  if (out.size() < 5 || out.substr(out.size() - 4) != ".png") {
+    throw config::ConfigError("command line: --out must name a .png file");
+  }
+  const double resolution = pairOf(cl.option("resolution") + ",0", ',', "resolution").first;
+  if (!(resolution > 0)) throw config::ConfigError("command line: --resolution must be > 0");
+  const world::WorldSpec spec = world::loadWorld(cl.positional[0]);
+  const world::MapTransform t = mapTransform(cl, spec, resolution);
+  double z_min = 0.01, z_max = 100.0;
+  if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
+
+  const cv::Mat map = world::rasterizeOccupancy(spec, t, z_min, z_max);
+  if (!cv::imwrite(out, map)) throw std::runtime_error(out + ": cannot write the map image");
+  const auto slash = out.rfind('/');
+  const std::string file = slash == std::string::npos ? out : out.substr(slash + 1);
+  t.save(out.substr(0, out.size() - 4) + ".yaml", file);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  using namespace aula;
-  try {
-    const auto cl = config::CommandLine::parse(argc, argv, {"out", "resolution", "size", "center", "z-band"});
-    cl.requireKnown({"out", "resolution", "size", "center", "z-band"});
-    if (cl.positional.size() != 1 || !cl.flag("out") || !cl.flag("resolution")) {
-      std::cerr << kUsage;
-      return 2;
-    }
-    const std::string out = cl.option("out");
-    if (out.size() < 5 || out.substr(out.size() - 4) != ".png") {
-      throw config::ConfigError("command line: --out must name a .png file");
-    }
-    const double resolution = pairOf(cl.option("resolution") + ",0", ',', "resolution").first;
-    if (!(resolution > 0)) throw config::ConfigError("command line: --resolution must be > 0");
-    const world::WorldSpec spec = world::loadWorld(cl.positional[0]);
-    world::MapTransform t = world::fitTransform(spec, resolution);
-    double cx = t.origin_x_m + t.width_px * resolution / 2, cy = t.origin_y_m - t.height_px * resolution / 2;
-    if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
-    if (cl.flag("size")) {
-      const auto [w, h] = pairOf(cl.option("size"), 'x', "size");
-      t.width_px = static_cast<int>(w);
-      t.height_px = static_cast<int>(h);
-    }
-    if (t.width_px <= 0 || t.height_px <= 0 || t.width_px > 20000 || t.height_px > 20000) {
-      throw config::ConfigError("command line: map size must be 1..20000 px per side");
-    }
-    t.origin_x_m = cx - t.width_px * resolution / 2;
-    t.origin_y_m = cy + t.height_px * resolution / 2;
-    double z_min = 0.01, z_max = 100.0;
-    if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
-
-    const cv::Mat map = world::rasterizeOccupancy(spec, t, z_min, z_max);
-    if (!cv::imwrite(out, map)) throw std::runtime_error(out + ": cannot write the map image");
-    const auto slash = out.rfind('/');
-    const std::string file = slash == std::string::npos ? out : out.substr(slash + 1);
-    t.save(out.substr(0, out.size() - 4) + ".yaml", file);
-    return 0;
-  } catch (const config::ConfigError& e) {
-    std::cerr << "aula-mapgen: " << e.what() << "\n" << kUsage;
-    return 2;
-  } catch (const world::WorldError& e) {
-    std::cerr << "aula-mapgen: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "aula-mapgen: " << e.what() << "\n";
-    return 1;
-  }
+  // A command-line mistake also shows the usage: the tool has no --help.
+  return aula::process::guardedMain("aula-mapgen", [&] { return generateMap(argc, argv); }, kUsage);
 }

@@ -69,21 +69,4 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   return setup;
 }
 
-int guardedMain(const std::string& program, const std::function<int()>& body) {
-  try {
-    return body();
-  } catch (const HelpShown&) {
-    return 0;
-  } catch (const config::ConfigError& e) {
-    std::cerr << program << ": " << e.what() << "\n";
-    return 2;
-  } catch (const world::WorldError& e) {
-    std::cerr << program << ": " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << program << ": " << e.what() << "\n";
-    return 1;
-  }
-}
-
 }  // namespace aula::app

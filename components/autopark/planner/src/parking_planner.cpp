@@ -133,68 +133,99 @@ class EscapeSearch {
            checker_.freeCentre(rearAxleToCentre(rear, car_), opt_.clearance_m + opt_.exit_margin_m);
   }
 
+  // A move driven from a node: where it ends, how far it got, whether it left the slot.
+  struct Drive {
+    Pose2D end;  // rear axle
+    double length_m = 0.0;
+    bool exited = false;
+  };
+  using Item = std::tuple<double, int>;  // f, node index (ties: older node first)
+  using OpenList = std::priority_queue<Item, std::vector<Item>, std::greater<Item>>;
+
   Escape search(int side) const {
     const double k = 1.0 / car_.min_turn_radius_m;
-    const double step = opt_.escape_step_m;
-    const double move_len = opt_.escape_move_m;
-    const double xy_res = cell_m_, yaw_res = cell_yaw_rad_;
-    auto key = [&](const Pose2D& p) {
-      const auto ix = static_cast<long long>(std::floor((p.x_m - goal_rear_.x_m) / xy_res));
-      const auto iy = static_cast<long long>(std::floor((p.y_m - goal_rear_.y_m) / xy_res));
-      const auto it = static_cast<long long>(std::floor(wrapAngle(p.yaw_rad) / yaw_res));
-      return ((ix + 100000) * 200003LL + (iy + 100000)) * 4099LL + (it + 2048);
-    };
-    auto h = [&](const Pose2D& p) { return opt_.escape_heuristic_weight * std::max(0.0, opt_.exit_lateral_m - side * lateral(p)); };
-
+    // {forward, reverse} x {towards the exit side, straight, away}: the order breaks ties.
+    const std::pair<int, double> motions[] = {{+1, side * k}, {+1, 0.0}, {+1, -side * k},
+                                              {-1, side * k}, {-1, 0.0}, {-1, -side * k}};
     std::vector<Node> nodes{{goal_rear_, 0.0, -1, 0.0, 0.0}};
-    using Item = std::tuple<double, int>;  // f, node index (ties: older node first)
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-    open.push({h(goal_rear_), 0});
+    OpenList open;
+    open.push({heuristic(goal_rear_, side), 0});
     std::unordered_set<long long> closed;
-    Escape e;
     int expansions = 0;
     while (!open.empty()) {
       const int ni = std::get<1>(open.top());
       open.pop();
-      const Node cur = nodes[ni];
-      if (!closed.insert(key(cur.pose)).second) continue;
-      if (++expansions > opt_.escape_max_expansions || ((expansions & 63) == 0 && Clock::now() > deadline_)) break;
-      for (int dir : {+1, -1}) {
-        for (double kappa : {side * k, 0.0, -side * k}) {
-          Pose2D p = cur.pose;
-          double len = 0.0;
-          bool exited = false;
-          while (len + step <= move_len + 1e-9) {
-            const Pose2D next = integrate(p, kappa, dir * step);
-            if (!checker_.freeCentre(rearAxleToCentre(next, car_), clearance_m_)) break;
-            p = next;
-            len += step;
-            if (exitReached(p, side)) {
-              exited = true;
-              break;
-            }
-          }
-          if (len < step * 0.5) continue;
-          double g = cur.g + len;
-          if (cur.parent >= 0 && sign(cur.length) != dir) g += opt_.escape_cusp_cost_m;
-          if (cur.parent >= 0 && kappa != cur.kappa) g += opt_.escape_steer_change_cost_m;
-          nodes.push_back({p, g, ni, kappa, dir * len});
-          const int child = static_cast<int>(nodes.size()) - 1;
-          if (exited) {
-            for (int n = child; nodes[n].parent >= 0; n = nodes[n].parent) {
-              e.moves.push_back({nodes[n].kappa, nodes[n].length});
-              e.length_m += std::abs(nodes[n].length);
-            }
-            std::reverse(e.moves.begin(), e.moves.end());
-            e.exit_rear = p;
-            e.ok = true;
-            return e;
-          }
-          if (closed.count(key(p))) continue;
-          open.push({g + h(p), child});
-        }
+      const Node cur = nodes[ni];  // a copy: nodes grows below
+      if (!closed.insert(cellKey(cur.pose)).second) continue;
+      if (budgetSpent(++expansions)) break;
+      for (const auto& [dir, kappa] : motions) {
+        const Drive d = drive(cur.pose, kappa, dir, side);
+        if (d.length_m < opt_.escape_step_m * 0.5) continue;
+        const double g = costTo(cur, kappa, dir, d.length_m);
+        nodes.push_back({d.end, g, ni, kappa, dir * d.length_m});
+        const int child = static_cast<int>(nodes.size()) - 1;
+        if (d.exited) return escapeTo(nodes, child);
+        if (closed.count(cellKey(d.end))) continue;
+        open.push({g + heuristic(d.end, side), child});
       }
     }
+    return {};
+  }
+
+  // Duplicate-detection cell of a rear-axle pose, relative to the goal.
+  long long cellKey(const Pose2D& p) const {
+    const double xy_res = cell_m_, yaw_res = cell_yaw_rad_;
+    const auto ix = static_cast<long long>(std::floor((p.x_m - goal_rear_.x_m) / xy_res));
+    const auto iy = static_cast<long long>(std::floor((p.y_m - goal_rear_.y_m) / xy_res));
+    const auto it = static_cast<long long>(std::floor(wrapAngle(p.yaw_rad) / yaw_res));
+    return ((ix + 100000) * 200003LL + (iy + 100000)) * 4099LL + (it + 2048);
+  }
+
+  double heuristic(const Pose2D& p, int side) const {
+    return opt_.escape_heuristic_weight * std::max(0.0, opt_.exit_lateral_m - side * lateral(p));
+  }
+
+  // Out of expansions, or out of time (the clock is read every 64 expansions only).
+  bool budgetSpent(int expansions) const {
+    return expansions > opt_.escape_max_expansions || ((expansions & 63) == 0 && Clock::now() > deadline_);
+  }
+
+  // Drives one move up to escape_move_m, stopping before a collision or once the exit is reached.
+  Drive drive(const Pose2D& from, double kappa, int dir, int side) const {
+    const double step = opt_.escape_step_m;
+    Drive d{from};
+    while (d.length_m + step <= opt_.escape_move_m + 1e-9) {
+      const Pose2D next = integrate(d.end, kappa, dir * step);
+      if (!checker_.freeCentre(rearAxleToCentre(next, car_), clearance_m_)) break;
+      d.end = next;
+      d.length_m += step;
+      if (exitReached(d.end, side)) {
+        d.exited = true;
+        break;
+      }
+    }
+    return d;
+  }
+
+  // Path cost after a move of `length_m` from `from`: length, plus penalties for a cusp and a
+  // steering change (none for the first move out of the goal).
+  double costTo(const Node& from, double kappa, int dir, double length_m) const {
+    double g = from.g + length_m;
+    if (from.parent >= 0 && sign(from.length) != dir) g += opt_.escape_cusp_cost_m;
+    if (from.parent >= 0 && kappa != from.kappa) g += opt_.escape_steer_change_cost_m;
+    return g;
+  }
+
+  // The moves from the goal to node `last`, which reached the exit.
+  static Escape escapeTo(const std::vector<Node>& nodes, int last) {
+    Escape e;
+    for (int n = last; nodes[n].parent >= 0; n = nodes[n].parent) {
+      e.moves.push_back({nodes[n].kappa, nodes[n].length});
+      e.length_m += std::abs(nodes[n].length);
+    }
+    std::reverse(e.moves.begin(), e.moves.end());
+    e.exit_rear = nodes[last].pose;
+    e.ok = true;
     return e;
   }
 
@@ -299,6 +330,113 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
   return true;
 }
 
+// Why planning cannot start from `start` to `goal` (rear axle), or "" when it can.
+std::string endpointProblem(const FootprintChecker& checker, const ParkingPlanner::Options& opt, const Pose2D& start,
+                            const Pose2D& goal, const Pose2D& goal_centre) {
+  if (!checker.freeRearAxle(start)) return "start pose in collision (with clearance)";
+  // The escape may lower the clearance in the slot, so a goal that fits only that way is fine.
+  const double goal_clearance = opt.use_escape ? std::min(opt.clearance_m, opt.min_slot_clearance_m) : opt.clearance_m;
+  if (!checker.freeRearAxle(goal) && !checker.freeCentre(goal_centre, goal_clearance)) {
+    return "goal pose in collision (with clearance)";
+  }
+  return "";
+}
+
+// The unsolved result: why, and no poses (the figures gathered so far stay).
+PlannedPath unsolved(PlannedPath out, const std::string& why, double planning_time_s) {
+  out.solved = false;
+  out.poses.clear();
+  out.direction.clear();
+  out.curvature_per_m.clear();
+  out.message = why;
+  out.planning_time_s = planning_time_s;
+  return out;
+}
+
+// Escape passes: full clearance with coarse then fine duplicate cells; then the in-slot clearance
+// is lowered step by step down to min_slot_clearance_m (tight slots, see docs/planner.md).
+// `clearance_m` is set to the clearance of the escape found (left alone if none is).
+Escape escapeFromSlot(const FootprintChecker& checker, const CarGeometry& car, const ParkingPlanner::Options& opt,
+                      const Pose2D& goal_rear, const Pose2D& goal_centre, Clock::time_point deadline,
+                      double& clearance_m) {
+  Escape escape;
+  for (double clearance = opt.clearance_m; !escape.ok && clearance >= opt.min_slot_clearance_m - 1e-9;
+       clearance -= opt.slot_clearance_step_m) {
+    if (!checker.freeCentre(goal_centre, clearance)) break;
+    for (const double scale : {2.0, 1.0}) {
+      escape = EscapeSearch(checker, car, opt, goal_rear, deadline, clearance, scale * opt.escape_cell_m,
+                            scale * opt.escape_cell_yaw_rad).run();
+      if (escape.ok) {
+        clearance_m = clearance;
+        break;
+      }
+    }
+    if (opt.slot_clearance_step_m <= 0) break;
+  }
+  return escape;
+}
+
+// The escape driven backwards: from the exit into the slot.
+std::vector<Move> reversed(const Escape& escape) {
+  std::vector<Move> moves;
+  for (auto it = escape.moves.rbegin(); it != escape.moves.rend(); ++it) moves.push_back({it->kappa, -it->length_m});
+  return moves;
+}
+
+// Consecutive motions of the same curvature and direction, merged into one.
+std::vector<Move> merged(const std::vector<Move>& moves) {
+  std::vector<Move> out;
+  for (const Move& m : moves) {
+    if (!out.empty() && std::abs(out.back().kappa - m.kappa) < 1e-12 && sign(out.back().length_m) == sign(m.length_m)) {
+      out.back().length_m += m.length_m;
+    } else {
+      out.push_back(m);
+    }
+  }
+  return out;
+}
+
+// Dense sampling of the rear axle along `moves` from `start_rear`, output as centre poses (with
+// direction, curvature, cusps and length) in `out`.
+void sampleDensely(const std::vector<Move>& moves, const Pose2D& start_rear, const Pose2D& start_centre,
+                   const CarGeometry& car, double output_step_m, PlannedPath& out) {
+  Pose2D p = start_rear;
+  out.poses.push_back(start_centre);
+  out.direction.push_back(moves.empty() ? 1 : sign(moves.front().length_m));
+  out.curvature_per_m.push_back(moves.empty() ? 0.0 : moves.front().kappa);
+  for (size_t k = 0; k < moves.size(); ++k) {
+    const Move& m = moves[k];
+    if (k > 0 && sign(m.length_m) != sign(moves[k - 1].length_m)) ++out.cusps;
+    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(m.length_m) / output_step_m)));
+    for (int j = 1; j <= n; ++j) {
+      const Pose2D q = integrate(p, m.kappa, m.length_m * j / n);
+      out.poses.push_back(rearAxleToCentre(q, car));
+      out.direction.push_back(sign(m.length_m));
+      out.curvature_per_m.push_back(m.kappa);
+    }
+    p = integrate(p, m.kappa, m.length_m);
+    out.length_m += std::abs(m.length_m);
+  }
+}
+
+// Why the path `out` (rear axle ending at `goal`) cannot be used, or "" when it can. Motions were checked at
+// motion_check_step_m / escape_step_m; samples in between may graze by a few mm, hence the
+// half-clearance tolerance here.
+std::string denseProblem(const PlannedPath& out, const FootprintChecker& checker, const CarGeometry& car,
+                         const ParkingPlanner::Options& opt, const Pose2D& goal) {
+  for (const Pose2D& c : out.poses) {
+    if (!checker.freeCentre(c, 0.5 * std::min(opt.clearance_m, out.escape_clearance_m))) {
+      return "dense path check failed";
+    }
+  }
+  const Pose2D end = centreToRearAxle(out.poses.back(), car);
+  if (std::hypot(end.x_m - goal.x_m, end.y_m - goal.y_m) > 1e-3 ||
+      std::abs(wrapAngle(end.yaw_rad - goal.yaw_rad)) > 1e-3) {
+    return "internal: path does not end at the goal";
+  }
+  return "";
+}
+
 }  // namespace
 
 ParkingPlanner::ParkingPlanner(CarGeometry car, Options options) : car_(car), options_(options) {}
@@ -310,100 +448,35 @@ PlannedPath ParkingPlanner::plan(const OccupancyGrid& grid, const Pose2D& start_
   if (options_.quiet) ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
 
   PlannedPath out;
-  auto finish = [&](const std::string& why) {
-    out.solved = false;
-    out.poses.clear();
-    out.direction.clear();
-    out.curvature_per_m.clear();
-    out.message = why;
-    out.planning_time_s = elapsed();
-    return out;
-  };
-  if (grid.width() <= 0 || grid.height() <= 0) return finish("empty grid");
+  if (grid.width() <= 0 || grid.height() <= 0) return unsolved(out, "empty grid", elapsed());
   const FootprintChecker checker(grid, car_, options_.clearance_m);
   const Pose2D start = centreToRearAxle(start_centre, car_);
   const Pose2D goal = centreToRearAxle(goal_centre, car_);
-  if (!checker.freeRearAxle(start)) return finish("start pose in collision (with clearance)");
-  const double goal_clearance = options_.use_escape ? std::min(options_.clearance_m, options_.min_slot_clearance_m) : options_.clearance_m;
-  if (!checker.freeRearAxle(goal) && !checker.freeCentre(goal_centre, goal_clearance)) {
-    return finish("goal pose in collision (with clearance)");
-  }
+  std::string why = endpointProblem(checker, options_, start, goal, goal_centre);
+  if (!why.empty()) return unsolved(out, why, elapsed());
   out.escape_clearance_m = options_.clearance_m;
 
-  std::vector<Move> moves;
+  // With the escape, OMPL plans only to where the escape leaves the slot; the escape, reversed, ends the path.
   Pose2D ompl_goal = goal;
   std::vector<Move> tail;
   if (options_.use_escape) {
     const auto deadline = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options_.time_limit_s));
-    // Passes: full clearance with coarse then fine duplicate cells; then the in-slot clearance is
-    // lowered step by step down to min_slot_clearance_m (tight slots, see docs/planner.md).
-    Escape escape;
-    for (double clearance = options_.clearance_m; !escape.ok && clearance >= options_.min_slot_clearance_m - 1e-9;
-         clearance -= options_.slot_clearance_step_m) {
-      if (!checker.freeCentre(goal_centre, clearance)) break;
-      for (const double scale : {2.0, 1.0}) {
-        escape = EscapeSearch(checker, car_, options_, goal, deadline, clearance, scale * options_.escape_cell_m,
-                              scale * options_.escape_cell_yaw_rad).run();
-        if (escape.ok) {
-          out.escape_clearance_m = clearance;
-          break;
-        }
-      }
-      if (options_.slot_clearance_step_m <= 0) break;
-    }
-    if (!escape.ok) return finish("no escape manoeuvre out of the slot");
+    const Escape escape = escapeFromSlot(checker, car_, options_, goal, goal_centre, deadline, out.escape_clearance_m);
+    if (!escape.ok) return unsolved(out, "no escape manoeuvre out of the slot", elapsed());
     ompl_goal = escape.exit_rear;
-    for (auto it = escape.moves.rbegin(); it != escape.moves.rend(); ++it) tail.push_back({it->kappa, -it->length_m});
+    tail = reversed(escape);
     out.escape_moves = static_cast<int>(escape.moves.size());
     out.escape_time_s = elapsed();
   }
-  std::string why;
+  std::vector<Move> moves;
   if (!planReedsShepp(grid, checker, car_, options_, start, ompl_goal, options_.time_limit_s - elapsed(), moves, why)) {
-    return finish(why);
+    return unsolved(out, why, elapsed());
   }
   moves.insert(moves.end(), tail.begin(), tail.end());
 
-  // Merge consecutive motions of the same curvature and direction.
-  std::vector<Move> merged;
-  for (const Move& m : moves) {
-    if (!merged.empty() && std::abs(merged.back().kappa - m.kappa) < 1e-12 &&
-        sign(merged.back().length_m) == sign(m.length_m)) {
-      merged.back().length_m += m.length_m;
-    } else {
-      merged.push_back(m);
-    }
-  }
-
-  // Dense sampling of the rear axle, output as centre poses.
-  Pose2D p = start;
-  out.poses.push_back(start_centre);
-  out.direction.push_back(merged.empty() ? 1 : sign(merged.front().length_m));
-  out.curvature_per_m.push_back(merged.empty() ? 0.0 : merged.front().kappa);
-  for (size_t k = 0; k < merged.size(); ++k) {
-    const Move& m = merged[k];
-    if (k > 0 && sign(m.length_m) != sign(merged[k - 1].length_m)) ++out.cusps;
-    const int n = std::max(1, static_cast<int>(std::ceil(std::abs(m.length_m) / options_.output_step_m)));
-    for (int j = 1; j <= n; ++j) {
-      const Pose2D q = integrate(p, m.kappa, m.length_m * j / n);
-      out.poses.push_back(rearAxleToCentre(q, car_));
-      out.direction.push_back(sign(m.length_m));
-      out.curvature_per_m.push_back(m.kappa);
-    }
-    p = integrate(p, m.kappa, m.length_m);
-    out.length_m += std::abs(m.length_m);
-  }
-  // Verify the dense path (motions were checked at motion_check_step_m / escape_step_m; samples in
-  // between may graze by a few mm, hence the half-clearance tolerance here).
-  for (const Pose2D& c : out.poses) {
-    if (!checker.freeCentre(c, 0.5 * std::min(options_.clearance_m, out.escape_clearance_m))) {
-      return finish("dense path check failed");
-    }
-  }
-  const Pose2D end = centreToRearAxle(out.poses.back(), car_);
-  if (std::hypot(end.x_m - goal.x_m, end.y_m - goal.y_m) > 1e-3 ||
-      std::abs(wrapAngle(end.yaw_rad - goal.yaw_rad)) > 1e-3) {
-    return finish("internal: path does not end at the goal");
-  }
+  sampleDensely(merged(moves), start, start_centre, car_, options_.output_step_m, out);
+  why = denseProblem(out, checker, car_, options_, goal);
+  if (!why.empty()) return unsolved(out, why, elapsed());
   out.poses.back() = goal_centre;
   out.solved = true;
   out.planning_time_s = elapsed();

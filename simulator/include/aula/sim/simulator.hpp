@@ -71,6 +71,17 @@ class Simulator {
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
   void publishClock();
   void resetWorld();
+  // The steps of run(). startIfReady, holdWhilePausedOrWaiting and awaitLockstepAcks return true
+  // when they used up this pass of the loop; drawFrameIfDue returns false once the viewer stops.
+  struct RunClocks;
+  using WallTime = std::chrono::steady_clock::time_point;
+  bool drawFrameIfDue(const std::function<bool()>& frame, RunClocks& clocks);
+  bool waitingForClients() const;
+  bool startIfReady(WallTime now, RunClocks& clocks);
+  bool holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks);
+  bool awaitLockstepAcks(WallTime now);
+  void measureRealTimeFactor(RunClocks& clocks);
+  void paceToRealTime(const RunClocks& clocks, const std::function<bool()>& should_stop);
   const geometry::Raycaster2D* raycasterAt(double z_m);
   void log(const std::string& line) const;
 

@@ -5,23 +5,21 @@
 // WorldError (exit code 2) or BusError (exit code 1), each naming the file, line, key or URL.
 
 #include <aula/config/config.hpp>
+#include <aula/process/guarded_main.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
-#include <functional>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace aula::app {
 
-// `--help` was asked for and printed: the process ends with exit code 0.
-class HelpShown : public std::runtime_error {
- public:
-  HelpShown() : std::runtime_error("help shown") {}
-};
+// The process skeleton lives in aula_process (no Qt); these names stay for the components' and
+// referees' main().
+using process::guardedMain;
+using process::HelpShown;
 
 struct ProcessSetup {
   std::string program;                 // "vacuum-cleaner"
@@ -39,9 +37,5 @@ struct ProcessSetup {
                                const std::vector<std::string>& extra_options, const std::string& usage,
                                bool opens_window = true);
 };
-
-// Runs `body` and maps Aula's errors to exit codes with a message prefixed by `program`:
-// HelpShown -> 0; ConfigError and WorldError -> 2; anything else -> 1.
-int guardedMain(const std::string& program, const std::function<int()>& body);
 
 }  // namespace aula::app
