@@ -24,6 +24,7 @@
 #include <thread>
 
 #include <aula/process/exit_codes.hpp>
+#include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
 
 #include <fcntl.h>
@@ -404,7 +405,7 @@ int supervise(const Supervision& run) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
+  return aula::process::guardedMain("aula", [&]() -> int {
     auto cl = CommandLine::parse(argc, argv, {});
     cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url",
                      "config", "map", "help"});
@@ -443,14 +444,5 @@ int main(int argc, char** argv) {
       supervision.execute_budget_s = component.getDouble("Component.ExecuteBudget");
     }
     return supervise(supervision);
-  } catch (const ConfigError& e) {
-    std::cerr << "aula: " << e.what() << "\n";
-    return 2;
-  } catch (const aula::world::WorldError& e) {
-    std::cerr << "aula: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "aula: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

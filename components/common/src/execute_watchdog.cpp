@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include <csignal>
+
+#include <pthread.h>
 #include <unistd.h>
 
 namespace aula::component {
@@ -42,6 +45,11 @@ void ExecuteWatchdog::arm(const char* what) {
 void ExecuteWatchdog::disarm() { deadline_ns_.store(0, std::memory_order_release); }
 
 void ExecuteWatchdog::watch() {
+  // Stop signals belong to the main thread's signalfd (SignalWatcher): never to this one, or
+  // Ctrl-C would kill the process instead of ending the run cleanly.
+  sigset_t all;
+  sigfillset(&all);
+  pthread_sigmask(SIG_BLOCK, &all, nullptr);
   std::unique_lock<std::mutex> lock(mutex_);
   while (!stopping_) {
     // Short naps: an armed call is checked within 50 ms of its deadline.
