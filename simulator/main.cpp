@@ -7,6 +7,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
 #include <aula/sim/simulator.hpp>
@@ -90,7 +91,7 @@ int runSimulator(int argc, char** argv) {
   cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
   if (cl.positional.size() != 1) {
     std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
-    return 2;
+    return process::kExitUsage;
   }
   const config::Config cfg = simulatorConfig(cl);
   auto options = sim::SimulatorOptions::fromConfig(cfg);

@@ -3,6 +3,7 @@
 // Rasterises a world's static geometry into a binary occupancy PNG (0 obstacle, 255 free) and
 // writes NAME.yaml beside it: the one world-to-map transform of every GUI and referee.
 #include <aula/config/config.hpp>
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -60,7 +61,7 @@ int generateMap(int argc, char** argv) {
   cl.requireKnown({"out", "resolution", "size", "center", "z-band"});
   if (cl.positional.size() != 1 || !cl.flag("out") || !cl.flag("resolution")) {
     std::cerr << kUsage;
-    return 2;
+    return process::kExitUsage;
   }
   const std::string out = cl.option("out");
   if (out.size() < 5 || out.substr(out.size() - 4) != ".png") {

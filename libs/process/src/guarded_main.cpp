@@ -1,6 +1,7 @@
 #include "aula/process/guarded_main.hpp"
 
 #include <aula/config/config.hpp>
+#include <aula/process/exit_codes.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <iostream>
@@ -11,16 +12,16 @@ int guardedMain(const std::string& program, const std::function<int()>& body, co
   try {
     return body();
   } catch (const HelpShown&) {
-    return 0;
+    return kExitFinished;
   } catch (const config::ConfigError& e) {
     std::cerr << program << ": " << e.what() << "\n" << config_error_hint;
-    return 2;
+    return kExitUsage;
   } catch (const world::WorldError& e) {
     std::cerr << program << ": " << e.what() << "\n";
-    return 2;
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << program << ": " << e.what() << "\n";
-    return 1;
+    return kExitFailed;
   }
 }
 

@@ -15,8 +15,9 @@ class HelpShown : public std::runtime_error {
   HelpShown() : std::runtime_error("help shown") {}
 };
 
-// Runs `body` and maps Aula's errors to exit codes with a message prefixed by `program`:
-// HelpShown -> 0; config::ConfigError and world::WorldError -> 2; any other std::exception -> 1.
+// Runs `body` and maps Aula's errors to exit codes (exit_codes.hpp) with a message prefixed by
+// `program`: HelpShown -> 0; config::ConfigError and world::WorldError -> kExitUsage (2); any
+// other std::exception -> kExitFailed (1).
 // `config_error_hint`, if not empty, is printed after a ConfigError's message (a tool's usage).
 int guardedMain(const std::string& program, const std::function<int()>& body,
                 const std::string& config_error_hint = "");
