@@ -216,15 +216,17 @@ TEST(StudentFaults, NoCommandsIsAnOrdinaryRunWithTheDoNothingMark) {
 }
 
 // 6. A plugin that cannot be used: exit 2 at once, one message naming the file and the reason.
-// The episode is an hour of sim time: a run that went on regardless would take far longer than
-// the bound (900 s of sim is about 4 s of wall time).
+// "At once" is the processes' start-up: about 2 s on an idle 2-core machine (the component loads
+// the world before the plugin), up to 4.5 s beside another integration test; the bound leaves
+// room for a loaded CI machine. The episode is an hour of sim time: a run that went on
+// regardless would take about 16 s (900 s of sim is about 4 s of wall time).
 class StudentFaultsLoad : public ::testing::Test {
  protected:
   void expectLoadError(const std::string& plugin, const std::string& tag, const std::string& reason) {
     const RunResult run = runVacuum(plugin, tag, {}, 60s, 3600);
     ASSERT_TRUE(run.code.has_value()) << describe(run);
     EXPECT_EQ(*run.code, 2) << describe(run);
-    EXPECT_LT(run.wall_s, 5.0) << describe(run);
+    EXPECT_LT(run.wall_s, 8.0) << describe(run);
     EXPECT_EQ(countLines(run.err, reason), 1u) << "expected one line with \"" << reason << "\"\n" << describe(run);
     EXPECT_NE(run.err.find(fs::path(plugin).filename().string() + ": "), std::string::npos) << describe(run);
     // The referee may or may not have started when the launcher stops it (a race of start-up
