@@ -260,7 +260,8 @@ TEST(Worlds, CheckWorldSaysWhatEachExerciseWouldMiss) {
 }
 
 TEST(Settings, TheRealTimeFactorIsHonouredInHeadlessLockstepRuns) {
-  // 20 s of sim: as fast as possible well under a second; at --rtf=20 one second or more.
+  // 20 s of sim: at --rtf=4 five seconds or more, whatever the machine; as fast as possible,
+  // well under that even beside other tests on a loaded 2-core machine (measured 1-4.4 s).
   auto run = [](const std::string& rtf) {
     std::vector<std::string> args = {kBin + "/aula", "run", "teletaxi", "--headless", "--algorithm=student",
                                      "--TeleTaxi.Referee.Timeout=20", "--lcm-url=" + aula::testing::privateLcmUrl()};
@@ -268,9 +269,9 @@ TEST(Settings, TheRealTimeFactorIsHonouredInHeadlessLockstepRuns) {
     return runToEnd(args, 60s);
   };
   const Outcome fast = run("");
-  const Outcome paced = run("20");
+  const Outcome paced = run("4");
   EXPECT_EQ(fast.code.value_or(-1), 0) << fast.output;
   EXPECT_EQ(paced.code.value_or(-1), 0) << paced.output;
-  EXPECT_GE(paced.wall_s, 1.0) << paced.output;
+  EXPECT_GE(paced.wall_s, 5.0) << paced.output;
   EXPECT_LT(fast.wall_s, paced.wall_s - 0.5) << fast.output;
 }

@@ -383,7 +383,11 @@ int supervise(const Supervision& run) {
         result = 1;
         continue;  // the referee grades what there is and ends the run
       }
-      if (*code != 0 && !(told_referee && i == 1)) {
+      const bool referee_ended_early = run.has_referee && i == 2 && *code == aula::process::kExitFailed;
+      if (referee_ended_early) {
+        std::cerr << "aula: the run ended before its end: the referee's report says why\n";
+        result = 1;
+      } else if (*code != 0 && !(told_referee && i == 1)) {
         std::cerr << "aula: " << programName(children[i]->name()) << " exited with code " << *code << "\n";
         result = *code == 2 ? 2 : 1;
       }
