@@ -47,7 +47,6 @@ std::string privateCopy(const std::string& path) {
   const fs::path dir = fs::path(config::cacheDir()) / "plugins";
   std::error_code error;
   fs::create_directories(dir, error);
-  static_assert(sizeof(pid_t) <= sizeof(long), "pid fits a long");
   for (int attempt = 0;; ++attempt) {
     const fs::path copy = dir / (fs::path(path).stem().string() + "." + std::to_string(static_cast<long>(::getpid())) +
                                  "." + std::to_string(attempt) + ".so");

@@ -60,13 +60,13 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&,
 
 void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
   outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
-  announceIfEnded();
+  outcome_.announceOnce(finished(), on_finished_);
   if (msg->started_utime >= 0) referee_->start(msg->started_utime);
 }
 
 void ParkingRefereeNode::onTick(int64_t utime) {
   referee_->onTick(utime);
-  announceIfEnded();
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 aula::referee::Report ParkingRefereeNode::report() const {
@@ -118,14 +118,7 @@ std::string ParkingRefereeNode::summary() const {
 
 void ParkingRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
-  announceIfEnded();
-}
-
-void ParkingRefereeNode::announceIfEnded() {
-  if (finished() && !announced_) {
-    announced_ = true;
-    if (on_finished_) on_finished_();
-  }
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 }  // namespace aula::autopark

@@ -38,7 +38,6 @@ class ParkingRefereeNode {
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
-  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
 
@@ -46,7 +45,6 @@ class ParkingRefereeNode {
   aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
-  bool announced_ = false;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
 };
 

@@ -12,6 +12,12 @@ void RunOutcome::abort(const std::string& reason) {
   if (aborted_.empty()) aborted_ = reason;
 }
 
+void RunOutcome::announceOnce(bool over, const std::function<void()>& hook) {
+  if (!over || announced_) return;
+  announced_ = true;
+  if (hook) hook();
+}
+
 void RunOutcome::addTo(Report& report) const {
   report.set("algorithm", algorithm_);
   if (ended()) report.set("finished", false);

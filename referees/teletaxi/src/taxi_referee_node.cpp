@@ -34,7 +34,7 @@ void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, cons
 
 void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
   outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
-  announceIfEnded();
+  outcome_.announceOnce(finished(), on_finished_);
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
 }
@@ -47,7 +47,7 @@ void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, co
 
 void TaxiRefereeNode::onTick(int64_t utime) {
   referee_.onTick(utime);
-  announceIfEnded();
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 aula::referee::Report TaxiRefereeNode::report() const {
@@ -92,14 +92,7 @@ std::string TaxiRefereeNode::summary() const {
 
 void TaxiRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
-  announceIfEnded();
-}
-
-void TaxiRefereeNode::announceIfEnded() {
-  if (finished() && !announced_) {
-    announced_ = true;
-    if (on_finished_) on_finished_();
-  }
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 }  // namespace aula::teletaxi

@@ -39,7 +39,6 @@ class TaxiRefereeNode {
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
-  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
@@ -49,7 +48,6 @@ class TaxiRefereeNode {
   aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
-  bool announced_ = false;
   long long bumps_ = 0;       // contacts with walls (or anything) after GO!, counted on press
   bool pressed_ = false;
 };

@@ -38,7 +38,7 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
         referee_->onTick(utime);
-        announceIfEnded();
+        outcome_.announceOnce(finished(), on_finished_);
       });
   clock_->expectWorld(world.sha256, world.source_path);
 }
@@ -55,7 +55,7 @@ void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&
 
 void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
   outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
-  announceIfEnded();
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 referee::Report CoverageRefereeNode::report() const {
@@ -96,14 +96,7 @@ std::string CoverageRefereeNode::summary() const {
 
 void CoverageRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
-  announceIfEnded();
-}
-
-void CoverageRefereeNode::announceIfEnded() {
-  if (finished() && !announced_) {
-    announced_ = true;
-    if (on_finished_) on_finished_();
-  }
+  outcome_.announceOnce(finished(), on_finished_);
 }
 
 }  // namespace aula::vacuum

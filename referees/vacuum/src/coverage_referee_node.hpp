@@ -38,7 +38,6 @@ class CoverageRefereeNode {
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
-  void announceIfEnded();
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
 
   std::unique_ptr<CoverageReferee> referee_;
@@ -48,7 +47,6 @@ class CoverageRefereeNode {
   world::OccupancyMap map_;
   std::function<void()> on_finished_;
   std::function<void(double, double, double)> on_pose_;
-  bool announced_ = false;
   long long pose_messages_ = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <aula/referee/report.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace aula::referee {
@@ -18,6 +19,8 @@ class RunOutcome {
   void abort(const std::string& reason);  // the first reason wins
 
   bool ended() const { return !fault_.empty() || !aborted_.empty(); }
+  // Calls `hook` once: the first time `over` holds (graded to the end, or ended early).
+  void announceOnce(bool over, const std::function<void()>& hook);
   const std::string& algorithm() const { return algorithm_; }
   const std::string& fault() const { return fault_; }
   const std::string& aborted() const { return aborted_; }
@@ -30,6 +33,7 @@ class RunOutcome {
  private:
   std::string algorithm_ = "unknown", fault_, aborted_;
   int64_t non_finite_commands_ = 0;
+  bool announced_ = false;
 };
 
 }  // namespace aula::referee
