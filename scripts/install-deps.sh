@@ -14,7 +14,7 @@ packages=(
   libopencv-dev
   libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth
+  xvfb xauth xdotool
   iproute2 procps python3 bc
   dpkg-dev bubblewrap ccache
 )

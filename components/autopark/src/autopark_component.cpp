@@ -24,6 +24,7 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, c
   autostart_ = cfg.getBool("Autopark.Autostart");
   robot_name_ = cfg.getString("Autopark.Robot");
   const world::RobotSpec* car = &world::requireRobot(world_, robot_name_);
+  start_ = {car->name, car->pose.translation().x(), car->pose.translation().y(), world::yawOf(car->pose)};
   // The car's three lasers are its plugins named laser_front, laser_rear and laser_right.
   pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(*car, "pose3d"));
   front_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(*car, "laser", "laser_front"));
@@ -59,6 +60,16 @@ void AutoparkComponent::step() {
   }
 }
 
+bool AutoparkComponent::reloadAlgorithm() {
+  const bool was_running = running();
+  setRunning(false);
+  const bool loaded = host_->reload();
+  started_utime_ = -1;  // the referee's clock starts again at the next Run
+  episode_->restart(start_);
+  if (was_running && loaded) setRunning(true);
+  return loaded;
+}
+
 void AutoparkComponent::setRunning(bool running) {
   loop_->setRunning(running);
   if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
@@ -72,8 +83,13 @@ void AutoparkComponent::teleoperate(double v_mps, double w_radps) {
 }
 
 void AutoparkComponent::tick(int64_t utime) {
-  if (autostart_ && !running() && utime == 0) setRunning(true);
-  episode_->tick(utime, {running(), started_utime_, std::nullopt, generation_});
+  // Autostart runs the algorithm from the first tick the component sees (sim time 0 in a
+  // headless lockstep run; later when windows join a running world), once.
+  if (autostart_ && !autostarted_) {
+    autostarted_ = true;
+    setRunning(true);
+  }
+  episode_->tick(utime, {running(), started_utime_, std::nullopt});
   if (on_tick_) on_tick_(utime);
 }
 

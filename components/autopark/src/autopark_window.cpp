@@ -58,18 +58,27 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   status_ = new QLabel(central);
   status_->setMinimumWidth(240);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
+  algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
+  side->addWidget(algorithm_);
   side->addWidget(status_);
   side->addStretch(1);
   bottom->addLayout(side);
   bottom->addWidget(teleop);
   layout->addLayout(bottom, 1);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
+  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
+    if (on) algorithm_->reloadIfRebuilt();
+    component_.setRunning(on);
+  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
   map_->setOverlay([this](QPainter& p) { drawCar(p); });
   // The trail is sampled on sim time (every control tick), not at the GUI's refresh rate.
   component_.setOnTick([this](int64_t) {
+    if (component_.generation() != shown_generation_) {
+      shown_generation_ = component_.generation();
+      trail_.clear();
+    }
     const auto& pose = component_.api().pose3d;
     if (!pose.received() || pose.utime() == last_trail_utime_) return;
     last_trail_utime_ = pose.utime();
@@ -121,8 +130,7 @@ void AutoparkWindow::drawCar(QPainter& p) const {
 void AutoparkWindow::refresh() {
   run_->setRunning(component_.running());
   const auto& pose = component_.api().pose3d;
-  status_->setText(QString("Algorithm: %1\nsim time %2 s\nx %3 m  y %4 m  yaw %5 deg\nv = %6 m/s   w = %7 rad/s\n%8")
-                       .arg(QString::fromStdString(component_.algorithmName()))
+  status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(pose.getX(), 0, 'f', 2)
                        .arg(pose.getY(), 0, 'f', 2)

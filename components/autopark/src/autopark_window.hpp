@@ -11,6 +11,7 @@
 #include <aula/gui/run_toggle.hpp>
 
 #include <QLabel>
+#include <aula/component/algorithm_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
 
@@ -46,6 +47,8 @@ class AutoparkWindow : public QMainWindow {
   LaserView* lasers_ = nullptr;
   gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
+  component::AlgorithmPanel* algorithm_ = nullptr;
+  int shown_generation_ = 0;  // a new episode (hot reload) clears the trail
   QTimer timer_;
   std::deque<QPointF> trail_;  // recent positions (a ring of the last kTrail)
   int64_t last_trail_utime_ = -1;

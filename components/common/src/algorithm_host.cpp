@@ -44,14 +44,36 @@ AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, 
 
 void AlgorithmHostBase::loadPlugin() {
   if (choice_ == "student") {
-    plugin_ = std::make_unique<PluginLibrary>(studentPluginPath(exercise_), exercise_);
-    return;
-  }
-  if (!namesPlugin(choice_)) {
+    plugin_path_ = studentPluginPath(exercise_);
+  } else if (namesPlugin(choice_)) {
+    plugin_path_ = fs::absolute(choice_).lexically_normal().string();
+  } else {
     throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ +
                       " and not a plugin file (PATH.so)");
   }
-  plugin_ = std::make_unique<PluginLibrary>(fs::absolute(choice_).lexically_normal().string(), exercise_);
+  plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
+}
+
+bool AlgorithmHostBase::reloadPlugin() {
+  const std::string file = fs::path(plugin_path_).filename().string();
+  plugin_.reset();
+  try {
+    loadPlugin();
+  } catch (const PluginError& e) {
+    refused_mtime_ns_ = PluginLibrary::mtimeNs(plugin_path_);
+    fault_ = "reloading " + file + " failed: " + e.what();
+    motors_.stop();
+    std::cerr << program_ << ": " << fault_ << std::endl;
+    return false;
+  }
+  std::cerr << program_ << ": loaded " << label() << std::endl;
+  return true;
+}
+
+bool AlgorithmHostBase::pluginChanged() const {
+  if (plugin_ != nullptr) return plugin_->changedOnDisk();
+  const int64_t now = isPlugin() ? PluginLibrary::mtimeNs(plugin_path_) : -1;
+  return now >= 0 && now != refused_mtime_ns_;
 }
 
 std::string AlgorithmHostBase::name() const {
@@ -59,7 +81,7 @@ std::string AlgorithmHostBase::name() const {
 }
 
 std::string AlgorithmHostBase::label() const {
-  if (plugin_ == nullptr) return choice_;
+  if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
   return fs::path(plugin_->path()).filename().string() + " (built " + plugin_->builtAt() + ")";
 }
 

@@ -1,6 +1,8 @@
 #include "aula/component/episode_sender.hpp"
 
 #include <aula/episode_t.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/sim_control_t.hpp>
 
 namespace aula::component {
 
@@ -17,10 +19,22 @@ void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
   msg.started_utime = state.started_utime;
   msg.fault = host_.fault();
   msg.non_finite_commands = host_.nonFiniteCommands();
-  msg.generation = state.generation;
+  msg.generation = generation_;
   bus_.publish(channel_, &msg);
   last_utime_ = utime;
   changed_ = false;
+}
+
+void EpisodeSender::restart(const StartPose& start) {
+  aula::sim_control_t teleport{};
+  teleport.command = aula::sim_control_t::SET_POSE;
+  teleport.robot = start.robot;
+  teleport.x = start.x_m;
+  teleport.y = start.y_m;
+  teleport.yaw = start.yaw_rad;
+  bus_.publish(lcmbus::kControlChannel, &teleport);
+  ++generation_;
+  changed_ = true;
 }
 
 }  // namespace aula::component

@@ -17,13 +17,13 @@
 namespace aula::component {
 namespace fs = std::filesystem;
 
-namespace {
-
-int64_t mtimeNs(const std::string& path) {
+int64_t PluginLibrary::mtimeNs(const std::string& path) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return -1;
   return static_cast<int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec;
 }
+
+namespace {
 
 std::string localTime(int64_t ns) {
   const std::time_t t = static_cast<std::time_t>(ns / 1'000'000'000);

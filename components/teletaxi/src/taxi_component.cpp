@@ -22,6 +22,7 @@ TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const wor
 
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
   start_xy_m_ = {robot.pose.translation().x(), robot.pose.translation().y()};
+  start_ = {robot.name, start_xy_m_.first, start_xy_m_.second, world::yawOf(robot.pose)};
   // The configured destination must be one the taxi can reach: refused at once, with the reason.
   const auto d = cfg.getDoubleList("TeleTaxi.Destination");
   if (const auto problem = destinationProblem(d[0], d[1])) {
@@ -107,6 +108,16 @@ bool TaxiComponent::go(std::string* why) {
   return true;
 }
 
+bool TaxiComponent::reloadAlgorithm() {
+  stop();
+  const bool loaded = host_->reload();
+  started_utime_ = -1;  // the referee's clock starts again at the next GO!
+  path_generated_ = false;
+  grid_->resetPath();
+  episode_->restart(start_);
+  return loaded;
+}
+
 void TaxiComponent::stop() {
   loop_->setRunning(false);
   episode_->markChanged();
@@ -132,7 +143,7 @@ void TaxiComponent::tick(int64_t utime) {
     loop_->setRunning(true);
     episode_->markChanged();
   }
-  episode_->tick(utime, {running(), started_utime_, destination_, generation_});
+  episode_->tick(utime, {running(), started_utime_, destination_});
   if (on_tick_) on_tick_(utime);
 }
 

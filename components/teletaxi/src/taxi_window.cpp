@@ -38,6 +38,8 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   info->setMinimumWidth(330);
   for (auto* l : {destination_label_, position_label_, velocity_label_, status_label_}) info_layout->addWidget(l);
   side->addWidget(info);
+  algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return reloadAlgorithm(); }, central);
+  side->addWidget(algorithm_);
 
   auto* generate = new QPushButton("Generate Path", central);
   auto* go = new QPushButton("GO!", central);
@@ -64,6 +66,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
     status_label_->setText("Destination chosen: press Generate Path");
   });
   connect(generate, &QPushButton::clicked, this, [this] {
+    algorithm_->reloadIfRebuilt();
     std::string why;
     status_label_->setText(component_.generatePath(&why) ? "Path generated: press GO!" : QString::fromStdString(why));
     path_shown_ = false;
@@ -83,6 +86,13 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   connect(&timer_, &QTimer::timeout, this, &TaxiWindow::refresh);
   timer_.start(50);
   refresh();
+}
+
+bool TaxiWindow::reloadAlgorithm() {
+  const bool loaded = component_.reloadAlgorithm();
+  map_->setPath({});
+  status_label_->setText(loaded ? "Algorithm reloaded, taxi back at its start: press Generate Path" : "The reload failed: see below");
+  return loaded;
 }
 
 void TaxiWindow::updatePathOverlay() {

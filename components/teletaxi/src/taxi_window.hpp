@@ -8,6 +8,7 @@
 #include <aula/teletaxi/taxi_component.hpp>
 
 #include <QLabel>
+#include <aula/component/algorithm_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
 
@@ -24,6 +25,7 @@ class TaxiWindow : public QMainWindow {
   void refresh();
   void showGridField();
   void updatePathOverlay();
+  bool reloadAlgorithm();  // hot reload: the path is gone and the taxi is back at its start
 
   TaxiComponent& component_;
   gui::MapView* map_ = nullptr;
@@ -31,6 +33,7 @@ class TaxiWindow : public QMainWindow {
   QLabel* position_label_ = nullptr;
   QLabel* velocity_label_ = nullptr;
   QLabel* status_label_ = nullptr;
+  component::AlgorithmPanel* algorithm_ = nullptr;
   QLabel* grid_window_ = nullptr;
   QTimer timer_;
   bool path_shown_ = false;

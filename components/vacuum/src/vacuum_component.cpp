@@ -15,6 +15,7 @@ VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
   map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("Vacuum.Robot"));
+  start_ = {robot.name, robot.pose.translation().x(), robot.pose.translation().y(), world::yawOf(robot.pose)};
   robot_radius_m_ = robot.shape.kind == world::ShapeKind::Cylinder ? robot.shape.radius_m
                                                                     : 0.5 * robot.shape.box_size_m.head<2>().norm();
   pose_ = std::make_unique<component::Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
@@ -41,11 +42,13 @@ void VacuumComponent::step() {
   }
 }
 
-void VacuumComponent::reloadAlgorithm() {
+bool VacuumComponent::reloadAlgorithm() {
+  const bool was_running = running();
   setRunning(false);
-  host_->reload();
-  ++generation_;
-  episode_->markChanged();
+  const bool loaded = host_->reload();
+  episode_->restart(start_);
+  if (was_running && loaded) setRunning(true);
+  return loaded;
 }
 
 void VacuumComponent::setRunning(bool running) {
@@ -60,8 +63,13 @@ void VacuumComponent::teleoperate(double v_mps, double w_radps) {
 }
 
 void VacuumComponent::tick(int64_t utime) {
-  if (autostart_ && !running() && utime == 0) setRunning(true);
-  episode_->tick(utime, {running(), -1, std::nullopt, generation_});
+  // Autostart runs the algorithm from the first tick the component sees (sim time 0 in a
+  // headless lockstep run; later when windows join a running world), once.
+  if (autostart_ && !autostarted_) {
+    autostarted_ = true;
+    setRunning(true);
+  }
+  episode_->tick(utime, {running(), -1, std::nullopt});
   if (on_tick_) on_tick_(utime);
 }
 

@@ -34,14 +34,19 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   status_->setWordWrap(true);
   status_->setMinimumWidth(260);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
+  algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
+  side->addWidget(algorithm_);
   side->addWidget(status_);
   side->addWidget(teleop);
   plot_ = new CoveragePlot(component_.runDurationS(), central);
   side->addWidget(plot_, 1);
   layout->addLayout(side);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) { component_.setRunning(on); });
+  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
+    if (on) algorithm_->reloadIfRebuilt();
+    component_.setRunning(on);
+  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
@@ -53,6 +58,13 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
 }
 
 void VacuumWindow::onTick(int64_t utime) {
+  if (component_.generation() != shown_generation_) {
+    shown_generation_ = component_.generation();
+    map_->clearPainted();
+    plot_->clear();
+    coverage_.reset();
+    run_start_utime_ = last_sample_utime_ = -1;
+  }
   const auto& p = component_.truePose();
   if (!p.received() || p.utime() == last_pose_utime_) return;
   last_pose_utime_ = p.utime();
@@ -75,8 +87,7 @@ void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 2 * component_.robotRadiusM(), 2 * component_.robotRadiusM());
   run_->setRunning(component_.running());
-  status_->setText(QString("Algorithm: %1\nsim time %2 s\ncleaned %5 % of the floor since Run\nv = %3 m/s   w = %4 rad/s")
-                       .arg(QString::fromStdString(component_.algorithmName()))
+  status_->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(component_.motors().getV(), 0, 'f', 2)
                        .arg(component_.motors().getW(), 0, 'f', 2)

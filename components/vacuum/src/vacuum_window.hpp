@@ -4,6 +4,7 @@
 // algorithm), the "Run my algorithm" toggle, the teleoperator and Stop, and the cleaned
 // percentage since Run (the referee's CoverageGrid on the same map) with its plot.
 
+#include <aula/component/algorithm_panel.hpp>
 #include <aula/gui/map_view.hpp>
 #include <aula/gui/run_toggle.hpp>
 #include <aula/gui/teleoperator.hpp>
@@ -36,6 +37,8 @@ class VacuumWindow : public QMainWindow {
   gui::MapView* map_ = nullptr;
   gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
+  component::AlgorithmPanel* algorithm_ = nullptr;
+  int shown_generation_ = 0;  // a new episode (hot reload) clears the cleaned area
   QTimer timer_;
   CoveragePlot* plot_ = nullptr;
   int64_t last_pose_utime_ = -1;

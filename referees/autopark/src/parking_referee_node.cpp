@@ -33,7 +33,9 @@ ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
 ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
   const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
-  referee_ = std::make_unique<ParkingReferee>(ParkingScene::fromWorld(world, car.name), parkingRefereeSettings(cfg));
+  scene_ = ParkingScene::fromWorld(world, car.name);
+  settings_ = parkingRefereeSettings(cfg);
+  referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
   lcmbus::subscribe(bus, world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
   lcmbus::subscribe(bus, world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
   lcmbus::subscribe(bus, cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
@@ -44,10 +46,12 @@ ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg,
 }
 
 void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   referee_->onPose(msg->utime, msg->x, msg->y, msg->yaw);
 }
 
 void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   const long long before = referee_->collisions();
   referee_->onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
   if (referee_->collisions() > before) {
@@ -59,7 +63,11 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&,
 }
 
 void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
+    // Hot reload: the car is back at its start; the clock starts again at the next Run.
+    referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
+    episode_from_utime_ = msg->utime;
+  }
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->started_utime >= 0) referee_->start(msg->started_utime);
 }

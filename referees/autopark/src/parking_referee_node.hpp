@@ -41,6 +41,9 @@ class ParkingRefereeNode {
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
   void onTick(int64_t utime);
 
+  ParkingScene scene_;
+  ParkingRefereeSettings settings_;
+  int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   std::unique_ptr<ParkingReferee> referee_;
   aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;

@@ -2,10 +2,18 @@
 
 namespace aula::referee {
 
-void RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands) {
+bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands,
+                           int generation) {
+  const bool new_episode = generation > generation_;
+  if (new_episode) {
+    generation_ = generation;
+    fault_.clear();
+    announced_ = false;
+  }
   algorithm_ = algorithm;
   if (fault_.empty()) fault_ = fault;
   non_finite_commands_ = non_finite_commands;
+  return new_episode;
 }
 
 void RunOutcome::abort(const std::string& reason) {
@@ -24,6 +32,8 @@ void RunOutcome::addTo(Report& report) const {
   if (!fault_.empty()) report.set("algorithm_error", fault_);
   if (!aborted_.empty()) report.set("aborted", aborted_);
   if (non_finite_commands_ > 0) report.set("non_finite_commands", static_cast<long long>(non_finite_commands_));
+  // Graded is the episode after this many hot reloads of the algorithm.
+  if (generation_ > 0) report.set("reloads", static_cast<long long>(generation_));
 }
 
 std::string RunOutcome::summary() const {

@@ -16,7 +16,7 @@ TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
 }
 
 TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : referee_(taxiRefereeSettings(cfg)), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+    : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
   lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
   lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
@@ -29,17 +29,25 @@ TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const
 }
 
 void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   referee_.onPose(msg->utime, msg->x, msg->y, msg->yaw);
 }
 
 void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
+    // Hot reload: the taxi is back at its start; the clock starts again at the next GO!.
+    referee_ = TaxiReferee(settings_);
+    episode_from_utime_ = msg->utime;
+    bumps_ = 0;
+    pressed_ = false;
+  }
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
 }
 
 void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   const bool pressed = msg->state == aula::bumper_t::PRESSED;
   if (pressed && !pressed_ && referee_.started() && !referee_.finished()) ++bumps_;
   pressed_ = pressed;

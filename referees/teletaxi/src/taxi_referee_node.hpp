@@ -43,6 +43,8 @@ class TaxiRefereeNode {
   void onTick(int64_t utime);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
 
+  TaxiRefereeSettings settings_;
+  int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   TaxiReferee referee_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   aula::referee::RunOutcome outcome_;

@@ -10,10 +10,12 @@ double coverageMark(double coverage_percent, double full_mark_coverage_percent) 
   return std::clamp(10.0 * coverage_percent / full_mark_coverage_percent, 0.0, 10.0);
 }
 
-CoverageReferee::CoverageReferee(CoverageGrid grid, CoverageSettings settings)
-    : grid_(std::move(grid)), settings_(settings) {}
+CoverageReferee::CoverageReferee(CoverageGrid grid, CoverageSettings settings, int64_t origin_utime)
+    : grid_(std::move(grid)), settings_(settings), origin_utime_(origin_utime) {}
 
-void CoverageReferee::onPose(int64_t utime, double x_m, double y_m) {
+void CoverageReferee::onPose(int64_t sim_utime, double x_m, double y_m) {
+  const int64_t utime = sim_utime - origin_utime_;
+  if (utime < 0) return;
   if (finished_ || utime > static_cast<int64_t>(std::llround(settings_.duration_s * 1e6))) return;
   grid_.markDisc(x_m, y_m, settings_.robot_radius_m);
   const int64_t window_us = static_cast<int64_t>(settings_.stuck_window_s * 1e6);
@@ -37,8 +39,9 @@ void CoverageReferee::onBump(int64_t, bool pressed) {
   pressed_ = pressed;
 }
 
-void CoverageReferee::onTick(int64_t utime) {
-  if (finished_) return;
+void CoverageReferee::onTick(int64_t sim_utime) {
+  const int64_t utime = sim_utime - origin_utime_;
+  if (finished_ || utime < 0) return;
   now_utime_ = utime;
   // Coverage gain in each finished 100 s slice.
   while (utime >= static_cast<int64_t>(per_100s_.size() + 1) * 100'000'000 &&

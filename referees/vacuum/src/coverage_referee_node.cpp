@@ -15,7 +15,7 @@ namespace aula::vacuum {
 
 CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
-  CoverageSettings s;
+  CoverageSettings& s = settings_;
   s.duration_s = cfg.getDouble("Vacuum.Referee.Duration");
   s.full_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.FullMarkCoverage");
   s.robot_radius_m = cfg.getDouble("Vacuum.Referee.RobotRadius");
@@ -24,8 +24,10 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   // The floor is the free space reachable from where the robot starts in the world.
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("Vacuum.Robot"));
   const Eigen::Vector3d start = robot.pose.translation();
+  start_x_m_ = start.x();
+  start_y_m_ = start.y();
   try {
-    referee_ = std::make_unique<CoverageReferee>(CoverageGrid(map_.image, map_.transform, start.x(), start.y()), s);
+    referee_ = newReferee(0);
   } catch (const std::exception& e) {
     throw world::WorldError(world.source_path + ": robot '" + robot.name + "' starts at (" + std::to_string(start.x()) +
                             ", " + std::to_string(start.y()) + "), which is not on the floor of the map (" + e.what() + ")");
@@ -43,18 +45,30 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   clock_->expectWorld(world.sha256, world.source_path);
 }
 
+std::unique_ptr<CoverageReferee> CoverageRefereeNode::newReferee(int64_t origin_utime) const {
+  return std::make_unique<CoverageReferee>(CoverageGrid(map_.image, map_.transform, start_x_m_, start_y_m_), settings_,
+                                           origin_utime);
+}
+
 void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   ++pose_messages_;
   referee_->onPose(msg->utime, msg->x, msg->y);
   if (on_pose_) on_pose_(msg->x, msg->y, msg->yaw);
 }
 
 void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+  if (msg->utime <= episode_from_utime_) return;
   referee_->onBump(msg->utime, msg->state == aula::bumper_t::PRESSED);
 }
 
 void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
-  outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands);
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
+    // Hot reload: the robot is back at its start; a new 900 s from now.
+    referee_ = newReferee(msg->utime);
+    episode_from_utime_ = msg->utime;
+    pose_messages_ = 0;
+  }
   outcome_.announceOnce(finished(), on_finished_);
 }
 

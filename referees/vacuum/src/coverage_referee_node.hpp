@@ -34,12 +34,18 @@ class CoverageRefereeNode {
   // Called for every pose (GUI painting).
   void setOnPose(std::function<void(double, double, double)> hook) { on_pose_ = std::move(hook); }
   const world::OccupancyMap& map() const { return map_; }
+  int episode() const { return outcome_.generation(); }  // counts hot reloads
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
 
+  std::unique_ptr<CoverageReferee> newReferee(int64_t origin_utime) const;
+
+  CoverageSettings settings_;
+  double start_x_m_ = 0, start_y_m_ = 0;
+  int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   std::unique_ptr<CoverageReferee> referee_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   aula::referee::RunOutcome outcome_;

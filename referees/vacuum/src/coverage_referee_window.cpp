@@ -21,6 +21,10 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   map_->setMinimumSize(480, 480);
   // The cleaned area, painted from the same true poses the referee counts.
   node_.setOnPose([this](double x, double y, double yaw) {
+    if (node_.episode() != shown_episode_) {  // hot reload: a new episode from the start
+      shown_episode_ = node_.episode();
+      map_->clearPainted();
+    }
     map_->paintDisc(x, y, node_.referee().settings().robot_radius_m, QColor(80, 170, 255, 200));
     map_->setRobot(x, y, yaw, 2 * node_.referee().settings().robot_radius_m, 2 * node_.referee().settings().robot_radius_m);
   });

@@ -25,6 +25,7 @@ class CoverageRefereeWindow : public QWidget {
   void refresh();
   CoverageRefereeNode& node_;
   gui::MapView* map_ = nullptr;
+  int shown_episode_ = 0;  // a hot reload clears the painted area
   QLabel* percent_ = nullptr;
   QProgressBar* bar_ = nullptr;
   QLabel* countdown_ = nullptr;

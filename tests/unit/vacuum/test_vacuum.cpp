@@ -97,6 +97,29 @@ TEST(CoverageReferee, MarkPerHundredSecondsAndTheEnd) {
   EXPECT_NEAR(total, r.coveragePercent(), 1e-9);
 }
 
+TEST(CoverageReferee, ANewEpisodeCountsFromItsOrigin) {
+  // A hot reload at 500 s: the referee's 300 s run from there, and truth before it is ignored.
+  CoverageSettings s;
+  s.duration_s = 300;
+  s.robot_radius_m = 0.1;
+  const int64_t origin = 500'000'000;
+  CoverageReferee r(CoverageGrid(tinyMap(), tinyTransform(), 0.3, 0.5), s, origin);
+  r.onPose(origin - 20'000, 0.7, 0.5);  // the last episode's
+  r.onTick(origin - 1'000'000);
+  EXPECT_DOUBLE_EQ(r.coveragePercent(), 0.0);
+  EXPECT_DOUBLE_EQ(r.elapsedS(), 0.0);
+  r.onPose(origin, 0.3, 0.5);
+  const double start_footprint = r.coveragePercent();
+  EXPECT_GT(start_footprint, 0.0);
+  r.onTick(origin + 299'000'000);
+  EXPECT_FALSE(r.finished());
+  EXPECT_DOUBLE_EQ(r.elapsedS(), 299.0);
+  EXPECT_EQ(r.coveragePer100s().size(), 2u);
+  r.onTick(origin + 300'000'000);
+  EXPECT_TRUE(r.finished());
+  EXPECT_DOUBLE_EQ(r.elapsedS(), 300.0);
+}
+
 TEST(CoverageReferee, CountsBumpsAndTimeStuck) {
   CoverageSettings s;
   CoverageReferee r(CoverageGrid(tinyMap(), tinyTransform(), 0.3, 0.5), s);

@@ -24,6 +24,10 @@ class AutoparkComponent {
   AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   void setRunning(bool running);  // "Run my algorithm" toggle
+  // Hot reload: loads the algorithm again (a plugin's new build), puts the car back at its start
+  // and starts a new episode, running if it ran. False when the new build cannot be used.
+  bool reloadAlgorithm();
+  int generation() const { return episode_->generation(); }
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll() { loop_->poll(); }
@@ -48,13 +52,14 @@ class AutoparkComponent {
   std::string algorithm_name_, episode_channel_, robot_name_;
   double period_s_;
   bool autostart_ = false;
+  bool autostarted_ = false;
   std::unique_ptr<component::Pose3dProxy> pose_;
   std::unique_ptr<component::LaserProxy> front_, rear_, right_;
   std::unique_ptr<component::MotorsProxy> motors_;
   std::unique_ptr<AutoparkApi> api_;
   std::unique_ptr<component::AlgorithmHost<AutoparkAlgorithm>> host_;  // the algorithm is created at the first tick
   std::unique_ptr<component::EpisodeSender> episode_;
-  int generation_ = 0;
+  component::StartPose start_;
   std::unique_ptr<component::ControlLoop> loop_;
   int64_t started_utime_ = -1;
   std::function<void(int64_t)> on_tick_;

@@ -32,11 +32,13 @@ class AlgorithmHostBase {
   const std::string& choice() const { return choice_; }
   // For reports: a built-in's name, or the plugin's file name ("libmy_algorithm.so").
   std::string name() const;
-  bool isPlugin() const { return plugin_ != nullptr; }
+  bool isPlugin() const { return !plugin_path_.empty(); }
+  // The plugin's file ("" for a built-in), kept when a reload failed: the window watches it.
+  const std::string& pluginPath() const { return plugin_path_; }
   // What runs, for windows and logs: "reference", or "libmy_algorithm.so (built 2026-11-23 17:04:12)".
   std::string label() const;
   // A rebuilt plugin waits on disk (hot reload: the window offers it at the next Run).
-  bool pluginChanged() const { return plugin_ != nullptr && plugin_->changedOnDisk(); }
+  bool pluginChanged() const;
   // Why the algorithm was halted ("execute() threw std::runtime_error: ..."), or "".
   const std::string& fault() const { return fault_; }
   int64_t nonFiniteCommands() const { return motors_.nonFiniteTotal(); }
@@ -47,12 +49,16 @@ class AlgorithmHostBase {
   AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
                     double execute_budget_s);
   void loadPlugin();
+  // Loads the plugin again; a file that cannot be used becomes the fault.
+  bool reloadPlugin();
   // Runs `call` under the watchdog; an exception becomes the fault. False when it threw.
   bool guarded(const char* what, const std::function<void()>& call);
 
   std::string program_, exercise_, choice_;
   Motors& motors_;
+  std::string plugin_path_;
   std::unique_ptr<PluginLibrary> plugin_;
+  int64_t refused_mtime_ns_ = -1;  // the build a reload could not use: not offered again
   std::string fault_;
 
  private:
@@ -86,20 +92,19 @@ class AlgorithmHost : public AlgorithmHostBase {
   }
 
   // Drops the algorithm and, for a plugin, loads the file again (a new build). The next call
-  // creates a fresh algorithm. Throws PluginError when the new file is unusable (the old one is
-  // then gone too: nothing half-loaded runs).
-  void reload() {
+  // creates a fresh algorithm. False when the new file cannot be used: the fault says why, and
+  // nothing runs (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
+  bool reload() {
     algorithm_.reset();
     fault_.clear();
-    if (plugin_ != nullptr) {
-      plugin_.reset();
-      loadPlugin();
-    }
+    if (plugin_ == nullptr && builtins_.count(choice_) != 0) return true;
+    return reloadPlugin();
   }
 
  private:
   std::unique_ptr<Algorithm> create(uint64_t seed) {
     const auto builtin = builtins_.find(choice_);
+    if (builtin == builtins_.end() && plugin_ == nullptr) throw std::runtime_error("no algorithm is loaded");
     auto made = builtin != builtins_.end() ? builtin->second(seed) : plugin_->make<Algorithm>(seed);
     if (!made) throw std::runtime_error("the algorithm's factory returned no algorithm");
     return made;

@@ -41,6 +41,8 @@ class PluginLibrary {
   const std::string& builtAt() const { return built_at_; }
   // True when the file on disk is newer than what is loaded (a rebuild since).
   bool changedOnDisk() const;
+  // A file's modification time in ns since the epoch, or -1 when it cannot be read.
+  static int64_t mtimeNs(const std::string& path);
 
  private:
   std::string path_, built_at_;

@@ -37,6 +37,11 @@ class TaxiComponent {
   bool generatePath(std::string* why = nullptr);
   bool go(std::string* why = nullptr);  // "GO!": execute() every control period from now on
   void stop();                           // "Stop": algorithm off, taxi stopped
+  // Hot reload: loads the algorithm again (a plugin's new build), puts the taxi back at its start
+  // and starts a new episode (generate the path and GO! again). False when the new build cannot
+  // be used (the algorithm's fault says why).
+  bool reloadAlgorithm();
+  int generation() const { return episode_->generation(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll();                           // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
@@ -71,7 +76,7 @@ class TaxiComponent {
   world::OccupancyMap map_;
   std::pair<double, double> start_xy_m_{0, 0};  // the robot's pose in the world
   std::unique_ptr<component::AlgorithmHost<TaxiAlgorithm>> host_;
-  int generation_ = 0;
+  component::StartPose start_;
   std::unique_ptr<TaxiApi> api_;
   std::unique_ptr<component::ControlLoop> loop_;
   std::optional<std::pair<double, double>> destination_;

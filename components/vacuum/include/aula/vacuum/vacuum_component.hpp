@@ -38,8 +38,11 @@ class VacuumComponent {
   int64_t simTimeUs() const { return loop_->simTimeUs(); }
   const std::string& algorithmName() const { return algorithm_name_; }
   const component::AlgorithmHostBase& algorithm() const { return *host_; }
-  // A rebuilt plugin: load it, put the robot back at its start, start a new episode.
-  void reloadAlgorithm();
+  // Hot reload: loads the algorithm again (a plugin's new build), puts the robot back at its
+  // start and starts a new episode, running if it ran. False when the new build cannot be
+  // used (the algorithm's fault says why).
+  bool reloadAlgorithm();
+  int generation() const { return episode_->generation(); }
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   const world::OccupancyMap& map() const { return map_; }
@@ -58,6 +61,7 @@ class VacuumComponent {
   double period_s_;
   double run_duration_s_ = 900;
   bool autostart_ = false;
+  bool autostarted_ = false;
   std::unique_ptr<component::Pose3dProxy> pose_;
   std::unique_ptr<component::LaserProxy> laser_;
   std::unique_ptr<component::BumperProxy> bumper_;
@@ -67,7 +71,7 @@ class VacuumComponent {
   std::unique_ptr<component::AlgorithmHost<VacuumAlgorithm>> host_;  // created at the first tick, with the run's seed
   std::unique_ptr<component::ControlLoop> loop_;
   std::unique_ptr<component::EpisodeSender> episode_;
-  int generation_ = 0;
+  component::StartPose start_;
   std::function<void(int64_t)> on_tick_;
 };
 

@@ -4,6 +4,9 @@
 // it refused, and an abort from the launcher (a process died, execute() hung). A fault or an
 // abort ends the grading: the report keeps the mark earned so far and says why it stopped,
 // with "finished": false.
+//
+// A new generation in the episode messages is a new episode (the student reloaded their
+// algorithm): the referee grades it from scratch, and the fault of the previous build is gone.
 
 #include <aula/referee/report.hpp>
 
@@ -15,7 +18,8 @@ namespace aula::referee {
 
 class RunOutcome {
  public:
-  void onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands);
+  // True when `generation` starts a new episode: the caller then resets its grading.
+  bool onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands, int generation);
   void abort(const std::string& reason);  // the first reason wins
 
   bool ended() const { return !fault_.empty() || !aborted_.empty(); }
@@ -24,8 +28,9 @@ class RunOutcome {
   const std::string& algorithm() const { return algorithm_; }
   const std::string& fault() const { return fault_; }
   const std::string& aborted() const { return aborted_; }
+  int generation() const { return generation_; }
   // The report's fields: algorithm, and when they apply algorithm_error, aborted,
-  // non_finite_commands; "finished" becomes false when the run ended early.
+  // non_finite_commands, reloads; "finished" becomes false when the run ended early.
   void addTo(Report& report) const;
   // "" or one line per reason, for the printed summary.
   std::string summary() const;
@@ -33,6 +38,7 @@ class RunOutcome {
  private:
   std::string algorithm_ = "unknown", fault_, aborted_;
   int64_t non_finite_commands_ = 0;
+  int generation_ = 0;
   bool announced_ = false;
 };
 

@@ -22,14 +22,15 @@ double coverageMark(double coverage_percent, double full_mark_coverage_percent);
 
 class CoverageReferee {
  public:
-  CoverageReferee(CoverageGrid grid, CoverageSettings settings);
+  // `origin_utime`: the sim time the episode starts at (a hot reload starts a new one later).
+  CoverageReferee(CoverageGrid grid, CoverageSettings settings, int64_t origin_utime = 0);
 
   void onPose(int64_t utime, double x_m, double y_m);
   void onBump(int64_t utime, bool pressed);
   void onTick(int64_t utime);
 
   bool finished() const { return finished_; }
-  double elapsedS() const { return (end_utime_ >= 0 ? end_utime_ : now_utime_) / 1e6; }
+  double elapsedS() const { return (end_utime_ >= 0 ? end_utime_ : now_utime_) / 1e6; }  // since the origin
   double remainingS() const { return std::max(0.0, settings_.duration_s - elapsedS()); }
   double coveragePercent() const { return grid_.coveragePercent(); }
   double mark() const { return coverageMark(coveragePercent(), settings_.full_mark_coverage_percent); }
@@ -42,8 +43,9 @@ class CoverageReferee {
  private:
   CoverageGrid grid_;
   CoverageSettings settings_;
+  int64_t origin_utime_;
   bool finished_ = false;
-  int64_t now_utime_ = 0;
+  int64_t now_utime_ = 0;  // since the origin, like every time below
   int64_t end_utime_ = -1;
   bool pressed_ = false;
   long long bumps_ = 0;

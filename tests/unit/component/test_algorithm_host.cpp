@@ -1,0 +1,92 @@
+// The algorithm host's hot reload on a real plugin file: a new build is noticed, a build that
+// cannot be used becomes the fault (nothing runs, nothing crashes) and is not offered again,
+// and the next good build runs a fresh algorithm.
+#include <aula/component/algorithm_host.hpp>
+#include <aula/vacuum/vacuum_algorithm.hpp>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+namespace fs = std::filesystem;
+using aula::component::AlgorithmHost;
+using aula::component::Motors;
+using aula::vacuum::VacuumAlgorithm;
+
+namespace {
+
+// Replaces `to` and moves its modification time on (file systems keep it to the nanosecond,
+// but two writes in one test can still share a tick).
+void replaceFile(const fs::path& from, const fs::path& to) {
+  const auto before = fs::exists(to) ? fs::last_write_time(to) : fs::file_time_type::min();
+  fs::copy_file(from, to, fs::copy_options::overwrite_existing);
+  fs::last_write_time(to, std::max(fs::last_write_time(to), before + std::chrono::seconds(1)));
+}
+
+class AlgorithmHostReload : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("aula-host-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    ::setenv("XDG_CACHE_HOME", (dir_ / "cache").c_str(), 1);
+    plugin_ = dir_ / "libmy_algorithm.so";
+    replaceFile(AULA_PLUGIN_DOES_NOTHING, plugin_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_, plugin_;
+};
+
+}  // namespace
+
+TEST_F(AlgorithmHostReload, ABadBuildBecomesTheFaultAndTheNextGoodOneRuns) {
+  Motors motors(1.0, 1.0);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, plugin_.string(), motors, 0);
+  auto run = [&] { return host.call(1, "execute()", [](VacuumAlgorithm&) {}); };
+  EXPECT_TRUE(run());
+  EXPECT_FALSE(host.pluginChanged());
+
+  {  // The student's build broke: not a shared library any more.
+    std::ofstream(dir_ / "broken.so") << "not an ELF file";
+    replaceFile(dir_ / "broken.so", plugin_);
+  }
+  EXPECT_TRUE(host.pluginChanged());
+  EXPECT_FALSE(host.reload());
+  EXPECT_NE(host.fault().find("reloading libmy_algorithm.so failed"), std::string::npos) << host.fault();
+  EXPECT_NE(host.fault().find("not a shared library"), std::string::npos) << host.fault();
+  EXPECT_FALSE(run());                  // nothing loaded, nothing runs
+  EXPECT_FALSE(host.pluginChanged());   // the refused build is not offered again
+  EXPECT_EQ(host.pluginPath(), fs::absolute(plugin_).lexically_normal().string());
+
+  replaceFile(AULA_PLUGIN_DOES_NOTHING, plugin_);  // fixed and rebuilt
+  EXPECT_TRUE(host.pluginChanged());
+  EXPECT_TRUE(host.reload());
+  EXPECT_EQ(host.fault(), "");
+  EXPECT_TRUE(run());
+  EXPECT_NE(host.label().find("libmy_algorithm.so (built "), std::string::npos) << host.label();
+}
+
+TEST(AlgorithmHost, ReloadingABuiltInCreatesAFreshAlgorithm) {
+  int created = 0;
+  struct Counted : VacuumAlgorithm {
+    void execute(aula::vacuum::VacuumApi&) override {}
+  };
+  Motors motors(1.0, 1.0);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum",
+                                      {{"counted", [&](uint64_t) {
+                                          ++created;
+                                          return std::make_unique<Counted>();
+                                        }}},
+                                      "counted", motors, 0);
+  host.call(1, "execute()", [](VacuumAlgorithm&) {});
+  host.call(1, "execute()", [](VacuumAlgorithm&) {});
+  EXPECT_EQ(created, 1);
+  EXPECT_TRUE(host.reload());
+  host.call(1, "execute()", [](VacuumAlgorithm&) {});
+  EXPECT_EQ(created, 2);
+  EXPECT_FALSE(host.isPlugin());
+}

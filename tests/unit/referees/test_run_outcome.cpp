@@ -1,0 +1,48 @@
+#include <aula/referee/run_outcome.hpp>
+
+#include <gtest/gtest.h>
+
+using aula::referee::Report;
+using aula::referee::RunOutcome;
+
+TEST(RunOutcome, AFaultEndsTheRunAndIsAnnouncedOnce) {
+  RunOutcome outcome;
+  int announced = 0;
+  EXPECT_FALSE(outcome.onEpisode("libmy.so", "", 0, 0));
+  outcome.announceOnce(outcome.ended(), [&] { ++announced; });
+  EXPECT_EQ(announced, 0);
+  outcome.onEpisode("libmy.so", "execute() threw std::runtime_error: boom", 2, 0);
+  outcome.onEpisode("libmy.so", "a later fault does not replace the first", 2, 0);
+  EXPECT_TRUE(outcome.ended());
+  outcome.announceOnce(outcome.ended(), [&] { ++announced; });
+  outcome.announceOnce(outcome.ended(), [&] { ++announced; });
+  EXPECT_EQ(announced, 1);
+  EXPECT_EQ(outcome.fault(), "execute() threw std::runtime_error: boom");
+}
+
+TEST(RunOutcome, AReloadStartsANewEpisodeWithoutTheOldFault) {
+  RunOutcome outcome;
+  int announced = 0;
+  outcome.onEpisode("libmy.so", "execute() threw std::runtime_error: boom", 3, 0);
+  outcome.announceOnce(outcome.ended(), [&] { ++announced; });
+  EXPECT_TRUE(outcome.onEpisode("libmy.so", "", 0, 1));  // the student fixed it and reloaded
+  EXPECT_FALSE(outcome.onEpisode("libmy.so", "", 0, 1));  // the same episode again
+  EXPECT_FALSE(outcome.ended());
+  EXPECT_EQ(outcome.generation(), 1);
+  outcome.announceOnce(true, [&] { ++announced; });  // the new episode's end is announced too
+  EXPECT_EQ(announced, 2);
+  Report report;
+  outcome.addTo(report);
+  const std::string json = report.toJson();
+  EXPECT_NE(json.find("\"reloads\": 1"), std::string::npos) << json;
+  EXPECT_EQ(json.find("algorithm_error"), std::string::npos) << json;
+  EXPECT_EQ(json.find("non_finite_commands"), std::string::npos) << json;
+}
+
+TEST(RunOutcome, AnAbortOutlivesAReload) {
+  RunOutcome outcome;
+  outcome.abort("component crashed (SIGSEGV)");
+  outcome.onEpisode("libmy.so", "", 0, 1);
+  EXPECT_TRUE(outcome.ended());
+  EXPECT_EQ(outcome.aborted(), "component crashed (SIGSEGV)");
+}
