@@ -17,6 +17,7 @@ packages=(
   xvfb xauth xdotool
   iproute2 procps python3 bc
   dpkg-dev bubblewrap ccache
+  nlohmann-json3-dev
 )
 
 missing=()
