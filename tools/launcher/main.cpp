@@ -7,6 +7,7 @@
 // the processes that declare it; the world is resolved once and handed to all three.
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/grade/grade_command.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -46,9 +47,12 @@ constexpr const char* kUsage =
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
+    "%GRADE%"
     "  run         start the simulator, the component and the referee\n"
     "  check-world load a world, list its robots, sensors and channels, say what each exercise would miss\n"
     "  config      print the effective settings of each process and where each came from\n"
+    "  grade       grade a class: every submission (a folder with MyAlgorithm.cpp) x world x seed, headless;\n"
+    "              DIR/grades.csv and DIR/runs/ (see docs/grading.md)\n"
     "  new         start your own algorithm in DIR: MyAlgorithm.cpp, CMakeLists.txt, README.md;\n"
     "              build it with `cmake -S DIR -B DIR/build && cmake --build DIR/build`, run it with\n"
     "              `aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so`\n"
@@ -65,7 +69,9 @@ const char* describe(const std::string& exercise) {
 }
 
 int usage(std::ostream& out, int code) {
-  out << kUsage;
+  const std::string text = kUsage;
+  const auto at = text.find("%GRADE%");
+  out << text.substr(0, at) << aula::grade::kGradeUsage << text.substr(at + 7);
   for (const auto& ex : aula::settings::exercises()) out << "  " << ex.name << "  " << describe(ex.name) << "\n";
   return code;
 }
@@ -411,6 +417,9 @@ int supervise(const Supervision& run) {
 int main(int argc, char** argv) {
   return aula::process::guardedMain("aula", [&]() -> int {
     auto cl = CommandLine::parse(argc, argv, {});
+    if (!cl.positional.empty() && (cl.positional[0] == "grade" || cl.positional[0] == "grade-task") && !cl.flag("help")) {
+      return aula::grade::gradeCommand(cl, binDir());
+    }
     cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url",
                      "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);

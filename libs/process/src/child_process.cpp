@@ -48,7 +48,11 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
       }
     };
     redirect(stdout_path, STDOUT_FILENO);
-    redirect(stderr_path, STDERR_FILENO);
+    if (!stderr_path.empty() && stderr_path == stdout_path) {
+      dup2(STDOUT_FILENO, STDERR_FILENO);  // one file, one offset: the lines stay in order
+    } else {
+      redirect(stderr_path, STDERR_FILENO);
+    }
     if (pass_fd == kPassedFd) {
       fcntl(kPassedFd, F_SETFD, 0);  // keep it across exec
     } else if (pass_fd >= 0) {

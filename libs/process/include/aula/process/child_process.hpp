@@ -14,7 +14,7 @@ namespace aula::process {
 class ChildProcess {
  public:
   // argv[0] is the program (a path or a name on PATH). stdout/stderr go to the given files
-  // (empty: inherited). `pass_fd` >= 0 is handed to the child as its descriptor 3 (the
+  // (empty: inherited; the same path twice: one file with both, in order). `pass_fd` >= 0 is handed to the child as its descriptor 3 (the
   // launcher's private control pipe); nothing else of the parent's is inherited past exec
   // beyond what lacks FD_CLOEXEC. Throws std::runtime_error when the program cannot be started.
   ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",

@@ -1,0 +1,162 @@
+// `aula grade` over a class of four, written here: the reference copied as a plugin (good), one
+// that does nothing, one that does not compile and one that throws in execute(). Two seeds, two
+// runs at once; every row of grades.csv is checked, and a second call resumes (skips them all).
+#include <aula/process/child_process.hpp>
+
+#include "test_support.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <vector>
+
+namespace fs = std::filesystem;
+using aula::process::ChildProcess;
+using aula::testing::jsonNumber;
+using aula::testing::privateDir;
+using aula::testing::privateLcmUrl;
+using aula::testing::readFile;
+
+namespace {
+
+constexpr const char* kShortRun = "--Vacuum.Referee.Duration=60";
+
+int runToEnd(const std::vector<std::string>& argv, const std::string& out_path, int timeout_s) {
+  ChildProcess child(argv, out_path, out_path);
+  const auto code = child.wait(std::chrono::seconds(timeout_s));
+  EXPECT_TRUE(code.has_value()) << argv[1] << " did not end within " << timeout_s << " s:\n" << readFile(out_path);
+  return code ? *code : child.stop();
+}
+
+void writeFile(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+// One CSV line, with quoted fields.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::map<std::string, std::map<std::string, std::string>> readGrades(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const auto header = csvFields(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const auto fields = csvFields(line);
+    EXPECT_EQ(fields.size(), header.size()) << line;
+    for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i) rows[fields[0]][header[i]] = fields[i];
+  }
+  return rows;
+}
+
+}  // namespace
+
+TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
+  const fs::path dir = privateDir();
+  const fs::path subs = dir / "submissions";
+  const std::string data = AULA_TEST_DATA_DIR;
+  writeFile(subs / "good" / "MyAlgorithm.cpp",
+            readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/RoombaReference.cpp") +
+                "\nnamespace aula::vacuum {\n"
+                "std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return makeReferenceAlgorithm(seed); }\n"
+                "}  // namespace aula::vacuum\n");
+  writeFile(subs / "lazy" / "MyAlgorithm.cpp", readFile(data + "/plugins/does_nothing.cpp"));
+  writeFile(subs / "thrower" / "MyAlgorithm.cpp", readFile(data + "/plugins/throws.cpp"));
+  writeFile(subs / "broken" / "MyAlgorithm.cpp",
+            "#include <aula/vacuum/vacuum_algorithm.hpp>\nint broken( { return 0; }\n");
+
+  const std::string aula = std::string(AULA_BIN_DIR) + "/aula";
+  const fs::path out = dir / "out";
+  const std::vector<std::string> grade = {aula, "grade", "vacuum", (subs / "good").string(), (subs / "lazy").string(),
+                                          (subs / "broken").string(), (subs / "thrower").string(), "--seeds=1-2",
+                                          "--jobs=2", "--out=" + out.string(), kShortRun};
+  ASSERT_EQ(runToEnd(grade, (dir / "grade1.txt").string(), 300), 0) << readFile((dir / "grade1.txt").string());
+  const std::string first_csv = readFile((out / "grades.csv").string());
+
+  // The reference's own marks on the same seeds (the good submission is the reference).
+  std::vector<double> reference;
+  for (int seed : {1, 2}) {
+    const std::string report = (dir / ("reference" + std::to_string(seed) + ".json")).string();
+    ASSERT_EQ(runToEnd({aula, "run", "vacuum", "--headless", "--algorithm=reference", "--seed=" + std::to_string(seed),
+                        "--report=" + report, "--lcm-url=" + privateLcmUrl(), kShortRun},
+                       (dir / "reference.txt").string(), 120),
+              0);
+    reference.push_back(jsonNumber(readFile(report), "mark"));
+  }
+  char reference_median[32];
+  std::snprintf(reference_median, sizeof reference_median, "%.2f", 0.5 * (reference[0] + reference[1]));
+
+  auto rows = readGrades((out / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 4u) << first_csv;
+  EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')), "student,median,min,max,median_vacuum,runs,runs_failed,failures");
+
+  EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
+  EXPECT_EQ(rows["good"]["runs"], "2");
+  EXPECT_EQ(rows["good"]["runs_failed"], "0");
+  EXPECT_EQ(rows["good"]["failures"], "");
+
+  EXPECT_LT(std::stod(rows["lazy"]["median"]), 0.1);  // the start footprint only
+  EXPECT_EQ(rows["lazy"]["runs_failed"], "0") << "doing nothing is not an error";
+
+  EXPECT_EQ(rows["broken"]["median"], "0.00");
+  EXPECT_EQ(rows["broken"]["runs_failed"], "2");
+  EXPECT_EQ(rows["broken"]["failures"].rfind("did not compile: MyAlgorithm.cpp:2:", 0), 0u) << rows["broken"]["failures"];
+  EXPECT_NE(rows["broken"]["failures"].find("error"), std::string::npos);
+
+  EXPECT_EQ(rows["thrower"]["runs_failed"], "2");
+  EXPECT_EQ(rows["thrower"]["failures"], "execute() threw std::runtime_error: boom (x2)");
+
+  // Each run's result: the referee's report plus who, what and how long.
+  const std::string good1 = readFile((out / "runs" / "good" / "vacuum-seed1.json").string());
+  EXPECT_NE(good1.find("\"student\": \"good\""), std::string::npos) << good1;
+  EXPECT_NE(good1.find("\"plugin_sha256\": \""), std::string::npos) << good1;
+  EXPECT_NE(good1.find("\"world_sha256\": \""), std::string::npos) << good1;
+  EXPECT_GE(jsonNumber(good1, "wall_time_s"), 0.0);
+  EXPECT_DOUBLE_EQ(jsonNumber(good1, "mark"), reference[0]);
+  const std::string thrower2 = readFile((out / "runs" / "thrower" / "vacuum-seed2.json").string());
+  EXPECT_NE(thrower2.find("\"failure\": \"execute() threw std::runtime_error: boom\""), std::string::npos) << thrower2;
+
+  // Again with the same folder: every run is up to date (same plugin, world and seed).
+  ASSERT_EQ(runToEnd(grade, (dir / "grade2.txt").string(), 120), 0);
+  const std::string second = readFile((dir / "grade2.txt").string());
+  EXPECT_NE(second.find("8 runs already done"), std::string::npos) << second;
+  EXPECT_EQ(readFile((out / "grades.csv").string()), first_csv);
+  fs::remove_all(dir);
+}
+
+TEST(GradeAClass, BadRequestsAreUsageErrors) {
+  const fs::path dir = privateDir();
+  const std::string aula = std::string(AULA_BIN_DIR) + "/aula";
+  const std::string out = (dir / "out.txt").string();
+  EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "nobody").string()}, out, 30), 2);
+  EXPECT_NE(readFile(out).find("not a folder"), std::string::npos) << readFile(out);
+  writeFile(dir / "alice" / "MyAlgorithm.cpp", "");
+  EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--seeds=5-1"}, out, 30), 2);
+  EXPECT_NE(readFile(out).find("--seeds: '5-1' counts down"), std::string::npos) << readFile(out);
+  EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--engine=cloud"}, out, 30), 2);
+  EXPECT_NE(readFile(out).find("--engine=cloud: local or slurm"), std::string::npos) << readFile(out);
+  EXPECT_EQ(runToEnd({aula, "grade-task", (dir / "missing.json").string(), "0"}, out, 30), 2);
+  EXPECT_NE(readFile(out).find("cannot read the manifest"), std::string::npos) << readFile(out);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,77 @@
+#pragma once
+// `aula grade`: what a teacher asks for (students, worlds, seeds), the submissions compiled as
+// plugins, and the manifest: one entry per run with its exact command line. Both engines run
+// the same manifest entries (the local pool, or one Slurm array task per entry), so a grade
+// never depends on where it ran.
+
+#include <aula/config/config.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace aula::grade {
+
+struct GradeRequest {
+  std::string exercise;
+  std::vector<std::string> submissions;  // folders: each has MyAlgorithm.cpp (and maybe more .cpp)
+  std::vector<std::string> worlds;       // absolute paths; empty: the exercise's own world
+  std::vector<long long> seeds;
+  int jobs = 1;
+  std::string out_dir;
+  std::string engine = "local";  // local | slurm
+  double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
+  std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
+};
+
+// Throws config::ConfigError (exit 2) naming the option that is wrong.
+GradeRequest parseRequest(const config::CommandLine& cl);
+// "1-5", "1,3,9", "2-3,7" -> the seeds, in order, without repeats.
+std::vector<long long> parseSeeds(const std::string& text);
+
+// A submission compiled (or not) into a plugin.
+struct Submission {
+  std::string student;  // the folder's name
+  std::string folder;   // absolute
+  std::string plugin;   // the built .so ("" when it did not compile)
+  std::string plugin_sha256;
+  std::string compile_error;  // "did not compile: <the compiler's first error lines>"
+};
+
+// Builds every submission as a plugin in OUT/build/<student>, `jobs` at once. A compile error
+// is that student's result and never stops the others.
+std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix);
+
+// One run of the batch.
+struct PlannedRun {
+  int index = 0;
+  std::string student, world_name, world_sha256;  // world_name: the file's name ("vacuum.world")
+  long long seed = 0;
+  std::string plugin, plugin_sha256, compile_error;
+  std::vector<std::string> argv;  // the exact command ("" when the plugin did not compile)
+  std::string result_path;        // runs/<student>/<world>-seed<k>.json
+  std::string report_path;        // where the referee writes its own report
+  std::string log_path;           // the run's output
+  double wall_limit_s = 600;
+};
+
+struct Manifest {
+  std::string exercise, out_dir;
+  std::vector<PlannedRun> runs;
+
+  nlohmann::ordered_json toJson() const;
+  static Manifest fromJson(const nlohmann::json& json);
+  void save(const std::string& path) const;  // atomically
+  static Manifest load(const std::string& path);  // throws ConfigError naming the file
+};
+
+// Writes `text` to `path` through a temporary file and a rename: a reader (a resumed batch,
+// --collect while Slurm tasks write) never sees half a file. Throws ConfigError naming the path.
+void writeFileAtomically(const std::string& path, const std::string& text);
+
+// Every submission x world x seed, each on its own LCM port.
+Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir);
+
+}  // namespace aula::grade

@@ -1,0 +1,30 @@
+#pragma once
+// The class's grades from the runs' results: per student the median mark over all worlds and
+// seeds, min, max, the median per world, the failed runs and why. Deterministic: the same
+// results give byte-identical files, whichever engine ran them.
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace aula::grade {
+
+struct StudentGrade {
+  std::string student;
+  double median = 0, min = 0, max = 0;
+  std::vector<std::pair<std::string, double>> world_medians;  // by world name
+  int runs = 0, runs_failed = 0;
+  std::string failures;  // "reason (x2); other reason"
+};
+
+// Reads DIR/runs/*/*.json.
+std::vector<nlohmann::json> readResults(const std::string& out_dir);
+std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
+double median(std::vector<double> values);
+// grades.csv: student, median, min, max, one median per world, runs, runs_failed, failures.
+std::string gradesCsv(const std::vector<StudentGrade>& grades);
+// Writes DIR/grades.csv; returns the grades.
+std::vector<StudentGrade> collect(const std::string& out_dir);
+
+}  // namespace aula::grade

@@ -1,0 +1,178 @@
+#include "aula/grade/grade_command.hpp"
+
+#include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grade_runner.hpp>
+#include <aula/grade/grades.hpp>
+#include <aula/process/child_process.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <unistd.h>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+const char* const kGradeUsage =
+    "       aula grade EXERCISE SUBMISSION... [--worlds=W1,W2] [--seeds=1-5] [--jobs=N] [--out=DIR]\n"
+    "                  [--engine=local|slurm] [--wall-limit=SECONDS] [--Key=value ...]\n"
+    "       aula grade --collect DIR\n"
+    "       aula grade-task MANIFEST INDEX\n";
+
+namespace {
+
+void printGrades(const std::vector<StudentGrade>& grades, const std::string& out_dir) {
+  std::printf("%-20s %7s %7s %7s %9s\n", "student", "median", "min", "max", "failed");
+  for (const auto& g : grades) {
+    std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d %s\n", g.student.c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
+                g.failures.substr(0, 80).c_str());
+  }
+  std::printf("grades: %s/grades.csv\n", out_dir.c_str());
+}
+
+std::string formatDuration(double seconds) {
+  const int s = static_cast<int>(seconds + 0.5);
+  char text[32];
+  std::snprintf(text, sizeof text, "%d:%02d", s / 60, s % 60);
+  return text;
+}
+
+void runLocally(const Manifest& manifest, int jobs) {
+  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
+  const auto started = std::chrono::steady_clock::now();
+  const auto skipped = std::count_if(manifest.runs.begin(), manifest.runs.end(), upToDate);
+  if (skipped > 0) std::cout << skipped << " runs already done (same plugin, world and seed): skipped\n" << std::flush;
+  runLocal(manifest, jobs, [&](const PlannedRun& run, const nlohmann::ordered_json& result, const Progress& p) {    const std::string failure = failureOf(result);
+    if (terminal) {
+      const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const int ran = p.done - p.skipped;
+      const double eta_s = ran > 0 ? elapsed_s / ran * (p.total - p.done) : 0;
+      std::cout << "\r  " << p.done << "/" << p.total << " runs, " << p.failed << " failed, ETA "
+                << formatDuration(eta_s) << "   " << std::flush;
+      if (p.done == p.total) std::cout << "\n";
+    } else {
+      char mark[32];
+      std::snprintf(mark, sizeof mark, "%.2f", result.value("mark", 0.0));
+      std::cout << "[" << p.done << "/" << p.total << "] " << run.student << " " << run.world_name << " seed " << run.seed
+                << ": " << mark << (failure.empty() ? "" : "  FAILED: " + failure) << "\n"
+                << std::flush;
+    }
+  });
+}
+
+// Slurm: one array task per run still to do; `sbatch --wait` returns when all are over.
+void runOnSlurm(const Manifest& manifest, const std::string& manifest_path, const std::string& bin_dir) {
+  std::string indices;
+  for (const PlannedRun& run : manifest.runs) {
+    if (!upToDate(run)) indices += (indices.empty() ? "" : ",") + std::to_string(run.index);
+  }
+  if (indices.empty()) {
+    std::cout << "every run is already done (same plugin, world and seed)\n";
+    return;
+  }
+  const fs::path slurm_dir = fs::path(manifest.out_dir) / "slurm";
+  fs::create_directories(slurm_dir);
+  const fs::path script = fs::path(manifest.out_dir) / "grade.sbatch";
+  {
+    std::ofstream out(script);
+    out << "#!/bin/sh\n"
+        << "# aula grade: one Slurm array task per run of " << manifest_path << "\n"
+        << "#SBATCH --job-name=aula-grade\n"
+        << "#SBATCH --array=" << indices << "\n"
+        << "#SBATCH --cpus-per-task=1\n"
+        << "#SBATCH --output=" << (slurm_dir / "task-%a.out").string() << "\n"
+        << "exec \"" << bin_dir << "/aula\" grade-task \"" << manifest_path << "\" \"$SLURM_ARRAY_TASK_ID\"\n";
+    if (!out) throw ConfigError("aula grade: cannot write " + script.string());
+  }
+  std::cout << "slurm: submitting " << script.string() << " (manifest " << manifest_path << ")\n" << std::flush;
+  const std::string sbatch_log = (slurm_dir / "sbatch.log").string();
+  process::ChildProcess sbatch({"sbatch", "--wait", "--parsable", script.string()}, sbatch_log, sbatch_log);
+  int code = -1;
+  for (;;) {
+    if (const auto done = sbatch.wait(std::chrono::milliseconds(500))) {
+      code = *done;
+      break;
+    }
+  }
+  if (code == 127) throw ConfigError("aula grade --engine=slurm: sbatch not found (is Slurm installed and on PATH?)");
+  if (code != 0) {
+    std::ifstream in(sbatch_log);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::cerr << "aula grade: sbatch exited with code " << code << ": " << text
+              << "collecting what the tasks wrote (aula grade --collect " << manifest.out_dir << ")\n";
+  }
+}
+
+int grade(const config::CommandLine& cl, const std::string& bin_dir) {
+  const GradeRequest request = parseRequest(cl);
+  fs::create_directories(request.out_dir);
+  const std::string prefix = fs::path(bin_dir).parent_path().string();
+  std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
+            << std::flush;
+  const auto submissions = compileSubmissions(request, prefix);
+  for (const Submission& s : submissions) {
+    if (!s.compile_error.empty()) std::cout << "  " << s.student << ": " << s.compile_error << "\n";
+  }
+  const Manifest manifest = planRuns(request, submissions, bin_dir);
+  const std::string manifest_path = (fs::path(request.out_dir) / "manifest.json").string();
+  manifest.save(manifest_path);
+  std::cout << manifest.runs.size() << " runs: " << submissions.size() << " submission(s) x " << request.worlds.size()
+            << " world(s) x " << request.seeds.size() << " seed(s), engine " << request.engine << "\n"
+            << std::flush;
+  if (request.engine == "slurm") {
+    runOnSlurm(manifest, manifest_path, bin_dir);
+  } else {
+    runLocally(manifest, request.jobs);
+  }
+  printGrades(collect(request.out_dir), request.out_dir);
+  return 0;
+}
+
+}  // namespace
+
+int gradeCommand(const config::CommandLine& cl, const std::string& bin_dir) {
+  if (cl.positional.at(0) == "grade-task") {
+    cl.requireKnown({});
+    if (cl.positional.size() != 3) throw ConfigError("usage: aula grade-task MANIFEST INDEX");
+    const Manifest manifest = Manifest::load(cl.positional[1]);
+    const std::string& text = cl.positional[2];
+    size_t used = 0;
+    int index = -1;
+    try {
+      index = std::stoi(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || index < 0 || index >= static_cast<int>(manifest.runs.size())) {
+      throw ConfigError("aula grade-task: INDEX '" + text + "' is not a run of " + cl.positional[1] + " (0-" +
+                        std::to_string(manifest.runs.size() - 1) + ")");
+    }
+    const auto result = runOne(manifest.runs[index]);
+    const std::string failure = failureOf(result);
+    std::cout << manifest.runs[index].student << " " << manifest.runs[index].world_name << " seed "
+              << manifest.runs[index].seed << ": " << result.value("mark", 0.0)
+              << (failure.empty() ? "" : "  FAILED: " + failure) << "\n";
+    return 0;  // a failed run is a result, not a failed task
+  }
+  if (cl.flag("collect")) {
+    cl.requireKnown({"collect"});
+    // --collect=DIR or --collect DIR
+    const std::string dir = !cl.option("collect").empty() ? cl.option("collect")
+                            : cl.positional.size() == 2  ? cl.positional[1]
+                                                         : "";
+    if (dir.empty() || !fs::is_directory(fs::path(dir) / "runs")) {
+      throw ConfigError("aula grade --collect=" + dir + ": no runs/ folder there (the --out of aula grade)");
+    }
+    printGrades(collect(dir), dir);
+    return 0;
+  }
+  cl.requireKnown({"worlds", "seeds", "jobs", "out", "engine", "wall-limit"});
+  return grade(cl, bin_dir);
+}
+
+}  // namespace aula::grade

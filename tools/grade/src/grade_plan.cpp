@@ -1,0 +1,323 @@
+#include "aula/grade/grade_plan.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/process/child_process.hpp>
+#include <aula/settings/tables.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include <unistd.h>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+long long parseInteger(const std::string& text, const std::string& what) {
+  size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) throw ConfigError(what + ": '" + text + "' is not a whole number");
+  return value;
+}
+
+// The exercise's own world: its .cfg's (or the declared default) <Section>.World.
+std::string defaultWorld(const settings::Exercise& ex) {
+  const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
+  std::vector<const config::SettingsTable*> siblings;
+  for (const auto* t : ex.tables()) {
+    if (t != ex.component_settings) siblings.push_back(t);
+  }
+  const config::Config cfg = ex.component_settings->resolve(file, siblings);
+  const std::string key = ex.section + ".World";
+  return config::resolveWorldPath(cfg.getString(key), cfg.origin(key) + ": " + key);
+}
+
+// The compiler's first error lines, for the student's row, with the files named as in the
+// student's folder ("MyAlgorithm.cpp:2:15: error: ...").
+std::string firstErrors(const std::string& log_path, const std::string& folder) {
+  std::ifstream in(log_path);
+  std::string line, errors;
+  int kept = 0;
+  while (std::getline(in, line) && kept < 3) {
+    if (line.find("error") == std::string::npos) continue;
+    for (size_t at = line.find(folder + "/"); at != std::string::npos; at = line.find(folder + "/")) {
+      line.erase(at, folder.size() + 1);
+    }
+    errors += (errors.empty() ? "" : " | ") + line;
+    ++kept;
+  }
+  return errors.empty() ? "see " + log_path : errors;
+}
+
+std::string writeBuildProject(const Submission& s, const std::string& exercise, const std::string& aula_prefix,
+                              const fs::path& project) {
+  std::vector<std::string> sources;
+  for (const auto& entry : fs::directory_iterator(s.folder)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".cpp") sources.push_back(entry.path().string());
+  }
+  std::sort(sources.begin(), sources.end());
+  fs::create_directories(project);
+  std::ofstream cmake(project / "CMakeLists.txt");
+  cmake << "# " << s.student << "'s submission as a plugin (written by aula grade).\n"
+        << "cmake_minimum_required(VERSION 3.16)\n"
+        << "project(aula_submission CXX)\n"
+        << "find_package(Aula REQUIRED HINTS \"" << aula_prefix << "/lib/cmake/Aula\" \"" << aula_prefix << "\")\n"
+        << "aula_add_algorithm(NAME my_algorithm EXERCISE " << exercise << " SOURCES";
+  for (const auto& source : sources) cmake << "\n  \"" << source << "\"";
+  cmake << ")\n";
+  if (!cmake) throw ConfigError("aula grade: cannot write " + (project / "CMakeLists.txt").string());
+  return (project / "build" / "libmy_algorithm.so").string();
+}
+
+}  // namespace
+
+std::vector<long long> parseSeeds(const std::string& text) {
+  std::vector<long long> seeds;
+  for (const std::string& item : splitList(text)) {
+    const auto dash = item.find('-', 1);
+    long long from = 0, to = 0;
+    if (dash == std::string::npos) {
+      from = to = parseInteger(item, "--seeds");
+    } else {
+      from = parseInteger(item.substr(0, dash), "--seeds");
+      to = parseInteger(item.substr(dash + 1), "--seeds");
+    }
+    if (from > to) throw ConfigError("--seeds: '" + item + "' counts down (write " + std::to_string(to) + "-" + std::to_string(from) + ")");
+    if (to - from > 10000) throw ConfigError("--seeds: '" + item + "' is more than 10000 seeds");
+    for (long long seed = from; seed <= to; ++seed) {
+      if (std::find(seeds.begin(), seeds.end(), seed) == seeds.end()) seeds.push_back(seed);
+    }
+  }
+  if (seeds.empty()) throw ConfigError("--seeds=" + text + ": no seed (e.g. --seeds=1-5 or --seeds=1,4,9)");
+  return seeds;
+}
+
+GradeRequest parseRequest(const config::CommandLine& cl) {
+  GradeRequest r;
+  if (cl.positional.size() < 3) {
+    throw ConfigError("aula grade: name the exercise and at least one submission folder (aula grade vacuum alice/ bob/)");
+  }
+  r.exercise = cl.positional[1];
+  const settings::Exercise* ex = settings::exerciseNamed(r.exercise);
+  if (ex == nullptr || ex->referee_settings == nullptr) {
+    throw ConfigError("aula grade: '" + r.exercise + "' is not an exercise with a referee (teletaxi, vacuum, autopark)");
+  }
+  std::set<std::string> students;
+  for (size_t i = 2; i < cl.positional.size(); ++i) {
+    const fs::path folder = fs::absolute(cl.positional[i]).lexically_normal();
+    const std::string student = (folder.has_filename() ? folder : folder.parent_path()).filename().string();
+    if (!fs::is_directory(folder)) throw ConfigError("aula grade: submission " + cl.positional[i] + ": not a folder");
+    if (!fs::is_regular_file(folder / "MyAlgorithm.cpp")) {
+      throw ConfigError("aula grade: submission " + cl.positional[i] + ": no MyAlgorithm.cpp in it");
+    }
+    if (!students.insert(student).second) {
+      throw ConfigError("aula grade: two submissions are named '" + student + "' (a student is named after the folder)");
+    }
+    r.submissions.push_back(folder.string());
+  }
+  if (cl.flag("worlds")) {
+    for (const std::string& w : splitList(cl.option("worlds"))) r.worlds.push_back(config::resolveWorldPath(w, "--worlds"));
+  } else {
+    r.worlds.push_back(defaultWorld(*ex));
+  }
+  r.seeds = parseSeeds(cl.option("seeds", "1"));
+  const double jobs = cl.optionDouble("jobs", static_cast<double>(std::max(1u, std::thread::hardware_concurrency())));
+  if (jobs < 1 || jobs != static_cast<int>(jobs)) throw ConfigError("--jobs=" + cl.option("jobs") + ": a whole number >= 1");
+  r.jobs = static_cast<int>(jobs);
+  r.wall_limit_s = cl.optionDouble("wall-limit", 600);
+  if (!(r.wall_limit_s > 0)) throw ConfigError("--wall-limit=" + cl.option("wall-limit") + ": seconds > 0");
+  r.engine = cl.option("engine", "local");
+  if (r.engine != "local" && r.engine != "slurm") throw ConfigError("--engine=" + r.engine + ": local or slurm");
+  r.out_dir = fs::absolute(cl.option("out", "grading")).lexically_normal().string();
+  r.overrides = cl.overrides;
+  return r;
+}
+
+std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix) {
+  struct Compiling {
+    size_t index;
+    std::string log;
+    std::unique_ptr<process::ChildProcess> child;
+  };
+  std::vector<Submission> out;
+  for (const std::string& folder : request.submissions) {
+    Submission s;
+    s.folder = folder;
+    s.student = fs::path(folder).filename().string();
+    out.push_back(s);
+  }
+  std::vector<Compiling> running;
+  size_t next = 0;
+  while (next < out.size() || !running.empty()) {
+    while (next < out.size() && static_cast<int>(running.size()) < request.jobs) {
+      Submission& s = out[next];
+      const fs::path project = fs::path(request.out_dir) / "build" / s.student;
+      s.plugin = writeBuildProject(s, request.exercise, aula_prefix, project);
+      const std::string build = (project / "build").string();
+      const std::string log = (project / "compile.log").string();
+      running.push_back({next, log,
+                         std::make_unique<process::ChildProcess>(
+                             std::vector<std::string>{"sh", "-c", "cmake -S \"$0\" -B \"$1\" && cmake --build \"$1\"",
+                                                      project.string(), build},
+                             log, log)});
+      ++next;
+    }
+    for (auto it = running.begin(); it != running.end();) {
+      const auto code = it->child->poll();
+      if (!code) {
+        ++it;
+        continue;
+      }
+      Submission& s = out[it->index];
+      if (*code != 0 || !fs::is_regular_file(s.plugin)) {
+        s.compile_error = "did not compile: " + firstErrors(it->log, s.folder);
+        s.plugin.clear();
+      } else {
+        s.plugin_sha256 = world::sha256OfFile(s.plugin);
+      }
+      it = running.erase(it);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return out;
+}
+
+Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir) {
+  Manifest m;
+  m.exercise = request.exercise;
+  m.out_dir = request.out_dir;
+  // Each run on its own port, so runs at once never hear each other (a group alone is not
+  // enough: engineering.md). A random base keeps two batches on one machine apart too.
+  std::random_device random;
+  const int base_port = 20000 + static_cast<int>(random() % 20000);
+  int index = 0;
+  for (const Submission& s : submissions) {
+    for (const std::string& world_path : request.worlds) {
+      for (long long seed : request.seeds) {
+        PlannedRun r;
+        r.index = index;
+        r.student = s.student;
+        r.world_name = fs::path(world_path).filename().string();
+        r.world_sha256 = world::sha256OfFile(world_path);
+        r.seed = seed;
+        r.plugin = s.plugin;
+        r.plugin_sha256 = s.plugin_sha256;
+        r.compile_error = s.compile_error;
+        r.wall_limit_s = request.wall_limit_s;
+        const fs::path stem = fs::path(request.out_dir) / "runs" / s.student /
+                              (fs::path(world_path).stem().string() + "-seed" + std::to_string(seed));
+        r.result_path = stem.string() + ".json";
+        r.report_path = stem.string() + ".report.json";
+        r.log_path = stem.string() + ".log";
+        if (s.compile_error.empty()) {
+          const int port = 20000 + (base_port - 20000 + index) % 20000;
+          r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--algorithm=" + s.plugin,
+                    "--world=" + world_path, "--seed=" + std::to_string(seed), "--report=" + r.report_path,
+                    "--lcm-url=udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"};
+          for (const auto& [key, value] : request.overrides) r.argv.push_back("--" + key + "=" + value);
+        }
+        m.runs.push_back(r);
+        ++index;
+      }
+    }
+  }
+  return m;
+}
+
+nlohmann::ordered_json Manifest::toJson() const {
+  nlohmann::ordered_json json;
+  json["exercise"] = exercise;
+  json["out_dir"] = out_dir;
+  json["runs"] = nlohmann::ordered_json::array();
+  for (const PlannedRun& r : runs) {
+    json["runs"].push_back({{"index", r.index},
+                            {"student", r.student},
+                            {"world", r.world_name},
+                            {"world_sha256", r.world_sha256},
+                            {"seed", r.seed},
+                            {"plugin", r.plugin},
+                            {"plugin_sha256", r.plugin_sha256},
+                            {"compile_error", r.compile_error},
+                            {"command", r.argv},
+                            {"result", r.result_path},
+                            {"report", r.report_path},
+                            {"log", r.log_path},
+                            {"wall_limit_s", r.wall_limit_s}});
+  }
+  return json;
+}
+
+Manifest Manifest::fromJson(const nlohmann::json& json) {
+  Manifest m;
+  m.exercise = json.at("exercise").get<std::string>();
+  m.out_dir = json.at("out_dir").get<std::string>();
+  for (const auto& j : json.at("runs")) {
+    PlannedRun r;
+    r.index = j.at("index").get<int>();
+    r.student = j.at("student").get<std::string>();
+    r.world_name = j.at("world").get<std::string>();
+    r.world_sha256 = j.at("world_sha256").get<std::string>();
+    r.seed = j.at("seed").get<long long>();
+    r.plugin = j.at("plugin").get<std::string>();
+    r.plugin_sha256 = j.at("plugin_sha256").get<std::string>();
+    r.compile_error = j.at("compile_error").get<std::string>();
+    r.argv = j.at("command").get<std::vector<std::string>>();
+    r.result_path = j.at("result").get<std::string>();
+    r.report_path = j.at("report").get<std::string>();
+    r.log_path = j.at("log").get<std::string>();
+    r.wall_limit_s = j.at("wall_limit_s").get<double>();
+    m.runs.push_back(r);
+  }
+  return m;
+}
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  const std::string temp = path + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(temp);
+    out << text;
+    if (!out) throw ConfigError("aula grade: cannot write " + temp);
+  }
+  fs::rename(temp, path);
+}
+
+void Manifest::save(const std::string& path) const { writeFileAtomically(path, toJson().dump(2) + "\n"); }
+
+Manifest Manifest::load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError(path + ": cannot read the manifest");
+  try {
+    return fromJson(nlohmann::json::parse(in));
+  } catch (const nlohmann::json::exception& e) {
+    throw ConfigError(path + ": not an aula grade manifest: " + e.what());
+  }
+}
+
+}  // namespace aula::grade

@@ -1,0 +1,171 @@
+#include "aula/grade/grade_runner.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <unistd.h>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+std::optional<nlohmann::ordered_json> readJson(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  try {
+    return nlohmann::ordered_json::parse(in);
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::string lastLine(const std::string& log_path) {
+  std::ifstream in(log_path);
+  std::string line, last;
+  while (std::getline(in, line)) {
+    if (!line.empty()) last = line;
+  }
+  return last;
+}
+
+// The run's result: the referee's report (when there is one) plus who ran, on what, how long,
+// and why it failed.
+nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_code, bool timed_out, double wall_s) {
+  nlohmann::ordered_json result;
+  if (auto report = readJson(run.report_path)) {
+    result = std::move(*report);
+  } else {
+    result["mark"] = 0.0;
+    result["seed"] = run.seed;
+    result["world"] = run.world_name;
+    result["world_sha256"] = run.world_sha256;
+    result["finished"] = false;
+    result["algorithm"] = run.plugin.empty() ? "" : fs::path(run.plugin).filename().string();
+  }
+  result["student"] = run.student;
+  if (!result.contains("world")) result["world"] = run.world_name;
+  result["plugin_sha256"] = run.plugin_sha256;
+  result["wall_time_s"] = std::round(wall_s * 100) / 100;
+  if (exit_code) result["exit_code"] = *exit_code;
+  std::string failure;
+  if (!run.compile_error.empty()) {
+    failure = run.compile_error;
+  } else if (timed_out) {
+    failure = "wall-time limit exceeded (" + std::to_string(static_cast<int>(run.wall_limit_s)) + " s)";
+  } else if (result.contains("algorithm_error")) {
+    failure = result["algorithm_error"].get<std::string>();
+  } else if (result.contains("aborted")) {
+    failure = result["aborted"].get<std::string>();
+  } else if (exit_code && *exit_code == 2) {
+    failure = "refused: " + lastLine(run.log_path);
+  } else if (!exit_code || *exit_code != 0 || !fs::exists(run.report_path)) {
+    failure = "the run failed (exit " + (exit_code ? std::to_string(*exit_code) : std::string("?")) +
+              "): " + lastLine(run.log_path);
+  }
+  if (!failure.empty()) result["failure"] = failure;
+  result["log"] = run.log_path;
+  return result;
+}
+
+// One run under way: `aula run ...` as a child, with the run's wall-time limit.
+class RunInProgress {
+ public:
+  explicit RunInProgress(const PlannedRun& run) : run_(run), started_(Clock::now()) {
+    fs::create_directories(fs::path(run.result_path).parent_path());
+    fs::remove(run.report_path);  // a report from an earlier try must not pass for this one's
+    if (run.compile_error.empty()) child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path);
+  }
+
+  // The result once the run is over (and written to its file).
+  std::optional<nlohmann::ordered_json> poll() {
+    std::optional<int> code;
+    bool timed_out = false;
+    if (child_) {
+      code = child_->poll();
+      const double wall_s = std::chrono::duration<double>(Clock::now() - started_).count();
+      if (!code && wall_s > run_.wall_limit_s) {
+        code = child_->stop(std::chrono::milliseconds(5000));  // the launcher stops its own children
+        timed_out = true;
+      }
+      if (!code) return std::nullopt;
+    }
+    const double wall_s = std::chrono::duration<double>(Clock::now() - started_).count();
+    auto result = resultOf(run_, code, timed_out, wall_s);
+    writeFileAtomically(run_.result_path, result.dump(2) + "\n");
+    return result;
+  }
+
+ private:
+  const PlannedRun& run_;
+  Clock::time_point started_;
+  std::unique_ptr<process::ChildProcess> child_;
+};
+
+}  // namespace
+
+std::string failureOf(const nlohmann::json& result) {
+  return result.contains("failure") ? result["failure"].get<std::string>() : "";
+}
+
+bool upToDate(const PlannedRun& run) {
+  const auto result = readJson(run.result_path);
+  if (!result) return false;
+  auto same = [&](const char* key, const nlohmann::ordered_json& value) { return result->contains(key) && (*result)[key] == value; };
+  return same("plugin_sha256", run.plugin_sha256) && same("world_sha256", run.world_sha256) && same("seed", run.seed) &&
+         same("student", run.student);
+}
+
+nlohmann::ordered_json runOne(const PlannedRun& run) {
+  RunInProgress running(run);
+  for (;;) {
+    if (auto result = running.poll()) return *result;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+void runLocal(const Manifest& manifest, int jobs,
+              const std::function<void(const PlannedRun&, const nlohmann::ordered_json&, const Progress&)>& on_done) {
+  Progress progress;
+  progress.total = static_cast<int>(manifest.runs.size());
+  std::vector<const PlannedRun*> pending;
+  for (const PlannedRun& run : manifest.runs) {
+    if (upToDate(run)) {
+      ++progress.done;
+      ++progress.skipped;
+      if (!failureOf(*readJson(run.result_path)).empty()) ++progress.failed;
+    } else {
+      pending.push_back(&run);
+    }
+  }
+  std::vector<std::pair<const PlannedRun*, std::unique_ptr<RunInProgress>>> running;
+  size_t next = 0;
+  while (next < pending.size() || !running.empty()) {
+    while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
+      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next]));
+      ++next;
+    }
+    for (auto it = running.begin(); it != running.end();) {
+      const auto result = it->second->poll();
+      if (!result) {
+        ++it;
+        continue;
+      }
+      ++progress.done;
+      if (!failureOf(*result).empty()) ++progress.failed;
+      on_done(*it->first, *result, progress);
+      it = running.erase(it);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+}  // namespace aula::grade

@@ -1,0 +1,136 @@
+#include "aula/grade/grades.hpp"
+
+#include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grade_runner.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <unistd.h>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  return text;
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c == '\n' ? ' ' : c;
+  }
+  return quoted + "\"";
+}
+
+std::string worldStem(const std::string& world) { return fs::path(world).stem().string(); }
+
+}  // namespace
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::vector<nlohmann::json> readResults(const std::string& out_dir) {
+  std::vector<fs::path> files;
+  const fs::path runs = fs::path(out_dir) / "runs";
+  if (fs::is_directory(runs)) {
+    for (const auto& entry : fs::recursive_directory_iterator(runs)) {
+      const std::string name = entry.path().filename().string();
+      const bool result = entry.is_regular_file() && entry.path().extension() == ".json" &&
+                          name.find(".report.json") == std::string::npos;
+      if (result) files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<nlohmann::json> results;
+  for (const auto& file : files) {
+    std::ifstream in(file);
+    try {
+      results.push_back(nlohmann::json::parse(in));
+    } catch (const nlohmann::json::exception&) {
+      // A half-written file cannot exist (results are renamed into place); anything else is not ours.
+    }
+  }
+  return results;
+}
+
+std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results) {
+  struct Runs {
+    std::vector<double> marks;
+    std::map<std::string, std::vector<double>> by_world;
+    std::map<std::string, int> failures;
+    std::vector<std::string> failure_order;
+    int failed = 0;
+  };
+  std::map<std::string, Runs> students;
+  std::set<std::string> worlds;
+  for (const auto& r : results) {
+    Runs& runs = students[r.value("student", "?")];
+    const double mark = r.value("mark", 0.0);
+    const std::string world = worldStem(r.value("world", "?"));
+    worlds.insert(world);
+    runs.marks.push_back(mark);
+    runs.by_world[world].push_back(mark);
+    const std::string failure = failureOf(r);
+    if (failure.empty()) continue;
+    ++runs.failed;
+    if (runs.failures[failure]++ == 0) runs.failure_order.push_back(failure);
+  }
+  std::vector<StudentGrade> grades;
+  for (auto& [student, runs] : students) {
+    StudentGrade g;
+    g.student = student;
+    g.median = median(runs.marks);
+    g.min = *std::min_element(runs.marks.begin(), runs.marks.end());
+    g.max = *std::max_element(runs.marks.begin(), runs.marks.end());
+    for (const std::string& world : worlds) {
+      const auto it = runs.by_world.find(world);
+      g.world_medians.emplace_back(world, it == runs.by_world.end() ? 0.0 : median(it->second));
+    }
+    g.runs = static_cast<int>(runs.marks.size());
+    g.runs_failed = runs.failed;
+    std::sort(runs.failure_order.begin(), runs.failure_order.end());
+    for (const std::string& failure : runs.failure_order) {
+      const int count = runs.failures[failure];
+      g.failures += (g.failures.empty() ? "" : "; ") + failure + (count > 1 ? " (x" + std::to_string(count) + ")" : "");
+    }
+    grades.push_back(g);
+  }
+  return grades;
+}
+
+std::string gradesCsv(const std::vector<StudentGrade>& grades) {
+  std::string csv = "student,median,min,max";
+  if (!grades.empty()) {
+    for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
+  }
+  csv += ",runs,runs_failed,failures\n";
+  for (const StudentGrade& g : grades) {
+    csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
+    for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
+    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + csvField(g.failures) + "\n";
+  }
+  return csv;
+}
+
+std::vector<StudentGrade> collect(const std::string& out_dir) {
+  const auto grades = gradeStudents(readResults(out_dir));
+  writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades));
+  return grades;
+}
+
+}  // namespace aula::grade
