@@ -18,6 +18,7 @@ packages=(
   iproute2 procps python3 bc
   dpkg-dev bubblewrap ccache
   nlohmann-json3-dev
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()
