@@ -19,6 +19,7 @@ packages=(
   dpkg-dev bubblewrap ccache
   nlohmann-json3-dev
   slurmctld slurmd slurm-client munge
+  chromium
 )
 
 missing=()

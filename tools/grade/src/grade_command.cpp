@@ -32,7 +32,7 @@ void printGrades(const std::vector<StudentGrade>& grades, const std::string& out
     std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d %s\n", g.student.c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
                 g.failures.substr(0, 80).c_str());
   }
-  std::printf("grades: %s/grades.csv\n", out_dir.c_str());
+  std::printf("grades: %s/grades.csv, %s/report.html\n", out_dir.c_str(), out_dir.c_str());
 }
 
 std::string formatDuration(double seconds) {

@@ -2,6 +2,7 @@
 
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/report_html.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -128,8 +129,10 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
 }
 
 std::vector<StudentGrade> collect(const std::string& out_dir) {
-  const auto grades = gradeStudents(readResults(out_dir));
+  const auto results = readResults(out_dir);
+  const auto grades = gradeStudents(results);
   writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades));
+  writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results));
   return grades;
 }
 

@@ -24,7 +24,7 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
 double median(std::vector<double> values);
 // grades.csv: student, median, min, max, one median per world, runs, runs_failed, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
-// Writes DIR/grades.csv; returns the grades.
+// Writes DIR/grades.csv and DIR/report.html; returns the grades.
 std::vector<StudentGrade> collect(const std::string& out_dir);
 
 }  // namespace aula::grade
