@@ -110,7 +110,9 @@ int runSimulator(int argc, char** argv) {
   } else {
     simulator.run([&] { return signals.stopRequested(); });
   }
-  std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time\n";
+  std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time";
+  if (simulator.rejectedControls() > 0) std::cerr << "; " << simulator.rejectedControls() << " SIM_CONTROL requests rejected";
+  std::cerr << "\n";
   return 0;
 }
 

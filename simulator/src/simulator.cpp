@@ -3,10 +3,12 @@
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/sim_clock_t.hpp>
+#include <aula/world/occupancy_map.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 namespace aula::sim {
@@ -76,6 +78,22 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& 
       lcmbus::subscribe(bus_, lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
   subscriptions_.push_back(lcmbus::subscribe(bus_, lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
   paused_ = options_.start_paused;
+  // A robot may be put anywhere within the world's statics (a metre of margin), or within
+  // 1 km of the origin in a world with none.
+  bounds_m_ = spec_.statics.empty() ? Eigen::Vector4d(-1000, -1000, 1000, 1000)
+                                    : Eigen::Vector4d(world::staticBounds(spec_) + Eigen::Vector4d(-1, -1, 1, 1));
+}
+
+std::optional<std::string> Simulator::poseProblem(double x_m, double y_m, double yaw_rad) const {
+  if (!std::isfinite(x_m) || !std::isfinite(y_m) || !std::isfinite(yaw_rad)) return std::string("a non-finite pose");
+  if (x_m < bounds_m_[0] || x_m > bounds_m_[2] || y_m < bounds_m_[1] || y_m > bounds_m_[3]) {
+    std::ostringstream why;
+    why << "(" << x_m << ", " << y_m << ") is outside the world (x " << bounds_m_[0] << " to " << bounds_m_[2] << ", y "
+        << bounds_m_[1] << " to " << bounds_m_[3] << " m)";
+    return why.str();
+  }
+  if (std::abs(yaw_rad) > M_PI + 1e-9) return "yaw " + std::to_string(yaw_rad) + " rad is not in [-pi, pi]";
+  return std::nullopt;
 }
 
 Simulator::~Simulator() {
@@ -110,10 +128,13 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
       break;
     case aula::sim_control_t::SET_POSE: {
       const int robot = physics_->robotIndex(msg->robot);
+      const auto problem = poseProblem(msg->x, msg->y, msg->yaw);
       if (robot < 0) {
-        log(channel + ": SET_POSE for unknown robot '" + msg->robot + "' ignored");
-      } else if (!std::isfinite(msg->x) || !std::isfinite(msg->y) || !std::isfinite(msg->yaw)) {
-        log(channel + ": SET_POSE with a non-finite pose ignored");
+        ++rejected_controls_;
+        log(channel + ": SET_POSE for unknown robot '" + msg->robot + "' rejected");
+      } else if (problem) {
+        ++rejected_controls_;
+        log(channel + ": SET_POSE of '" + msg->robot + "' rejected: " + *problem);
       } else {
         physics_->setRobotPose(robot, msg->x, msg->y, msg->yaw);
         log("robot '" + msg->robot + "' teleported");
@@ -121,7 +142,8 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
       break;
     }
     default:
-      log(channel + ": unknown command " + std::to_string(msg->command) + " ignored");
+      ++rejected_controls_;
+      log(channel + ": unknown command " + std::to_string(msg->command) + " rejected");
   }
 }
 

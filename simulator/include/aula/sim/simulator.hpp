@@ -18,6 +18,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,11 @@ class Simulator {
   const world::WorldSpec& spec() const { return spec_; }
   int64_t timeUs() const { return physics_->timeUs(); }
   const SimulatorOptions& options() const { return options_; }
+  // SIM_CONTROL requests refused (an unknown robot, a pose outside the world, a yaw not in
+  // [-pi, pi], an unknown command): each is logged and counted, and none reaches DART.
+  long long rejectedControls() const { return rejected_controls_; }
+  // Why a SET_POSE to (x, y, yaw) cannot be done, or nullopt.
+  std::optional<std::string> poseProblem(double x_m, double y_m, double yaw_rad) const;
 
  private:
   void onControl(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_control_t* msg);
@@ -98,6 +104,8 @@ class Simulator {
   bool started_ = false;  // tick 0 published (after the expected lockstep clients joined)
   bool paused_ = false;
   double measured_rtf_ = 0.0;
+  long long rejected_controls_ = 0;
+  Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
 };
 
 }  // namespace aula::sim

@@ -1,0 +1,56 @@
+// SIM_CONTROL requests are range-checked before DART sees them: one packet must not crash the
+// simulator (yaw 1e308 aborted DART's verifyTransform) or put a robot outside its world.
+#include <aula/lcm/bus.hpp>
+#include <aula/sim/simulator.hpp>
+#include <aula/sim_control_t.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+aula::sim_control_t setPose(const std::string& robot, double x, double y, double yaw) {
+  aula::sim_control_t msg{};
+  msg.command = aula::sim_control_t::SET_POSE;
+  msg.robot = robot;
+  msg.x = x;
+  msg.y = y;
+  msg.yaw = yaw;
+  return msg;
+}
+
+}  // namespace
+
+TEST(SimulatorControl, PosesOutsideTheWorldOrWithAWildYawAreRejectedAndCounted) {
+  lcm::LCM bus("memq://");
+  aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), {}, bus);
+  const int roomba = sim.physics().robotIndex("roomba");
+  ASSERT_GE(roomba, 0);
+  const Eigen::Vector3d start = sim.physics().robotState(roomba).position_m;
+  auto send = [&](const aula::sim_control_t& msg) {
+    bus.publish(aula::lcmbus::kControlChannel, &msg);
+    while (bus.handleTimeout(0) > 0) {
+    }
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  send(setPose("roomba", start.x(), start.y(), 1e308));  // finite, yet DART aborts on it
+  send(setPose("roomba", 1e308, start.y(), 0.0));
+  send(setPose("roomba", start.x(), -500.0, 0.0));
+  send(setPose("roomba", inf, start.y(), 0.0));
+  send(setPose("nobody", start.x(), start.y(), 0.0));
+  aula::sim_control_t unknown{};
+  unknown.command = 99;
+  send(unknown);
+  EXPECT_EQ(sim.rejectedControls(), 6);
+  EXPECT_NEAR((sim.physics().robotState(roomba).position_m - start).norm(), 0.0, 1e-9);
+  ASSERT_TRUE(sim.poseProblem(start.x(), start.y(), 4.0).has_value());
+  EXPECT_NE(sim.poseProblem(start.x(), start.y(), 4.0)->find("not in [-pi, pi]"), std::string::npos);
+
+  send(setPose("roomba", start.x() + 0.5, start.y(), M_PI));  // inside the house: done
+  EXPECT_EQ(sim.rejectedControls(), 6);
+  EXPECT_NEAR(sim.physics().robotState(roomba).position_m.x(), start.x() + 0.5, 1e-6);
+  sim.advanceToNextTick();  // and the world steps on without complaint
+}
