@@ -1,5 +1,5 @@
 // autopark-referee [--config=config/autopark.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]
-//                  [--screenshot=FILE.png]
+//                  [--picture=FILE.png] [--screenshot=FILE.png]
 // Grades an Autopark run on simulated time from the true geometry. Headless, it prints the mark
 // and writes the report when the car has parked (or at the timeout), then exits.
 #include "src/parking_referee_node.hpp"
@@ -10,14 +10,15 @@
 namespace {
 constexpr const char* kUsage =
     "usage: autopark-referee [--config=config/autopark.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]\n"
-    "                 [--screenshot=FILE.png]\n"
+    "                 [--picture=FILE.png] [--screenshot=FILE.png]\n"
     "Grades an Autopark run on simulated time from the true geometry. Headless, it prints the mark\n"
-    "and writes the report when the car has parked (or at the timeout), then exits.\n";
+    "and writes the report when the car has parked (or at the timeout), then exits.\n"
+    "  --picture  at the end, a PNG of the street with the slot, the car's final pose, its trail, the gaps and the mark\n";
 }  // namespace
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark-referee", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "autopark-referee", {"report", "screenshot"}, kUsage);
+    auto setup = aula::app::refereeSetup(argc, argv, "autopark-referee", kUsage);
     aula::autopark::ParkingRefereeNode node(*setup.bus, setup.cfg, setup.world);
     return aula::app::runReferee<aula::autopark::ParkingRefereeNode, aula::autopark::ParkingRefereeWindow>(setup, node, argc, argv);
   });

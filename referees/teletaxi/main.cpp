@@ -1,5 +1,5 @@
 // teletaxi-referee [--config=config/teleTaxi.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]
-//                  [--screenshot=FILE.png]
+//                  [--picture=FILE.png] [--screenshot=FILE.png]
 // Grades a TeleTaxi run on simulated time. Headless, it prints the mark and writes the report
 // when the episode ends, then exits.
 #include "src/taxi_referee_node.hpp"
@@ -10,14 +10,15 @@
 namespace {
 constexpr const char* kUsage =
     "usage: teletaxi-referee [--config=config/teleTaxi.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]\n"
-    "                 [--screenshot=FILE.png]\n"
+    "                 [--picture=FILE.png] [--screenshot=FILE.png]\n"
     "Grades a TeleTaxi run on simulated time. Headless, it prints the mark and writes the report\n"
-    "when the episode ends, then exits.\n";
+    "when the episode ends, then exits.\n"
+    "  --picture  at the end, a PNG of the city with the taxi's path, the start, the destination and the mark\n";
 }  // namespace
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("teletaxi-referee", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "teletaxi-referee", {"report", "screenshot"}, kUsage);
+    auto setup = aula::app::refereeSetup(argc, argv, "teletaxi-referee", kUsage);
     aula::teletaxi::TaxiRefereeNode node(*setup.bus, setup.cfg, setup.world);
     return aula::app::runReferee<aula::teletaxi::TaxiRefereeNode, aula::teletaxi::TaxiRefereeWindow>(setup, node, argc, argv);
   });

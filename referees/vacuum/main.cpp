@@ -1,5 +1,5 @@
 // vacuum-cleaner-referee [--config=config/vacuumCleaner.cfg] [--headless] [--report=FILE.json]
-//                        [--lcm-url=URL] [--screenshot=FILE.png]
+//                        [--picture=FILE.png] [--lcm-url=URL] [--screenshot=FILE.png]
 // Measures the floor the roomba cleans in 900 s of simulated time and gives the mark.
 #include "src/coverage_referee_node.hpp"
 #include "src/coverage_referee_window.hpp"
@@ -9,13 +9,14 @@
 namespace {
 constexpr const char* kUsage =
     "usage: vacuum-cleaner-referee [--config=config/vacuumCleaner.cfg] [--headless] [--report=FILE.json]\n"
-    "                       [--lcm-url=URL] [--screenshot=FILE.png]\n"
-    "Measures the floor the roomba cleans in 900 s of simulated time and gives the mark.\n";
+    "                       [--picture=FILE.png] [--lcm-url=URL] [--screenshot=FILE.png]\n"
+    "Measures the floor the roomba cleans in 900 s of simulated time and gives the mark.\n"
+    "  --picture  at the end, a PNG of the house with the cleaned floor, the robot and the mark\n";
 }  // namespace
 
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner-referee", [&] {
-    auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "vacuum-cleaner-referee", {"report", "screenshot"}, kUsage);
+    auto setup = aula::app::refereeSetup(argc, argv, "vacuum-cleaner-referee", kUsage);
     aula::vacuum::CoverageRefereeNode node(*setup.bus, setup.cfg, setup.world);
     return aula::app::runReferee<aula::vacuum::CoverageRefereeNode, aula::vacuum::CoverageRefereeWindow>(setup, node, argc, argv);
   });

@@ -42,8 +42,8 @@ using aula::settings::Exercise;
 
 constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
-    "                [--report=FILE.json] [--lockstep] [--rtf=X] [--duration=SECONDS] [--lcm-url=URL]\n"
-    "                [--config=FILE.cfg] [--Key=value ...]\n"
+    "                [--report=FILE.json] [--picture=FILE.png] [--lockstep] [--rtf=X] [--duration=SECONDS]\n"
+    "                [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
@@ -58,6 +58,7 @@ constexpr const char* kUsage =
     "              `aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so`\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
+    "  --report    the referee's JSON report; --picture: its PNG picture of the run (both at the end)\n"
     "  --Key=value a declared setting (`aula config EXERCISE` lists them), e.g. --Vacuum.Referee.Duration=300\n"
     "exercises:\n";
 
@@ -318,7 +319,9 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Com
     }
   }
   if (ex.referee_settings == nullptr && cl.flag("duration")) lines[1].push_back("--duration=" + cl.option("duration"));
-  if (ex.referee_settings != nullptr && cl.flag("report")) lines[2].push_back("--report=" + cl.option("report"));
+  for (const char* output : {"report", "picture"}) {
+    if (ex.referee_settings != nullptr && cl.flag(output)) lines[2].push_back(std::string("--") + output + "=" + cl.option(output));
+  }
   return lines;
 }
 
@@ -420,8 +423,8 @@ int main(int argc, char** argv) {
     if (!cl.positional.empty() && (cl.positional[0] == "grade" || cl.positional[0] == "grade-task") && !cl.flag("help")) {
       return aula::grade::gradeCommand(cl, binDir());
     }
-    cl.requireKnown({"headless", "world", "algorithm", "report", "lockstep", "rtf", "seed", "duration", "lcm-url",
-                     "config", "map", "help"});
+    cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "lockstep", "rtf", "seed", "duration",
+                     "lcm-url", "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
     if (!cl.positional.empty() && cl.positional[0] == "new") {
@@ -447,6 +450,10 @@ int main(int argc, char** argv) {
       cl.options["headless"] = "";
     }
     if (cl.flag("rtf")) cl.optionDouble("rtf", 0);  // a number, or a usage error now
+    // The referee's output files: a folder that is not there is refused before anything starts.
+    for (const char* output : {"report", "picture"}) {
+      if (cl.flag(output)) aula::config::requireWritableFolder(cl.option(output), std::string("--") + output + "=" + cl.option(output));
+    }
     const RunSettings run = resolveSettings(*ex, cl);
     Supervision supervision;
     supervision.lines = commandLines(*ex, cl, run);

@@ -67,4 +67,12 @@ std::string cacheDir() {
   return dir.string();
 }
 
+void requireWritableFolder(const std::string& file_path, const std::string& what) {
+  if (file_path.empty()) throw ConfigError(what + ": no file name");
+  const fs::path folder = fs::path(file_path).parent_path().empty() ? fs::path(".") : fs::path(file_path).parent_path();
+  if (fs::is_directory(fs::path(file_path))) throw ConfigError(what + ": '" + file_path + "' is a folder, not a file");
+  if (!fs::is_directory(folder)) throw ConfigError(what + ": the folder '" + folder.string() + "' does not exist");
+  if (access(folder.c_str(), W_OK | X_OK) != 0) throw ConfigError(what + ": the folder '" + folder.string() + "' is not writable");
+}
+
 }  // namespace aula::config

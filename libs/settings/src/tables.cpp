@@ -103,6 +103,7 @@ SettingsTable makeTaxiComponent() {
 SettingsTable makeTaxiReferee() {
   SettingsTable t = common("teletaxi-referee");
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
+  mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");  // the picture shows the component's map
   t.real("TeleTaxi.Referee.Timeout", 600, "s", 0, 1e6, "give up this long after GO! (simulated time)", true);
   t.real("TeleTaxi.Referee.StopSpeed", 0.05, "m/s", 0, 10, "'stopped' means slower than this...", true);
   t.real("TeleTaxi.Referee.StopHold", 1.0, "s", 0, 600, "...for this long", true);

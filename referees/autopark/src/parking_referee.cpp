@@ -11,6 +11,8 @@ double angleScore(double yaw_error_deg) {
   return e <= 15.0 ? 100.0 : e <= 45.0 ? 50.0 : 0.0;
 }
 
+}  // namespace
+
 double gapScore(double gap_m, const ParkingRefereeSettings& s) {
   if (gap_m >= s.gap_full_from_m && gap_m < s.gap_full_to_m) return 100.0;
   if (gap_m >= s.gap_half_from_m && gap_m < s.gap_full_from_m) return 50.0;
@@ -21,8 +23,6 @@ double curbScore(double gap_m, const ParkingRefereeSettings& s) {
   if (gap_m < 0) return 0.0;  // over the curb
   return gap_m <= s.curb_full_m ? 100.0 : gap_m < s.curb_half_m ? 50.0 : 0.0;
 }
-
-}  // namespace
 
 ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
                            const ParkingRefereeSettings& s) {
@@ -56,7 +56,10 @@ void ParkingReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_ra
   x_ = x_m;
   y_ = y_m;
   yaw_ = yaw_rad;
-  if (!finished_) measures_ = measureParking(scene_, x_, y_, yaw_);
+  if (!finished_) {
+    measures_ = measureParking(scene_, x_, y_, yaw_);
+    trail_.add(x_, y_);
+  }
 }
 
 void ParkingReferee::onContact(int64_t utime, bool pressed) {

@@ -1,6 +1,8 @@
 #include "parking_referee_node.hpp"
 
+#include <aula/autopark/parking_picture.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cmath>
@@ -31,7 +33,7 @@ ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
 }
 
 ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+    : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
   const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
   scene_ = ParkingScene::fromWorld(world, car.name);
   settings_ = parkingRefereeSettings(cfg);
@@ -122,6 +124,29 @@ std::string ParkingRefereeNode::summary() const {
                 s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
                 m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.curb_gap_m, r.collisions(), r.contactS());
   return std::string(text) + outcome_.summary();
+}
+
+void ParkingRefereeNode::writePicture(const std::string& png_path) const {
+  const ParkingReferee& r = *referee_;
+  ParkingRunSummary run;
+  run.scene = r.scene();
+  run.settings = r.settings();
+  run.measures = r.measures();
+  run.scores = r.scores();
+  run.finished = r.finished();
+  run.parked = r.parked();
+  run.park_time_s = r.elapsedS();
+  run.collisions = r.collisions();
+  run.have_pose = r.hasPose();
+  run.x_m = r.x();
+  run.y_m = r.y();
+  run.yaw_rad = r.yawRad();
+  run.trail = r.trail().points();
+  run.notes = outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed));
+  const world::MapTransform view = parkingView(run);
+  // Everything a car can touch, kerbs included (the ground plane is not drawn).
+  const cv::Mat street = world::rasterizeOccupancy(world_, view, 0.01, 100.0);
+  referee::writePngAtomically(parkingPicture(street, view, run), png_path);
 }
 
 void ParkingRefereeNode::abort(const std::string& reason) {

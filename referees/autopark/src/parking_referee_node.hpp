@@ -31,6 +31,7 @@ class ParkingRefereeNode {
   bool endedEarly() const { return outcome_.ended(); }
   aula::referee::Report report() const;
   std::string summary() const;
+  void writePicture(const std::string& png_path) const;  // --picture
   void poll() { clock_->poll(); }
   void leave() { clock_->leave(); }
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
@@ -49,6 +50,7 @@ class ParkingRefereeNode {
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
+  world::WorldSpec world_;  // the street, drawn into the picture only when one is asked for
 };
 
 // Autopark.Referee.* keys; throws config::ConfigError naming the key.

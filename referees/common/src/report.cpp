@@ -80,18 +80,20 @@ std::string Report::toJson() const {
   return out + "}\n";
 }
 
-void Report::writeAtomically(const std::string& path) const {
+void Report::writeAtomically(const std::string& path) const { writeFileAtomically(path, toJson(), "report"); }
+
+void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what) {
   const std::string tmp = path + ".tmp." + std::to_string(getpid());
   {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write report");
-    out << toJson();
+    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot write " + what);
+    out << content;
     out.flush();
-    if (!out) throw std::runtime_error(path + ": cannot write report");
+    if (!out) throw std::runtime_error(path + ": cannot write " + what);
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot move report into place");
+    throw std::runtime_error(path + ": cannot move " + what + " into place");
   }
 }
 

@@ -1,5 +1,7 @@
 #include "aula/referee/run_outcome.hpp"
 
+#include <sstream>
+
 namespace aula::referee {
 
 bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands,
@@ -43,6 +45,14 @@ std::string RunOutcome::summary() const {
   if (non_finite_commands_ > 0) {
     out += "  " + std::to_string(non_finite_commands_) + " motor commands were not finite numbers (set to 0)\n";
   }
+  return out;
+}
+
+std::vector<std::string> RunOutcome::pictureNotes(const std::string& world_file, long long seed) const {
+  std::vector<std::string> out = {"world " + world_file + ", seed " + std::to_string(seed) + ", algorithm " + algorithm_ +
+                                  (generation_ > 0 ? ", after " + std::to_string(generation_) + " reloads" : "")};
+  std::istringstream lines(summary());
+  for (std::string line; std::getline(lines, line);) out.push_back(line.substr(line.find_first_not_of(' ')));
   return out;
 }
 

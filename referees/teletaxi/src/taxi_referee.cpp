@@ -16,6 +16,7 @@ void TaxiReferee::start(int64_t utime) {
   if (started() || !goal_set_) return;
   start_utime_ = utime;
   path_length_m_ = 0;
+  if (have_pose_) trail_.add(x_, y_);  // where the taxi stood at GO!
   straight_distance_m_ = distanceToGoalM();
 }
 
@@ -38,6 +39,7 @@ void TaxiReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_rad) 
   x_ = x_m;
   y_ = y_m;
   yaw_rad_ = yaw_rad;
+  if (started() && utime >= *start_utime_) trail_.add(x_m, y_m);
   if (started() && straight_distance_m_ == 0 && path_length_m_ == 0) {
     straight_distance_m_ = distanceToGoalM();  // GO! came before the first pose
   }

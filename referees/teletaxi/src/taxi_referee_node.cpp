@@ -1,6 +1,7 @@
 #include "taxi_referee_node.hpp"
 
 #include <aula/lcm/bus.hpp>
+#include <aula/teletaxi/taxi_picture.hpp>
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
@@ -16,7 +17,9 @@ TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
 }
 
 TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+    : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
+  const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
+  map_params_ = {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]};
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
   lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
   lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
@@ -96,6 +99,29 @@ std::string TaxiRefereeNode::summary() const {
                 g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
                 referee_.elapsedS(), referee_.straightDistanceM(), bumps_);
   return std::string(text) + outcome_.summary();
+}
+
+void TaxiRefereeNode::writePicture(const std::string& png_path) const {
+  const TaxiReferee& r = referee_;
+  TaxiRunSummary run;
+  run.grade = r.finished() ? r.grade() : r.provisionalGrade();
+  run.finished = r.finished();
+  run.driving_time_s = r.elapsedS();
+  run.path_length_m = r.pathLengthM();
+  run.straight_distance_m = r.straightDistanceM();
+  run.have_goal = r.hasGoal();
+  run.goal_x_m = r.goalX();
+  run.goal_y_m = r.goalY();
+  run.arrival_radius_m = r.settings().scale.arrival_radius_m;
+  run.have_pose = r.hasPose();
+  run.x_m = r.x();
+  run.y_m = r.y();
+  run.yaw_rad = r.yawRad();
+  run.path = r.trail().points();
+  run.bumps = bumps_;
+  run.notes = outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed));
+  const world::OccupancyMap map = world::occupancyMapOf(world_, map_params_);
+  referee::writePngAtomically(taxiPicture(map.image, map.transform, run), png_path);
 }
 
 void TaxiRefereeNode::abort(const std::string& reason) {

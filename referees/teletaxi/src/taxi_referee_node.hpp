@@ -10,6 +10,7 @@
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
 #include <aula/teletaxi/taxi_referee.hpp>
+#include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <lcm/lcm-cpp.hpp>
@@ -31,6 +32,7 @@ class TaxiRefereeNode {
   bool endedEarly() const { return outcome_.ended(); }
   aula::referee::Report report() const;
   std::string summary() const;  // the mark and its breakdown, for the terminal
+  void writePicture(const std::string& png_path) const;  // --picture
   void poll() { clock_->poll(); }
   void leave() { clock_->leave(); }
   int64_t simTimeUs() const { return clock_->simTimeUs(); }
@@ -51,6 +53,8 @@ class TaxiRefereeNode {
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   long long bumps_ = 0;       // contacts with walls (or anything) after GO!, counted on press
+  world::WorldSpec world_;    // drawn into the picture's map only when one is asked for
+  world::MapParams map_params_;
   bool pressed_ = false;
 };
 

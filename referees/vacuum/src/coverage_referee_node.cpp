@@ -1,10 +1,10 @@
 #include "coverage_referee_node.hpp"
 
 #include <aula/lcm/bus.hpp>
+#include <aula/referee/run_picture.hpp>
+#include <aula/vacuum/coverage_picture.hpp>
 #include <aula/world/map_transform.hpp>
 #include <aula/world/world_spec.hpp>
-
-#include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -54,6 +54,12 @@ void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, 
   if (msg->utime <= episode_from_utime_) return;
   ++pose_messages_;
   referee_->onPose(msg->utime, msg->x, msg->y);
+  if (!referee_->finished()) {
+    have_pose_ = true;
+    x_m_ = msg->x;
+    y_m_ = msg->y;
+    yaw_rad_ = msg->yaw;
+  }
   if (on_pose_) on_pose_(msg->x, msg->y, msg->yaw);
 }
 
@@ -68,6 +74,7 @@ void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string
     referee_ = newReferee(msg->utime);
     episode_from_utime_ = msg->utime;
     pose_messages_ = 0;
+    have_pose_ = false;
   }
   outcome_.announceOnce(finished(), on_finished_);
 }
@@ -106,6 +113,23 @@ std::string CoverageRefereeNode::summary() const {
                 r.mark(), r.coveragePercent(), r.grid().floorAreaM2(), r.elapsedS(),
                 r.settings().full_mark_coverage_percent, r.bumps(), r.stuckS());
   return std::string(text) + outcome_.summary();
+}
+
+void CoverageRefereeNode::writePicture(const std::string& png_path) const {
+  const CoverageReferee& r = *referee_;
+  CoverageRunSummary run;
+  run.mark = r.mark();
+  run.coverage_percent = r.coveragePercent();
+  run.full_mark_coverage_percent = r.settings().full_mark_coverage_percent;
+  run.elapsed_s = r.elapsedS();
+  run.bumps = r.bumps();
+  run.have_pose = have_pose_;
+  run.x_m = x_m_;
+  run.y_m = y_m_;
+  run.yaw_rad = yaw_rad_;
+  run.robot_radius_m = r.settings().robot_radius_m;
+  run.notes = outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed));
+  referee::writePngAtomically(coveragePicture(map_.image, r.grid(), run), png_path);
 }
 
 void CoverageRefereeNode::abort(const std::string& reason) {

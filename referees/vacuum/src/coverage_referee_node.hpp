@@ -28,6 +28,7 @@ class CoverageRefereeNode {
   bool endedEarly() const { return outcome_.ended(); }
   referee::Report report() const;
   std::string summary() const;
+  void writePicture(const std::string& png_path) const;  // --picture
   void poll() { clock_->poll(); }
   void leave() { clock_->leave(); }
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
@@ -54,6 +55,8 @@ class CoverageRefereeNode {
   std::function<void()> on_finished_;
   std::function<void(double, double, double)> on_pose_;
   long long pose_messages_ = 0;
+  bool have_pose_ = false;  // the last true pose of this episode, for the picture
+  double x_m_ = 0, y_m_ = 0, yaw_rad_ = 0;
 };
 
 }  // namespace aula::vacuum

@@ -6,13 +6,17 @@
 // The launcher's `--control-fd` pipe can end the run early ("abort <reason>"): the node grades
 // what it has and says why; such a run exits 1 (it did not finish).
 //
+// `--picture=FILE.png` writes the referee's picture of the run (drawn headless with OpenCV, for
+// the teacher's grading report) at the same moment as the report.
+//
 // Node needs finished(), endedEarly(), abort(reason), poll(), leave(), summary(), report(),
-// setOnFinished(hook);
+// writePicture(path), setOnFinished(hook);
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
 #include <aula/app/bus_pump.hpp>
 #include <aula/app/control_pipe.hpp>
 #include <aula/app/process_setup.hpp>
+#include <aula/config/paths.hpp>
 
 #include <QApplication>
 
@@ -21,9 +25,22 @@
 
 namespace aula::app {
 
+// The options of every referee: ProcessSetup::fromArgs plus the output files, whose folders are
+// checked now, before the run starts (a ConfigError, exit code 2, naming the path).
+inline ProcessSetup refereeSetup(int argc, const char* const* argv, const std::string& program, const std::string& usage) {
+  ProcessSetup setup = ProcessSetup::fromArgs(argc, argv, program, {"report", "picture", "screenshot"}, usage);
+  for (const char* option : {"report", "picture", "screenshot"}) {
+    if (!setup.command_line.flag(option)) continue;
+    const std::string path = setup.command_line.option(option);
+    config::requireWritableFolder(path, std::string("--") + option + "=" + path);
+  }
+  return setup;
+}
+
 template <class Node, class Window>
 int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   const std::string report_path = setup.command_line.option("report");
+  const std::string picture_path = setup.command_line.option("picture");
   ControlPipe control(setup.command_line.flag("control-fd")
                           ? static_cast<int>(setup.command_line.optionDouble("control-fd", -1))
                           : -1);
@@ -36,6 +53,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   auto finish = [&] {
     std::cout << node.summary() << std::flush;
     if (!report_path.empty()) node.report().writeAtomically(report_path);
+    if (!picture_path.empty()) node.writePicture(picture_path);
   };
   if (setup.headless) {
     const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);

@@ -17,5 +17,9 @@ std::string dataPath(const std::string& relative);
 std::string resolveWorldPath(const std::string& value, const std::string& what);
 // The per-user cache ($XDG_CACHE_HOME/aula, else ~/.cache/aula), created on demand.
 std::string cacheDir();
+// An output file given on a command line (`what`: "--report=out/r.json"): its folder must exist
+// and be writable, checked before a run starts so a typo does not cost the whole run. Throws
+// ConfigError naming the path and the folder.
+void requireWritableFolder(const std::string& file_path, const std::string& what);
 
 }  // namespace aula::config

@@ -28,6 +28,7 @@ class CoverageGrid {
     return floor_pixels_ > 0 ? 100.0 * static_cast<double>(cleaned_pixels_) / static_cast<double>(floor_pixels_) : 0.0;
   }
   const cv::Mat& cleaned() const { return cleaned_; }  // CV_8UC1: 255 cleaned floor
+  const cv::Mat& floor() const { return floor_; }      // CV_8UC1: 255 floor
   const world::MapTransform& transform() const { return transform_; }
 
  private:

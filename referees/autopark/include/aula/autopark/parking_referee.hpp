@@ -12,6 +12,7 @@
 //      100, in [gap_half_from, gap_full_from) 50; curb distance <= curb_full 100, < curb_half 50
 //   C  100 without a collision, else 0
 
+#include <aula/referee/run_picture.hpp>
 #include <aula/scoring/parking_geometry.hpp>
 
 #include <cstdint>
@@ -36,6 +37,9 @@ struct ParkingScores {
 
 ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
                            const ParkingRefereeSettings& s);
+// The D terms: 100, 50 or 0 for one gap to a parked car, and for the curb distance.
+double gapScore(double gap_m, const ParkingRefereeSettings& s);
+double curbScore(double gap_m, const ParkingRefereeSettings& s);
 
 class ParkingReferee {
  public:
@@ -61,6 +65,9 @@ class ParkingReferee {
   double y() const { return y_; }
   double yawRad() const { return yaw_; }
   double speedMps() const { return speed_mps_; }
+  bool hasPose() const { return have_pose_; }
+  // Where the car drove until the end, for the picture.
+  const referee::Trail& trail() const { return trail_; }
 
  private:
   ParkingScene scene_;
@@ -74,6 +81,7 @@ class ParkingReferee {
   long long collisions_ = 0;
   bool in_contact_ = false;
   int64_t contact_since_utime_ = 0, contact_us_ = 0;
+  referee::Trail trail_{0.1};  // a point per 10 cm: 300 s at 3 m/s keeps 9000
 };
 
 }  // namespace aula::autopark

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace aula::referee {
 
@@ -34,6 +35,8 @@ class RunOutcome {
   void addTo(Report& report) const;
   // "" or one line per reason, for the printed summary.
   std::string summary() const;
+  // The caption lines of a picture of the run: which world, seed and algorithm, then summary().
+  std::vector<std::string> pictureNotes(const std::string& world_file, long long seed) const;
 
  private:
   std::string algorithm_ = "unknown", fault_, aborted_;

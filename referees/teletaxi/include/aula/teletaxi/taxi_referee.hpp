@@ -6,6 +6,7 @@
 // (speed below stop_speed for stop_hold_s) within the arrival radius. A run that has not
 // arrived timeout_s after GO! is "not reached".
 
+#include <aula/referee/run_picture.hpp>
 #include <aula/teletaxi/taxi_grade.hpp>
 
 #include <cstdint>
@@ -44,6 +45,12 @@ class TaxiReferee {
   double yawRad() const { return yaw_rad_; }
   double goalX() const { return goal_x_; }
   double goalY() const { return goal_y_; }
+  bool hasPose() const { return have_pose_; }
+  double x() const { return x_; }
+  double y() const { return y_; }
+  const TaxiRefereeSettings& settings() const { return settings_; }
+  // Where the taxi drove from GO! to the end (its first point: the start), for the picture.
+  const referee::Trail& trail() const { return trail_; }
 
  private:
   TaxiGradeInput gradeInput(bool timed_out) const;
@@ -62,6 +69,7 @@ class TaxiReferee {
   double path_length_m_ = 0;
   bool finished_ = false;
   TaxiGrade grade_;
+  referee::Trail trail_{0.25};  // a point per 25 cm: a 10 km drive keeps 40000
 };
 
 }  // namespace aula::teletaxi
