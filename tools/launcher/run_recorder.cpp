@@ -4,9 +4,11 @@
 #include <aula/lcm/bus.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/lcm/log_replay.hpp>
+#include <aula/process/child_process.hpp>
 #include <aula/world/world_spec.hpp>
 
-#include <csignal>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -20,11 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-constexpr auto kStartTimeout = 5s;      // lcm-logger creates its file and hears the record by then
-constexpr auto kRepublishPeriod = 300ms;  // longer than lcm-logger's 100 ms flush: rarely a duplicate
-constexpr auto kDrain = 200ms;          // the last datagrams of the run reach the logger
+constexpr auto kStartTimeout = 5s;  // the record comes back on the bus by then
+constexpr auto kDrain = 200ms;      // the last datagrams of the run reach the recorder
 
-// lcm-logger's own receive buffer: a lockstep run as fast as possible sends bursts.
+// The recorder's own receive buffer: a lockstep run as fast as possible sends bursts.
 std::string withLargeReceiveBuffer(const std::string& url) {
   if (url.rfind("udpm://", 0) != 0 || url.find("recv_buf_size=") != std::string::npos) return url;
   return url + (url.find('?') == std::string::npos ? "?" : "&") + "recv_buf_size=4194304";
@@ -87,57 +88,50 @@ void RunRecorder::checkPath(const std::string& path) {
 
 RunRecorder::RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record)
     : path_(path) {
-  // A file left from before would look like a logger that is already writing.
-  std::error_code ignored;
-  fs::remove(path_, ignored);
-  try {
-    logger_ = std::make_unique<process::ChildProcess>(
-        std::vector<std::string>{"lcm-logger", "--quiet", "--force", "--lcm-url=" + withLargeReceiveBuffer(url), path_},
-        "/dev/null", "/dev/null");
-  } catch (const std::runtime_error& e) {
-    throw config::ConfigError(std::string("--record needs lcm-logger (Debian package liblcm-bin): ") + e.what());
-  }
+  log_ = std::make_unique<lcm::LogFile>(path_, "w");
+  if (!log_->good()) throw config::ConfigError("--record=" + path_ + ": cannot write: " + std::strerror(errno));
+  bus_ = lcmbus::openBus(withLargeReceiveBuffer(url));
+  lcmbus::subscribe(*bus_, ".*", &RunRecorder::onMessage, this);
+  // A process hears what it publishes: the record is the log's first Aula message, and once it
+  // is written the subscription is live for everything that follows.
+  bus_->publish(lcmbus::kRunChannel, &record);
   const auto deadline = std::chrono::steady_clock::now() + kStartTimeout;
-  auto checkLogger = [&](const char* waiting_for) {
-    if (const auto code = logger_->poll()) {
-      throw std::runtime_error("lcm-logger ended (exit code " + std::to_string(*code) + ") before " + waiting_for);
-    }
+  while (!record_written_) {
     if (std::chrono::steady_clock::now() > deadline) {
-      throw std::runtime_error("lcm-logger did not " + std::string(waiting_for) + " within 5 s");
+      throw std::runtime_error("--record: the run's " + std::string(lcmbus::kRunChannel) + " message did not come back on " + url);
     }
-    std::this_thread::sleep_for(10ms);
-  };
-  while (!fs::exists(path_)) checkLogger(("creating " + path_).c_str());
-  // The file exists before lcm-logger subscribes: the record counts only once it is in the log.
-  const auto bus = lcmbus::openBus(url);
-  auto published = std::chrono::steady_clock::time_point{};
-  while (!lcmbus::findRunRecord(path_)) {
-    if (std::chrono::steady_clock::now() - published >= kRepublishPeriod) {
-      bus->publish(lcmbus::kRunChannel, &record);
-      published = std::chrono::steady_clock::now();
-    }
-    checkLogger(("recording the run's " + std::string(lcmbus::kRunChannel) + " message on " + url).c_str());
+    bus_->handleTimeout(50);
   }
+  thread_ = std::thread([this] {
+    while (!stop_) bus_->handleTimeout(50);
+    while (bus_->handleTimeout(0) > 0) {  // what arrived before stop()
+    }
+  });
+}
+
+void RunRecorder::onMessage(const lcm::ReceiveBuffer* message, const std::string& channel) {
+  lcm::LogEvent event{0, message->recv_utime, channel, static_cast<int32_t>(message->data_size), message->data};
+  if (log_->writeEvent(&event) != 0) write_failed_ = true;
+  ++events_;
+  if (channel == lcmbus::kRunChannel) record_written_ = true;
 }
 
 RunRecorder::~RunRecorder() { stop(); }
 
 void RunRecorder::stop() {
-  if (!logger_) return;
+  if (!thread_.joinable()) return;
   std::this_thread::sleep_for(kDrain);
-  kill(logger_->pid(), SIGINT);  // lcm-logger writes what it holds and closes the file
-  const auto code = logger_->wait(5s);
-  if (!code) logger_->stop();
-  logger_.reset();
+  stop_ = true;
+  thread_.join();
+  log_.reset();  // flushes and closes the file
   std::error_code error;
-  const auto bytes = fs::file_size(path_, error);
-  if (code && *code == 0 && !error) {
-    std::cerr << "aula: run recorded in " << path_ << " (" << bytes / 1024 << " KiB); grade it again with `aula regrade "
-              << path_ << "`\n";
-  } else {
-    std::cerr << "aula: lcm-logger did not end cleanly (" << (code ? "exit code " + std::to_string(*code) : "killed")
-              << "): " << path_ << " may be incomplete\n";
+  const auto bytes = std::filesystem::file_size(path_, error);
+  if (write_failed_ || error) {
+    std::cerr << "aula: could not write every message to " << path_ << ": the log is incomplete\n";
+    return;
   }
+  std::cerr << "aula: run recorded in " << path_ << " (" << events_ << " messages, " << bytes / 1024
+            << " KiB); grade it again with `aula regrade " << path_ << "`\n";
 }
 
 }  // namespace aula::launcher
