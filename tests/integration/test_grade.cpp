@@ -90,7 +90,7 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   const fs::path out = dir / "out";
   const std::vector<std::string> grade = {aula, "grade", "vacuum", (subs / "good").string(), (subs / "lazy").string(),
                                           (subs / "broken").string(), (subs / "thrower").string(), "--seeds=1-2",
-                                          "--jobs=2", "--out=" + out.string(), kShortRun};
+                                          "--jobs=2", "--out=" + out.string(), "--record", kShortRun};
   ASSERT_EQ(runToEnd(grade, (dir / "grade1.txt").string(), 300), 0) << readFile((dir / "grade1.txt").string());
   const std::string first_csv = readFile((out / "grades.csv").string());
 
@@ -136,6 +136,21 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   EXPECT_DOUBLE_EQ(jsonNumber(good1, "mark"), reference[0]);
   const std::string thrower2 = readFile((out / "runs" / "thrower" / "vacuum-seed2.json").string());
   EXPECT_NE(thrower2.find("\"failure\": \"execute() threw std::runtime_error: boom\""), std::string::npos) << thrower2;
+
+  // The teacher's page: every student in the table, the referee's picture of each run that ran,
+  // and each run's log (--record).
+  const std::string html = readFile((out / "report.html").string());
+  for (const char* student : {"good", "lazy", "broken", "thrower"}) {
+    EXPECT_NE(html.find(std::string("<td class='name'><a href='#") + student + "'>"), std::string::npos) << student;
+  }
+  size_t pictures = 0;
+  for (size_t at = html.find("src='data:image/png;base64,"); at != std::string::npos;
+       at = html.find("src='data:image/png;base64,", at + 1)) {
+    ++pictures;
+  }
+  EXPECT_EQ(pictures, 6u) << "one picture per run that ran (the broken submission never ran)";
+  EXPECT_TRUE(fs::is_regular_file(out / "runs" / "good" / "vacuum-seed1.png"));
+  EXPECT_GT(fs::file_size(out / "runs" / "good" / "vacuum-seed1.lcmlog"), 100000u);
 
   // Again with the same folder: every run is up to date (same plugin, world and seed).
   ASSERT_EQ(runToEnd(grade, (dir / "grade2.txt").string(), 120), 0);

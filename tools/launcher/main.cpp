@@ -1,5 +1,6 @@
 // aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N] [--rtf=X] ...
 // aula config EXERCISE [--world=FILE] [--Key=value ...]
+// aula regrade FILE.lcmlog [--report=FILE.json]
 // Starts the simulator and the exercise's processes (like the original's three terminals),
 // waits for the run to end and stops everything cleanly: it never leaves a process behind
 // (children die with it: PR_SET_PDEATHSIG) and exits non-zero if any process failed.
@@ -8,10 +9,13 @@
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_command.hpp>
+#include <aula/lcm/bus.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
+
+#include "run_recorder.hpp"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -42,11 +46,12 @@ using aula::settings::Exercise;
 
 constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
-    "                [--report=FILE.json] [--picture=FILE.png] [--lockstep] [--rtf=X] [--duration=SECONDS]\n"
-    "                [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
+    "                [--report=FILE.json] [--picture=FILE.png] [--record=FILE.lcmlog] [--lockstep] [--rtf=X]\n"
+    "                [--duration=SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
+    "       aula regrade FILE.lcmlog [--report=FILE.json]\n"
     "%GRADE%"
     "  run         start the simulator, the component and the referee\n"
     "  check-world load a world, list its robots, sensors and channels, say what each exercise would miss\n"
@@ -56,6 +61,8 @@ constexpr const char* kUsage =
     "  new         start your own algorithm in DIR: MyAlgorithm.cpp, CMakeLists.txt, README.md;\n"
     "              build it with `cmake -S DIR -B DIR/build && cmake --build DIR/build`, run it with\n"
     "              `aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so`\n"
+    "  regrade     grade a run recorded with --record again, from the log alone (no simulator)\n"
+    "  --record    write the whole run to FILE.lcmlog (LCM's log format; lcm-logplayer plays it)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
     "  --report    the referee's JSON report; --picture: its PNG picture of the run (both at the end)\n"
@@ -114,6 +121,7 @@ RunSettings resolveSettings(const Exercise& ex, const CommandLine& cl) {
     run.overrides.set(ex.section + ".Autostart", "true", "command line --headless");
   }
   if (cl.flag("world")) run.overrides.set(ex.section + ".World", cl.option("world"), "command line --world");
+  if (cl.flag("seed")) run.overrides.set("Simulator.Seed", cl.option("seed"), "command line --seed");
 
   std::vector<const SettingsTable*> tables = {&aula::settings::simulator()};
   for (const auto* t : ex.tables()) tables.push_back(t);
@@ -298,7 +306,6 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Com
   // Headless runs go as fast as possible unless --rtf says otherwise; --rtf counts in every mode.
   if (cl.flag("rtf")) sim.push_back("--rtf=" + cl.option("rtf"));
   else if (cl.flag("headless")) sim.push_back("--rtf=0");
-  if (cl.flag("seed")) sim.push_back("--seed=" + cl.option("seed"));
   if (cl.flag("lcm-url")) sim.push_back("--lcm-url=" + cl.option("lcm-url"));
 
   std::vector<std::vector<std::string>> lines = {sim};
@@ -415,6 +422,17 @@ int supervise(const Supervision& run) {
   return result;
 }
 
+// --record: the logger listens and the log holds the run's record before the simulator starts.
+std::unique_ptr<aula::launcher::RunRecorder> startRecording(const Exercise& ex, const CommandLine& cl,
+                                                            const RunSettings& run) {
+  if (ex.referee_settings == nullptr) throw ConfigError("--record: '" + ex.name + "' has no referee to grade the log");
+  aula::launcher::RunRecorder::checkPath(cl.option("record"));
+  const Config& referee = run.effective.back().second;
+  const auto record = aula::launcher::runRecord(ex, run.world, run.effective.front().second.getInt64("Simulator.Seed"), referee);
+  return std::make_unique<aula::launcher::RunRecorder>(cl.option("record"),
+                                                       aula::lcmbus::resolveUrl(cl, referee), record);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -423,10 +441,13 @@ int main(int argc, char** argv) {
     if (!cl.positional.empty() && (cl.positional[0] == "grade" || cl.positional[0] == "grade-task") && !cl.flag("help")) {
       return aula::grade::gradeCommand(cl, binDir());
     }
-    cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "lockstep", "rtf", "seed", "duration",
-                     "lcm-url", "config", "map", "help"});
+    cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
+                     "duration", "lcm-url", "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
+    if (cl.positional.size() == 2 && cl.positional[0] == "regrade") {
+      return aula::launcher::regrade(cl.positional[1], cl.option("report"), binDir());
+    }
     if (!cl.positional.empty() && cl.positional[0] == "new") {
       if (cl.positional.size() != 3) return usage(std::cerr, 2);
       const Exercise* ex = aula::settings::exerciseNamed(cl.positional[1]);
@@ -463,6 +484,10 @@ int main(int argc, char** argv) {
       supervision.algorithm = component.getString(ex->section + ".Algorithm");
       supervision.execute_budget_s = component.getDouble("Component.ExecuteBudget");
     }
-    return supervise(supervision);
+    std::unique_ptr<aula::launcher::RunRecorder> recorder;
+    if (cl.flag("record")) recorder = startRecording(*ex, cl, run);
+    const int code = supervise(supervision);
+    if (recorder) recorder->stop();
+    return code;
   });
 }

@@ -36,8 +36,10 @@ bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
       signalled = true;
       break;
     }
+    // done() before every message: one handled after the end would change the grade (a
+    // regraded log stops right there).
     bus.handleTimeout(50);
-    while (bus.handleTimeout(0) > 0 && !done()) {
+    while (!done() && bus.handleTimeout(0) > 0) {
     }
     if (housekeeping) housekeeping();
   }

@@ -2,6 +2,7 @@
 
 #include <aula/config/paths.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/lcm/log_replay.hpp>
 #include <aula/settings/tables.hpp>
 
 #include <cstdlib>
@@ -28,6 +29,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   std::vector<std::string> takes_value = {"config", "lcm-url"};
   std::vector<std::string> known = {"config", "lcm-url", "headless", "help", "control-fd"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
+  if (exercise != nullptr && exercise->referee == program) known.push_back("replay");
   ProcessSetup setup;
   setup.program = program;
   setup.command_line = config::CommandLine::parse(argc, argv, takes_value);
@@ -39,7 +41,10 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   if (!setup.command_line.positional.empty()) {
     throw config::ConfigError("command line: unexpected argument '" + setup.command_line.positional.front() + "'");
   }
-  setup.headless = setup.command_line.flag("headless");
+  // A referee grading a recorded run has no window and no simulator: it reads the log.
+  const bool replay = setup.command_line.flag("replay");
+  if (replay) lcmbus::requireLog(setup.command_line.option("replay"));
+  setup.headless = setup.command_line.flag("headless") || replay;
   if (opens_window && !setup.headless && !haveDisplay()) {
     throw config::ConfigError("no display (DISPLAY is not set): use --headless");
   }
@@ -65,7 +70,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
     std::cerr << program << ": world " << setup.world.source_path << " (sha256 " << setup.world.sha256.substr(0, 12)
               << ")" << std::endl;
   }
-  setup.bus = lcmbus::openBus(lcmbus::resolveUrl(setup.command_line, setup.cfg));
+  setup.bus = lcmbus::openBus(replay ? lcmbus::kReplayUrl : lcmbus::resolveUrl(setup.command_line, setup.cfg));
   return setup;
 }
 

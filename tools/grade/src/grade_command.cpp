@@ -20,7 +20,7 @@ using config::ConfigError;
 
 const char* const kGradeUsage =
     "       aula grade EXERCISE SUBMISSION... [--worlds=W1,W2] [--seeds=1-5] [--jobs=N] [--out=DIR]\n"
-    "                  [--engine=local|slurm] [--wall-limit=SECONDS] [--Key=value ...]\n"
+    "                  [--engine=local|slurm] [--wall-limit=SECONDS] [--record] [--Key=value ...]\n"
     "       aula grade --collect DIR\n"
     "       aula grade-task MANIFEST INDEX\n";
 
@@ -171,7 +171,7 @@ int gradeCommand(const config::CommandLine& cl, const std::string& bin_dir) {
     printGrades(collect(dir), dir);
     return 0;
   }
-  cl.requireKnown({"worlds", "seeds", "jobs", "out", "engine", "wall-limit"});
+  cl.requireKnown({"worlds", "seeds", "jobs", "out", "engine", "wall-limit", "record"});
   return grade(cl, bin_dir);
 }
 

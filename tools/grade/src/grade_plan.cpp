@@ -156,6 +156,7 @@ GradeRequest parseRequest(const config::CommandLine& cl) {
   if (r.engine != "local" && r.engine != "slurm") throw ConfigError("--engine=" + r.engine + ": local or slurm");
   r.out_dir = fs::absolute(cl.option("out", "grading")).lexically_normal().string();
   r.overrides = cl.overrides;
+  r.record = cl.flag("record");
   return r;
 }
 
@@ -239,7 +240,9 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
           const int port = 20000 + (base_port - 20000 + index) % 20000;
           r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--algorithm=" + s.plugin,
                     "--world=" + world_path, "--seed=" + std::to_string(seed), "--report=" + r.report_path,
+                    "--picture=" + stem.string() + ".png",
                     "--lcm-url=udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"};
+          if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");
           for (const auto& [key, value] : request.overrides) r.argv.push_back("--" + key + "=" + value);
         }
         m.runs.push_back(r);

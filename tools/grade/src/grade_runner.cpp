@@ -81,7 +81,9 @@ class RunInProgress {
  public:
   explicit RunInProgress(const PlannedRun& run) : run_(run), started_(Clock::now()) {
     fs::create_directories(fs::path(run.result_path).parent_path());
-    fs::remove(run.report_path);  // a report from an earlier try must not pass for this one's
+    // A report or picture from an earlier try must not pass for this one's.
+    fs::remove(run.report_path);
+    fs::remove(fs::path(run.result_path).replace_extension(".png"));
     if (run.compile_error.empty()) child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path);
   }
 

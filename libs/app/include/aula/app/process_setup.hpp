@@ -31,7 +31,8 @@ struct ProcessSetup {
   bool headless = false;
 
   // Options every process accepts: --config=FILE, --headless, --lcm-url=URL, --help, plus
-  // `extra_options` (e.g. "report", "screenshot"). The default .cfg is the exercise's, in the
+  // `extra_options` (e.g. "report", "screenshot"); a referee also takes --replay=FILE.lcmlog
+  // (headless, its bus the log: aula_lcm's log_replay.hpp). The default .cfg is the exercise's, in the
   // data folder. `usage` is the first lines of --help. Throws HelpShown after printing --help.
   static ProcessSetup fromArgs(int argc, const char* const* argv, const std::string& program,
                                const std::vector<std::string>& extra_options, const std::string& usage,

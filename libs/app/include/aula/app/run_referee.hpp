@@ -3,6 +3,9 @@
 // signal), then print the mark and write the report. With a display: the referee's window,
 // which shows the mark by itself at the end (the same summary and report are written then).
 //
+// `--replay=FILE.lcmlog` grades a recorded run instead (`aula regrade`): the log's events in
+// order, through the same handlers, to the end of the episode; a log that ends first exits 1.
+//
 // The launcher's `--control-fd` pipe can end the run early ("abort <reason>"): the node grades
 // what it has and says why; such a run exits 1 (it did not finish).
 //
@@ -17,6 +20,7 @@
 #include <aula/app/control_pipe.hpp>
 #include <aula/app/process_setup.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/lcm/log_replay.hpp>
 
 #include <QApplication>
 
@@ -55,6 +59,15 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
     if (!report_path.empty()) node.report().writeAtomically(report_path);
     if (!picture_path.empty()) node.writePicture(picture_path);
   };
+  if (setup.command_line.flag("replay")) {
+    // The recorded run, graded on its own clock: the same handlers see the same messages.
+    const bool log_ended = lcmbus::replayLog(*setup.bus, setup.command_line.option("replay"),
+                                             [&] { return node.finished(); }, [&] { node.poll(); });
+    node.leave();
+    if (log_ended && !node.finished()) std::cout << "(the log ends before the end of the episode)\n";
+    finish();
+    return node.endedEarly() || !node.finished() ? 1 : 0;
+  }
   if (setup.headless) {
     const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);
     node.leave();

@@ -23,6 +23,7 @@ struct GradeRequest {
   std::string out_dir;
   std::string engine = "local";  // local | slurm
   double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
+  bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
 

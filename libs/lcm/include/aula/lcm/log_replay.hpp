@@ -1,0 +1,39 @@
+#pragma once
+// A recorded run (LCM's log format, as `aula run --record` and the stock lcm-logger write it)
+// read back in-process: a referee grades the log without a simulator. Every event goes through
+// the process's own subscriptions on an in-process memq:// bus, in the log's order, one at a
+// time: never over UDP, where an unpaced replay loses messages.
+
+#include <aula/run_record_t.hpp>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace aula::lcmbus {
+
+// The bus a replaying process opens instead of the run's URL.
+inline constexpr const char* kReplayUrl = "memq://";
+// `aula run` says on this channel how to grade the run again (run_record_t).
+inline constexpr const char* kRunChannel = "AULA_RUN";
+
+// Throws config::ConfigError naming `path` when it is missing, unreadable or not an LCM log.
+void requireLog(const std::string& path);
+
+// The run's record (the first on kRunChannel), or nothing: an empty log (lcm-logger has not
+// written it yet), another file, a log `aula run` did not record. Throws config::ConfigError
+// naming `path` when it is missing or unreadable.
+std::optional<aula::run_record_t> findRunRecord(const std::string& path);
+// The same, or a config::ConfigError saying the file is not an LCM log or not one of Aula's.
+aula::run_record_t readRunRecord(const std::string& path);
+
+// Publishes each event of the log on `bus` (a kReplayUrl bus) and handles it before the next,
+// until `done()` holds or the log ends; `after_each` runs after every event. A LockstepClient
+// needs nothing special: it follows the recorded ticks, and its registrations and acks reach
+// no simulator. Returns true when the log ended before `done()` held.
+bool replayLog(lcm::LCM& bus, const std::string& path, const std::function<bool()>& done,
+               const std::function<void()>& after_each);
+
+}  // namespace aula::lcmbus

@@ -1,0 +1,137 @@
+#include "run_recorder.hpp"
+
+#include <aula/config/config.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/config/paths.hpp>
+#include <aula/lcm/log_replay.hpp>
+#include <aula/process/child_process.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
+
+namespace aula::launcher {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+constexpr auto kStartTimeout = 5s;  // the record comes back on the bus by then
+constexpr auto kDrain = 200ms;      // the last datagrams of the run reach the recorder
+
+// The recorder's own receive buffer: a lockstep run as fast as possible sends bursts.
+std::string withLargeReceiveBuffer(const std::string& url) {
+  if (url.rfind("udpm://", 0) != 0 || url.find("recv_buf_size=") != std::string::npos) return url;
+  return url + (url.find('?') == std::string::npos ? "?" : "&") + "recv_buf_size=4194304";
+}
+
+}  // namespace
+
+aula::run_record_t runRecord(const settings::Exercise& exercise, const std::string& world_path, int64_t seed,
+                             const config::Config& referee_settings) {
+  aula::run_record_t record;
+  record.exercise = exercise.name;
+  record.referee = exercise.referee;
+  record.world = fs::path(world_path).filename().string();
+  record.world_path = fs::absolute(world_path).string();
+  record.world_sha256 = world::sha256OfFile(world_path);
+  record.seed = seed;
+  for (const std::string& key : referee_settings.keys()) {
+    // The world and the bus are the run's, not the grading's: regrade names its own.
+    if (key == exercise.section + ".World" || key == "Aula.LcmUrl") continue;
+    if (exercise.referee_settings->declares(key)) record.settings.push_back(key + "=" + referee_settings.getString(key));
+  }
+  record.num_settings = static_cast<int32_t>(record.settings.size());
+  return record;
+}
+
+int regrade(const std::string& log_path, const std::string& report_path, const std::string& bin_dir) {
+  const aula::run_record_t record = lcmbus::readRunRecord(log_path);
+  const settings::Exercise* exercise = settings::exerciseNamed(record.exercise);
+  if (exercise == nullptr || exercise->referee != record.referee) {
+    throw config::ConfigError(log_path + ": recorded for exercise '" + record.exercise + "' graded by '" +
+                              record.referee + "', which this Aula does not have");
+  }
+  // The recorded path, else the world of that name in the data folder; the referee refuses a
+  // world whose SHA-256 is not the recorded simulator's.
+  std::error_code error;
+  const std::string world = fs::is_regular_file(record.world_path, error)
+                                ? record.world_path
+                                : config::resolveWorldPath(record.world, log_path + ": world");
+  std::vector<std::string> args = {bin_dir + "/" + exercise->referee, "--headless",
+                                   "--replay=" + fs::absolute(log_path).string(),
+                                   "--" + exercise->section + ".World=" + world};
+  for (const std::string& setting : record.settings) args.push_back("--" + setting);
+  if (!report_path.empty()) args.push_back("--report=" + report_path);
+  process::ChildProcess referee(args);
+  return referee.wait(std::chrono::hours(24 * 365)).value_or(1);
+}
+
+void RunRecorder::checkPath(const std::string& path) {
+  const fs::path file = fs::absolute(path);
+  const fs::path folder = file.parent_path();
+  std::error_code error;
+  if (!fs::is_directory(folder, error)) {
+    throw config::ConfigError("--record=" + path + ": the folder " + folder.string() + " does not exist");
+  }
+  if (access(folder.c_str(), W_OK) != 0) {
+    throw config::ConfigError("--record=" + path + ": the folder " + folder.string() + " is not writable");
+  }
+  if (fs::is_directory(file, error)) throw config::ConfigError("--record=" + path + ": is a folder, not a file");
+}
+
+RunRecorder::RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record)
+    : path_(path) {
+  log_ = std::make_unique<lcm::LogFile>(path_, "w");
+  if (!log_->good()) throw config::ConfigError("--record=" + path_ + ": cannot write: " + std::strerror(errno));
+  bus_ = lcmbus::openBus(withLargeReceiveBuffer(url));
+  lcmbus::subscribe(*bus_, ".*", &RunRecorder::onMessage, this);
+  // A process hears what it publishes: the record is the log's first Aula message, and once it
+  // is written the subscription is live for everything that follows.
+  bus_->publish(lcmbus::kRunChannel, &record);
+  const auto deadline = std::chrono::steady_clock::now() + kStartTimeout;
+  while (!record_written_) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      throw std::runtime_error("--record: the run's " + std::string(lcmbus::kRunChannel) + " message did not come back on " + url);
+    }
+    bus_->handleTimeout(50);
+  }
+  thread_ = std::thread([this] {
+    while (!stop_) bus_->handleTimeout(50);
+    while (bus_->handleTimeout(0) > 0) {  // what arrived before stop()
+    }
+  });
+}
+
+void RunRecorder::onMessage(const lcm::ReceiveBuffer* message, const std::string& channel) {
+  lcm::LogEvent event{0, message->recv_utime, channel, static_cast<int32_t>(message->data_size), message->data};
+  if (log_->writeEvent(&event) != 0) write_failed_ = true;
+  ++events_;
+  if (channel == lcmbus::kRunChannel) record_written_ = true;
+}
+
+RunRecorder::~RunRecorder() { stop(); }
+
+void RunRecorder::stop() {
+  if (!thread_.joinable()) return;
+  std::this_thread::sleep_for(kDrain);
+  stop_ = true;
+  thread_.join();
+  log_.reset();  // flushes and closes the file
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path_, error);
+  if (write_failed_ || error) {
+    std::cerr << "aula: could not write every message to " << path_ << ": the log is incomplete\n";
+    return;
+  }
+  std::cerr << "aula: run recorded in " << path_ << " (" << events_ << " messages, " << bytes / 1024
+            << " KiB); grade it again with `aula regrade " << path_ << "`\n";
+}
+
+}  // namespace aula::launcher
