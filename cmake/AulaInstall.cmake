@@ -11,7 +11,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client
+set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client aula-replay
     teletaxi teletaxi-referee vacuum-cleaner vacuum-cleaner-referee autopark autopark-referee)
 install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student

@@ -23,7 +23,9 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -52,6 +54,7 @@ constexpr const char* kUsage =
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
     "       aula regrade FILE.lcmlog [--report=FILE.json]\n"
+    "       aula replay FILE.lcmlog [--speed=X]\n"
     "%GRADE%"
     "  run         start the simulator, the component and the referee\n"
     "  check-world load a world, list its robots, sensors and channels, say what each exercise would miss\n"
@@ -62,6 +65,7 @@ constexpr const char* kUsage =
     "              build it with `cmake -S DIR -B DIR/build && cmake --build DIR/build`, run it with\n"
     "              `aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so`\n"
     "  regrade     grade a run recorded with --record again, from the log alone (no simulator)\n"
+    "  replay      play a recorded run back into the exercise's windows (pause, speed, time slider)\n"
     "  --record    write the whole run to FILE.lcmlog (LCM's log format; lcm-logplayer plays it)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
@@ -288,6 +292,18 @@ std::string binDir() {
   return slash == std::string::npos ? "." : self.substr(0, slash);
 }
 
+// `aula replay ...` is aula-replay (a Qt program; the launcher links no Qt): the same arguments.
+int replay(int argc, char** argv) {
+  const std::string program = binDir() + "/aula-replay";
+  std::vector<char*> args = {const_cast<char*>(program.c_str())};
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) != "replay" || args.size() > 1) args.push_back(argv[i]);
+  }
+  args.push_back(nullptr);
+  execv(program.c_str(), args.data());
+  throw std::runtime_error("cannot start " + program + ": " + std::strerror(errno));
+}
+
 bool noDisplay() {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -441,6 +457,7 @@ int main(int argc, char** argv) {
     if (!cl.positional.empty() && (cl.positional[0] == "grade" || cl.positional[0] == "grade-task") && !cl.flag("help")) {
       return aula::grade::gradeCommand(cl, binDir());
     }
+    if (!cl.positional.empty() && cl.positional[0] == "replay") return replay(argc, argv);
     cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
                      "duration", "lcm-url", "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);

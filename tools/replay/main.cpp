@@ -1,0 +1,117 @@
+// aula-replay FILE.lcmlog [--speed=X] [--lcm-url=URL] [--report=FILE.json] [--screenshot=FILE.png --screenshot-at=S]
+// (`aula replay FILE.lcmlog` runs it.) Plays a run recorded with `aula run --record` back into
+// the exercise's component and referee windows, view-only, with pause, a speed factor and a
+// time slider. The log says which exercise, world and settings it was (run_record_t).
+#include "log_player.hpp"
+#include "replay_window.hpp"
+
+#include <aula/config/config.hpp>
+#include <aula/lcm/log_replay.hpp>
+#include <aula/process/child_process.hpp>
+#include <aula/process/guarded_main.hpp>
+#include <aula/settings/tables.hpp>
+
+#include <QApplication>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include <unistd.h>
+
+namespace {
+
+using aula::config::ConfigError;
+
+constexpr const char* kUsage =
+    "usage: aula replay FILE.lcmlog [--speed=X] [--lcm-url=URL] [--report=FILE.json]\n"
+    "                   [--screenshot=FILE.png --screenshot-at=SIM_SECONDS]\n"
+    "  plays a run recorded with `aula run --record=FILE.lcmlog` into the exercise's windows (view only);\n"
+    "  `aula regrade FILE.lcmlog` grades it again, headless\n";
+
+std::string selfDir() {
+  std::error_code error;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? "." : self.parent_path().string();
+}
+
+// The component and the referee of the recorded run, as view-only windows on the replay's bus.
+class Viewers {
+ public:
+  // `report`: where the referee window writes its report at the end of the replayed episode.
+  Viewers(const aula::run_record_t& record, const aula::settings::Exercise& ex, const std::string& url,
+          const std::string& report) {
+    const std::string bin = selfDir();
+    std::string world = record.world_path;
+    if (!std::filesystem::is_regular_file(world)) world = record.world;
+    for (const std::string& program : {ex.component, ex.referee}) {
+      std::vector<std::string> argv = {bin + "/" + program, "--" + ex.section + ".World=" + world, "--lcm-url=" + url};
+      const auto& table = aula::settings::tableOf(program);
+      for (const std::string& setting : record.settings) {
+        const auto equals = setting.find('=');
+        if (equals != std::string::npos && table.declares(setting.substr(0, equals))) argv.push_back("--" + setting);
+      }
+      if (program == ex.referee && !report.empty()) argv.push_back("--report=" + report);
+      lines_.push_back(argv);
+    }
+    start();
+  }
+  void start() {
+    for (const auto& argv : lines_) children_.push_back(std::make_unique<aula::process::ChildProcess>(argv));
+  }
+  void restart() {
+    children_.clear();  // each stops its process
+    start();
+  }
+
+ private:
+  std::vector<std::vector<std::string>> lines_;
+  std::vector<std::unique_ptr<aula::process::ChildProcess>> children_;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return aula::process::guardedMain("aula replay", [&]() -> int {
+    const auto cl = aula::config::CommandLine::parse(argc, argv, {});
+    cl.requireKnown({"speed", "lcm-url", "screenshot", "screenshot-at", "report", "help"});
+    if (cl.flag("help")) {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (cl.positional.size() != 1) throw ConfigError(std::string("expected one log file\n") + kUsage);
+    const std::string log = cl.positional[0];
+    const aula::run_record_t record = aula::lcmbus::readRunRecord(log);
+    const aula::settings::Exercise* ex = aula::settings::exerciseNamed(record.exercise);
+    if (ex == nullptr || ex->referee_settings == nullptr) {
+      throw ConfigError(log + ": recorded exercise '" + record.exercise + "' is not one this Aula has");
+    }
+    const char* display = std::getenv("DISPLAY");
+    if (display == nullptr || *display == '\0') {
+      throw ConfigError("no display (DISPLAY is not set): a replay needs windows; `aula regrade " + log +
+                        "` grades the log headless");
+    }
+    const double speed = cl.optionDouble("speed", 1.0);
+    if (!(speed > 0)) throw ConfigError("--speed=" + cl.option("speed") + ": a factor > 0");
+    // A private port: the replayed truth must never reach a live run (engineering.md: ports, not groups).
+    std::random_device random;
+    const std::string url = cl.option("lcm-url", "udpm://239.255.76.67:" + std::to_string(40000 + random() % 20000) +
+                                                     "?ttl=0&recv_buf_size=4194304");
+    lcm::LCM bus(url);
+    if (!bus.good()) throw ConfigError("--lcm-url=" + url + ": LCM cannot open it");
+    aula::replay::LogPlayer player(log, [&](const lcm::LogEvent& e) { bus.publish(e.channel, e.data, e.datalen); });
+    std::cerr << "aula replay: " << log << ": " << record.exercise << " on " << record.world << ", seed " << record.seed
+              << ", " << player.durationUs() / 1e6 << " s of sim time\n";
+    Viewers viewers(record, *ex, url, cl.option("report"));
+    QApplication app(argc, argv);
+    aula::replay::ReplayWindow window(player, [&] { viewers.restart(); },
+                                      QString::fromStdString(std::filesystem::path(log).filename().string()), speed);
+    window.show();
+    if (cl.flag("screenshot")) {
+      window.screenshotAt(QString::fromStdString(cl.option("screenshot")), cl.optionDouble("screenshot-at", 10.0));
+    }
+    return app.exec();
+  });
+}
