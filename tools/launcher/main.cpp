@@ -28,7 +28,10 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include <aula/process/exit_codes.hpp>
 #include <aula/process/guarded_main.hpp>
@@ -49,7 +52,7 @@ using aula::settings::Exercise;
 constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--picture=FILE.png] [--record=FILE.lcmlog] [--lockstep] [--rtf=X]\n"
-    "                [--duration=SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
+    "                [--duration=SECONDS] [--timeout=WALL_SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
@@ -68,6 +71,8 @@ constexpr const char* kUsage =
     "  replay      play a recorded run back into the exercise's windows (pause, speed, time slider)\n"
     "  --record    write the whole run to FILE.lcmlog (LCM's log format; lcm-logplayer plays it)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
+    "  --timeout   a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); past it the\n"
+    "              run ends, graded so far, and exits 1\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
     "  --report    the referee's JSON report; --picture: its PNG picture of the run (both at the end)\n"
     "  --Key=value a declared setting (`aula config EXERCISE` lists them), e.g. --Vacuum.Referee.Duration=300\n"
@@ -372,6 +377,9 @@ std::string componentFault(int code, double execute_budget_s) {
 struct Supervision {
   std::vector<std::vector<std::string>> lines;  // simulator, component, referee
   bool has_referee = false;
+  bool headless = false;
+  double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
+  std::string exercise, report_path;
   std::string algorithm;        // what the component runs ("student", "libmy_algorithm.so")
   double execute_budget_s = 2;  // Component.ExecuteBudget
 };
@@ -380,9 +388,28 @@ struct Supervision {
 // Ctrl-C; then stops the clients first (they send their last commands and leave lockstep).
 // When the component dies (a crash, a hung execute()), the referee is told over its private
 // control pipe, grades what there is, writes its report and ends the run.
+// The report of a run whose referee died: no mark, and why (the referee cannot say it).
+void writeAbortedReport(const Supervision& run, const std::string& why) {
+  if (run.report_path.empty()) return;
+  nlohmann::ordered_json report;
+  report["exercise"] = run.exercise;
+  report["finished"] = false;
+  report["algorithm"] = run.algorithm;
+  report["aborted"] = why;
+  const std::string temp = run.report_path + ".tmp";
+  std::ofstream(temp) << report.dump(2) << "\n";
+  std::filesystem::rename(temp, run.report_path);
+}
+
+std::string signalName(int code) {
+  const char* name = code > 128 ? sigabbrev_np(code - 128) : nullptr;
+  return name != nullptr ? std::string("SIG") + name : "exit code " + std::to_string(code);
+}
+
 int supervise(const Supervision& run) {
   aula::process::SignalWatcher signals;  // before the children start: they unblock for themselves
   const auto& lines = run.lines;
+  const auto started = std::chrono::steady_clock::now();
 
   int control[2] = {-1, -1};
   if (run.has_referee && pipe2(control, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
@@ -396,23 +423,52 @@ int supervise(const Supervision& run) {
   if (control[0] >= 0) close(control[0]);
   int result = 0;
   bool told_referee = false;
+  auto tellReferee = [&](const std::string& why) {
+    const std::string line = "abort " + why + "\n";
+    (void)!write(control[1], line.data(), line.size());
+    told_referee = true;
+    result = 1;
+  };
+  std::optional<std::chrono::steady_clock::time_point> out_of_time;
   for (;;) {
     if (signals.stopRequested()) {
-      std::cerr << "aula: stopping\n";
+      std::cerr << "aula: stopping (" << (signals.signal() == SIGINT ? "SIGINT" : "SIGTERM") << ")\n";
+      result = 128 + signals.signal();
       break;
     }
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (run.wall_budget_s > 0 && wall_s > run.wall_budget_s && !out_of_time) {
+      std::ostringstream why;
+      why << "the run's wall-clock budget of " << run.wall_budget_s << " s ran out (--timeout)";
+      std::cerr << "aula: " << why.str() << "\n";
+      out_of_time = std::chrono::steady_clock::now();
+      if (run.has_referee && !told_referee) tellReferee(why.str());
+      result = 1;
+    }
+    // The referee had its chance to grade and say why: now everything stops.
+    if (out_of_time && std::chrono::steady_clock::now() - *out_of_time > std::chrono::seconds(5)) break;
     bool finished = false;
     for (size_t i = 0; i < children.size(); ++i) {
       const auto code = children[i]->poll();
       if (!code) continue;
+      if (run.has_referee && i == 2 && *code > 128) {
+        const std::string why = programName(children[i]->name()) + " died (" + signalName(*code) + ")";
+        std::cerr << "aula: " << why << ": the run has no mark\n";
+        writeAbortedReport(run, why);
+        result = 1;
+        finished = true;
+        continue;
+      }
+      if (run.has_referee && i == 1 && *code == 0 && !run.headless) {
+        std::cerr << "aula: the component's window was closed: stopping the run\n";
+        finished = true;
+        continue;
+      }
       const std::string fault = run.has_referee && i == 1 ? componentFault(*code, run.execute_budget_s) : "";
       if (!fault.empty() && !told_referee) {
         std::cerr << "aula: " << programName(children[i]->name()) << " (running the algorithm '" << run.algorithm
                   << "') ended the run: " << fault << "\n";
-        const std::string line = "abort " + fault + "\n";
-        (void)!write(control[1], line.data(), line.size());
-        told_referee = true;
-        result = 1;
+        tellReferee(fault);
         continue;  // the referee grades what there is and ends the run
       }
       const bool referee_ended_early = run.has_referee && i == 2 && *code == aula::process::kExitFailed;
@@ -438,6 +494,19 @@ int supervise(const Supervision& run) {
   return result;
 }
 
+// A headless run's wall-clock budget when --timeout does not say: the episode's sim length at
+// real time (or at --rtf), half again, plus a minute for start-up. A run past it is stuck.
+double defaultWallBudget(const Exercise& ex, const CommandLine& cl, const RunSettings& run) {
+  if (ex.referee_settings == nullptr) return 0;
+  const Config& referee = run.effective.back().second;
+  double sim_s = 0;
+  for (const std::string& key : {ex.section + ".Referee.Duration", ex.section + ".Referee.Timeout"}) {
+    if (referee.has(key)) sim_s = std::max(sim_s, referee.getDouble(key));
+  }
+  const double rtf = cl.optionDouble("rtf", 0);
+  return 60.0 + 1.5 * sim_s / (rtf > 0 ? std::min(rtf, 1.0) : 1.0);
+}
+
 // --record: the logger listens and the log holds the run's record before the simulator starts.
 std::unique_ptr<aula::launcher::RunRecorder> startRecording(const Exercise& ex, const CommandLine& cl,
                                                             const RunSettings& run) {
@@ -459,7 +528,7 @@ int main(int argc, char** argv) {
     }
     if (!cl.positional.empty() && cl.positional[0] == "replay") return replay(argc, argv);
     cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
-                     "duration", "lcm-url", "config", "map", "help"});
+                     "duration", "timeout", "lcm-url", "config", "map", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
     if (cl.positional.size() == 2 && cl.positional[0] == "regrade") {
@@ -492,8 +561,18 @@ int main(int argc, char** argv) {
     for (const char* output : {"report", "picture"}) {
       if (cl.flag(output)) aula::config::requireWritableFolder(cl.option(output), std::string("--") + output + "=" + cl.option(output));
     }
+    // A report from an earlier run must never pass for this one's, whatever happens next.
+    for (const char* output : {"report", "picture"}) {
+      if (cl.flag(output)) std::filesystem::remove(cl.option(output));
+    }
+    const double timeout_s = cl.optionDouble("timeout", 0);
+    if (cl.flag("timeout") && !(timeout_s > 0)) throw ConfigError("--timeout=" + cl.option("timeout") + ": seconds > 0");
     const RunSettings run = resolveSettings(*ex, cl);
     Supervision supervision;
+    supervision.exercise = ex->name;
+    supervision.report_path = cl.option("report");
+    supervision.headless = cl.flag("headless");
+    supervision.wall_budget_s = cl.flag("timeout") ? timeout_s : supervision.headless ? defaultWallBudget(*ex, cl, run) : 0;
     supervision.lines = commandLines(*ex, cl, run);
     supervision.has_referee = ex->referee_settings != nullptr;
     if (supervision.has_referee) {

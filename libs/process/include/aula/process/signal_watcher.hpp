@@ -28,13 +28,19 @@ class SignalWatcher {
   bool stopRequested() {
     if (stop_ || fd_ < 0) return stop_;
     signalfd_siginfo info;
-    if (read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) stop_ = true;
+    if (read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+      stop_ = true;
+      signal_ = static_cast<int>(info.ssi_signo);
+    }
     return stop_;
   }
+  // The signal that asked to stop (SIGINT, SIGTERM), or 0.
+  int signal() const { return signal_; }
 
  private:
   int fd_ = -1;
   bool stop_ = false;
+  int signal_ = 0;
 };
 
 }  // namespace aula::process
