@@ -46,6 +46,7 @@ bool VacuumComponent::reloadAlgorithm() {
   const bool was_running = running();
   setRunning(false);
   const bool loaded = host_->reload();
+  started_utime_ = -1;  // a new episode: its clock starts at the next Run
   episode_->restart(start_);
   if (was_running && loaded) setRunning(true);
   return loaded;
@@ -53,6 +54,7 @@ bool VacuumComponent::reloadAlgorithm() {
 
 void VacuumComponent::setRunning(bool running) {
   loop_->setRunning(running);
+  if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's 900 s start at Run
   episode_->markChanged();
 }
 
@@ -69,7 +71,7 @@ void VacuumComponent::tick(int64_t utime) {
     autostarted_ = true;
     setRunning(true);
   }
-  episode_->tick(utime, {running(), -1, std::nullopt});
+  episode_->tick(utime, {running(), started_utime_, std::nullopt});
   if (on_tick_) on_tick_(utime);
 }
 

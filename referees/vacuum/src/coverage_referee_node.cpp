@@ -39,7 +39,7 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
   const double period_s = cfg.getDouble("Vacuum.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
-        referee_->onTick(utime);
+        if (started_) referee_->onTick(utime);  // the episode's clock runs from Run
         outcome_.announceOnce(finished(), on_finished_);
       });
   clock_->expectWorld(world.sha256, world.source_path);
@@ -50,9 +50,23 @@ std::unique_ptr<CoverageReferee> CoverageRefereeNode::newReferee(int64_t origin_
                                            origin_utime);
 }
 
+void CoverageRefereeNode::start(int64_t utime) {
+  // The episode's 900 s count from "Run my algorithm" (at once when headless: sim time 0).
+  referee_ = newReferee(utime);
+  started_ = true;
+  if (waiting_pose_ && waiting_pose_->utime >= utime) referee_->onPose(waiting_pose_->utime, waiting_pose_->x_m, waiting_pose_->y_m);
+  waiting_pose_.reset();
+}
+
 void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
   if (msg->utime <= episode_from_utime_) return;
   ++pose_messages_;
+  if (!started_) {
+    // Before Run nothing is graded (teleoperation is free); the pose at the start is kept.
+    waiting_pose_ = {msg->utime, msg->x, msg->y};
+    if (on_pose_) on_pose_(msg->x, msg->y, msg->yaw);
+    return;
+  }
   referee_->onPose(msg->utime, msg->x, msg->y);
   if (!referee_->finished()) {
     have_pose_ = true;
@@ -64,7 +78,7 @@ void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, 
 }
 
 void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
-  if (msg->utime <= episode_from_utime_) return;
+  if (msg->utime <= episode_from_utime_ || !started_) return;
   referee_->onBump(msg->utime, msg->state == aula::bumper_t::PRESSED);
 }
 
@@ -75,7 +89,10 @@ void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string
     episode_from_utime_ = msg->utime;
     pose_messages_ = 0;
     have_pose_ = false;
+    started_ = false;
+    waiting_pose_.reset();
   }
+  if (!started_ && msg->started_utime >= 0) start(msg->started_utime);
   outcome_.announceOnce(finished(), on_finished_);
 }
 

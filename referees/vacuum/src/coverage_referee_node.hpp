@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace aula::vacuum {
 
@@ -36,6 +37,7 @@ class CoverageRefereeNode {
   void setOnPose(std::function<void(double, double, double)> hook) { on_pose_ = std::move(hook); }
   const world::OccupancyMap& map() const { return map_; }
   int episode() const { return outcome_.generation(); }  // counts hot reloads
+  bool started() const { return started_; }  // the episode's clock runs (after Run)
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -43,6 +45,14 @@ class CoverageRefereeNode {
   void onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg);
 
   std::unique_ptr<CoverageReferee> newReferee(int64_t origin_utime) const;
+  void start(int64_t utime);
+
+  struct TimedPoint {
+    int64_t utime;
+    double x_m, y_m;
+  };
+  bool started_ = false;
+  std::optional<TimedPoint> waiting_pose_;  // the last pose before the episode started
 
   CoverageSettings settings_;
   double start_x_m_ = 0, start_y_m_ = 0;

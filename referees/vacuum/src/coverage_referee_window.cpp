@@ -25,7 +25,7 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
       shown_episode_ = node_.episode();
       map_->clearPainted();
     }
-    map_->paintDisc(x, y, node_.referee().settings().robot_radius_m, QColor(80, 170, 255, 200));
+    if (node_.started()) map_->paintDisc(x, y, node_.referee().settings().robot_radius_m, QColor(80, 170, 255, 200));
     map_->setRobot(x, y, yaw, 2 * node_.referee().settings().robot_radius_m, 2 * node_.referee().settings().robot_radius_m);
   });
   auto* layout = new QGridLayout(this);
@@ -36,7 +36,8 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   bar_->setFormat("%p% of the full mark");
   countdown_ = new QLabel(this);
   countdown_->setStyleSheet("font-size: 22px; font-family: monospace;");
-  clock_ = new gui::Gauge("sim time", "s", 0, 60, 360, this);
+  // The episode's elapsed sim time, over its whole length.
+  clock_ = new gui::Gauge("episode", "s", 0, node_.referee().settings().duration_s, 270, this);
   clock_->setMinimumSize(170, 170);
   mark_ = new QLabel("Mark: -", this);
   mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
@@ -60,8 +61,11 @@ void CoverageRefereeWindow::refresh() {
   percent_->setText(QString("%1 % cleaned").arg(r.coveragePercent(), 0, 'f', 2));
   bar_->setValue(static_cast<int>(std::min(1000.0, 1000.0 * r.coveragePercent() / r.settings().full_mark_coverage_percent)));
   const double left = r.remainingS();
-  countdown_->setText(QString("%1:%2 left").arg(static_cast<int>(left) / 60, 2, 10, QChar('0')).arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
-  clock_->setValue(std::fmod(r.elapsedS(), 60.0));
+  countdown_->setText(!node_.started() ? QString("waiting for Run")
+                                       : QString("%1:%2 left")
+                                             .arg(static_cast<int>(left) / 60, 2, 10, QChar('0'))
+                                             .arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
+  clock_->setValue(r.elapsedS());
 }
 
 void CoverageRefereeWindow::showMark() {

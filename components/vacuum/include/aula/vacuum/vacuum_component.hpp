@@ -72,6 +72,7 @@ class VacuumComponent {
   std::unique_ptr<component::ControlLoop> loop_;
   std::unique_ptr<component::EpisodeSender> episode_;
   component::StartPose start_;
+  int64_t started_utime_ = -1;  // the first Run of this episode (-1: not yet)
   std::function<void(int64_t)> on_tick_;
 };
 
