@@ -122,6 +122,20 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
       paused_ = false;
       log("resumed");
       break;
+    case aula::sim_control_t::SET_RTF:
+      if (!std::isfinite(msg->real_time_factor) || msg->real_time_factor < 0 || msg->real_time_factor > 1000) {
+        ++rejected_controls_;
+        log(channel + ": SET_RTF " + std::to_string(msg->real_time_factor) + " rejected (0 to 1000; 0 = as fast as possible)");
+      } else {
+        options_.real_time_factor = msg->real_time_factor;
+        repace_ = true;
+        log(msg->real_time_factor > 0 ? "pace: " + std::to_string(msg->real_time_factor) + "x real time"
+                                      : std::string("pace: as fast as possible"));
+      }
+      break;
+    case aula::sim_control_t::STEP:
+      step_pending_ = paused_;  // one tick, then paused again
+      break;
     case aula::sim_control_t::RESET:
       resetWorld();
       log("world reset");
@@ -232,6 +246,11 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
     while (bus_.handleTimeout(0) > 0) {
     }
     const auto now = WallClock::now();
+    if (repace_) {  // a new pace counts from now, not from the start of the run
+      clocks.pace_origin = now;
+      clocks.pace_origin_us = physics_->timeUs();
+      repace_ = false;
+    }
     if (startIfReady(now, clocks) || holdWhilePausedOrWaiting(now, clocks)) continue;
     if (options_.lockstep && awaitLockstepAcks(now)) continue;
 
@@ -270,6 +289,10 @@ bool Simulator::startIfReady(WallTime now, RunClocks& clocks) {
 
 bool Simulator::holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks) {
   if (!paused_ && !waitingForClients()) return false;
+  if (paused_ && step_pending_ && started_ && !waitingForClients()) {
+    step_pending_ = false;
+    return false;  // this pass advances one tick
+  }
   // Keep ticking the (unchanged) clock so clients see the pause and know they are listed.
   if (now - clocks.last_publish > std::chrono::milliseconds(100)) {
     publishClock();

@@ -60,6 +60,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
+  side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);
   side->addWidget(status_);
   side->addStretch(1);

@@ -12,6 +12,7 @@
 
 #include <QLabel>
 #include <aula/component/algorithm_panel.hpp>
+#include <aula/component/sim_control_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
 

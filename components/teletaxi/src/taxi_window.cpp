@@ -40,6 +40,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   side->addWidget(info);
   algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return reloadAlgorithm(); }, central);
   side->addWidget(algorithm_);
+  side->addWidget(new component::SimControlPanel(component_.bus(), central));
 
   auto* generate = new QPushButton("Generate Path", central);
   auto* go = new QPushButton("GO!", central);

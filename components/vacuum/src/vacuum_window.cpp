@@ -36,6 +36,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
+  side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);
   side->addWidget(status_);
   side->addWidget(teleop);

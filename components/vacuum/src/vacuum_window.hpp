@@ -5,6 +5,7 @@
 // percentage since Run (the referee's CoverageGrid on the same map) with its plot.
 
 #include <aula/component/algorithm_panel.hpp>
+#include <aula/component/sim_control_panel.hpp>
 #include <aula/gui/map_view.hpp>
 #include <aula/gui/run_toggle.hpp>
 #include <aula/gui/teleoperator.hpp>

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -53,4 +54,48 @@ TEST(SimulatorControl, PosesOutsideTheWorldOrWithAWildYawAreRejectedAndCounted) 
   EXPECT_EQ(sim.rejectedControls(), 6);
   EXPECT_NEAR(sim.physics().robotState(roomba).position_m.x(), start.x() + 0.5, 1e-6);
   sim.advanceToNextTick();  // and the world steps on without complaint
+}
+
+namespace {
+
+aula::sim_control_t command(int8_t what, double real_time_factor = 0) {
+  aula::sim_control_t msg{};
+  msg.command = what;
+  msg.real_time_factor = real_time_factor;
+  return msg;
+}
+
+// Sim seconds gained in `wall` of running.
+double simSecondsIn(aula::sim::Simulator& sim, std::chrono::milliseconds wall) {
+  const int64_t before = sim.timeUs();
+  const auto until = std::chrono::steady_clock::now() + wall;
+  sim.run([&] { return std::chrono::steady_clock::now() >= until; });
+  return (sim.timeUs() - before) / 1e6;
+}
+
+}  // namespace
+
+TEST(SimulatorControl, TheWindowsSpeedControlChangesThePaceAndStepAdvancesOneTick) {
+  lcm::LCM bus("memq://");
+  aula::sim::SimulatorOptions options;
+  options.real_time_factor = 1.0;
+  aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), options, bus);
+  const double at_1x = simSecondsIn(sim, std::chrono::milliseconds(400));
+  const auto fast = command(aula::sim_control_t::SET_RTF, 20.0);
+  bus.publish(aula::lcmbus::kControlChannel, &fast);
+  const double at_20x = simSecondsIn(sim, std::chrono::milliseconds(400));
+  // 0.4 s and 8 s of sim time when the machine keeps up; a loaded machine slows both alike.
+  EXPECT_GT(at_20x, 5 * at_1x) << "1x: " << at_1x << " s, 20x: " << at_20x << " s";
+  EXPECT_LT(at_1x, 0.6);
+
+  const auto wrong = command(aula::sim_control_t::SET_RTF, -3.0);
+  bus.publish(aula::lcmbus::kControlChannel, &wrong);
+  const auto pause = command(aula::sim_control_t::PAUSE);
+  bus.publish(aula::lcmbus::kControlChannel, &pause);
+  simSecondsIn(sim, std::chrono::milliseconds(100));
+  EXPECT_EQ(sim.rejectedControls(), 1);
+  EXPECT_DOUBLE_EQ(simSecondsIn(sim, std::chrono::milliseconds(200)), 0.0) << "paused";
+  const auto step = command(aula::sim_control_t::STEP);
+  bus.publish(aula::lcmbus::kControlChannel, &step);
+  EXPECT_NEAR(simSecondsIn(sim, std::chrono::milliseconds(200)), options.clock_period_us / 1e6, 1e-9) << "one tick";
 }

@@ -105,6 +105,8 @@ class Simulator {
   bool paused_ = false;
   double measured_rtf_ = 0.0;
   long long rejected_controls_ = 0;
+  bool repace_ = false;        // SET_RTF: pacing restarts from the current time
+  bool step_pending_ = false;  // STEP while paused
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
 };
 

@@ -28,6 +28,7 @@ class AutoparkComponent {
   // and starts a new episode, running if it ran. False when the new build cannot be used.
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
+  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll() { loop_->poll(); }

@@ -42,6 +42,7 @@ class TaxiComponent {
   // be used (the algorithm's fault says why).
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
+  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll();                           // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }

@@ -43,6 +43,7 @@ class VacuumComponent {
   // used (the algorithm's fault says why).
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
+  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   const world::OccupancyMap& map() const { return map_; }

@@ -1,0 +1,28 @@
+#pragma once
+// The simulator's pace from the component's window: a real-time factor (1x, 5x, 20x, as fast as
+// possible), pause/resume, and one step while paused. Sent on SIM_CONTROL; a headless run never
+// has this window, so grading runs are never slowed by it.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <QComboBox>
+#include <QPushButton>
+#include <QWidget>
+
+namespace aula::component {
+
+class SimControlPanel : public QWidget {
+ public:
+  explicit SimControlPanel(lcm::LCM& bus, QWidget* parent = nullptr);
+
+ private:
+  void send(int8_t command, double real_time_factor = 0);
+
+  lcm::LCM& bus_;
+  QComboBox* speed_;
+  QPushButton* pause_;
+  QPushButton* step_;
+  bool paused_ = false;
+};
+
+}  // namespace aula::component
