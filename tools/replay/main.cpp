@@ -54,6 +54,7 @@ class Viewers {
         if (equals != std::string::npos && table.declares(setting.substr(0, equals))) argv.push_back("--" + setting);
       }
       if (program == ex.referee && !report.empty()) argv.push_back("--report=" + report);
+      if (program == ex.component) argv.push_back("--view-only");
       lines_.push_back(argv);
     }
     start();

@@ -9,8 +9,12 @@
 #include <aula/app/bus_pump.hpp>
 #include <aula/app/process_setup.hpp>
 
+#include <QAbstractButton>
 #include <QApplication>
+#include <QComboBox>
 #include <QString>
+
+#include <cstring>
 
 namespace aula::app {
 
@@ -24,6 +28,15 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
   QApplication app(argc, argv);
   Window window(component);
   BusPump pump(*setup.bus, [&] { component.poll(); });
+  if (setup.command_line.flag("view-only")) {
+    // A replay (aula replay): the window shows what it is sent, and nothing in it can act.
+    for (QWidget* w : window.template findChildren<QWidget*>()) {
+      const bool control = qobject_cast<QAbstractButton*>(w) != nullptr || qobject_cast<QComboBox*>(w) != nullptr ||
+                           std::strcmp(w->metaObject()->className(), "aula::gui::Teleoperator") == 0;
+      if (control) w->setEnabled(false);
+    }
+    window.setWindowTitle(window.windowTitle() + " - replay, view only");
+  }
   window.show();
   int code = 1;
   if (!setup.command_line.flag("screenshot") ||
