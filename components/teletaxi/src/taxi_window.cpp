@@ -69,7 +69,15 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   connect(generate, &QPushButton::clicked, this, [this] {
     algorithm_->reloadIfRebuilt();
     std::string why;
-    status_label_->setText(component_.generatePath(&why) ? "Path generated: press GO!" : QString::fromStdString(why));
+    if (!component_.generatePath(&why)) {
+      status_label_->setText(QString::fromStdString(why));
+    } else if (!component_.grid().isPathFinded()) {
+      // Say what happened, not what was hoped for: the template's generatePath() marks nothing.
+      status_label_->setText("generatePath() returned without marking a path (Grid::setPathVal / setPathFinded): "
+                             "nothing to follow yet");
+    } else {
+      status_label_->setText("Path generated: press GO!");
+    }
     path_shown_ = false;
   });
   connect(go, &QPushButton::clicked, this, [this] {
