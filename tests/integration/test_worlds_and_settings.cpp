@@ -234,6 +234,13 @@ TEST(Settings, EveryProgramPrintsItsUsageAndDeclaredSettingsWithoutADisplay) {
     EXPECT_NE(out.output.find("usage: " + program), std::string::npos) << out.output;
     EXPECT_NE(out.output.find("  " + key + "  ("), std::string::npos) << program << "\n" << out.output;
   }
+  // The tools without settings of their own: their usage.
+  for (const auto& [program, usage] : std::vector<std::pair<std::string, std::string>>{
+           {"aula", "usage: aula run"}, {"aula-mapgen", "usage: aula-mapgen"}, {"aula-replay", "usage: aula replay"}}) {
+    const Outcome out = runToEnd({kBin + "/" + program, "--help"}, 10s);
+    EXPECT_EQ(out.code.value_or(-1), 0) << program << "\n" << out.output;
+    EXPECT_NE(out.output.find(usage), std::string::npos) << out.output;
+  }
   // Without --help and without a display, a window process says what to do instead of aborting.
   const Outcome out = runToEnd({kBin + "/vacuum-cleaner"}, 10s);
   EXPECT_EQ(out.code.value_or(-1), 2) << out.output;

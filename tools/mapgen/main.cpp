@@ -58,7 +58,11 @@ aula::world::MapTransform mapTransform(const aula::config::CommandLine& cl, cons
 int generateMap(int argc, char** argv) {
   using namespace aula;
   const auto cl = config::CommandLine::parse(argc, argv, {"out", "resolution", "size", "center", "z-band"});
-  cl.requireKnown({"out", "resolution", "size", "center", "z-band"});
+  cl.requireKnown({"out", "resolution", "size", "center", "z-band", "help"});
+  if (cl.flag("help")) {
+    std::cout << kUsage;
+    return 0;
+  }
   if (cl.positional.size() != 1 || !cl.flag("out") || !cl.flag("resolution")) {
     std::cerr << kUsage;
     return process::kExitUsage;
@@ -85,6 +89,6 @@ int generateMap(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // A command-line mistake also shows the usage: the tool has no --help.
+  // A command-line mistake also shows the usage.
   return aula::process::guardedMain("aula-mapgen", [&] { return generateMap(argc, argv); }, kUsage);
 }
