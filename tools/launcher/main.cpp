@@ -459,6 +459,9 @@ int supervise(const Supervision& run) {
         finished = true;
         continue;
       }
+      if (run.has_referee && i < 2 && *code == aula::process::kExitUsage && control[1] >= 0) {
+        (void)!write(control[1], "discard\n", 8);  // the run never started: the referee gives no mark
+      }
       if (run.has_referee && i == 1 && *code == 0 && !run.headless) {
         std::cerr << "aula: the component's window was closed: stopping the run\n";
         finished = true;

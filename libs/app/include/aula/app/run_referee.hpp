@@ -48,13 +48,25 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   ControlPipe control(setup.command_line.flag("control-fd")
                           ? static_cast<int>(setup.command_line.optionDouble("control-fd", -1))
                           : -1);
-  auto housekeeping = [&] {
-    node.poll();
+  // "discard": the run never started (a process refused its settings or plugin): no mark at
+  // all, and no report, rather than a mark for a robot that was never given a chance.
+  bool discard = false;
+  auto readControl = [&] {
     for (const std::string& line : control.lines()) {
       if (line.rfind("abort ", 0) == 0) node.abort(line.substr(6));
+      if (line == "discard") discard = true;
     }
   };
+  auto housekeeping = [&] {
+    node.poll();
+    readControl();
+  };
   auto finish = [&] {
+    readControl();
+    if (discard) {
+      std::cout << "no mark: the run never started (the reason is above)\n" << std::flush;
+      return;
+    }
     std::cout << node.summary() << std::flush;
     if (!report_path.empty()) node.report().writeAtomically(report_path);
     if (!picture_path.empty()) node.writePicture(picture_path);
@@ -71,9 +83,10 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   if (setup.headless) {
     const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);
     node.leave();
-    if (signalled && !node.finished()) std::cout << "(stopped before the end of the episode)\n";
+    readControl();
+    if (signalled && !node.finished() && !discard) std::cout << "(stopped before the end of the episode)\n";
     finish();
-    return node.endedEarly() ? 1 : 0;
+    return discard ? 2 : node.endedEarly() ? 1 : 0;
   }
   QApplication app(argc, argv);
   Window window(node);
