@@ -39,6 +39,8 @@ install(FILES
   ${_src}/components/autopark/include/aula/autopark/street_search.hpp
   ${_src}/components/autopark/planner/include/aula/autopark/car_geometry.hpp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/autopark)
+# The shared plane geometry the API headers above are written in.
+install(FILES ${_src}/libs/geometry/include/aula/geometry/pose2d.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/geometry)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # find_package(Aula)

@@ -1,5 +1,6 @@
 #include "aula/scoring/parking_geometry.hpp"
 
+#include <aula/geometry/angles.hpp>
 #include <aula/geometry/oriented_box.hpp>
 
 #include <algorithm>
@@ -9,12 +10,6 @@
 
 namespace aula::autopark {
 namespace {
-
-double wrapHalfTurn(double a) {
-  // Heading relative to a line: a car parked backwards is as aligned as one parked forwards.
-  a = std::remainder(a, M_PI);  // (-pi/2, pi/2]
-  return a;
-}
 
 double cross(Point2 o, Point2 a, Point2 b) { return (a.x_m - o.x_m) * (b.y_m - o.y_m) - (a.y_m - o.y_m) * (b.x_m - o.x_m); }
 
@@ -121,7 +116,7 @@ ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m
   double lowest = std::numeric_limits<double>::infinity();
   for (const auto& p : car.corners()) lowest = std::min(lowest, p.y_m);
   m.curb_gap_m = lowest - scene.curb_y_m;
-  m.yaw_error_deg = wrapHalfTurn(yaw_rad - scene.ideal_yaw_rad) * 180.0 / M_PI;
+  m.yaw_error_deg = geometry::wrapLineAngle(yaw_rad - scene.ideal_yaw_rad) * 180.0 / M_PI;
   m.position_error_m = std::hypot(x_m - scene.ideal_x_m, y_m - scene.ideal_y_m);
   const double slot_from = scene.rear_car.cx_m + scene.rear_car.length_m / 2;
   const double slot_to = scene.front_car.cx_m - scene.front_car.length_m / 2;

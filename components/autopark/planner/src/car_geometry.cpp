@@ -6,13 +6,6 @@
 
 namespace aula::autopark {
 
-double wrapAngle(double a_rad) {
-  const double two_pi = 2.0 * M_PI;
-  double r = std::fmod(a_rad + M_PI, two_pi);
-  if (r < 0) r += two_pi;
-  return r - M_PI;
-}
-
 Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car) {
   const double d = car.rear_axle_from_centre_m;
   return {centre.x_m - d * std::cos(centre.yaw_rad), centre.y_m - d * std::sin(centre.yaw_rad),
