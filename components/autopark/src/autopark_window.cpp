@@ -17,7 +17,7 @@ namespace {
 constexpr double kPixelsPerMetre = 12.0;
 constexpr size_t kTrail = 600;  // 30 s at 20 Hz
 
-QImage streetImage(const world::WorldSpec& world, world::MapTransform& transform) {
+QImage streetImage(const world::WorldSpec& world, geometry::MapTransform& transform) {
   const auto b = world::staticBounds(world);  // x_min, y_min, x_max, y_max
   transform.resolution_m = 1.0 / kPixelsPerMetre;
   transform.origin_x_m = b[0] - 1.0;
@@ -43,7 +43,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   setWindowTitle("Autopark");
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
-  world::MapTransform transform;
+  geometry::MapTransform transform;
   const QImage street = streetImage(component_.world(), transform);
   map_ = new gui::MapView(street, transform, central);
   // The whole street at 12 px/m, as tall as it is (the rest of the height goes to the lasers).

@@ -1,7 +1,5 @@
 #include "aula/geometry/raycaster2d.hpp"
 
-#include <aula/world/world_spec.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,22 +69,6 @@ void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
 }
 
 }  // namespace
-
-Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m) {
-  Obstacles2D out;
-  for (const auto& o : world.statics) {
-    const double half = o.shape.halfHeight();
-    const double z = o.pose.translation().z();
-    if (z_m < z - half || z_m > z + half) continue;
-    const Eigen::Vector2d c = o.pose.translation().head<2>();
-    if (o.shape.kind == world::ShapeKind::Cylinder) {
-      out.circles.push_back({c, o.shape.radius_m});
-    } else {
-      out.rects.push_back({c, world::yawOf(o.pose), o.shape.box_size_m.head<2>() / 2});
-    }
-  }
-  return out;
-}
 
 Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
     : statics_(std::move(statics)), cell_m_(cell_size_m) {

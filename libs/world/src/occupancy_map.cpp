@@ -48,7 +48,7 @@ Eigen::Vector4d staticBounds(const WorldSpec& world) {
   return {x0, y0, x1, y1};
 }
 
-cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double z_min_m, double z_max_m) {
+cv::Mat rasterizeOccupancy(const WorldSpec& world, const geometry::MapTransform& t, double z_min_m, double z_max_m) {
   cv::Mat map(t.height_px, t.width_px, CV_8UC1, cv::Scalar(255));
   for (const auto& o : world.statics) {
     const auto [z0, z1] = zRange(o);
@@ -89,10 +89,10 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double
 
 namespace aula::world {
 
-MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
+geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
   if (world.statics.empty()) throw WorldError(world.source_path + ": no static geometry to map");
   const Eigen::Vector4d bounds = staticBounds(world);
-  MapTransform t;
+  geometry::MapTransform t;
   t.resolution_m = resolution_m;
   // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
   t.width_px = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution_m - 1e-6));
@@ -137,7 +137,7 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
 std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m) {
   char where[96];
   std::snprintf(where, sizeof where, "(%.1f, %.1f) ", x_m, y_m);
-  const MapTransform& t = map.transform;
+  const geometry::MapTransform& t = map.transform;
   const int col = t.worldToCol(x_m), row = t.worldToRow(y_m);
   if (!t.contains(col, row) || !std::isfinite(x_m) || !std::isfinite(y_m)) {
     char text[160];

@@ -53,7 +53,7 @@ void drawGaps(referee::RunPicture& picture, const ParkingRunSummary& run, const 
 
 }  // namespace
 
-world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
+geometry::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   const ParkingScene& s = run.scene;
   double x_min = s.rear_car.cx_m - s.rear_car.length_m, x_max = s.front_car.cx_m + s.front_car.length_m;
   double y_min = s.curb_y_m - 2.0, y_max = s.ideal_y_m + s.car_width_m;
@@ -76,7 +76,7 @@ world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   x_min -= kMarginM;
   x_max += kMarginM;
   y_max += kMarginM;
-  world::MapTransform view;
+  geometry::MapTransform view;
   view.resolution_m = (x_max - x_min) / width_px;
   view.origin_x_m = x_min;
   view.origin_y_m = y_max;
@@ -85,7 +85,7 @@ world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   return view;
 }
 
-cv::Mat parkingPicture(const cv::Mat& street, const world::MapTransform& view, const ParkingRunSummary& run) {
+cv::Mat parkingPicture(const cv::Mat& street, const geometry::MapTransform& view, const ParkingRunSummary& run) {
   const ParkingScene& s = run.scene;
   const cv::Scalar obstacle(150, 150, 150), parked_car(90, 90, 90), slot(200, 235, 200);
   referee::RunPicture picture(referee::RunPicture::occupancyInColour(street, obstacle, colour::kWhite), view,

@@ -57,7 +57,7 @@ void Trail::add(double x_m, double y_m) {
   points_.push_back({x_m, y_m});
 }
 
-RunPicture::RunPicture(const cv::Mat& map, const world::MapTransform& transform, int max_side_px) {
+RunPicture::RunPicture(const cv::Mat& map, const geometry::MapTransform& transform, int max_side_px) {
   if (map.empty()) throw std::invalid_argument("RunPicture: empty map");
   const double scale = std::min(static_cast<double>(max_side_px) / map.cols, static_cast<double>(max_side_px) / map.rows);
   const int width_px = std::max(1, static_cast<int>(std::lround(map.cols * scale)));

@@ -7,8 +7,6 @@
 
 #include <vector>
 
-namespace aula::world { struct WorldSpec; }
-
 namespace aula::geometry {
 
 // Oriented rectangle in the plane.
@@ -28,10 +26,6 @@ struct Obstacles2D {
   std::vector<Rect2> rects;
   std::vector<Circle2> circles;
 };
-
-// The static primitives of a world whose vertical extent contains height z_m (upright boxes
-// and cylinders; a tilted primitive is approximated by its footprint).
-Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m);
 
 struct ScanRequest {
   Eigen::Vector2d origin_m = Eigen::Vector2d::Zero();  // sensor position, world frame
