@@ -43,6 +43,7 @@ install(FILES
 # The shared plane geometry the API headers above are written in.
 install(FILES
   ${_src}/libs/geometry/include/aula/geometry/map_transform.hpp
+  ${_src}/libs/geometry/include/aula/geometry/oriented_box.hpp
   ${_src}/libs/geometry/include/aula/geometry/pose2d.hpp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/geometry)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -11,13 +11,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Entry distance of the ray o + t d (|d| = 1) into an oriented rectangle, 0 if o is inside,
 // +inf on a miss. Slab test in the rectangle's frame.
-double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Rect2& r) {
-  const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
-  const Eigen::Vector2d rel = o - r.center_m;
+double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const OrientedBox& r) {
+  const double c = std::cos(r.centre.yaw_rad), s = std::sin(r.centre.yaw_rad);
+  const Eigen::Vector2d rel = o - Eigen::Vector2d(r.centre.x_m, r.centre.y_m);
   const double ox = c * rel.x() + s * rel.y(), oy = -s * rel.x() + c * rel.y();
   const double dx = c * d.x() + s * d.y(), dy = -s * d.x() + c * d.y();
   double t0 = -kInf, t1 = kInf;
-  const double hx = r.half_extents_m.x(), hy = r.half_extents_m.y();
+  const double hx = r.length_m / 2, hy = r.width_m / 2;
   if (std::abs(dx) < 1e-15) {
     if (ox < -hx || ox > hx) return kInf;
   } else {
@@ -56,12 +56,10 @@ double castBrute(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Obsta
 }
 
 // Axis-aligned bounds of an obstacle's footprint.
-void boundsOf(const Rect2& r, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
-  const double c = std::abs(std::cos(r.yaw_rad)), s = std::abs(std::sin(r.yaw_rad));
-  const Eigen::Vector2d ext(c * r.half_extents_m.x() + s * r.half_extents_m.y(),
-                            s * r.half_extents_m.x() + c * r.half_extents_m.y());
-  lo = r.center_m - ext;
-  hi = r.center_m + ext;
+void boundsOf(const OrientedBox& r, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  const Eigen::Vector2d centre(r.centre.x_m, r.centre.y_m), ext = r.boundingHalfExtents();
+  lo = centre - ext;
+  hi = centre + ext;
 }
 void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
   lo = c.center_m - Eigen::Vector2d::Constant(c.radius_m);

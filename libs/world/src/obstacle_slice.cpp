@@ -12,7 +12,7 @@ geometry::Obstacles2D sliceAtHeight(const WorldSpec& world, double z_m) {
     if (o.shape.kind == ShapeKind::Cylinder) {
       out.circles.push_back({c, o.shape.radius_m});
     } else {
-      out.rects.push_back({c, yawOf(o.pose), o.shape.box_size_m.head<2>() / 2});
+      out.rects.push_back({{c.x(), c.y(), yawOf(o.pose)}, o.shape.box_size_m.x(), o.shape.box_size_m.y()});
     }
   }
   return out;

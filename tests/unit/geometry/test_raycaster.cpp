@@ -9,7 +9,7 @@
 using namespace aula::geometry;
 
 namespace {
-Rect2 rect(double cx, double cy, double yaw, double hx, double hy) { return {{cx, cy}, yaw, {hx, hy}}; }
+OrientedBox rect(double cx, double cy, double yaw, double hx, double hy) { return {{cx, cy, yaw}, 2 * hx, 2 * hy}; }
 
 // Brute force reference: every obstacle, exact intersections by sampling-free formulas.
 double bruteForce(const Obstacles2D& obstacles, const Eigen::Vector2d& o, double angle, double max_range) {

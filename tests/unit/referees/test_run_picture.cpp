@@ -61,7 +61,7 @@ TEST(RunPicture, ScalesTheMapToFitAndDrawsInWorldCoordinates) {
   EXPECT_DOUBLE_EQ(picture.transform().resolution_m, 0.1 / 8);
   // World (3, 0.5) is 5 m right of the left edge and 2.5 m below the top: the canvas centre.
   EXPECT_EQ(picture.pixel(3, 0.5), cv::Point(400, 200));
-  picture.box(3, 0.5, 0, 1.0, 0.5, colour::kRed, cv::FILLED);
+  picture.box({{3, 0.5, 0}, 1.0, 0.5}, colour::kRed, cv::FILLED);
   EXPECT_EQ(picture.canvas().at<cv::Vec3b>(200, 400), bgr(colour::kRed));
   EXPECT_EQ(picture.canvas().at<cv::Vec3b>(200, 400 + 60), bgr(colour::kWhite));  // 0.75 m right: outside
 }
@@ -158,8 +158,8 @@ TEST(TaxiReferee, KeepsThePathFromGoOnlyAndBounded) {
 
 TEST(ParkingReferee, KeepsTheCarsTrailUntilTheEnd) {
   aula::autopark::ParkingScene scene;
-  scene.rear_car = {0.5, -3, 0, 4.5, 1.8};
-  scene.front_car = {14, -3, 0, 4.5, 1.8};
+  scene.rear_car = {{0.5, -3, 0}, 4.5, 1.8};
+  scene.front_car = {{14, -3, 0}, 4.5, 1.8};
   scene.curb_y_m = -4.25;
   scene.ideal_x_m = 7.25;
   scene.ideal_y_m = -3;
@@ -220,8 +220,8 @@ TEST(TaxiPicture, DrawsThePathTheStartAndTheDestination) {
 TEST(ParkingPicture, TheViewHoldsTheSlotAndTheTrailAndTheGapsAreColouredByScore) {
   aula::autopark::ParkingRunSummary run;
   auto& s = run.scene;
-  s.rear_car = {0.5, -3, 0, 4.5, 1.8};
-  s.front_car = {14, -3, 0, 4.5, 1.8};
+  s.rear_car = {{0.5, -3, 0}, 4.5, 1.8};
+  s.front_car = {{14, -3, 0}, 4.5, 1.8};
   s.curb_y_m = -4.25;
   s.ideal_x_m = 7.25;
   s.ideal_y_m = -3;

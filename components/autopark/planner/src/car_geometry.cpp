@@ -1,7 +1,5 @@
 #include <aula/autopark/car_geometry.hpp>
 
-#include <aula/geometry/oriented_box.hpp>
-
 #include <cmath>
 
 namespace aula::autopark {
@@ -18,13 +16,8 @@ Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car) {
           rear_axle.y_m + d * std::sin(rear_axle.yaw_rad), rear_axle.yaw_rad};
 }
 
-std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
-                                                      double inflation_m) {
-  const auto box = geometry::orientedBoxCorners(centre.x_m, centre.y_m, centre.yaw_rad, car.length_m + 2 * inflation_m,
-                                                car.width_m + 2 * inflation_m);
-  std::array<std::array<double, 2>, 4> out{};
-  for (size_t i = 0; i < 4; ++i) out[i] = {box[i].x(), box[i].y()};
-  return out;
+geometry::OrientedBox footprint(const Pose2D& centre, const CarGeometry& car, double inflation_m) {
+  return geometry::OrientedBox{centre, car.length_m, car.width_m}.inflated(inflation_m);
 }
 
 }  // namespace aula::autopark

@@ -39,10 +39,11 @@ void OccupancyGrid::markCell(int col, int row) {
   if (inBounds(col, row)) cells_[static_cast<size_t>(row) * width_ + col] = 1;
 }
 
-void OccupancyGrid::markBox(const Pose2D& centre, double length_m, double width_m) {
+void OccupancyGrid::markBox(const geometry::OrientedBox& box) {
+  const Pose2D& centre = box.centre;
   const double c = std::cos(centre.yaw_rad), s = std::sin(centre.yaw_rad);
-  const double hl = 0.5 * length_m, hw = 0.5 * width_m;
-  const double ex = std::abs(c) * hl + std::abs(s) * hw, ey = std::abs(s) * hl + std::abs(c) * hw;
+  const Eigen::Vector2d half = box.boundingHalfExtents();
+  const double ex = half.x(), ey = half.y();
   const int c0 = std::max(0, static_cast<int>(std::floor((centre.x_m - ex - origin_x_m_) / resolution_m_)));
   const int c1 = std::min(width_ - 1, static_cast<int>(std::floor((centre.x_m + ex - origin_x_m_) / resolution_m_)));
   const int r0 = std::max(0, static_cast<int>(std::floor((centre.y_m - ey - origin_y_m_) / resolution_m_)));
@@ -51,9 +52,7 @@ void OccupancyGrid::markBox(const Pose2D& centre, double length_m, double width_
     for (int col = c0; col <= c1; ++col) {
       double x = 0, y = 0;
       cellCentre(col, r, x, y);
-      const double dx = x - centre.x_m, dy = y - centre.y_m;
-      const double lx = c * dx + s * dy, ly = -s * dx + c * dy;
-      if (std::abs(lx) <= hl && std::abs(ly) <= hw) markCell(col, r);
+      if (box.containsOffset(c, s, x - centre.x_m, y - centre.y_m)) markCell(col, r);
     }
   }
 }

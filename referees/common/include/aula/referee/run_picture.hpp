@@ -5,6 +5,7 @@
 // the run's data only (no clock, no random), so the same run gives a byte-identical PNG.
 
 #include <aula/geometry/map_transform.hpp>
+#include <aula/geometry/oriented_box.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -53,9 +54,8 @@ class RunPicture {
   void polyline(const std::vector<PicturePoint>& points, const cv::Scalar& colour, int thickness_px);
   void polygon(const std::vector<PicturePoint>& corners, const cv::Scalar& colour, int thickness_px);
   void translucentPolygon(const std::vector<PicturePoint>& corners, const cv::Scalar& colour, double opacity);
-  void box(double cx_m, double cy_m, double yaw_rad, double length_m, double width_m, const cv::Scalar& colour,
-           int thickness_px);
-  static std::vector<PicturePoint> boxCorners(double cx_m, double cy_m, double yaw_rad, double length_m, double width_m);
+  void box(const geometry::OrientedBox& box, const cv::Scalar& colour, int thickness_px);
+  static std::vector<PicturePoint> corners(const geometry::OrientedBox& box);
   void disc(double x_m, double y_m, double radius_m, const cv::Scalar& colour, int thickness_px);
   // A heading tick from the centre of a footprint to its edge.
   void heading(double x_m, double y_m, double yaw_rad, double length_m, const cv::Scalar& colour, int thickness_px);

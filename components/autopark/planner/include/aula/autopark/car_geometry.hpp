@@ -1,9 +1,8 @@
 #pragma once
 // Car geometry and the centre <-> rear-axle pose conversions used by the parking planner.
 
+#include <aula/geometry/oriented_box.hpp>
 #include <aula/geometry/pose2d.hpp>
-
-#include <array>
 
 namespace aula::autopark {
 
@@ -22,9 +21,7 @@ struct CarGeometry {
 Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car);
 Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car);
 
-// Corners (x, y) of the body box inflated by inflation_m on every side, counter-clockwise,
-// starting at the rear-right corner.
-std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
-                                                      double inflation_m);
+// The body box inflated by inflation_m on every side.
+geometry::OrientedBox footprint(const Pose2D& centre, const CarGeometry& car, double inflation_m);
 
 }  // namespace aula::autopark

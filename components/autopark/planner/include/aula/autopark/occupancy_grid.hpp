@@ -31,9 +31,8 @@ class OccupancyGrid {
   // Marks the cell containing (x, y); points outside the grid are ignored (e.g. laser hits).
   void markOccupied(double x_m, double y_m);
   void markCell(int col, int row);
-  // Marks every cell whose centre lies in the length_m x width_m box centred at `centre`
-  // (ground-truth obstacles: parked cars, curbs).
-  void markBox(const Pose2D& centre, double length_m, double width_m);
+  // Marks every cell whose centre lies in the box (ground-truth obstacles: parked cars, curbs).
+  void markBox(const geometry::OrientedBox& box);
   void clear();
 
   // Outside the grid counts as occupied.
