@@ -42,6 +42,7 @@ install(FILES
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/autopark)
 # The shared plane geometry the API headers above are written in.
 install(FILES
+  ${_src}/libs/geometry/include/aula/geometry/angles.hpp
   ${_src}/libs/geometry/include/aula/geometry/map_transform.hpp
   ${_src}/libs/geometry/include/aula/geometry/oriented_box.hpp
   ${_src}/libs/geometry/include/aula/geometry/pose2d.hpp

@@ -50,7 +50,7 @@ TEST(OccupancyGrid, MarkAndQueryRoundTrip) {
   int col = 0, row = 0;
   ASSERT_TRUE(grid.worldToCell(0.333, 0.777, col, row));
   EXPECT_EQ(col, 26);
-  EXPECT_EQ(row, 55);
+  EXPECT_EQ(row, 24);  // north-up: row 0 is the top edge, y = 2
   EXPECT_TRUE(grid.occupied(col, row));
   EXPECT_EQ(grid.occupiedCount(), 1);
   grid.markOccupied(10.0, 10.0);                // outside: ignored

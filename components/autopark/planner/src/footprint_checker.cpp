@@ -7,13 +7,14 @@
 namespace aula::autopark {
 
 FootprintChecker::FootprintChecker(const OccupancyGrid& grid, const CarGeometry& car, double inflation_m)
-    : ox_(grid.originX_m()), oy_(grid.originY_m()), res_(grid.resolution_m()), width_(grid.width()),
+    : ox_(grid.minX_m()), oy_(grid.minY_m()), res_(grid.resolution_m()), width_(grid.width()),
       height_(grid.height()), car_(car), inflation_m_(inflation_m) {
   prefix_.assign(static_cast<size_t>(height_) * (width_ + 1), 0);
   const auto& cells = grid.cells();
   for (int r = 0; r < height_; ++r) {
     int* p = &prefix_[static_cast<size_t>(r) * (width_ + 1)];
-    const std::uint8_t* row = &cells[static_cast<size_t>(r) * width_];
+    // The sweep below climbs in y: band r is the grid's row height - 1 - r (north-up).
+    const std::uint8_t* row = &cells[static_cast<size_t>(height_ - 1 - r) * width_];
     for (int c = 0; c < width_; ++c) p[c + 1] = p[c] + (row[c] ? 1 : 0);
   }
 }

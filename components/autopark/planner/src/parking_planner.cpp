@@ -271,10 +271,10 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
   const double radius = car.min_turn_radius_m;
   auto space = std::make_shared<ob::ReedsSheppStateSpace>(radius);
   ob::RealVectorBounds bounds(2);
-  bounds.setLow(0, grid.originX_m());
-  bounds.setHigh(0, grid.originX_m() + grid.width() * grid.resolution_m());
-  bounds.setLow(1, grid.originY_m());
-  bounds.setHigh(1, grid.originY_m() + grid.height() * grid.resolution_m());
+  bounds.setLow(0, grid.minX_m());
+  bounds.setHigh(0, grid.maxX_m());
+  bounds.setLow(1, grid.minY_m());
+  bounds.setHigh(1, grid.maxY_m());
   space->setBounds(bounds);
   const unsigned seed = opt.seed;
   space->setStateSamplerAllocator(
