@@ -1,5 +1,6 @@
 // One 180-beam, 180-degree laser scan with the analytic ray caster, as the laser driver casts it.
 #include <aula/geometry/raycaster2d.hpp>
+#include <aula/world/obstacle_slice.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <benchmark/benchmark.h>
@@ -11,7 +12,7 @@ namespace {
 void scanWorld(benchmark::State& state, const std::string& world_file, double z_m, double range_m,
                Eigen::Vector2d origin, double cell_m) {
   const auto spec = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world_file);
-  const aula::geometry::Raycaster2D caster(aula::geometry::sliceAtHeight(spec, z_m), cell_m);
+  const aula::geometry::Raycaster2D caster(aula::world::sliceAtHeight(spec, z_m), cell_m);
   aula::geometry::ScanRequest req;
   req.origin_m = origin;
   req.num_beams = 180;
@@ -38,7 +39,7 @@ BENCHMARK(BM_LaserHouse)->Arg(25)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::
 // Brute force over every primitive, for comparison.
 void BM_LaserHouseBruteForce(benchmark::State& state) {
   const auto spec = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world");
-  const auto obstacles = aula::geometry::sliceAtHeight(spec, 0.075);
+  const auto obstacles = aula::world::sliceAtHeight(spec, 0.075);
   const aula::geometry::Raycaster2D empty;
   aula::geometry::ScanRequest req;
   req.origin_m = {-0.861, 1.5};

@@ -32,6 +32,7 @@ install(FILES
   ${_src}/components/teletaxi/include/aula/teletaxi/gradient_field.hpp
   ${_src}/components/teletaxi/include/aula/teletaxi/path_pilot.hpp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/teletaxi)
+# The old path of the map transform, for plugins that still include it.
 install(FILES ${_src}/libs/world/include/aula/world/map_transform.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/world)
 install(FILES
   ${_src}/components/autopark/include/aula/autopark/autopark_algorithm.hpp
@@ -39,6 +40,13 @@ install(FILES
   ${_src}/components/autopark/include/aula/autopark/street_search.hpp
   ${_src}/components/autopark/planner/include/aula/autopark/car_geometry.hpp
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/autopark)
+# The shared plane geometry the API headers above are written in.
+install(FILES
+  ${_src}/libs/geometry/include/aula/geometry/angles.hpp
+  ${_src}/libs/geometry/include/aula/geometry/map_transform.hpp
+  ${_src}/libs/geometry/include/aula/geometry/oriented_box.hpp
+  ${_src}/libs/geometry/include/aula/geometry/pose2d.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/geometry)
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # find_package(Aula)

@@ -18,8 +18,8 @@ inline void appendFootprint(const physics::PhysicsWorld& physics, int robot, geo
   if (spec.shape.kind == world::ShapeKind::Cylinder) {
     out.circles.push_back({center, spec.shape.radius_m});
   } else {
-    out.rects.push_back({center, s.yaw_rad + world::yawOf(spec.shape_offset),
-                         spec.shape.box_size_m.head<2>() / 2});
+    out.rects.push_back({{center.x(), center.y(), s.yaw_rad + world::yawOf(spec.shape_offset)},
+                         spec.shape.box_size_m.x(), spec.shape.box_size_m.y()});
   }
 }
 

@@ -3,6 +3,7 @@
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/sim_clock_t.hpp>
+#include <aula/world/obstacle_slice.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <algorithm>
@@ -103,7 +104,7 @@ Simulator::~Simulator() {
 const geometry::Raycaster2D* Simulator::raycasterAt(double z_m) {
   const long long key = std::llround(z_m * 1000.0);
   auto& slot = raycasters_[key];
-  if (!slot) slot = std::make_unique<geometry::Raycaster2D>(geometry::sliceAtHeight(spec_, z_m));
+  if (!slot) slot = std::make_unique<geometry::Raycaster2D>(world::sliceAtHeight(spec_, z_m));
   return slot.get();
 }
 

@@ -36,10 +36,10 @@ std::pair<double, double> pairOf(const std::string& text, char sep, const std::s
 
 // The map's pixels and placement: by default the bounding box of the static geometry, resized
 // by --size and moved by --center (both keep the other's default).
-aula::world::MapTransform mapTransform(const aula::config::CommandLine& cl, const aula::world::WorldSpec& spec,
+aula::geometry::MapTransform mapTransform(const aula::config::CommandLine& cl, const aula::world::WorldSpec& spec,
                                        double resolution) {
   using namespace aula;
-  world::MapTransform t = world::fitTransform(spec, resolution);
+  geometry::MapTransform t = world::fitTransform(spec, resolution);
   double cx = t.origin_x_m + t.width_px * resolution / 2, cy = t.origin_y_m - t.height_px * resolution / 2;
   if (cl.flag("center")) std::tie(cx, cy) = pairOf(cl.option("center"), ',', "center");
   if (cl.flag("size")) {
@@ -74,7 +74,7 @@ int generateMap(int argc, char** argv) {
   const double resolution = pairOf(cl.option("resolution") + ",0", ',', "resolution").first;
   if (!(resolution > 0)) throw config::ConfigError("command line: --resolution must be > 0");
   const world::WorldSpec spec = world::loadWorld(cl.positional[0]);
-  const world::MapTransform t = mapTransform(cl, spec, resolution);
+  const geometry::MapTransform t = mapTransform(cl, spec, resolution);
   double z_min = 0.01, z_max = 100.0;
   if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
 

@@ -16,6 +16,7 @@
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/car_geometry.hpp>
 #include <aula/autopark/street_search.hpp>
+#include <aula/geometry/angles.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       }
       case Mode::Approach: {
         const double to_go = start_x_m_ - x;
-        if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(wrapAngle(yaw)) < 0.05) {
+        if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(geometry::wrapAngle(yaw)) < 0.05) {
           mode_ = Mode::Arc1;
           break;
         }
@@ -83,7 +84,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       case Mode::Centre: {
         const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
         const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
-        const double yaw_error = wrapAngle(yaw);
+        const double yaw_error = geometry::wrapAngle(yaw);
         if (std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03) {
           mode_ = Mode::Parked;
           break;

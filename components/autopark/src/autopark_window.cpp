@@ -17,7 +17,7 @@ namespace {
 constexpr double kPixelsPerMetre = 12.0;
 constexpr size_t kTrail = 600;  // 30 s at 20 Hz
 
-QImage streetImage(const world::WorldSpec& world, world::MapTransform& transform) {
+QImage streetImage(const world::WorldSpec& world, geometry::MapTransform& transform) {
   const auto b = world::staticBounds(world);  // x_min, y_min, x_max, y_max
   transform.resolution_m = 1.0 / kPixelsPerMetre;
   transform.origin_x_m = b[0] - 1.0;
@@ -30,9 +30,9 @@ QImage streetImage(const world::WorldSpec& world, world::MapTransform& transform
   return image;
 }
 
-QPolygonF rectangle(const gui::MapView& map, const Rect2D& rect) {
+QPolygonF rectangle(const gui::MapView& map, const geometry::OrientedBox& rect) {
   QPolygonF poly;
-  for (const auto& c : rect.corners()) poly << map.worldToWidget(c.x_m, c.y_m);
+  for (const auto& c : rect.corners()) poly << map.worldToWidget(c.x(), c.y());
   return poly;
 }
 
@@ -43,7 +43,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   setWindowTitle("Autopark");
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
-  world::MapTransform transform;
+  geometry::MapTransform transform;
   const QImage street = streetImage(component_.world(), transform);
   map_ = new gui::MapView(street, transform, central);
   // The whole street at 12 px/m, as tall as it is (the rest of the height goes to the lasers).
@@ -96,7 +96,7 @@ void AutoparkWindow::drawCar(QPainter& p) const {
   // The ideal parking pose.
   p.setPen(QPen(QColor(0, 160, 0), 2));
   p.setBrush(Qt::NoBrush);
-  p.drawPolygon(rectangle(*map_, Rect2D{scene_.ideal_x_m, scene_.ideal_y_m, scene_.ideal_yaw_rad, scene_.car_length_m, scene_.car_width_m}));
+  p.drawPolygon(rectangle(*map_, {{scene_.ideal_x_m, scene_.ideal_y_m, scene_.ideal_yaw_rad}, scene_.car_length_m, scene_.car_width_m}));
   // The trail.
   p.setPen(QPen(QColor(220, 30, 30), 2));
   for (size_t i = 1; i < trail_.size(); ++i) {
@@ -117,12 +117,12 @@ void AutoparkWindow::drawCar(QPainter& p) const {
     for (double side : {-1.0, 1.0}) {
       const double wx = ax, wy = side * (width / 2 - 0.05);
       const double wheel_yaw = yaw + (ax > 0 ? steer : 0.0);
-      p.drawPolygon(rectangle(*map_, Rect2D{x + c * wx - s * wy, y + s * wx + c * wy, wheel_yaw, 0.7, 0.3}));
+      p.drawPolygon(rectangle(*map_, {{x + c * wx - s * wy, y + s * wx + c * wy, wheel_yaw}, 0.7, 0.3}));
     }
   }
   p.setPen(QPen(Qt::black, 1));
   p.setBrush(QColor(250, 215, 40));
-  p.drawPolygon(rectangle(*map_, Rect2D{x, y, yaw, length, width}));
+  p.drawPolygon(rectangle(*map_, {{x, y, yaw}, length, width}));
   // The nose.
   p.setBrush(Qt::black);
   p.drawEllipse(map_->worldToWidget(x + c * (length / 2 - 0.3), y + s * (length / 2 - 0.3)), 2.5, 2.5);

@@ -1,6 +1,7 @@
 #include "aula/autopark/street_search.hpp"
 
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/geometry/angles.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +47,7 @@ double StreetSearch::keepLane(double v_mps, double y_m, double yaw_rad) const {
   // Pure pursuit of a point 5 m down the lane line, in the direction of travel.
   const double lookahead_m = 5.0;
   const double heading = (v_mps >= 0 ? 1 : -1) * std::atan2(lane_y - y_m, lookahead_m);
-  const double w = 1.5 * wrapAngle(heading - yaw_rad) * std::abs(v_mps);
+  const double w = 1.5 * geometry::wrapAngle(heading - yaw_rad) * std::abs(v_mps);
   const double limit = std::abs(v_mps) / settings_.turn_radius_m;
   return std::clamp(w, -limit, limit);
 }

@@ -6,7 +6,7 @@
 
 namespace aula::teletaxi {
 
-Grid::Grid(cv::Mat map, world::MapTransform transform) : map_(std::move(map)), transform_(transform) {
+Grid::Grid(cv::Mat map, geometry::MapTransform transform) : map_(std::move(map)), transform_(transform) {
   if (map_.empty() || map_.type() != CV_8UC1) {
     throw std::invalid_argument("Grid: the map must be a non-empty 8-bit single-channel image");
   }

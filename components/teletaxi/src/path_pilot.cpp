@@ -1,12 +1,12 @@
 #include "aula/teletaxi/path_pilot.hpp"
 
+#include <aula/geometry/angles.hpp>
+
 #include <algorithm>
 #include <cmath>
 
 namespace aula::teletaxi {
-namespace {
-double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
-}  // namespace
+using geometry::wrapAngle;
 
 void PathPilot::setPath(std::vector<Point2> path) {
   path_ = std::move(path);
@@ -46,7 +46,7 @@ PilotCommand PathPilot::command(double x, double y, double yaw, double speed_mps
   cmd.target = path_[t];
 
   const double desired = std::atan2(cmd.target.y - y, cmd.target.x - x);
-  cmd.heading_error_rad = wrap(desired - yaw);
+  cmd.heading_error_rad = wrapAngle(desired - yaw);
   cmd.w_radps = std::clamp(params_.heading_gain * cmd.heading_error_rad, -params_.max_w_radps, params_.max_w_radps);
 
   // Speed: aligned with the path, slower for bends ahead and for the stop at the goal.
@@ -57,7 +57,7 @@ PilotCommand PathPilot::command(double x, double y, double yaw, double speed_mps
   const double base_dir = std::atan2(cmd.target.y - path_[progress_].y, cmd.target.x - path_[progress_].x);
   for (size_t i = t; i + 1 < path_.size() && arc_m_[i] - arc_m_[progress_] < params_.curve_preview_m; ++i) {
     const double dir = std::atan2(path_[i + 1].y - path_[i].y, path_[i + 1].x - path_[i].x);
-    const double change = std::abs(wrap(dir - base_dir));
+    const double change = std::abs(wrapAngle(dir - base_dir));
     // A bend farther away allows more speed now (time to brake).
     const double distance = arc_m_[i] - arc_m_[progress_];
     const double bend_speed = params_.curve_speed_mps * (M_PI / 2) / std::max(change, 0.1);

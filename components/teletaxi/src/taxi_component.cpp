@@ -1,7 +1,7 @@
 #include "aula/teletaxi/taxi_component.hpp"
 
 #include <aula/teletaxi/gradient_field.hpp>
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <opencv2/imgcodecs.hpp>
 

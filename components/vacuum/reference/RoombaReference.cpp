@@ -10,6 +10,8 @@
 // (wheels slip, pushes against furniture), so it only biases the random choice.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
+#include <aula/geometry/angles.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -19,7 +21,7 @@
 namespace aula::vacuum {
 namespace {
 
-double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+using geometry::wrapAngle;
 
 class RoombaReference : public VacuumAlgorithm {
  public:
@@ -96,7 +98,7 @@ class RoombaReference : public VacuumAlgorithm {
         break;
       }
       case Mode::Turn: {
-        const double error = wrap(turn_target_ - yaw);
+        const double error = wrapAngle(turn_target_ - yaw);
         w = std::copysign(std::min(2.8, 0.5 + 3.0 * std::abs(error)), error);
         if (std::abs(error) < 0.1 || t_ - mode_start_ > 3.0) enter(turn_next_);
         break;
@@ -200,7 +202,7 @@ class RoombaReference : public VacuumAlgorithm {
     // Open space all around: spiral there now and then.
     const bool open = sectorMin(laser, -1.57, 1.57) > 0.9;
     const Mode next = open && std::uniform_real_distribution<double>(0, 1)(rng_) < 0.35 ? Mode::Spiral : Mode::Cross;
-    turn_target_ = wrap(yaw + delta);
+    turn_target_ = wrapAngle(yaw + delta);
     turn_next_ = next;
     enter(Mode::Turn);
   }
@@ -238,11 +240,11 @@ class RandomBounce : public VacuumAlgorithm {
         phase_ = 2;
         phase_start_ = t_;
         std::uniform_real_distribution<double> angle(-M_PI, M_PI);
-        target_ = wrap(yaw + angle(rng_));
+        target_ = wrapAngle(yaw + angle(rng_));
       }
     } else if (phase_ == 2) {  // turn
       v = 0;
-      const double error = wrap(target_ - yaw);
+      const double error = wrapAngle(target_ - yaw);
       w = std::copysign(std::min(2.5, 0.4 + 3.0 * std::abs(error)), error);
       if (std::abs(error) < 0.08 || t_ - phase_start_ > 4.0) phase_ = 0;
     }

@@ -2,8 +2,8 @@
 
 #include "coverage_plot.hpp"
 
+#include <aula/geometry/map_transform.hpp>
 #include <aula/gui/screenshot.hpp>
-#include <aula/world/map_transform.hpp>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -18,7 +18,7 @@ namespace aula::vacuum {
 
 VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   setWindowTitle("Vacuum cleaner");
-  const world::MapTransform& transform = component_.map().transform;
+  const geometry::MapTransform& transform = component_.map().transform;
   transform_ = transform;
   map_image_ = component_.map().image;
   const QImage map(map_image_.data, map_image_.cols, map_image_.rows, static_cast<int>(map_image_.step),

@@ -44,7 +44,7 @@ class VacuumWindow : public QMainWindow {
   CoveragePlot* plot_ = nullptr;
   int64_t last_pose_utime_ = -1;
   cv::Mat map_image_;
-  world::MapTransform transform_;
+  geometry::MapTransform transform_;
   std::unique_ptr<CoverageGrid> coverage_;  // from the first Run
   int64_t run_start_utime_ = -1, last_sample_utime_ = -1;
 };

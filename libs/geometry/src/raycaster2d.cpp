@@ -1,7 +1,5 @@
 #include "aula/geometry/raycaster2d.hpp"
 
-#include <aula/world/world_spec.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,13 +11,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Entry distance of the ray o + t d (|d| = 1) into an oriented rectangle, 0 if o is inside,
 // +inf on a miss. Slab test in the rectangle's frame.
-double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Rect2& r) {
-  const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
-  const Eigen::Vector2d rel = o - r.center_m;
+double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const OrientedBox& r) {
+  const double c = std::cos(r.centre.yaw_rad), s = std::sin(r.centre.yaw_rad);
+  const Eigen::Vector2d rel = o - Eigen::Vector2d(r.centre.x_m, r.centre.y_m);
   const double ox = c * rel.x() + s * rel.y(), oy = -s * rel.x() + c * rel.y();
   const double dx = c * d.x() + s * d.y(), dy = -s * d.x() + c * d.y();
   double t0 = -kInf, t1 = kInf;
-  const double hx = r.half_extents_m.x(), hy = r.half_extents_m.y();
+  const double hx = r.length_m / 2, hy = r.width_m / 2;
   if (std::abs(dx) < 1e-15) {
     if (ox < -hx || ox > hx) return kInf;
   } else {
@@ -58,12 +56,10 @@ double castBrute(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Obsta
 }
 
 // Axis-aligned bounds of an obstacle's footprint.
-void boundsOf(const Rect2& r, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
-  const double c = std::abs(std::cos(r.yaw_rad)), s = std::abs(std::sin(r.yaw_rad));
-  const Eigen::Vector2d ext(c * r.half_extents_m.x() + s * r.half_extents_m.y(),
-                            s * r.half_extents_m.x() + c * r.half_extents_m.y());
-  lo = r.center_m - ext;
-  hi = r.center_m + ext;
+void boundsOf(const OrientedBox& r, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  const Eigen::Vector2d centre(r.centre.x_m, r.centre.y_m), ext = r.boundingHalfExtents();
+  lo = centre - ext;
+  hi = centre + ext;
 }
 void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
   lo = c.center_m - Eigen::Vector2d::Constant(c.radius_m);
@@ -71,22 +67,6 @@ void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
 }
 
 }  // namespace
-
-Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m) {
-  Obstacles2D out;
-  for (const auto& o : world.statics) {
-    const double half = o.shape.halfHeight();
-    const double z = o.pose.translation().z();
-    if (z_m < z - half || z_m > z + half) continue;
-    const Eigen::Vector2d c = o.pose.translation().head<2>();
-    if (o.shape.kind == world::ShapeKind::Cylinder) {
-      out.circles.push_back({c, o.shape.radius_m});
-    } else {
-      out.rects.push_back({c, world::yawOf(o.pose), o.shape.box_size_m.head<2>() / 2});
-    }
-  }
-  return out;
-}
 
 Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
     : statics_(std::move(statics)), cell_m_(cell_size_m) {

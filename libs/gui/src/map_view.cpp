@@ -9,7 +9,7 @@
 
 namespace aula::gui {
 
-MapView::MapView(QImage map, world::MapTransform transform, QWidget* parent)
+MapView::MapView(QImage map, geometry::MapTransform transform, QWidget* parent)
     : QWidget(parent), map_(std::move(map)), transform_(transform) {
   painted_ = QImage(map_.size(), QImage::Format_ARGB32);
   painted_.fill(Qt::transparent);

@@ -44,8 +44,6 @@ ShapePtr makeShape(const world::Shape& s) {
   return std::make_shared<BoxShape>(s.box_size_m);
 }
 
-double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
-
 }  // namespace
 
 struct PhysicsWorld::Robot {
@@ -181,7 +179,9 @@ RobotState PhysicsWorld::robotState(int robot) const {
   const Eigen::Vector3d q = r.joint->getPositions();
   const Eigen::Vector3d dq = r.joint->getVelocities();
   s.position_m = Eigen::Vector3d(q[0], q[1], r.joint->getTransformFromParentBodyNode().translation().z());
-  s.yaw_rad = wrapAngle(q[2]);
+  // DART's unbounded joint angle as a heading in (-pi, pi]: atan2's rounding is part of every
+  // recorded run (geometry::wrapAngle rounds differently and changes the Ackermann runs).
+  s.yaw_rad = std::atan2(std::sin(q[2]), std::cos(q[2]));
   s.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(s.yaw_rad, Eigen::Vector3d::UnitZ()));
   s.velocity_mps = Eigen::Vector2d(dq[0], dq[1]);
   s.yaw_rate_radps = dq[2];

@@ -7,7 +7,7 @@
 
 namespace aula::vacuum {
 
-CoverageGrid::CoverageGrid(const cv::Mat& map, const world::MapTransform& transform, double start_x_m,
+CoverageGrid::CoverageGrid(const cv::Mat& map, const geometry::MapTransform& transform, double start_x_m,
                            double start_y_m)
     : transform_(transform) {
   if (map.empty() || map.type() != CV_8UC1) throw std::invalid_argument("CoverageGrid: the map must be 8-bit grey");

@@ -1,6 +1,7 @@
 #include "aula/world/occupancy_map.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/geometry/oriented_box.hpp>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -24,6 +25,12 @@ std::pair<double, double> zRange(const StaticObject& o) {
   return {z - half, z + half};
 }
 
+// The footprint of a box primitive.
+geometry::OrientedBox footprintOf(const StaticObject& o) {
+  const Eigen::Vector3d c = o.pose.translation();
+  return {{c.x(), c.y(), yawOf(o.pose)}, o.shape.box_size_m.x(), o.shape.box_size_m.y()};
+}
+
 }  // namespace
 
 Eigen::Vector4d staticBounds(const WorldSpec& world) {
@@ -31,37 +38,27 @@ Eigen::Vector4d staticBounds(const WorldSpec& world) {
   double x1 = -x0, y1 = -x0;
   for (const auto& o : world.statics) {
     const Eigen::Vector2d c = o.pose.translation().head<2>();
-    double rx, ry;
-    if (o.shape.kind == ShapeKind::Cylinder) {
-      rx = ry = o.shape.radius_m;
-    } else {
-      const double yaw = yawOf(o.pose);
-      const double hx = o.shape.box_size_m.x() / 2, hy = o.shape.box_size_m.y() / 2;
-      rx = std::abs(std::cos(yaw)) * hx + std::abs(std::sin(yaw)) * hy;
-      ry = std::abs(std::sin(yaw)) * hx + std::abs(std::cos(yaw)) * hy;
-    }
-    x0 = std::min(x0, c.x() - rx);
-    x1 = std::max(x1, c.x() + rx);
-    y0 = std::min(y0, c.y() - ry);
-    y1 = std::max(y1, c.y() + ry);
+    const Eigen::Vector2d r = o.shape.kind == ShapeKind::Cylinder ? Eigen::Vector2d::Constant(o.shape.radius_m)
+                                                                  : footprintOf(o).boundingHalfExtents();
+    x0 = std::min(x0, c.x() - r.x());
+    x1 = std::max(x1, c.x() + r.x());
+    y0 = std::min(y0, c.y() - r.y());
+    y1 = std::max(y1, c.y() + r.y());
   }
   return {x0, y0, x1, y1};
 }
 
-cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double z_min_m, double z_max_m) {
+cv::Mat rasterizeOccupancy(const WorldSpec& world, const geometry::MapTransform& t, double z_min_m, double z_max_m) {
   cv::Mat map(t.height_px, t.width_px, CV_8UC1, cv::Scalar(255));
   for (const auto& o : world.statics) {
     const auto [z0, z1] = zRange(o);
     if (z1 < z_min_m || z0 > z_max_m) continue;
-    const Eigen::Vector2d c = o.pose.translation().head<2>();
-    const double yaw = yawOf(o.pose);
-    const double cs = std::cos(yaw), sn = std::sin(yaw);
-    double reach;  // footprint radius bound, for the pixel window
-    if (o.shape.kind == ShapeKind::Cylinder) {
-      reach = o.shape.radius_m;
-    } else {
-      reach = 0.5 * o.shape.box_size_m.head<2>().norm();
+    if (o.shape.kind != ShapeKind::Cylinder) {
+      geometry::rasterise(footprintOf(o), t, [&map](int col, int row) { map.at<uint8_t>(row, col) = 0; });
+      continue;
     }
+    const Eigen::Vector2d c = o.pose.translation().head<2>();
+    const double reach = o.shape.radius_m;
     const int col0 = std::max(0, t.worldToCol(c.x() - reach));
     const int col1 = std::min(t.width_px - 1, t.worldToCol(c.x() + reach));
     const int row0 = std::max(0, t.worldToRow(c.y() + reach));
@@ -71,14 +68,7 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double
       const double dy = t.rowToWorldY(row) - c.y();
       for (int col = col0; col <= col1; ++col) {
         const double dx = t.colToWorldX(col) - c.x();
-        bool inside;
-        if (o.shape.kind == ShapeKind::Cylinder) {
-          inside = dx * dx + dy * dy <= o.shape.radius_m * o.shape.radius_m;
-        } else {
-          const double lx = cs * dx + sn * dy, ly = -sn * dx + cs * dy;
-          inside = std::abs(lx) <= o.shape.box_size_m.x() / 2 && std::abs(ly) <= o.shape.box_size_m.y() / 2;
-        }
-        if (inside) line[col] = 0;
+        if (dx * dx + dy * dy <= o.shape.radius_m * o.shape.radius_m) line[col] = 0;
       }
     }
   }
@@ -89,10 +79,10 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& t, double
 
 namespace aula::world {
 
-MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
+geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
   if (world.statics.empty()) throw WorldError(world.source_path + ": no static geometry to map");
   const Eigen::Vector4d bounds = staticBounds(world);
-  MapTransform t;
+  geometry::MapTransform t;
   t.resolution_m = resolution_m;
   // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
   t.width_px = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution_m - 1e-6));
@@ -137,7 +127,7 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
 std::optional<std::string> pointProblem(const OccupancyMap& map, double x_m, double y_m) {
   char where[96];
   std::snprintf(where, sizeof where, "(%.1f, %.1f) ", x_m, y_m);
-  const MapTransform& t = map.transform;
+  const geometry::MapTransform& t = map.transform;
   const int col = t.worldToCol(x_m), row = t.worldToRow(y_m);
   if (!t.contains(col, row) || !std::isfinite(x_m) || !std::isfinite(y_m)) {
     char text[160];

@@ -21,24 +21,24 @@ std::string metres(const char* what, double value_m) {
   return text;
 }
 
-std::vector<referee::PicturePoint> corners(const Rect2D& r) {
-  return referee::RunPicture::boxCorners(r.cx_m, r.cy_m, r.yaw_rad, r.length_m, r.width_m);
-}
+using geometry::OrientedBox;
+using referee::RunPicture;
 
 // The gaps as dimension lines coloured by their score: along the lane at the car's centre to the
 // two parked cars, and straight down from its lowest corner to the curb.
-void drawGaps(referee::RunPicture& picture, const ParkingRunSummary& run, const Rect2D& car) {
+void drawGaps(RunPicture& picture, const ParkingRunSummary& run, const OrientedBox& car) {
   const ParkingScene& s = run.scene;
   double front_m = -1e9, rear_m = 1e9;
   referee::PicturePoint lowest{0, 1e9};
-  for (const auto& c : corners(car)) {
+  for (const auto& c : RunPicture::corners(car)) {
     front_m = std::max(front_m, c.x_m);
     rear_m = std::min(rear_m, c.x_m);
     if (c.y_m < lowest.y_m) lowest = c;
   }
   const ParkingMeasures& m = run.measures;
   const double lane_y_m = run.y_m;
-  const double front_car_m = s.front_car.cx_m - s.front_car.length_m / 2, rear_car_m = s.rear_car.cx_m + s.rear_car.length_m / 2;
+  const double front_car_m = s.front_car.centre.x_m - s.front_car.length_m / 2;
+  const double rear_car_m = s.rear_car.centre.x_m + s.rear_car.length_m / 2;
   const cv::Scalar front = scoreColour(gapScore(m.front_gap_m, run.settings));
   const cv::Scalar rear = scoreColour(gapScore(m.rear_gap_m, run.settings));
   const cv::Scalar curb = scoreColour(curbScore(m.curb_gap_m, run.settings));
@@ -53,9 +53,9 @@ void drawGaps(referee::RunPicture& picture, const ParkingRunSummary& run, const 
 
 }  // namespace
 
-world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
+geometry::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   const ParkingScene& s = run.scene;
-  double x_min = s.rear_car.cx_m - s.rear_car.length_m, x_max = s.front_car.cx_m + s.front_car.length_m;
+  double x_min = s.rear_car.centre.x_m - s.rear_car.length_m, x_max = s.front_car.centre.x_m + s.front_car.length_m;
   double y_min = s.curb_y_m - 2.0, y_max = s.ideal_y_m + s.car_width_m;
   auto include = [&](double x, double y) {
     x_min = std::min(x_min, x);
@@ -76,7 +76,7 @@ world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   x_min -= kMarginM;
   x_max += kMarginM;
   y_max += kMarginM;
-  world::MapTransform view;
+  geometry::MapTransform view;
   view.resolution_m = (x_max - x_min) / width_px;
   view.origin_x_m = x_min;
   view.origin_y_m = y_max;
@@ -85,31 +85,33 @@ world::MapTransform parkingView(const ParkingRunSummary& run, int width_px) {
   return view;
 }
 
-cv::Mat parkingPicture(const cv::Mat& street, const world::MapTransform& view, const ParkingRunSummary& run) {
+cv::Mat parkingPicture(const cv::Mat& street, const geometry::MapTransform& view, const ParkingRunSummary& run) {
   const ParkingScene& s = run.scene;
   const cv::Scalar obstacle(150, 150, 150), parked_car(90, 90, 90), slot(200, 235, 200);
-  referee::RunPicture picture(referee::RunPicture::occupancyInColour(street, obstacle, colour::kWhite), view,
+  RunPicture picture(RunPicture::occupancyInColour(street, obstacle, colour::kWhite), view,
                               std::max(view.width_px, view.height_px));
   // The slot: between the two cars, from the curb to the far side of the parking lane.
-  const double slot_from_m = s.rear_car.cx_m + s.rear_car.length_m / 2, slot_to_m = s.front_car.cx_m - s.front_car.length_m / 2;
+  const double slot_from_m = s.rear_car.centre.x_m + s.rear_car.length_m / 2;
+  const double slot_to_m = s.front_car.centre.x_m - s.front_car.length_m / 2;
   const double lane_top_m = s.ideal_y_m + std::max(s.rear_car.width_m, s.front_car.width_m) / 2;
   picture.polygon({{slot_from_m, s.curb_y_m}, {slot_to_m, s.curb_y_m}, {slot_to_m, lane_top_m}, {slot_from_m, lane_top_m}},
                   slot, cv::FILLED);
-  for (const Rect2D* car : {&s.rear_car, &s.front_car}) picture.polygon(corners(*car), parked_car, cv::FILLED);
+  for (const OrientedBox* car : {&s.rear_car, &s.front_car}) picture.box(*car, parked_car, cv::FILLED);
   picture.polyline({{view.origin_x_m, s.curb_y_m}, {view.origin_x_m + view.width_px * view.resolution_m, s.curb_y_m}},
                    colour::kBlack, 3);
-  picture.polygon(corners(Rect2D{s.ideal_x_m, s.ideal_y_m, s.ideal_yaw_rad, s.car_length_m, s.car_width_m}),
-                  colour::kGreen, 2);
+  picture.box({{s.ideal_x_m, s.ideal_y_m, s.ideal_yaw_rad}, s.car_length_m, s.car_width_m}, colour::kGreen, 2);
   picture.polyline(run.trail, kTrailColour, 2);
   if (run.have_pose) {
-    const Rect2D car{run.x_m, run.y_m, run.yaw_rad, s.car_length_m, s.car_width_m};
-    picture.translucentPolygon(corners(car), kCarColour, 0.45);
-    picture.polygon(corners(car), kCarColour, 2);
+    const OrientedBox car{{run.x_m, run.y_m, run.yaw_rad}, s.car_length_m, s.car_width_m};
+    picture.translucentPolygon(RunPicture::corners(car), kCarColour, 0.45);
+    picture.box(car, kCarColour, 2);
     picture.heading(run.x_m, run.y_m, run.yaw_rad, s.car_length_m / 2, colour::kBlack, 2);
     if (run.measures.inside_slot) drawGaps(picture, run, car);  // outside the slot no gap is graded
   }
-  picture.label(s.rear_car.cx_m - s.rear_car.length_m / 2 + 0.2, s.rear_car.cy_m, "car behind", colour::kBlack);
-  picture.label(s.front_car.cx_m - s.front_car.length_m / 2 + 0.2, s.front_car.cy_m, "car in front", colour::kBlack);
+  picture.label(s.rear_car.centre.x_m - s.rear_car.length_m / 2 + 0.2, s.rear_car.centre.y_m, "car behind",
+                colour::kBlack);
+  picture.label(s.front_car.centre.x_m - s.front_car.length_m / 2 + 0.2, s.front_car.centre.y_m, "car in front",
+                colour::kBlack);
   picture.addLegend(kCarColour, "car at the end");
   picture.addLegend(kTrailColour, "its trail");
   picture.addLegend(colour::kGreen, "ideal pose");

@@ -1,5 +1,7 @@
 #include "aula/autopark/parking_referee.hpp"
 
+#include <aula/geometry/angles.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -49,7 +51,7 @@ void ParkingReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_ra
     speed_mps_ = std::hypot(x_m - x_, y_m - y_) / dt;
     // A car turning on the spot is not stationary: count its corners' speed.
     const double half_diagonal = std::hypot(scene_.car_length_m, scene_.car_width_m) / 2;
-    speed_mps_ += std::abs(std::remainder(yaw_rad - yaw_, 2 * M_PI)) * half_diagonal / dt;
+    speed_mps_ += std::abs(geometry::wrapAngle(yaw_rad - yaw_)) * half_diagonal / dt;
   }
   have_pose_ = true;
   last_pose_utime_ = utime;

@@ -143,7 +143,7 @@ void ParkingRefereeNode::writePicture(const std::string& png_path) const {
   run.yaw_rad = r.yawRad();
   run.trail = r.trail().points();
   run.notes = outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed));
-  const world::MapTransform view = parkingView(run);
+  const geometry::MapTransform view = parkingView(run);
   // Everything a car can touch, kerbs included (the ground plane is not drawn).
   const cv::Mat street = world::rasterizeOccupancy(world_, view, 0.01, 100.0);
   referee::writePngAtomically(parkingPicture(street, view, run), png_path);

@@ -1,6 +1,5 @@
 #include "aula/referee/run_picture.hpp"
 
-#include <aula/geometry/oriented_box.hpp>
 #include <aula/referee/report.hpp>
 
 #include <opencv2/imgcodecs.hpp>
@@ -57,7 +56,7 @@ void Trail::add(double x_m, double y_m) {
   points_.push_back({x_m, y_m});
 }
 
-RunPicture::RunPicture(const cv::Mat& map, const world::MapTransform& transform, int max_side_px) {
+RunPicture::RunPicture(const cv::Mat& map, const geometry::MapTransform& transform, int max_side_px) {
   if (map.empty()) throw std::invalid_argument("RunPicture: empty map");
   const double scale = std::min(static_cast<double>(max_side_px) / map.cols, static_cast<double>(max_side_px) / map.rows);
   const int width_px = std::max(1, static_cast<int>(std::lround(map.cols * scale)));
@@ -106,16 +105,14 @@ void RunPicture::translucentPolygon(const std::vector<PicturePoint>& corners, co
   cv::addWeighted(layer, opacity, canvas_, 1.0 - opacity, 0.0, canvas_);
 }
 
-std::vector<PicturePoint> RunPicture::boxCorners(double cx_m, double cy_m, double yaw_rad, double length_m,
-                                                 double width_m) {
+std::vector<PicturePoint> RunPicture::corners(const geometry::OrientedBox& box) {
   std::vector<PicturePoint> out;
-  for (const auto& c : geometry::orientedBoxCorners(cx_m, cy_m, yaw_rad, length_m, width_m)) out.push_back({c.x(), c.y()});
+  for (const auto& c : box.corners()) out.push_back({c.x(), c.y()});
   return out;
 }
 
-void RunPicture::box(double cx_m, double cy_m, double yaw_rad, double length_m, double width_m, const cv::Scalar& colour,
-                     int thickness_px) {
-  polygon(boxCorners(cx_m, cy_m, yaw_rad, length_m, width_m), colour, thickness_px);
+void RunPicture::box(const geometry::OrientedBox& box, const cv::Scalar& colour, int thickness_px) {
+  polygon(corners(box), colour, thickness_px);
 }
 
 void RunPicture::disc(double x_m, double y_m, double radius_m, const cv::Scalar& colour, int thickness_px) {

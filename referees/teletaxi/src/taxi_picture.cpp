@@ -5,7 +5,7 @@
 
 namespace aula::teletaxi {
 
-cv::Mat taxiPicture(const cv::Mat& occupancy, const world::MapTransform& transform, const TaxiRunSummary& run) {
+cv::Mat taxiPicture(const cv::Mat& occupancy, const geometry::MapTransform& transform, const TaxiRunSummary& run) {
   namespace colour = referee::colour;
   const cv::Scalar building(110, 110, 110);
   referee::RunPicture picture(referee::RunPicture::occupancyInColour(occupancy, building, colour::kWhite), transform);

@@ -1,9 +1,9 @@
 #include "coverage_referee_node.hpp"
 
+#include <aula/geometry/map_transform.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/referee/run_picture.hpp>
 #include <aula/vacuum/coverage_picture.hpp>
-#include <aula/world/map_transform.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cmath>

@@ -2,7 +2,7 @@
 
 #include <aula/gui/screenshot.hpp>
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <QApplication>
 #include <QGridLayout>

@@ -3,6 +3,7 @@
 #include <aula/autopark/parking_planner.hpp>
 #include <aula/autopark/path_tracker.hpp>
 #include <aula/autopark/street_scenario.hpp>
+#include <aula/geometry/angles.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +32,7 @@ Pose2D stepAckermann(const Pose2D& centre, double v, double w, double dt, const 
   } else {
     const double k = w / v, yaw1 = r.yaw_rad + w * dt;
     n = {r.x_m + (std::sin(yaw1) - std::sin(r.yaw_rad)) / k, r.y_m + (std::cos(r.yaw_rad) - std::cos(yaw1)) / k,
-         wrapAngle(yaw1)};
+         aula::geometry::wrapAngle(yaw1)};
   }
   return rearAxleToCentre(n, car);
 }
@@ -49,7 +50,7 @@ TEST(OccupancyGrid, MarkAndQueryRoundTrip) {
   int col = 0, row = 0;
   ASSERT_TRUE(grid.worldToCell(0.333, 0.777, col, row));
   EXPECT_EQ(col, 26);
-  EXPECT_EQ(row, 55);
+  EXPECT_EQ(row, 24);  // north-up: row 0 is the top edge, y = 2
   EXPECT_TRUE(grid.occupied(col, row));
   EXPECT_EQ(grid.occupiedCount(), 1);
   grid.markOccupied(10.0, 10.0);                // outside: ignored
@@ -110,7 +111,7 @@ TEST(ParkingPlanner, PlansIntoA13LSlotCollisionFreeAndKinematicallyFeasible) {
   EXPECT_NEAR(path.poses.front().y_m, street.start_centre.y_m, 1e-6);
   const Pose2D& end = path.poses.back();
   EXPECT_LT(std::hypot(end.x_m - street.goal_centre.x_m, end.y_m - street.goal_centre.y_m), 0.1);
-  EXPECT_LT(std::abs(wrapAngle(end.yaw_rad - street.goal_centre.yaw_rad)), 2 * kDeg);
+  EXPECT_LT(std::abs(aula::geometry::wrapAngle(end.yaw_rad - street.goal_centre.yaw_rad)), 2 * kDeg);
 
   int cusps = 0;
   for (size_t i = 0; i < path.poses.size(); ++i) {
@@ -125,7 +126,7 @@ TEST(ParkingPlanner, PlansIntoA13LSlotCollisionFreeAndKinematicallyFeasible) {
     // Curvature of the rear-axle path never tighter than 1 / R: on a circle of radius R a chord
     // ds turns the heading by 2 asin(ds / 2R); any wider curve turns it less.
     const double max_turn = 2.0 * std::asin(std::min(1.0, ds / (2.0 * car.min_turn_radius_m)));
-    ASSERT_LE(std::abs(wrapAngle(b.yaw_rad - a.yaw_rad)), max_turn * (1 + 1e-6) + 1e-9) << "pose " << i;
+    ASSERT_LE(std::abs(aula::geometry::wrapAngle(b.yaw_rad - a.yaw_rad)), max_turn * (1 + 1e-6) + 1e-9) << "pose " << i;
     ASSERT_LE(std::abs(path.curvature_per_m[i]), 1.0 / car.min_turn_radius_m + 1e-12);
     // The motion between consecutive rear-axle poses goes along the heading (no side slip),
     // in the stated direction.
@@ -212,7 +213,7 @@ TEST_P(PathTrackerSlot, ClosedLoopAckermannParks) {
   ASSERT_TRUE(done);
   EXPECT_EQ(reversals, path.cusps);
   EXPECT_LT(std::hypot(pose.x_m - street.goal_centre.x_m, pose.y_m - street.goal_centre.y_m), 0.25);
-  EXPECT_LT(std::abs(wrapAngle(pose.yaw_rad - street.goal_centre.yaw_rad)), 5 * kDeg);
+  EXPECT_LT(std::abs(aula::geometry::wrapAngle(pose.yaw_rad - street.goal_centre.yaw_rad)), 5 * kDeg);
 }
 
 INSTANTIATE_TEST_SUITE_P(Slots, PathTrackerSlot, ::testing::Values(5.2, 4.8));  // 1.3 L and 1.2 L

@@ -2,6 +2,7 @@
 // street, ray-cast against the worlds' own geometry at the lasers' height.
 #include <aula/autopark/slot_detector.hpp>
 #include <aula/geometry/raycaster2d.hpp>
+#include <aula/world/obstacle_slice.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <gtest/gtest.h>
@@ -15,7 +16,7 @@ namespace {
 struct Street {
   aula::geometry::Raycaster2D caster;
   explicit Street(const std::string& world)
-      : caster(aula::geometry::sliceAtHeight(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world), 0.1)) {}
+      : caster(aula::world::sliceAtHeight(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world), 0.1)) {}
 
   aula::component::LaserData scan(double x, double y, double yaw, const LaserMount& m) const {
     aula::component::LaserData d;

@@ -1,5 +1,4 @@
 #include <aula/geometry/raycaster2d.hpp>
-#include <aula/world/world_spec.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,7 +9,7 @@
 using namespace aula::geometry;
 
 namespace {
-Rect2 rect(double cx, double cy, double yaw, double hx, double hy) { return {{cx, cy}, yaw, {hx, hy}}; }
+OrientedBox rect(double cx, double cy, double yaw, double hx, double hy) { return {{cx, cy, yaw}, 2 * hx, 2 * hy}; }
 
 // Brute force reference: every obstacle, exact intersections by sampling-free formulas.
 double bruteForce(const Obstacles2D& obstacles, const Eigen::Vector2d& o, double angle, double max_range) {
@@ -82,23 +81,4 @@ TEST(Raycaster2D, DynamicObstaclesAreSeenToo) {
   robots.circles.push_back({{3, 0}, 0.165});
   EXPECT_NEAR(caster.cast({0, 0}, 0, 20, &robots), 3 - 0.165, 1e-9);
   EXPECT_NEAR(caster.cast({0, 0}, 0, 20), 9.0, 1e-9);
-}
-
-TEST(SliceAtHeight, KeepsOnlyWhatTheSensorPlaneCuts) {
-  aula::world::WorldSpec w;
-  aula::world::StaticObject low, high, cyl;
-  low.shape.box_size_m = Eigen::Vector3d(1, 2, 0.2);
-  low.pose.translation() = Eigen::Vector3d(1, 0, 0.1);  // z 0..0.2
-  high.shape.box_size_m = Eigen::Vector3d(1, 1, 0.4);
-  high.pose.translation() = Eigen::Vector3d(3, 0, 0.8);  // z 0.6..1.0: a table top
-  cyl.shape.kind = aula::world::ShapeKind::Cylinder;
-  cyl.shape.radius_m = 0.3;
-  cyl.shape.length_m = 1.0;
-  cyl.pose = Eigen::Translation3d(0, 4, 0.5) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ());
-  w.statics = {low, high, cyl};
-  const Obstacles2D at_laser = sliceAtHeight(w, 0.1);
-  ASSERT_EQ(at_laser.rects.size(), 1u);
-  EXPECT_TRUE(at_laser.rects[0].half_extents_m.isApprox(Eigen::Vector2d(0.5, 1.0)));
-  ASSERT_EQ(at_laser.circles.size(), 1u);
-  EXPECT_EQ(sliceAtHeight(w, 0.7).rects.size(), 1u);
 }

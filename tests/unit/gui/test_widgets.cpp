@@ -10,8 +10,8 @@
 #include <cmath>
 
 namespace {
-aula::world::MapTransform cityTransform() {
-  aula::world::MapTransform t;
+aula::geometry::MapTransform cityTransform() {
+  aula::geometry::MapTransform t;
   t.resolution_m = 1.25;
   t.origin_x_m = -250;
   t.origin_y_m = 250;

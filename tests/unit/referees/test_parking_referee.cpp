@@ -1,4 +1,4 @@
-// Autopark referee: footprint geometry (minimum distances about the car's own centre), the
+// Autopark referee: the parking measures (minimum distances about the car's own centre), the
 // slot read from the worlds, the sub-scores and the episode on sim time.
 #include <aula/scoring/parking_geometry.hpp>
 #include <aula/autopark/parking_referee.hpp>
@@ -15,8 +15,8 @@ namespace {
 // The default street, by hand: cars 4.5 x 1.8 at y = -3, x = 0.5 and 14; curb face y = -4.25.
 ParkingScene handScene() {
   ParkingScene s;
-  s.rear_car = Rect2D{0.5, -3, 0, 4.5, 1.8};
-  s.front_car = Rect2D{14, -3, 0, 4.5, 1.8};
+  s.rear_car = {{0.5, -3, 0}, 4.5, 1.8};
+  s.front_car = {{14, -3, 0}, 4.5, 1.8};
   s.curb_y_m = -4.25;
   s.ideal_x_m = 7.25;
   s.ideal_y_m = -3;
@@ -28,32 +28,6 @@ ParkingScene handScene() {
 constexpr double kDeg = M_PI / 180.0;
 
 }  // namespace
-
-TEST(ParkingGeometry, RectDistanceAxisAlignedAndTouching) {
-  const Rect2D a{0, 0, 0, 4, 2};
-  EXPECT_NEAR(rectDistance(a, Rect2D{5, 0, 0, 4, 2}), 1.0, 1e-12);   // 2 + 1 + 2
-  EXPECT_NEAR(rectDistance(a, Rect2D{0, 3, 0, 4, 2}), 1.0, 1e-12);
-  EXPECT_NEAR(rectDistance(a, Rect2D{5, 3, 0, 4, 2}), std::hypot(1.0, 1.0), 1e-12);  // corner to corner
-  EXPECT_EQ(rectDistance(a, Rect2D{3.9, 0, 0, 4, 2}), 0.0);
-  EXPECT_TRUE(rectsOverlap(a, Rect2D{0, 0, 0.3, 1, 1}));  // one inside the other
-}
-
-TEST(ParkingGeometry, RotatedCarCornersTurnAboutItsOwnCentre) {
-  // A car at (7.25, -3) rotated 90 degrees: 4 m tall, 2 m wide, centred on itself (the original
-  // rotated corners about the world origin, which moved the car across the street).
-  const Rect2D car{7.25, -3, M_PI / 2, 4, 2};
-  double min_x = 1e9, max_x = -1e9, min_y = 1e9, max_y = -1e9;
-  for (const auto& c : car.corners()) {
-    min_x = std::min(min_x, c.x_m);
-    max_x = std::max(max_x, c.x_m);
-    min_y = std::min(min_y, c.y_m);
-    max_y = std::max(max_y, c.y_m);
-  }
-  EXPECT_NEAR(min_x, 6.25, 1e-9);
-  EXPECT_NEAR(max_x, 8.25, 1e-9);
-  EXPECT_NEAR(min_y, -5.0, 1e-9);
-  EXPECT_NEAR(max_y, -1.0, 1e-9);
-}
 
 TEST(ParkingGeometry, IdealPoseMeasures) {
   const ParkingMeasures m = measureParking(handScene(), 7.25, -3, 0);
@@ -89,8 +63,8 @@ TEST(ParkingGeometry, OutsideTheSlot) {
 TEST(ParkingGeometry, SceneFromTheWorlds) {
   const auto street = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/autopark.world");
   const ParkingScene s = ParkingScene::fromWorld(street, "car");
-  EXPECT_NEAR(s.rear_car.cx_m, 0.5, 1e-9);
-  EXPECT_NEAR(s.front_car.cx_m, 14, 1e-9);
+  EXPECT_NEAR(s.rear_car.centre.x_m, 0.5, 1e-9);
+  EXPECT_NEAR(s.front_car.centre.x_m, 14, 1e-9);
   EXPECT_NEAR(s.curb_y_m, -4.25, 1e-9);
   EXPECT_NEAR(s.ideal_x_m, 7.25, 1e-9);
   EXPECT_NEAR(s.ideal_y_m, -3, 1e-9);
@@ -103,7 +77,7 @@ TEST(ParkingGeometry, SceneFromTheWorlds) {
     const auto w = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + name);
     const ParkingScene v = ParkingScene::fromWorld(w, "car");
     EXPECT_NEAR(v.slotLengthM(), 4.0 * k, 1e-9) << name;
-    EXPECT_NEAR(v.rear_car.cx_m, 0.5, 1e-9) << name;
+    EXPECT_NEAR(v.rear_car.centre.x_m, 0.5, 1e-9) << name;
     EXPECT_EQ(w.findRobot("car")->findPlugin("motors")->getString("kinematics", ""), "ackermann") << name;
   }
   EXPECT_THROW(ParkingScene::fromWorld(street, "nobody"), aula::world::WorldError);

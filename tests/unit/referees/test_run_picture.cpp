@@ -27,12 +27,12 @@ namespace colour = aula::referee::colour;
 
 namespace {
 
-aula::world::MapTransform grid(double resolution_m, double left_x_m, double top_y_m, int width_px, int height_px) {
-  return aula::world::MapTransform{resolution_m, left_x_m, top_y_m, width_px, height_px};
+aula::geometry::MapTransform grid(double resolution_m, double left_x_m, double top_y_m, int width_px, int height_px) {
+  return aula::geometry::MapTransform{resolution_m, left_x_m, top_y_m, width_px, height_px};
 }
 
 // 10 m x 5 m at 0.1 m/px, its top-left corner at world (-2, 3).
-aula::world::MapTransform grid100x50() { return grid(0.1, -2, 3, 100, 50); }
+aula::geometry::MapTransform grid100x50() { return grid(0.1, -2, 3, 100, 50); }
 
 cv::Vec3b bgr(const cv::Scalar& s) {
   return cv::Vec3b(static_cast<uchar>(s[0]), static_cast<uchar>(s[1]), static_cast<uchar>(s[2]));
@@ -61,7 +61,7 @@ TEST(RunPicture, ScalesTheMapToFitAndDrawsInWorldCoordinates) {
   EXPECT_DOUBLE_EQ(picture.transform().resolution_m, 0.1 / 8);
   // World (3, 0.5) is 5 m right of the left edge and 2.5 m below the top: the canvas centre.
   EXPECT_EQ(picture.pixel(3, 0.5), cv::Point(400, 200));
-  picture.box(3, 0.5, 0, 1.0, 0.5, colour::kRed, cv::FILLED);
+  picture.box({{3, 0.5, 0}, 1.0, 0.5}, colour::kRed, cv::FILLED);
   EXPECT_EQ(picture.canvas().at<cv::Vec3b>(200, 400), bgr(colour::kRed));
   EXPECT_EQ(picture.canvas().at<cv::Vec3b>(200, 400 + 60), bgr(colour::kWhite));  // 0.75 m right: outside
 }
@@ -158,8 +158,8 @@ TEST(TaxiReferee, KeepsThePathFromGoOnlyAndBounded) {
 
 TEST(ParkingReferee, KeepsTheCarsTrailUntilTheEnd) {
   aula::autopark::ParkingScene scene;
-  scene.rear_car = {0.5, -3, 0, 4.5, 1.8};
-  scene.front_car = {14, -3, 0, 4.5, 1.8};
+  scene.rear_car = {{0.5, -3, 0}, 4.5, 1.8};
+  scene.front_car = {{14, -3, 0}, 4.5, 1.8};
   scene.curb_y_m = -4.25;
   scene.ideal_x_m = 7.25;
   scene.ideal_y_m = -3;
@@ -171,7 +171,7 @@ TEST(ParkingReferee, KeepsTheCarsTrailUntilTheEnd) {
 
 TEST(CoveragePicture, ShowsTheCleanedFloorWallsAndTheRobot) {
   // A 2 m x 1 m room at 2 cm/px with a wall column in the middle of its right half.
-  const aula::world::MapTransform t = grid(0.02, 0, 1, 100, 50);
+  const aula::geometry::MapTransform t = grid(0.02, 0, 1, 100, 50);
   cv::Mat map(50, 100, CV_8UC1, cv::Scalar(255));
   map(cv::Rect(70, 0, 5, 50)).setTo(0);
   aula::vacuum::CoverageGrid grid(map, t, 0.3, 0.5);
@@ -194,7 +194,7 @@ TEST(CoveragePicture, ShowsTheCleanedFloorWallsAndTheRobot) {
 }
 
 TEST(TaxiPicture, DrawsThePathTheStartAndTheDestination) {
-  const aula::world::MapTransform t = grid(1.0, -50, 50, 100, 100);
+  const aula::geometry::MapTransform t = grid(1.0, -50, 50, 100, 100);
   cv::Mat city(100, 100, CV_8UC1, cv::Scalar(255));
   city(cv::Rect(10, 10, 30, 30)).setTo(0);
   aula::teletaxi::TaxiRunSummary run;
@@ -220,8 +220,8 @@ TEST(TaxiPicture, DrawsThePathTheStartAndTheDestination) {
 TEST(ParkingPicture, TheViewHoldsTheSlotAndTheTrailAndTheGapsAreColouredByScore) {
   aula::autopark::ParkingRunSummary run;
   auto& s = run.scene;
-  s.rear_car = {0.5, -3, 0, 4.5, 1.8};
-  s.front_car = {14, -3, 0, 4.5, 1.8};
+  s.rear_car = {{0.5, -3, 0}, 4.5, 1.8};
+  s.front_car = {{14, -3, 0}, 4.5, 1.8};
   s.curb_y_m = -4.25;
   s.ideal_x_m = 7.25;
   s.ideal_y_m = -3;
@@ -231,7 +231,7 @@ TEST(ParkingPicture, TheViewHoldsTheSlotAndTheTrailAndTheGapsAreColouredByScore)
   run.trail = {{-7, 2.5}, {10, 2.5}, {7.25, -3}};
   run.measures = aula::autopark::measureParking(s, run.x_m, run.y_m, 0);
   ASSERT_TRUE(run.measures.inside_slot);
-  const aula::world::MapTransform view = aula::autopark::parkingView(run);
+  const aula::geometry::MapTransform view = aula::autopark::parkingView(run);
   EXPECT_EQ(view.width_px, 800);
   EXPECT_LT(view.origin_x_m, -7 - 2);                          // the trail's start and the car around it
   EXPECT_GT(view.origin_x_m + 800 * view.resolution_m, 14 + 2.25);  // the car in front

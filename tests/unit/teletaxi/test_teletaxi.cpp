@@ -11,8 +11,8 @@
 using namespace aula::teletaxi;
 
 namespace {
-aula::world::MapTransform cityTransform() {
-  aula::world::MapTransform t;
+aula::geometry::MapTransform cityTransform() {
+  aula::geometry::MapTransform t;
   t.resolution_m = 1.25;
   t.origin_x_m = -250;
   t.origin_y_m = 250;
@@ -43,7 +43,7 @@ TEST(Grid, TransformsRoundTripThroughTheMapTransform) {
 
 TEST(Grid, FieldAndPathUseTheSameIndexOrder) {
   cv::Mat map(3, 5, CV_8UC1, cv::Scalar(255));
-  aula::world::MapTransform t;
+  aula::geometry::MapTransform t;
   t.width_px = 5;
   t.height_px = 3;
   Grid grid(map, t);

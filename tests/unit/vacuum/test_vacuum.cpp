@@ -18,8 +18,8 @@ cv::Mat tinyMap() {
   return map;
 }
 
-aula::world::MapTransform tinyTransform() {
-  aula::world::MapTransform t;
+aula::geometry::MapTransform tinyTransform() {
+  aula::geometry::MapTransform t;
   t.resolution_m = 0.02;
   t.origin_x_m = 0;
   t.origin_y_m = 1;

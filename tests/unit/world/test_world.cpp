@@ -1,4 +1,5 @@
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
+#include <aula/world/obstacle_slice.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -13,6 +14,7 @@
 #include <iostream>
 
 using namespace aula::world;
+using aula::geometry::MapTransform;
 
 namespace {
 const std::string kWorlds = std::string(AULA_SOURCE_DIR) + "/worlds/";
@@ -210,56 +212,6 @@ TEST(PluginSpec, TypedParametersNameRobotPluginAndKey) {
   EXPECT_THROW(p.getPose("pose"), WorldError);
 }
 
-TEST(MapTransform, RoundTripAndFile) {
-  MapTransform t;
-  t.resolution_m = 1.25;
-  t.origin_x_m = -250;
-  t.origin_y_m = 250;
-  t.width_px = t.height_px = 400;
-  for (int col : {0, 1, 199, 200, 399}) {
-    for (int row : {0, 57, 399}) {
-      EXPECT_EQ(t.worldToCol(t.colToWorldX(col)), col);
-      EXPECT_EQ(t.worldToRow(t.rowToWorldY(row)), row);
-    }
-  }
-  EXPECT_EQ(t.worldToCol(0.0), 200);
-  EXPECT_EQ(t.worldToRow(249.9), 0);  // north is up
-  const std::string path = ::testing::TempDir() + "aula_map.yaml";
-  t.save(path, "map.png");
-  std::string image;
-  const MapTransform u = MapTransform::load(path, &image);
-  EXPECT_EQ(u.width_px, 400);
-  EXPECT_DOUBLE_EQ(u.resolution_m, 1.25);
-  EXPECT_DOUBLE_EQ(u.origin_x_m, -250);
-  EXPECT_EQ(image, ::testing::TempDir() + "map.png");
-  EXPECT_DOUBLE_EQ(u.origin_y_m, 250);
-  EXPECT_EQ(u.height_px, 400);
-}
-
-TEST(MapTransform, LoadErrorsNameFileAndLine) {
-  const std::string path = ::testing::TempDir() + "aula_bad_map.yaml";
-  {
-    std::ofstream out(path);
-    out << "# comment\nimage: x.png\nresolution: fast\norigin_x: 0\norigin_y: 0\nwidth: 4\nheight: 4\n";
-  }
-  try {
-    MapTransform::load(path);
-    FAIL();
-  } catch (const std::runtime_error& e) {
-    EXPECT_TRUE(contains(e.what(), path + ":3: 'resolution' is not a number")) << e.what();
-  }
-  {
-    std::ofstream out(path);
-    out << "image: x.png\nno colon here\n";
-  }
-  try {
-    MapTransform::load(path);
-    FAIL();
-  } catch (const std::runtime_error& e) {
-    EXPECT_TRUE(contains(e.what(), path + ":2: expected 'key: value'")) << e.what();
-  }
-}
-
 TEST(Occupancy, RotatedBoxIsRasterisedPixelExact) {
   const WorldSpec w = loadWorld(kData + "one_box.world");
   ASSERT_EQ(w.statics.size(), 1u);
@@ -372,4 +324,24 @@ TEST(Mapgen, WritesImageAndMetadataAndRejectsBadInput) {
   EXPECT_EQ(runMapgen(kData + "one_box.world --out " + dir + "x.png --resolution 0.1 --size 10"), 2);
   EXPECT_EQ(runMapgen(kData + "one_box.world --out " + dir + "x.jpg --resolution 0.1"), 2);
   EXPECT_EQ(runMapgen(kData + "missing_model.world --out " + dir + "x.png --resolution 0.1"), 2);
+}
+
+TEST(SliceAtHeight, KeepsOnlyWhatTheSensorPlaneCuts) {
+  WorldSpec w;
+  StaticObject low, high, cyl;
+  low.shape.box_size_m = Eigen::Vector3d(1, 2, 0.2);
+  low.pose.translation() = Eigen::Vector3d(1, 0, 0.1);  // z 0..0.2
+  high.shape.box_size_m = Eigen::Vector3d(1, 1, 0.4);
+  high.pose.translation() = Eigen::Vector3d(3, 0, 0.8);  // z 0.6..1.0: a table top
+  cyl.shape.kind = ShapeKind::Cylinder;
+  cyl.shape.radius_m = 0.3;
+  cyl.shape.length_m = 1.0;
+  cyl.pose = Eigen::Translation3d(0, 4, 0.5) * Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ());
+  w.statics = {low, high, cyl};
+  const aula::geometry::Obstacles2D at_laser = sliceAtHeight(w, 0.1);
+  ASSERT_EQ(at_laser.rects.size(), 1u);
+  EXPECT_EQ(at_laser.rects[0].length_m, 1.0);
+  EXPECT_EQ(at_laser.rects[0].width_m, 2.0);
+  ASSERT_EQ(at_laser.circles.size(), 1u);
+  EXPECT_EQ(sliceAtHeight(w, 0.7).rects.size(), 1u);
 }

@@ -1,17 +1,8 @@
 #include <aula/autopark/car_geometry.hpp>
 
-#include <aula/geometry/oriented_box.hpp>
-
 #include <cmath>
 
 namespace aula::autopark {
-
-double wrapAngle(double a_rad) {
-  const double two_pi = 2.0 * M_PI;
-  double r = std::fmod(a_rad + M_PI, two_pi);
-  if (r < 0) r += two_pi;
-  return r - M_PI;
-}
 
 Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car) {
   const double d = car.rear_axle_from_centre_m;
@@ -25,13 +16,8 @@ Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car) {
           rear_axle.y_m + d * std::sin(rear_axle.yaw_rad), rear_axle.yaw_rad};
 }
 
-std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
-                                                      double inflation_m) {
-  const auto box = geometry::orientedBoxCorners(centre.x_m, centre.y_m, centre.yaw_rad, car.length_m + 2 * inflation_m,
-                                                car.width_m + 2 * inflation_m);
-  std::array<std::array<double, 2>, 4> out{};
-  for (size_t i = 0; i < 4; ++i) out[i] = {box[i].x(), box[i].y()};
-  return out;
+geometry::OrientedBox footprint(const Pose2D& centre, const CarGeometry& car, double inflation_m) {
+  return geometry::OrientedBox{centre, car.length_m, car.width_m}.inflated(inflation_m);
 }
 
 }  // namespace aula::autopark

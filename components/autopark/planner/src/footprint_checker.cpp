@@ -7,13 +7,14 @@
 namespace aula::autopark {
 
 FootprintChecker::FootprintChecker(const OccupancyGrid& grid, const CarGeometry& car, double inflation_m)
-    : ox_(grid.originX_m()), oy_(grid.originY_m()), res_(grid.resolution_m()), width_(grid.width()),
+    : ox_(grid.minX_m()), oy_(grid.minY_m()), res_(grid.resolution_m()), width_(grid.width()),
       height_(grid.height()), car_(car), inflation_m_(inflation_m) {
   prefix_.assign(static_cast<size_t>(height_) * (width_ + 1), 0);
   const auto& cells = grid.cells();
   for (int r = 0; r < height_; ++r) {
     int* p = &prefix_[static_cast<size_t>(r) * (width_ + 1)];
-    const std::uint8_t* row = &cells[static_cast<size_t>(r) * width_];
+    // The sweep below climbs in y: band r is the grid's row height - 1 - r (north-up).
+    const std::uint8_t* row = &cells[static_cast<size_t>(height_ - 1 - r) * width_];
     for (int c = 0; c < width_; ++c) p[c + 1] = p[c] + (row[c] ? 1 : 0);
   }
 }
@@ -21,11 +22,11 @@ FootprintChecker::FootprintChecker(const OccupancyGrid& grid, const CarGeometry&
 bool FootprintChecker::freeCentre(const Pose2D& centre) const { return freeCentre(centre, inflation_m_); }
 
 bool FootprintChecker::freeCentre(const Pose2D& centre, double inflation_m) const {
-  const auto corners = footprintCorners(centre, car_, inflation_m);
+  const auto corners = footprint(centre, car_, inflation_m).corners();
   double ymin = std::numeric_limits<double>::infinity(), ymax = -ymin;
   for (const auto& p : corners) {
-    ymin = std::min(ymin, p[1]);
-    ymax = std::max(ymax, p[1]);
+    ymin = std::min(ymin, p.y());
+    ymax = std::max(ymax, p.y());
   }
   const int r0 = static_cast<int>(std::floor((ymin - oy_) / res_));
   const int r1 = static_cast<int>(std::floor((ymax - oy_) / res_));
@@ -40,11 +41,11 @@ bool FootprintChecker::freeCentre(const Pose2D& centre, double inflation_m) cons
   for (int i = 0; i < 4; ++i) {
     const auto& a = corners[i];
     const auto& b = corners[(i + 1) % 4];
-    const double dy = b[1] - a[1];
+    const double dy = b.y() - a.y();
     if (std::abs(dy) < 1e-12) continue;
     const auto& lo = dy > 0 ? a : b;
     const auto& hi = dy > 0 ? b : a;
-    edges[ne++] = {lo[1], hi[1], lo[0], (hi[0] - lo[0]) / (hi[1] - lo[1])};
+    edges[ne++] = {lo.y(), hi.y(), lo.x(), (hi.x() - lo.x()) / (hi.y() - lo.y())};
   }
   // x-range of the box's chord at height y (y within [ymin, ymax]).
   auto chord = [&](double y, double& lo, double& hi) {
@@ -59,9 +60,9 @@ bool FootprintChecker::freeCentre(const Pose2D& centre, double inflation_m) cons
   double prev_lo = std::numeric_limits<double>::infinity(), prev_hi = -prev_lo;
   chord(ymin, prev_lo, prev_hi);
   for (const auto& p : corners) {  // at ymin the chord may be a horizontal edge or a vertex
-    if (p[1] <= ymin) {
-      prev_lo = std::min(prev_lo, p[0]);
-      prev_hi = std::max(prev_hi, p[0]);
+    if (p.y() <= ymin) {
+      prev_lo = std::min(prev_lo, p.x());
+      prev_hi = std::max(prev_hi, p.x());
     }
   }
   for (int r = r0; r <= r1; ++r) {
@@ -72,18 +73,18 @@ bool FootprintChecker::freeCentre(const Pose2D& centre, double inflation_m) cons
     chord(b1, lo, hi);
     if (b1 >= ymax) {
       for (const auto& p : corners) {
-        if (p[1] >= ymax) {
-          lo = std::min(lo, p[0]);
-          hi = std::max(hi, p[0]);
+        if (p.y() >= ymax) {
+          lo = std::min(lo, p.x());
+          hi = std::max(hi, p.x());
         }
       }
     }
     double xmin = std::min(lo, prev_lo), xmax = std::max(hi, prev_hi);
     const double b0 = oy_ + r * res_;
     for (const auto& p : corners) {
-      if (p[1] > b0 && p[1] < b1) {
-        xmin = std::min(xmin, p[0]);
-        xmax = std::max(xmax, p[0]);
+      if (p.y() > b0 && p.y() < b1) {
+        xmin = std::min(xmin, p.x());
+        xmax = std::max(xmax, p.x());
       }
     }
     prev_lo = lo;

@@ -1,5 +1,6 @@
 #include <aula/autopark/footprint_checker.hpp>
 #include <aula/autopark/parking_planner.hpp>
+#include <aula/geometry/angles.hpp>
 
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
@@ -39,7 +40,7 @@ Pose2D integrate(const Pose2D& p, double kappa, double ds) {
   }
   const double yaw1 = p.yaw_rad + kappa * ds;
   return {p.x_m + (std::sin(yaw1) - std::sin(p.yaw_rad)) / kappa,
-          p.y_m + (std::cos(p.yaw_rad) - std::cos(yaw1)) / kappa, wrapAngle(yaw1)};
+          p.y_m + (std::cos(p.yaw_rad) - std::cos(yaw1)) / kappa, geometry::wrapAngle(yaw1)};
 }
 
 int sign(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
@@ -62,14 +63,14 @@ class SeededSE2Sampler : public ob::StateSampler {
     const auto* n = near->as<ob::SE2StateSpace::StateType>();
     s->setXY(std::clamp(n->getX() + rng_.uniformReal(-distance, distance), bounds_.low[0], bounds_.high[0]),
              std::clamp(n->getY() + rng_.uniformReal(-distance, distance), bounds_.low[1], bounds_.high[1]));
-    s->setYaw(wrapAngle(n->getYaw() + rng_.uniformReal(-distance, distance)));
+    s->setYaw(geometry::wrapAngle(n->getYaw() + rng_.uniformReal(-distance, distance)));
   }
   void sampleGaussian(ob::State* state, const ob::State* mean, double stdDev) override {
     auto* s = state->as<ob::SE2StateSpace::StateType>();
     const auto* m = mean->as<ob::SE2StateSpace::StateType>();
     s->setXY(std::clamp(rng_.gaussian(m->getX(), stdDev), bounds_.low[0], bounds_.high[0]),
              std::clamp(rng_.gaussian(m->getY(), stdDev), bounds_.low[1], bounds_.high[1]));
-    s->setYaw(wrapAngle(rng_.gaussian(m->getYaw(), stdDev)));
+    s->setYaw(geometry::wrapAngle(rng_.gaussian(m->getYaw(), stdDev)));
   }
 
  private:
@@ -177,7 +178,7 @@ class EscapeSearch {
     const double xy_res = cell_m_, yaw_res = cell_yaw_rad_;
     const auto ix = static_cast<long long>(std::floor((p.x_m - goal_rear_.x_m) / xy_res));
     const auto iy = static_cast<long long>(std::floor((p.y_m - goal_rear_.y_m) / xy_res));
-    const auto it = static_cast<long long>(std::floor(wrapAngle(p.yaw_rad) / yaw_res));
+    const auto it = static_cast<long long>(std::floor(geometry::wrapAngle(p.yaw_rad) / yaw_res));
     return ((ix + 100000) * 200003LL + (iy + 100000)) * 4099LL + (it + 2048);
   }
 
@@ -259,7 +260,7 @@ Pose2D toPose(const ob::State* st) {
 void setState(ob::State* st, const Pose2D& p) {
   auto* s = st->as<ob::SE2StateSpace::StateType>();
   s->setXY(p.x_m, p.y_m);
-  s->setYaw(wrapAngle(p.yaw_rad));
+  s->setYaw(geometry::wrapAngle(p.yaw_rad));
 }
 
 // OMPL: Reeds-Shepp RRTConnect from start to goal (rear-axle poses), then a deterministic greedy
@@ -270,10 +271,10 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
   const double radius = car.min_turn_radius_m;
   auto space = std::make_shared<ob::ReedsSheppStateSpace>(radius);
   ob::RealVectorBounds bounds(2);
-  bounds.setLow(0, grid.originX_m());
-  bounds.setHigh(0, grid.originX_m() + grid.width() * grid.resolution_m());
-  bounds.setLow(1, grid.originY_m());
-  bounds.setHigh(1, grid.originY_m() + grid.height() * grid.resolution_m());
+  bounds.setLow(0, grid.minX_m());
+  bounds.setHigh(0, grid.maxX_m());
+  bounds.setLow(1, grid.minY_m());
+  bounds.setHigh(1, grid.maxY_m());
   space->setBounds(bounds);
   const unsigned seed = opt.seed;
   space->setStateSamplerAllocator(
@@ -431,7 +432,7 @@ std::string denseProblem(const PlannedPath& out, const FootprintChecker& checker
   }
   const Pose2D end = centreToRearAxle(out.poses.back(), car);
   if (std::hypot(end.x_m - goal.x_m, end.y_m - goal.y_m) > 1e-3 ||
-      std::abs(wrapAngle(end.yaw_rad - goal.yaw_rad)) > 1e-3) {
+      std::abs(geometry::wrapAngle(end.yaw_rad - goal.yaw_rad)) > 1e-3) {
     return "internal: path does not end at the goal";
   }
   return "";

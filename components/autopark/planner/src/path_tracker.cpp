@@ -1,4 +1,5 @@
 #include <aula/autopark/path_tracker.hpp>
+#include <aula/geometry/angles.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,7 @@ PathTracker::Command PathTracker::update(const Pose2D& current_centre) {
   const double vmag = std::clamp(std::sqrt(2.0 * opt_.decel_mps2 * remaining), opt_.min_speed_mps, vmax);
   const double v = seg.dir * vmag;
   const double e = -s * dx + c * dy;  // lateral error, + to the left of the path
-  const double eth = wrapAngle(p.yaw_rad - r.yaw_rad);
+  const double eth = geometry::wrapAngle(p.yaw_rad - r.yaw_rad);
   const double kref = kappa_[std::min(index_ + 1, seg.end)];
   const double sinc = std::abs(eth) < 1e-6 ? 1.0 : std::sin(eth) / eth;
   const double denom = std::max(0.2, 1.0 - kref * e);

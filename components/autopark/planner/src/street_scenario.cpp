@@ -1,49 +1,15 @@
 #include <aula/autopark/street_scenario.hpp>
 
-#include <array>
+#include <algorithm>
 #include <cmath>
 
 namespace aula::autopark {
-
-namespace {
-using Poly = std::array<std::array<double, 2>, 4>;
-
-Poly corners(const Pose2D& c, double length_m, double width_m) {
-  CarGeometry g;
-  g.length_m = length_m;
-  g.width_m = width_m;
-  return footprintCorners(c, g, 0.0);
-}
-
-bool separated(const Poly& a, const Poly& b) {
-  for (const Poly* p : {&a, &b}) {
-    for (int i = 0; i < 4; ++i) {
-      const auto& u = (*p)[i];
-      const auto& v = (*p)[(i + 1) % 4];
-      const double nx = -(v[1] - u[1]), ny = v[0] - u[0];
-      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
-      for (const auto& q : a) {
-        const double d = nx * q[0] + ny * q[1];
-        amin = std::min(amin, d);
-        amax = std::max(amax, d);
-      }
-      for (const auto& q : b) {
-        const double d = nx * q[0] + ny * q[1];
-        bmin = std::min(bmin, d);
-        bmax = std::max(bmax, d);
-      }
-      if (amax < bmin || bmax < amin) return true;
-    }
-  }
-  return false;
-}
-}  // namespace
 
 OccupancyGrid StreetScenario::makeGrid(double resolution_m) const {
   const int w = static_cast<int>(std::lround((grid_max_x_m - grid_min_x_m) / resolution_m));
   const int h = static_cast<int>(std::lround((grid_max_y_m - grid_min_y_m) / resolution_m));
   OccupancyGrid grid(grid_min_x_m, grid_min_y_m, resolution_m, w, h);
-  for (const Box& b : obstacles) grid.markBox(b.centre, b.length_m, b.width_m);
+  for (const auto& b : obstacles) grid.markBox(b);
   return grid;
 }
 
@@ -69,13 +35,10 @@ StreetScenario makeParallelParkingStreet(double gap_m, double start_x_offset_m, 
   return s;
 }
 
-bool footprintHitsBoxes(const Pose2D& centre, const CarGeometry& car, const std::vector<Box>& boxes,
+bool footprintHitsBoxes(const Pose2D& centre, const CarGeometry& car, const std::vector<geometry::OrientedBox>& boxes,
                         double inflation_m) {
-  const Poly me = footprintCorners(centre, car, inflation_m);
-  for (const Box& b : boxes) {
-    if (!separated(me, corners(b.centre, b.length_m, b.width_m))) return true;
-  }
-  return false;
+  const geometry::OrientedBox me = footprint(centre, car, inflation_m);
+  return std::any_of(boxes.begin(), boxes.end(), [&](const geometry::OrientedBox& b) { return geometry::overlap(me, b); });
 }
 
 }  // namespace aula::autopark

@@ -3,7 +3,7 @@
 // with consistent indexing. A cell is addressed (x, y) = (column, row) of the map image in
 // every call; gridToWorld/worldToGrid go through the one MapTransform of the map's metadata.
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -15,7 +15,7 @@ namespace aula::teletaxi {
 class Grid {
  public:
   // map: CV_8UC1, 0 = obstacle, 255 = free (the generated occupancy PNG).
-  Grid(cv::Mat map, world::MapTransform transform);
+  Grid(cv::Mat map, geometry::MapTransform transform);
 
   int getWidth() const { return map_.cols; }
   int getHeight() const { return map_.rows; }
@@ -54,13 +54,13 @@ class Grid {
   // Cell centre in world metres, and the cell containing a world point.
   std::pair<double, double> gridToWorld(int x, int y) const;
   std::pair<int, int> worldToGrid(double x_m, double y_m) const;
-  const world::MapTransform& transform() const { return transform_; }
+  const geometry::MapTransform& transform() const { return transform_; }
 
  private:
   bool inside(int x, int y) const { return x >= 0 && y >= 0 && x < map_.cols && y < map_.rows; }
 
   cv::Mat map_;
-  world::MapTransform transform_;
+  geometry::MapTransform transform_;
   cv::Mat field_;
   cv::Mat path_;
   std::pair<int, int> destiny_{-1, -1};

@@ -3,20 +3,13 @@
 // DART's Bullet raycast costs ~2.5 ms per 180-beam scan and is up to 1.3 cm off; this caster is
 // analytic (exact ray/rectangle and ray/circle intersections) over a uniform-grid spatial index.
 
+#include <aula/geometry/oriented_box.hpp>
+
 #include <Eigen/Core>
 
 #include <vector>
 
-namespace aula::world { struct WorldSpec; }
-
 namespace aula::geometry {
-
-// Oriented rectangle in the plane.
-struct Rect2 {
-  Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
-  double yaw_rad = 0.0;
-  Eigen::Vector2d half_extents_m = Eigen::Vector2d::Zero();
-};
 
 struct Circle2 {
   Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
@@ -25,13 +18,9 @@ struct Circle2 {
 
 // Obstacles cut by a horizontal plane.
 struct Obstacles2D {
-  std::vector<Rect2> rects;
+  std::vector<OrientedBox> rects;
   std::vector<Circle2> circles;
 };
-
-// The static primitives of a world whose vertical extent contains height z_m (upright boxes
-// and cylinders; a tilted primitive is approximated by its footprint).
-Obstacles2D sliceAtHeight(const world::WorldSpec& world, double z_m);
 
 struct ScanRequest {
   Eigen::Vector2d origin_m = Eigen::Vector2d::Zero();  // sensor position, world frame

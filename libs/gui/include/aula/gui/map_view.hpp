@@ -2,7 +2,7 @@
 // A generated occupancy map with overlays drawn in WORLD coordinates through the one
 // MapTransform: robot glyphs, paths, markers and a painted layer (e.g. the cleaned area).
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <QColor>
 #include <QImage>
@@ -18,7 +18,7 @@ namespace aula::gui {
 class MapView : public QWidget {
   Q_OBJECT
  public:
-  MapView(QImage map, world::MapTransform transform, QWidget* parent = nullptr);
+  MapView(QImage map, geometry::MapTransform transform, QWidget* parent = nullptr);
 
   // Robot glyph: a triangle of the given footprint pointing along yaw (CCW from +x).
   void setRobot(double x_m, double y_m, double yaw_rad, double length_m, double width_m);
@@ -32,7 +32,7 @@ class MapView : public QWidget {
   QPointF worldToWidget(double x_m, double y_m) const;
   QPointF widgetToWorld(const QPointF& p) const;
   double pixelsPerMetre() const;
-  const world::MapTransform& transform() const { return transform_; }
+  const geometry::MapTransform& transform() const { return transform_; }
   QSize sizeHint() const override { return map_.size().expandedTo(QSize(400, 400)); }
 
  signals:
@@ -47,7 +47,7 @@ class MapView : public QWidget {
 
   QImage map_;
   QImage painted_;
-  world::MapTransform transform_;
+  geometry::MapTransform transform_;
   bool have_robot_ = false;
   double robot_x_ = 0, robot_y_ = 0, robot_yaw_ = 0, robot_length_ = 1, robot_width_ = 1;
   std::vector<QPointF> path_;

@@ -4,7 +4,7 @@
 // The floor is the free pixels reachable from the robot's start (4-connected), so pockets
 // sealed inside furniture or outside the walls never count.
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -15,7 +15,7 @@ namespace aula::vacuum {
 class CoverageGrid {
  public:
   // map: CV_8UC1, 0 = obstacle. start: a world point on the floor (the robot's start).
-  CoverageGrid(const cv::Mat& map, const world::MapTransform& transform, double start_x_m, double start_y_m);
+  CoverageGrid(const cv::Mat& map, const geometry::MapTransform& transform, double start_x_m, double start_y_m);
 
   // Marks every floor pixel whose centre lies within radius_m of (x_m, y_m).
   void markDisc(double x_m, double y_m, double radius_m);
@@ -29,10 +29,10 @@ class CoverageGrid {
   }
   const cv::Mat& cleaned() const { return cleaned_; }  // CV_8UC1: 255 cleaned floor
   const cv::Mat& floor() const { return floor_; }      // CV_8UC1: 255 floor
-  const world::MapTransform& transform() const { return transform_; }
+  const geometry::MapTransform& transform() const { return transform_; }
 
  private:
-  world::MapTransform transform_;
+  geometry::MapTransform transform_;
   cv::Mat floor_;    // 255 = floor
   cv::Mat cleaned_;  // 255 = cleaned
   int64_t floor_pixels_ = 0;

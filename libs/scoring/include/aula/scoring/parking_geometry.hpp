@@ -4,31 +4,17 @@
 // about its own centre. Distances are minimum distances between footprints (the original used
 // corners rotated about the world origin and maximum distances).
 
+#include <aula/geometry/oriented_box.hpp>
 #include <aula/world/world_spec.hpp>
 
-#include <array>
 #include <string>
 
 namespace aula::autopark {
 
-struct Point2 {
-  double x_m = 0, y_m = 0;
-};
-
-// A rectangle in the plane: centre, heading of its length axis, full length and width.
-struct Rect2D {
-  double cx_m = 0, cy_m = 0, yaw_rad = 0, length_m = 0, width_m = 0;
-  std::array<Point2, 4> corners() const;  // counter-clockwise
-};
-
-// Minimum distance between two rectangles; 0 when they touch or overlap.
-double rectDistance(const Rect2D& a, const Rect2D& b);
-bool rectsOverlap(const Rect2D& a, const Rect2D& b);
-
 // The slot as the world builds it.
 struct ParkingScene {
-  Rect2D rear_car;   // the parked car before the slot (smaller x: the car drives along +x)
-  Rect2D front_car;  // the parked car after it
+  geometry::OrientedBox rear_car;   // the parked car before the slot (smaller x: the car drives along +x)
+  geometry::OrientedBox front_car;  // the parked car after it
   double curb_y_m = 0;  // the parking-side curb face (the curb is at y < curb_y_m)
   double ideal_x_m = 0, ideal_y_m = 0, ideal_yaw_rad = 0;
   double car_length_m = 4, car_width_m = 2;

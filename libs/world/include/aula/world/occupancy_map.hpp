@@ -4,7 +4,7 @@
 // inside a primitive's footprint (boxes rotated by their yaw, cylinders as discs); only the
 // primitives whose vertical extent overlaps [z_min_m, z_max_m] count. Robots are not drawn.
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <opencv2/core.hpp>
@@ -14,7 +14,7 @@
 
 namespace aula::world {
 
-cv::Mat rasterizeOccupancy(const WorldSpec& world, const MapTransform& transform, double z_min_m,
+cv::Mat rasterizeOccupancy(const WorldSpec& world, const geometry::MapTransform& transform, double z_min_m,
                            double z_max_m);
 
 // Axis-aligned bounds (x_min, y_min, x_max, y_max) of the static geometry's footprints.
@@ -22,7 +22,7 @@ Eigen::Vector4d staticBounds(const WorldSpec& world);
 
 // A grid of `resolution_m` over the static geometry's bounds exactly (WorldError if the world
 // has no static geometry).
-MapTransform fitTransform(const WorldSpec& world, double resolution_m);
+geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m);
 
 // What an exercise draws from a world: the resolution and the heights that count.
 struct MapParams {
@@ -33,7 +33,7 @@ struct MapParams {
 
 struct OccupancyMap {
   cv::Mat image;            // CV_8UC1, 0 obstacle, 255 free
-  MapTransform transform;
+  geometry::MapTransform transform;
 };
 
 // The occupancy map of `world` over its bounds (fitTransform), from the per-user cache

@@ -6,7 +6,7 @@
 
 #include <aula/autopark/parking_referee.hpp>
 #include <aula/referee/run_picture.hpp>
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -33,9 +33,9 @@ struct ParkingRunSummary {
 
 // The window of the street the picture shows: the slot's two cars, the curb, the car and its
 // trail, with a margin; width_px pixels across.
-world::MapTransform parkingView(const ParkingRunSummary& run, int width_px = 800);
+geometry::MapTransform parkingView(const ParkingRunSummary& run, int width_px = 800);
 
 // `street`: the world's static geometry rasterised on `view` (CV_8UC1, 0 = obstacle).
-cv::Mat parkingPicture(const cv::Mat& street, const world::MapTransform& view, const ParkingRunSummary& run);
+cv::Mat parkingPicture(const cv::Mat& street, const geometry::MapTransform& view, const ParkingRunSummary& run);
 
 }  // namespace aula::autopark

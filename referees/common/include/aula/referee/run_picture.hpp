@@ -4,7 +4,8 @@
 // coordinates, and a caption bar with the mark. Drawn with OpenCV only (headless, no Qt), from
 // the run's data only (no clock, no random), so the same run gives a byte-identical PNG.
 
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
+#include <aula/geometry/oriented_box.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -40,11 +41,11 @@ class RunPicture {
  public:
   // `map`: CV_8UC3 (BGR) or CV_8UC1 (grey) on the grid `transform`. It is scaled by nearest
   // neighbour (map pixels stay sharp squares) to fit max_side_px x max_side_px.
-  RunPicture(const cv::Mat& map, const world::MapTransform& transform, int max_side_px = 800);
+  RunPicture(const cv::Mat& map, const geometry::MapTransform& transform, int max_side_px = 800);
   // An occupancy image (CV_8UC1, 0 obstacle) in two colours.
   static cv::Mat occupancyInColour(const cv::Mat& occupancy, const cv::Scalar& obstacle, const cv::Scalar& free);
 
-  const world::MapTransform& transform() const { return transform_; }  // of the canvas' pixels
+  const geometry::MapTransform& transform() const { return transform_; }  // of the canvas' pixels
   const cv::Mat& canvas() const { return canvas_; }
   cv::Point pixel(double x_m, double y_m) const;
   int pixels(double length_m) const;  // a length on the canvas, at least 1 px
@@ -53,9 +54,8 @@ class RunPicture {
   void polyline(const std::vector<PicturePoint>& points, const cv::Scalar& colour, int thickness_px);
   void polygon(const std::vector<PicturePoint>& corners, const cv::Scalar& colour, int thickness_px);
   void translucentPolygon(const std::vector<PicturePoint>& corners, const cv::Scalar& colour, double opacity);
-  void box(double cx_m, double cy_m, double yaw_rad, double length_m, double width_m, const cv::Scalar& colour,
-           int thickness_px);
-  static std::vector<PicturePoint> boxCorners(double cx_m, double cy_m, double yaw_rad, double length_m, double width_m);
+  void box(const geometry::OrientedBox& box, const cv::Scalar& colour, int thickness_px);
+  static std::vector<PicturePoint> corners(const geometry::OrientedBox& box);
   void disc(double x_m, double y_m, double radius_m, const cv::Scalar& colour, int thickness_px);
   // A heading tick from the centre of a footprint to its edge.
   void heading(double x_m, double y_m, double yaw_rad, double length_m, const cv::Scalar& colour, int thickness_px);
@@ -75,7 +75,7 @@ class RunPicture {
   cv::Mat compose(const std::string& title, const std::vector<std::string>& lines) const;
 
  private:
-  world::MapTransform transform_;
+  geometry::MapTransform transform_;
   cv::Mat canvas_;  // CV_8UC3
   std::vector<std::pair<cv::Scalar, std::string>> legend_;
 };

@@ -5,7 +5,7 @@
 
 #include <aula/referee/run_picture.hpp>
 #include <aula/teletaxi/taxi_grade.hpp>
-#include <aula/world/map_transform.hpp>
+#include <aula/geometry/map_transform.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -30,6 +30,6 @@ struct TaxiRunSummary {
 };
 
 // `occupancy`: the city (CV_8UC1, 0 = building) on the grid `transform`.
-cv::Mat taxiPicture(const cv::Mat& occupancy, const world::MapTransform& transform, const TaxiRunSummary& run);
+cv::Mat taxiPicture(const cv::Mat& occupancy, const geometry::MapTransform& transform, const TaxiRunSummary& run);
 
 }  // namespace aula::teletaxi

@@ -1,15 +1,12 @@
 #pragma once
 // Car geometry and the centre <-> rear-axle pose conversions used by the parking planner.
 
-#include <array>
+#include <aula/geometry/oriented_box.hpp>
+#include <aula/geometry/pose2d.hpp>
 
 namespace aula::autopark {
 
-struct Pose2D {
-  double x_m = 0.0;
-  double y_m = 0.0;
-  double yaw_rad = 0.0;
-};
+using geometry::Pose2D;
 
 // The car body is a length_m x width_m box around its centre pose. The planner's Reeds-Shepp
 // reference point is the rear axle, rear_axle_from_centre_m behind the centre along the heading
@@ -21,15 +18,10 @@ struct CarGeometry {
   double min_turn_radius_m = 5.0;  // of the rear axle
 };
 
-// Wraps an angle to [-pi, pi).
-double wrapAngle(double a_rad);
-
 Pose2D centreToRearAxle(const Pose2D& centre, const CarGeometry& car);
 Pose2D rearAxleToCentre(const Pose2D& rear_axle, const CarGeometry& car);
 
-// Corners (x, y) of the body box inflated by inflation_m on every side, counter-clockwise,
-// starting at the rear-right corner.
-std::array<std::array<double, 2>, 4> footprintCorners(const Pose2D& centre, const CarGeometry& car,
-                                                      double inflation_m);
+// The body box inflated by inflation_m on every side.
+geometry::OrientedBox footprint(const Pose2D& centre, const CarGeometry& car, double inflation_m);
 
 }  // namespace aula::autopark

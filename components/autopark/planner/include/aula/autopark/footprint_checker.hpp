@@ -26,7 +26,7 @@ class FootprintChecker {
  private:
   double ox_, oy_, res_;
   int width_, height_;
-  std::vector<int> prefix_;  // height x (width + 1): occupied cells in row r with col < c
+  std::vector<int> prefix_;  // height x (width + 1): occupied cells in band r (from min y) with col < c
   CarGeometry car_;
   double inflation_m_;
 };

@@ -1,9 +1,10 @@
 #pragma once
-// A 2D occupancy grid in world coordinates: cell (col, row) covers
-// [origin_x + col*res, origin_x + (col+1)*res) x [origin_y + row*res, origin_y + (row+1)*res).
-// The planner treats everything outside the grid as occupied.
+// A 2D occupancy grid in world coordinates on the one geometry::MapTransform (north-up: row 0 is
+// the grid's top edge). The planner treats everything outside the grid as occupied.
 
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/geometry/map_transform.hpp>
+#include <aula/geometry/oriented_box.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -13,16 +14,20 @@ namespace aula::autopark {
 class OccupancyGrid {
  public:
   OccupancyGrid() = default;
-  // width x height cells of resolution_m; (origin_x_m, origin_y_m) is the outer corner of cell (0, 0).
-  OccupancyGrid(double origin_x_m, double origin_y_m, double resolution_m, int width, int height);
+  // width x height cells of resolution_m over [min_x_m, min_x_m + width * resolution_m) x
+  // [min_y_m, min_y_m + height * resolution_m).
+  OccupancyGrid(double min_x_m, double min_y_m, double resolution_m, int width, int height);
 
-  double originX_m() const { return origin_x_m_; }
-  double originY_m() const { return origin_y_m_; }
-  double resolution_m() const { return resolution_m_; }
-  int width() const { return width_; }
-  int height() const { return height_; }
+  const geometry::MapTransform& transform() const { return transform_; }
+  double minX_m() const { return transform_.origin_x_m; }
+  double minY_m() const { return transform_.origin_y_m - transform_.height_px * transform_.resolution_m; }
+  double maxX_m() const { return transform_.origin_x_m + transform_.width_px * transform_.resolution_m; }
+  double maxY_m() const { return transform_.origin_y_m; }
+  double resolution_m() const { return transform_.resolution_m; }
+  int width() const { return transform_.width_px; }
+  int height() const { return transform_.height_px; }
 
-  bool inBounds(int col, int row) const { return col >= 0 && row >= 0 && col < width_ && row < height_; }
+  bool inBounds(int col, int row) const { return transform_.contains(col, row); }
   // Cell containing a world point; false if outside the grid.
   bool worldToCell(double x_m, double y_m, int& col, int& row) const;
   // World coordinates of a cell centre.
@@ -31,9 +36,8 @@ class OccupancyGrid {
   // Marks the cell containing (x, y); points outside the grid are ignored (e.g. laser hits).
   void markOccupied(double x_m, double y_m);
   void markCell(int col, int row);
-  // Marks every cell whose centre lies in the length_m x width_m box centred at `centre`
-  // (ground-truth obstacles: parked cars, curbs).
-  void markBox(const Pose2D& centre, double length_m, double width_m);
+  // Marks every cell whose centre lies in the box (ground-truth obstacles: parked cars, curbs).
+  void markBox(const geometry::OrientedBox& box);
   void clear();
 
   // Outside the grid counts as occupied.
@@ -43,11 +47,7 @@ class OccupancyGrid {
   const std::vector<std::uint8_t>& cells() const { return cells_; }  // row-major, 1 = occupied
 
  private:
-  double origin_x_m_ = 0.0;
-  double origin_y_m_ = 0.0;
-  double resolution_m_ = 0.1;
-  int width_ = 0;
-  int height_ = 0;
+  geometry::MapTransform transform_{0.1, 0.0, 0.0, 0, 0};
   std::vector<std::uint8_t> cells_;
 };
 

@@ -10,14 +10,8 @@
 
 namespace aula::autopark {
 
-struct Box {
-  Pose2D centre;
-  double length_m;
-  double width_m;
-};
-
 struct StreetScenario {
-  std::vector<Box> obstacles;  // curbs and parked cars
+  std::vector<geometry::OrientedBox> obstacles;  // curbs and parked cars
   Pose2D goal_centre;          // slot centre, y = -3, yaw 0
   Pose2D start_centre;         // in the lane, before the slot
   double slot_rear_x_m = 0.0;  // front bumper of the car behind the slot
@@ -33,8 +27,8 @@ struct StreetScenario {
 StreetScenario makeParallelParkingStreet(double gap_m, double start_x_offset_m = -7.0, double start_y_m = 1.5);
 
 // True if the car box at `centre` (inflated by inflation_m) intersects any obstacle box
-// (separating-axis test; independent of the grid).
-bool footprintHitsBoxes(const Pose2D& centre, const CarGeometry& car, const std::vector<Box>& boxes,
+// (independent of the grid).
+bool footprintHitsBoxes(const Pose2D& centre, const CarGeometry& car, const std::vector<geometry::OrientedBox>& boxes,
                         double inflation_m = 0.0);
 
 }  // namespace aula::autopark

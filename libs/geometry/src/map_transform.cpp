@@ -1,4 +1,4 @@
-#include "aula/world/map_transform.hpp"
+#include "aula/geometry/map_transform.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace aula::world {
+namespace aula::geometry {
 
 MapTransform MapTransform::load(const std::string& yaml_path, std::string* image_path) {
   std::ifstream in(yaml_path);
@@ -89,4 +89,4 @@ void MapTransform::save(const std::string& yaml_path, const std::string& image_f
       << "height: " << height_px << "\n";
 }
 
-}  // namespace aula::world
+}  // namespace aula::geometry
