@@ -9,6 +9,7 @@
 //   PARKED   stop.
 // The car model comes from the world through the API: its turning radius and the point it turns
 // about (rear axle for a car-like car, centre for one that turns in place).
+#include <aula/geometry/angles.hpp>
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/occupancy_grid.hpp>
 #include <aula/autopark/parking_planner.hpp>
@@ -92,7 +93,7 @@ class PlannedParker : public AutoparkAlgorithm {
     }
     if (mode_ != logged_mode_) {
       std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), pose.x_m, pose.y_m,
-                   pose.yaw_rad * 180 / M_PI);
+                   geometry::headingDeg(pose.yaw_rad));
       logged_mode_ = mode_;
     }
     api.motors.sendV(v);

@@ -102,7 +102,7 @@ class ReactiveParker : public AutoparkAlgorithm {
     }
     if (mode_ != logged_mode_) {
       // One line per phase, so a student can follow the manoeuvre in the terminal.
-      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), x, y, yaw * 180 / M_PI);
+      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), x, y, geometry::headingDeg(yaw));
       logged_mode_ = mode_;
     }
     api.motors.sendV(v);

@@ -1,5 +1,6 @@
 #include "autopark_window.hpp"
 
+#include <aula/geometry/angles.hpp>
 #include <aula/gui/screenshot.hpp>
 #include <aula/gui/teleoperator.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -135,7 +136,7 @@ void AutoparkWindow::refresh() {
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(pose.getX(), 0, 'f', 2)
                        .arg(pose.getY(), 0, 'f', 2)
-                       .arg(pose.getYaw() * 180 / M_PI, 0, 'f', 1)
+                       .arg(geometry::headingDeg(pose.getYaw()), 0, 'f', 1)
                        .arg(component_.api().motors.getV(), 0, 'f', 2)
                        .arg(component_.api().motors.getW(), 0, 'f', 2)
                        .arg(component_.api().min_turn_radius_m > 0

@@ -1,5 +1,6 @@
 #include "taxi_window.hpp"
 
+#include <aula/geometry/angles.hpp>
 #include <aula/gui/screenshot.hpp>
 
 #include <QApplication>
@@ -136,7 +137,7 @@ void TaxiWindow::refresh() {
   position_label_->setText(pose.received() ? QString("Position: (%1, %2) m, %3 deg")
                                                  .arg(pose.getX(), 0, 'f', 1)
                                                  .arg(pose.getY(), 0, 'f', 1)
-                                                 .arg(pose.getYaw() * 180 / M_PI, 0, 'f', 0)
+                                                 .arg(geometry::headingDeg(pose.getYaw()), 0, 'f', 0)
                                            : QString("Position: waiting for the simulator"));
   velocity_label_->setText(QString("v = %1 m/s   w = %2 rad/s\nsim time %3 s")
                                .arg(component_.motors().getV(), 0, 'f', 2)

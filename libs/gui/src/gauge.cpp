@@ -13,6 +13,7 @@ Gauge::Gauge(QString title, QString unit, double min, double max, double sweep_d
 }
 
 double Gauge::angleOf(double value) const {
+  if (world_heading_) return value;  // the map's +x is the dial's 3 o'clock, +y its 12
   const double f = (std::clamp(value, min_, max_) - min_) / (max_ - min_);
   // A full circle starts at the top (north, 0) and turns clockwise like a compass;
   // a partial dial is centred on the top.

@@ -1,5 +1,6 @@
 #include "parking_referee_node.hpp"
 
+#include <aula/geometry/angles.hpp>
 #include <aula/autopark/parking_picture.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -60,7 +61,7 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&,
     // Say where, so a student can see which part of the manoeuvre touched something.
     std::fprintf(stderr, "autopark-referee [%.2f s]: collision %lld, car at x %.2f y %.2f yaw %.1f deg\n",
                  referee_->elapsedS(), referee_->collisions(), referee_->x(), referee_->y(),
-                 referee_->yawRad() * 180 / M_PI);
+                 geometry::headingDeg(referee_->yawRad()));
   }
 }
 

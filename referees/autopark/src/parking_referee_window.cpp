@@ -21,7 +21,8 @@ ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(nod
   mark_ = new QLabel("Mark: -", this);
   mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
   mark_->setWordWrap(true);
-  orientation_ = new gui::Gauge("Orientation", "deg", -90, 90, 180, this);
+  // Not the heading: the angle between the car's axis and the curb (a car parked backwards is aligned).
+  orientation_ = new gui::Gauge("Angle to curb", "deg", -90, 90, 180, this);
   const QColor green(90, 190, 90), orange(240, 160, 40), red(220, 60, 60);
   orientation_->setBands({{-90, -45, red}, {-45, -15, orange}, {-15, 15, green}, {15, 45, orange}, {45, 90, red}});
   orientation_->setMinimumSize(200, 200);

@@ -1,5 +1,6 @@
 #include "taxi_referee_window.hpp"
 
+#include <aula/geometry/angles.hpp>
 #include <aula/gui/screenshot.hpp>
 
 #include <QApplication>
@@ -21,7 +22,8 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
   mark_->setWordWrap(true);
   speed_ = new gui::Gauge("Speed", "km/h", 0, 80, 270, this);
   speed_->setBands({{0, 50, QColor(90, 190, 90)}, {50, 65, QColor(240, 160, 40)}, {65, 80, QColor(220, 60, 60)}});
-  heading_ = new gui::Gauge("Heading", "deg", 0, 360, 360, this);
+  heading_ = new gui::Gauge("Heading", "deg", -180, 180, 360, this);
+  heading_->setWorldHeading(true);
   auto* show = new QPushButton("Show me my mark", this);
   layout->addWidget(new QLabel("Sim time since GO!", this), 0, 0, 1, 2);
   layout->addWidget(clock_, 1, 0, 1, 2);
@@ -50,9 +52,7 @@ void TaxiRefereeWindow::refresh() {
                                         .arg(r.distanceToGoalM(), 0, 'f', 1)
                                   : QString("Waiting for a destination (double-click on the TeleTaxi map)"));
   speed_->setValue(r.speedMps() * 3.6);
-  double heading_deg = 90.0 - r.yawRad() * 180.0 / M_PI;  // compass: 0 = north (+y), clockwise
-  heading_deg = std::fmod(std::fmod(heading_deg, 360.0) + 360.0, 360.0);
-  heading_->setValue(heading_deg);
+  heading_->setValue(geometry::headingDeg(r.yawRad()));  // the one convention, as in the component
 }
 
 void TaxiRefereeWindow::showMark() {

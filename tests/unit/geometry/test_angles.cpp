@@ -27,3 +27,15 @@ TEST(WrapLineAngle, ABackwardsHeadingIsAlignedWithTheLine) {
   EXPECT_NEAR(wrapLineAngle(0.3), 0.3, 1e-15);
   EXPECT_NEAR(wrapLineAngle(M_PI / 2 + 0.1), -M_PI / 2 + 0.1, 1e-15);
 }
+
+TEST(Angles, HeadingIsDegreesCounterClockwiseFromXInMinus180To180) {
+  using aula::geometry::headingDeg;
+  EXPECT_DOUBLE_EQ(headingDeg(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(headingDeg(M_PI / 2), 90.0);
+  EXPECT_DOUBLE_EQ(headingDeg(-M_PI / 2), -90.0);           // facing -y: -90, never 270
+  EXPECT_DOUBLE_EQ(headingDeg(3 * M_PI / 2), -90.0);
+  EXPECT_DOUBLE_EQ(headingDeg(M_PI), 180.0);                // the half-open end is +180
+  EXPECT_DOUBLE_EQ(headingDeg(-M_PI), 180.0);
+  EXPECT_NEAR(headingDeg(-91.4 * M_PI / 180), -91.4, 1e-9);  // the Autopark case of the issue
+  EXPECT_NEAR(headingDeg(10 * M_PI + 0.1), 0.1 * 180 / M_PI, 1e-9);
+}

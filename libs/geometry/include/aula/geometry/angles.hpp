@@ -14,6 +14,13 @@ inline double wrapAngle(double a_rad) {
   return r - M_PI;
 }
 
+// A heading as every window, log and report shows it: degrees, counter-clockwise from +x, in
+// (-180, 180] (so facing -y is -90, never 270).
+inline double headingDeg(double yaw_rad) {
+  const double deg = std::remainder(yaw_rad * 180.0 / M_PI, 360.0);
+  return deg <= -180.0 ? deg + 360.0 : deg;
+}
+
 // The angle between two undirected lines, in [-pi/2, pi/2]: a car parked backwards is as
 // aligned with the curb as one parked forwards.
 inline double wrapLineAngle(double a_rad) { return std::remainder(a_rad, M_PI); }

@@ -20,6 +20,9 @@ class Gauge : public QWidget {
   Gauge(QString title, QString unit, double min, double max, double sweep_deg = 270, QWidget* parent = nullptr);
   void setBands(std::vector<Band> bands) { bands_ = std::move(bands); update(); }
   void setValue(double value) { value_ = value; update(); }
+  // A heading dial: the needle points where the robot points on the map (the value is degrees
+  // counter-clockwise from +x, geometry::headingDeg), whatever min, max and sweep say.
+  void setWorldHeading(bool on) { world_heading_ = on; update(); }
   double value() const { return value_; }
   QSize sizeHint() const override { return {170, 170}; }
 
@@ -31,6 +34,7 @@ class Gauge : public QWidget {
   QString title_, unit_;
   double min_, max_, sweep_deg_;
   double value_ = 0;
+  bool world_heading_ = false;
   std::vector<Band> bands_;
 };
 
