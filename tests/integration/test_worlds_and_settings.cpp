@@ -282,3 +282,21 @@ TEST(Settings, TheRealTimeFactorIsHonouredInHeadlessLockstepRuns) {
   EXPECT_GE(paced.wall_s, 5.0) << paced.output;
   EXPECT_LT(fast.wall_s, paced.wall_s - 0.5) << fast.output;
 }
+
+// The exercise pages' grading numbers are generated from the referees' declared settings
+// (scripts/update-exercise-docs.sh): a changed default that the page does not show fails here.
+TEST(Docs, ExercisePagesShowTheRefereesSettings) {
+  for (const std::string exercise : {"vacuum", "teletaxi", "autopark"}) {
+    const Outcome out = runToEnd({kBin + "/aula", "config", exercise, "--markdown"}, 20s);
+    ASSERT_EQ(out.code.value_or(-1), 0) << out.output;
+    const std::string page = aula::testing::readFile(std::string(AULA_SOURCE_DIR) + "/docs/exercises/" + exercise + ".md");
+    const auto begin = page.find("-->\n", page.find("<!-- settings:begin"));
+    const auto end = page.find("<!-- settings:end -->");
+    ASSERT_NE(begin, std::string::npos) << exercise;
+    ASSERT_NE(end, std::string::npos) << exercise;
+    EXPECT_EQ(page.substr(begin + 4, end - begin - 4), out.output)
+        << "docs/exercises/" << exercise << ".md is out of date: run scripts/update-exercise-docs.sh";
+    EXPECT_NE(out.output.find("| `" + std::string(exercise == "teletaxi" ? "TeleTaxi" : exercise == "vacuum" ? "Vacuum" : "Autopark") + ".Referee."),
+              std::string::npos) << out.output;
+  }
+}

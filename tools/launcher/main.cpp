@@ -53,7 +53,7 @@ constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--picture=FILE.png] [--record=FILE.lcmlog] [--lockstep] [--rtf=X]\n"
     "                [--duration=SECONDS] [--timeout=WALL_SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
-    "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--Key=value ...]\n"
+    "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--markdown] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
     "       aula regrade FILE.lcmlog [--report=FILE.json]\n"
@@ -243,6 +243,12 @@ int checkWorld(const CommandLine& cl) {
 
 int printConfig(const Exercise& ex, const CommandLine& cl) {
   const RunSettings run = resolveSettings(ex, cl);
+  if (cl.flag("markdown")) {
+    // The grading rules of docs/exercises/<exercise>.md (scripts/update-exercise-docs.sh).
+    if (ex.referee_settings == nullptr) throw ConfigError("--markdown: '" + ex.name + "' has no referee");
+    std::cout << run.effective.back().first->markdown(run.effective.back().second, ex.section + ".Referee.");
+    return 0;
+  }
   std::cout << "world: " << run.world << "\nconfig: " << run.cfg_path << "\n";
   for (const auto& [table, cfg] : run.effective) {
     std::cout << "\n" << table->owner() << ":\n" << table->describe(cfg);
@@ -531,7 +537,7 @@ int main(int argc, char** argv) {
     }
     if (!cl.positional.empty() && cl.positional[0] == "replay") return replay(argc, argv);
     cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
-                     "duration", "timeout", "lcm-url", "config", "map", "help"});
+                     "duration", "timeout", "lcm-url", "config", "map", "markdown", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
     if (cl.positional.size() == 2 && cl.positional[0] == "regrade") {

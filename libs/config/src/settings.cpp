@@ -257,4 +257,18 @@ std::string SettingsTable::describe(const Config& effective) const {
   return out.str();
 }
 
+std::string SettingsTable::markdown(const Config& effective, const std::string& prefix) const {
+  std::ostringstream out;
+  out << "| setting | value | range | what it means |\n|---|---|---|---|\n";
+  for (const SettingSpec& spec : specs_) {
+    if (spec.key.rfind(prefix, 0) != 0 || !effective.has(spec.key)) continue;
+    std::string value = effective.getString(spec.key);
+    if (!spec.unit.empty()) value += " " + spec.unit;
+    std::string help = spec.help;
+    for (size_t at = help.find('|'); at != std::string::npos; at = help.find('|', at + 2)) help.replace(at, 1, "\\|");
+    out << "| `" << spec.key << "` | " << value << " | " << spec.rangeText() << " | " << help << " |\n";
+  }
+  return out.str();
+}
+
 }  // namespace aula::config

@@ -73,6 +73,9 @@ class SettingsTable {
   std::string help() const;
   // `aula config`: one line per key with its effective value and where it came from.
   std::string describe(const Config& effective) const;
+  // The same as a Markdown table (setting, value, range, what it means) for the keys starting
+  // with `prefix`: the exercise pages' grading rules come from here, never typed by hand.
+  std::string markdown(const Config& effective, const std::string& prefix) const;
 
  private:
   std::string owner_;
