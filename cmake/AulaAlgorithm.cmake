@@ -48,6 +48,8 @@ function(aula_add_algorithm)
     PREFIX "lib" SUFFIX ".so"
     CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
     CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
+  # Line numbers for a crash's stack (addr2line on the plugin), whatever the build type.
+  target_compile_options(${ARG_NAME} PRIVATE -g)
   if(ARG_OUTPUT_DIRECTORY)
     set_target_properties(${ARG_NAME} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${ARG_OUTPUT_DIRECTORY}")
   endif()

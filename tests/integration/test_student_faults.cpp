@@ -161,6 +161,11 @@ TEST(StudentFaults, CrashIsNamedByTheLauncherAndAbortsTheReport) {
   EXPECT_NE(line.str().find("vacuum-cleaner"), std::string::npos) << line.str();
   EXPECT_NE(line.str().find("SIGSEGV"), std::string::npos) << line.str();
   EXPECT_NE(line.str().find(plugin_name), std::string::npos) << line.str();
+  // The student's stack: the component prints it, frames in the plugin included, and says how
+  // to name their lines.
+  EXPECT_NE(run.err.find("vacuum-cleaner: crashed (SIGSEGV); the stack, innermost first:"), std::string::npos)
+      << describe(run);
+  EXPECT_NE(run.err.find("addr2line -f -C -e " + std::string(AULA_PLUGIN_SEGFAULT)), std::string::npos) << describe(run);
   ASSERT_FALSE(run.report.empty()) << describe(run);
   EXPECT_EQ(jsonString(run.report, "aborted").value_or("(no \"aborted\")"), "component crashed (SIGSEGV)")
       << describe(run);

@@ -1,5 +1,7 @@
 #include "aula/component/algorithm_host.hpp"
 
+#include <aula/component/crash_report.hpp>
+
 #include <cxxabi.h>
 
 #include <filesystem>
@@ -40,7 +42,9 @@ AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, 
       exercise_(std::move(exercise)),
       choice_(std::move(choice)),
       motors_(motors),
-      watchdog_(program_, execute_budget_s) {}
+      watchdog_(program_, execute_budget_s) {
+  installCrashReport(program_, "");
+}
 
 void AlgorithmHostBase::loadPlugin() {
   if (choice_ == "student") {
@@ -52,6 +56,7 @@ void AlgorithmHostBase::loadPlugin() {
                       " and not a plugin file (PATH.so)");
   }
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
+  installCrashReport(program_, plugin_path_);
 }
 
 bool AlgorithmHostBase::reloadPlugin() {
