@@ -54,7 +54,12 @@ class Viewers {
         if (equals != std::string::npos && table.declares(setting.substr(0, equals))) argv.push_back("--" + setting);
       }
       if (program == ex.referee && !report.empty()) argv.push_back("--report=" + report);
-      if (program == ex.component) argv.push_back("--view-only");
+      if (program == ex.component) {
+        argv.push_back("--view-only");
+        // The viewer's own episode messages must not reach the referee, which grades the
+        // recorded ones: they go to a channel nobody listens to.
+        argv.push_back("--" + ex.section + ".Episode.Channel=AULA_REPLAY_VIEWER_EPISODE");
+      }
       lines_.push_back(argv);
     }
     start();
