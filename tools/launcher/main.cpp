@@ -9,6 +9,7 @@
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_command.hpp>
+#include <aula/grade/grade_plan.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/settings/tables.hpp>
@@ -366,16 +367,20 @@ std::string programName(const std::string& path) {
 
 // Why a component that ran the student's algorithm ended, in words, or "" when it is not the
 // student's doing.
+// "SIGSEGV" for a death by signal (exit code 128 + N), else "exit code N".
+std::string signalName(int code) {
+  if (code <= 128) return "exit code " + std::to_string(code);
+  const char* name = sigabbrev_np(code - 128);
+  return std::string("SIG") + (name != nullptr ? name : std::to_string(code - 128));
+}
+
 std::string componentFault(int code, double execute_budget_s) {
   if (code == aula::process::kExitAlgorithmHung) {
     std::ostringstream text;
     text << "execute() did not return within " << execute_budget_s << " s";
     return text.str();
   }
-  if (code > 128) {
-    const char* name = sigabbrev_np(code - 128);
-    return std::string("component crashed (SIG") + (name != nullptr ? name : std::to_string(code - 128)) + ")";
-  }
+  if (code > 128) return "component crashed (" + signalName(code) + ")";
   return "";
 }
 
@@ -402,14 +407,7 @@ void writeAbortedReport(const Supervision& run, const std::string& why) {
   report["finished"] = false;
   report["algorithm"] = run.algorithm;
   report["aborted"] = why;
-  const std::string temp = run.report_path + ".tmp";
-  std::ofstream(temp) << report.dump(2) << "\n";
-  std::filesystem::rename(temp, run.report_path);
-}
-
-std::string signalName(int code) {
-  const char* name = code > 128 ? sigabbrev_np(code - 128) : nullptr;
-  return name != nullptr ? std::string("SIG") + name : "exit code " + std::to_string(code);
+  aula::grade::writeFileAtomically(run.report_path, report.dump(2) + "\n");
 }
 
 int supervise(const Supervision& run) {
