@@ -18,7 +18,7 @@
 namespace {
 
 void simulateWorld(benchmark::State& state, const std::string& world_file, bool drive) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   auto spec = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world_file);
   aula::sim::SimulatorOptions options;
   options.real_time_factor = 0;
@@ -64,12 +64,12 @@ BENCHMARK(BM_PhysicsStepStreet)->Unit(benchmark::kMicrosecond);
 void BM_LockstepRoundTrip(benchmark::State& state) {
   const std::string url =
       "udpm://239.255.76.67:" + std::to_string(30000 + getpid() % 20000) + "?ttl=0";
-  lcm::LCM server(url);
+  aula::lcmbus::Bus server(url);
   std::atomic<bool> stop{false};
   std::thread client([&] {
-    lcm::LCM bus(url);
+    aula::lcmbus::Bus bus(url);
     struct Acker {
-      lcm::LCM* bus;
+      aula::lcmbus::Bus* bus;
       void on(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick) {
         aula::lockstep_ack_t ack;
         ack.client = "bench";

@@ -15,7 +15,7 @@ packages=(
   libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool
-  iproute2 procps python3 bc
+  iproute2 procps python3 python3-pip bc
   dpkg-dev bubblewrap ccache
   nlohmann-json3-dev
   slurmctld slurmd slurm-client munge
@@ -29,14 +29,21 @@ for p in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
-
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# python-lcm, the independent LCM client of tests/integration/test_stock_lcm_client.sh: Debian
+# packages LCM's C, C++ and Java parts but not its Python module; PyPI has LCM's own wheel. It goes
+# to the python3 on PATH, the one the test runs.
+if ! python3 -c 'import lcm' 2>/dev/null; then
+  echo "install-deps: installing python-lcm (PyPI: lcm==1.5.0)"
+  python3 -m pip install --quiet 'lcm==1.5.0' 2>/dev/null ||
+    python3 -m pip install --quiet --break-system-packages 'lcm==1.5.0'
+fi
 echo "install-deps: done"

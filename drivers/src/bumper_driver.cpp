@@ -1,5 +1,6 @@
 #include "bumper_driver.hpp"
 
+#include <aula/lcm/bus.hpp>
 #include <aula/bumper_t.hpp>
 #include <aula/physics/physics_world.hpp>
 

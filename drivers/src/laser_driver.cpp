@@ -2,6 +2,7 @@
 
 #include "robot_footprint.hpp"
 
+#include <aula/lcm/bus.hpp>
 #include <aula/physics/physics_world.hpp>
 
 #include <lcm/lcm-cpp.hpp>

@@ -52,7 +52,7 @@ void MotorsDriver::attach(DriverContext& context, int robot, const world::Plugin
   const double watchdog_s = plugin.getDouble("watchdog_s", 0.5);
   if (!(watchdog_s > 0)) throw world::WorldError(where + ": watchdog_s must be > 0");
   watchdog_us_ = static_cast<int64_t>(std::llround(watchdog_s * 1e6));
-  subscription_ = lcmbus::subscribe(*context.bus, channel_, &MotorsDriver::onCommand, this);
+  subscription_ = context.bus->subscribe(channel_, &MotorsDriver::onCommand, this);
 }
 
 void MotorsDriver::onCommand(const lcm::ReceiveBuffer*, const std::string& channel,

@@ -1,5 +1,6 @@
 #include "pose3d_driver.hpp"
 
+#include <aula/lcm/bus.hpp>
 #include <aula/physics/physics_world.hpp>
 #include <aula/pose3d_t.hpp>
 

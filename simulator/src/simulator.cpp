@@ -60,7 +60,7 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
   }
 }
 
-Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& bus)
+Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus)
     : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop) {
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
   context_.bus = &bus_;
@@ -74,10 +74,10 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& 
       drivers_.push_back(std::move(driver));
     }
   }
-  subscriptions_.push_back(lcmbus::subscribe(bus_, lcmbus::kControlChannel, &Simulator::onControl, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
   subscriptions_.push_back(
-      lcmbus::subscribe(bus_, lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
-  subscriptions_.push_back(lcmbus::subscribe(bus_, lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
+      bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
   paused_ = options_.start_paused;
   // A robot may be put anywhere within the world's statics (a metre of margin), or within
   // 1 km of the origin in a world with none.
@@ -288,8 +288,12 @@ bool Simulator::startIfReady(WallTime now, RunClocks& clocks) {
   return true;
 }
 
+bool Simulator::abandoned() const {
+  return started_ && options_.lockstep && options_.lockstep_wait_clients > 0 && lockstep_.size() == 0;
+}
+
 bool Simulator::holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks) {
-  if (!paused_ && !waitingForClients()) return false;
+  if (!paused_ && !waitingForClients() && !abandoned()) return false;
   if (paused_ && step_pending_ && started_ && !waitingForClients()) {
     step_pending_ = false;
     return false;  // this pass advances one tick

@@ -30,7 +30,7 @@ const std::string kVacuumWorld = std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.
 
 
 struct RoombaClient {
-  explicit RoombaClient(lcm::LCM& bus) : bus(bus) {
+  explicit RoombaClient(aula::lcmbus::Bus& bus) : bus(bus) {
     bus.subscribe("ROOMBA_LASER", &RoombaClient::onLaser, this);
     bus.subscribe("ROOMBA_BUMPER", &RoombaClient::onBumper, this);
     bus.subscribe("ROOMBA_POSE", &RoombaClient::onPose, this);
@@ -47,7 +47,7 @@ struct RoombaClient {
   }
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* m) { pose = *m; }
 
-  lcm::LCM& bus;
+  aula::lcmbus::Bus& bus;
   int scans = 0;
   float first_centre_m = 0, last_centre_m = 0;
   bool pressed = false;

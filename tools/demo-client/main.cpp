@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
     const std::string motors = world::channelOf(robot, "motors");
     const bool quiet = cl.flag("quiet");
 
-    lcm::LCM* bus = setup.bus.get();
+    lcmbus::Bus* bus = setup.bus.get();
     bus->subscribe(world::channelOf(robot, "pose3d"), &Demo::onPose, &demo);
     bus->subscribe(world::channelOf(robot, "laser"), &Demo::onLaser, &demo);
     bus->subscribe(world::channelOf(robot, "bumper"), &Demo::onBumper, &demo);

@@ -91,7 +91,7 @@ RunRecorder::RunRecorder(const std::string& path, const std::string& url, const 
   log_ = std::make_unique<lcm::LogFile>(path_, "w");
   if (!log_->good()) throw config::ConfigError("--record=" + path_ + ": cannot write: " + std::strerror(errno));
   bus_ = lcmbus::openBus(withLargeReceiveBuffer(url));
-  lcmbus::subscribe(*bus_, ".*", &RunRecorder::onMessage, this);
+  bus_->subscribe(".*", &RunRecorder::onMessage, this);
   // A process hears what it publishes: the record is the log's first Aula message, and once it
   // is written the subscription is live for everything that follows.
   bus_->publish(lcmbus::kRunChannel, &record);

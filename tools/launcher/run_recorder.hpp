@@ -14,6 +14,7 @@
 #include <aula/run_record_t.hpp>
 #include <aula/settings/tables.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <atomic>
@@ -54,7 +55,7 @@ class RunRecorder {
 
   std::string path_;
   std::unique_ptr<lcm::LogFile> log_;
-  std::unique_ptr<lcm::LCM> bus_;
+  std::unique_ptr<lcmbus::Bus> bus_;
   std::thread thread_;             // handles bus_ until stop_
   std::atomic<bool> stop_{false};
   bool record_written_ = false;    // the thread's, or the constructor's before it starts

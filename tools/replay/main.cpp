@@ -105,8 +105,7 @@ int main(int argc, char** argv) {
     std::random_device random;
     const std::string url = cl.option("lcm-url", "udpm://239.255.76.67:" + std::to_string(40000 + random() % 20000) +
                                                      "?ttl=0&recv_buf_size=4194304");
-    lcm::LCM bus(url);
-    if (!bus.good()) throw ConfigError("--lcm-url=" + url + ": LCM cannot open it");
+    aula::lcmbus::Bus bus(url);
     aula::replay::LogPlayer player(log, [&](const lcm::LogEvent& e) { bus.publish(e.channel, e.data, e.datalen); });
     std::cerr << "aula replay: " << log << ": " << record.exercise << " on " << record.world << ", seed " << record.seed
               << ", " << player.durationUs() / 1e6 << " s of sim time\n";

@@ -16,7 +16,7 @@ LaserMount mountOf(const world::RobotSpec& car, const std::string& plugin_name) 
 
 }  // namespace
 
-AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : bus_(bus), world_(world) {
   period_s_ = cfg.getDouble("Autopark.Period");
   algorithm_name_ = cfg.getString("Autopark.Algorithm");

@@ -2,7 +2,7 @@
 
 namespace aula::component {
 
-ControlLoop::ControlLoop(lcm::LCM& bus, const std::string& client_name, int64_t period_us,
+ControlLoop::ControlLoop(lcmbus::Bus& bus, const std::string& client_name, int64_t period_us,
                          MotorsProxy& motors, std::function<void()> step)
     : motors_(motors),
       step_(std::move(step)),

@@ -4,16 +4,16 @@
 
 namespace aula::component {
 
-Pose3dProxy::Pose3dProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = lcmbus::subscribe(bus_, channel, &Pose3dProxy::onPose, this);
+Pose3dProxy::Pose3dProxy(lcmbus::Bus& bus, const std::string& channel) : bus_(bus) {
+  subscription_ = bus_.subscribe(channel, &Pose3dProxy::onPose, this);
 }
 Pose3dProxy::~Pose3dProxy() { bus_.unsubscribe(subscription_); }
 void Pose3dProxy::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
   set(msg->x, msg->y, msg->yaw, msg->utime);
 }
 
-LaserProxy::LaserProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = lcmbus::subscribe(bus_, channel, &LaserProxy::onLaser, this);
+LaserProxy::LaserProxy(lcmbus::Bus& bus, const std::string& channel) : bus_(bus) {
+  subscription_ = bus_.subscribe(channel, &LaserProxy::onLaser, this);
 }
 LaserProxy::~LaserProxy() { bus_.unsubscribe(subscription_); }
 void LaserProxy::onLaser(const lcm::ReceiveBuffer*, const std::string&, const aula::laser_t* msg) {
@@ -29,15 +29,15 @@ void LaserProxy::onLaser(const lcm::ReceiveBuffer*, const std::string&, const au
   set(std::move(data));
 }
 
-BumperProxy::BumperProxy(lcm::LCM& bus, const std::string& channel) : bus_(bus) {
-  subscription_ = lcmbus::subscribe(bus_, channel, &BumperProxy::onBumper, this);
+BumperProxy::BumperProxy(lcmbus::Bus& bus, const std::string& channel) : bus_(bus) {
+  subscription_ = bus_.subscribe(channel, &BumperProxy::onBumper, this);
 }
 BumperProxy::~BumperProxy() { bus_.unsubscribe(subscription_); }
 void BumperProxy::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
   set(BumperData{msg->bumper, msg->state, msg->utime});
 }
 
-MotorsProxy::MotorsProxy(lcm::LCM& bus, std::string channel, double max_v_mps, double max_w_radps)
+MotorsProxy::MotorsProxy(lcmbus::Bus& bus, std::string channel, double max_v_mps, double max_w_radps)
     : Motors(max_v_mps, max_w_radps), bus_(bus), channel_(std::move(channel)) {}
 
 void MotorsProxy::publish(int64_t sim_time_us) {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 namespace aula::teletaxi {
-TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world) : bus_(bus) {
+TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world) : bus_(bus) {
   const double period_s = cfg.getDouble("TeleTaxi.Period");
   episode_channel_ = cfg.getString("TeleTaxi.Episode.Channel");
   algorithm_name_ = cfg.getString("TeleTaxi.Algorithm");

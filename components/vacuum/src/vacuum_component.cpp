@@ -5,7 +5,7 @@
 
 namespace aula::vacuum {
 
-VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : bus_(bus) {
   period_s_ = cfg.getDouble("Vacuum.Period");
   algorithm_name_ = cfg.getString("Vacuum.Algorithm");

@@ -1,5 +1,6 @@
 #include "aula/app/bus_pump.hpp"
 
+#include <chrono>
 #include <csignal>
 
 #include <poll.h>
@@ -8,7 +9,7 @@
 
 namespace aula::app {
 
-BusPump::BusPump(lcm::LCM& bus, std::function<void()> housekeeping, int housekeeping_ms,
+BusPump::BusPump(lcmbus::Bus& bus, std::function<void()> housekeeping, int housekeeping_ms,
                  QObject* parent)
     : QObject(parent),
       bus_(bus),
@@ -27,23 +28,28 @@ void BusPump::drain() {
   }
 }
 
-bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
+bool runHeadless(lcmbus::Bus& bus, const std::function<bool()>& done,
                  const std::function<void()>& housekeeping) {
+  using WallClock = std::chrono::steady_clock;
+  constexpr auto kHousekeepingPeriod = std::chrono::milliseconds(50);
   process::SignalWatcher stop_signals;  // not "signals": a Qt macro
-  bool signalled = false;
+  // One poll() per message on the bus and the stop signals together: in lockstep every tick is a
+  // wake-up of its own, so each syscall saved here is one per tick.
+  pollfd watched[2] = {{bus.getFileno(), POLLIN, 0}, {stop_signals.fd(), POLLIN, 0}};
+  auto last_housekeeping = WallClock::now();
   while (!done()) {
-    if (stop_signals.stopRequested()) {
-      signalled = true;
-      break;
-    }
+    const int ready = poll(watched, 2, static_cast<int>(kHousekeepingPeriod.count()));
+    if (ready > 0 && (watched[1].revents & POLLIN) != 0 && stop_signals.stopRequested()) return true;
     // done() before every message: one handled after the end would change the grade (a
     // regraded log stops right there).
-    bus.handleTimeout(50);
-    while (!done() && bus.handleTimeout(0) > 0) {
+    if (ready > 0 && (watched[0].revents & POLLIN) != 0) bus.handle();
+    const auto now = WallClock::now();
+    if (ready == 0 || now - last_housekeeping >= kHousekeepingPeriod) {
+      if (housekeeping) housekeeping();
+      last_housekeeping = now;
     }
-    if (housekeeping) housekeeping();
   }
-  return signalled;
+  return false;
 }
 
 }  // namespace aula::app

@@ -14,11 +14,11 @@ namespace {
 constexpr auto kRegisterResend = std::chrono::milliseconds(100);
 }
 
-LockstepClient::LockstepClient(lcm::LCM& bus, std::string client_name, int64_t period_us,
+LockstepClient::LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us,
                                TickHandler on_tick)
     : bus_(bus), name_(std::move(client_name)), period_us_(period_us), on_tick_(std::move(on_tick)) {
   if (period_us_ <= 0) period_us_ = 1;
-  subscription_ = lcmbus::subscribe(bus_, kClockChannel, &LockstepClient::onClock, this);
+  subscription_ = bus_.subscribe(kClockChannel, &LockstepClient::onClock, this);
   sendRegister(false);
 }
 

@@ -53,7 +53,7 @@ aula::run_record_t readRunRecord(const std::string& path) {
                             ": it was not recorded by `aula run --record`, so nothing says how to grade it");
 }
 
-bool replayLog(lcm::LCM& bus, const std::string& path, const std::function<bool()>& done,
+bool replayLog(lcmbus::Bus& bus, const std::string& path, const std::function<bool()>& done,
                const std::function<void()>& after_each) {
   const auto log = openLog(path);
   const lcm::LogEvent* event = firstEvent(*log, path);

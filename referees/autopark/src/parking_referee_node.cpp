@@ -33,15 +33,15 @@ ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
   return s;
 }
 
-ParkingRefereeNode::ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
   const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
   scene_ = ParkingScene::fromWorld(world, car.name);
   settings_ = parkingRefereeSettings(cfg);
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
-  lcmbus::subscribe(bus, world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
-  lcmbus::subscribe(bus, cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
+  bus.subscribe(world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
+  bus.subscribe(world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
+  bus.subscribe(cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
   const double period_s = cfg.getDouble("Autopark.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
                                                     [this](int64_t utime) { onTick(utime); });

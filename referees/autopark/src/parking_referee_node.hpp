@@ -12,6 +12,7 @@
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -22,7 +23,7 @@ namespace aula::autopark {
 
 class ParkingRefereeNode {
  public:
-  ParkingRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const ParkingReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished() || outcome_.ended(); }

@@ -16,14 +16,14 @@ TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
   return s;
 }
 
-TaxiRefereeNode::TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   map_params_ = {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]};
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
-  lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
-  lcmbus::subscribe(bus, world::channelOf(robot, "bumper"), &TaxiRefereeNode::onBumper, this);
+  bus.subscribe(world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
+  bus.subscribe(cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
+  bus.subscribe(world::channelOf(robot, "bumper"), &TaxiRefereeNode::onBumper, this);
   const double period_s = cfg.getDouble("TeleTaxi.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),

@@ -13,6 +13,7 @@
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -23,7 +24,7 @@ namespace aula::teletaxi {
 
 class TaxiRefereeNode {
  public:
-  TaxiRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   const TaxiReferee& referee() const { return referee_; }
   bool finished() const { return referee_.finished() || outcome_.ended(); }

@@ -13,7 +13,7 @@
 
 namespace aula::vacuum {
 
-CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world)
+CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
   CoverageSettings& s = settings_;
   s.duration_s = cfg.getDouble("Vacuum.Referee.Duration");
@@ -33,9 +33,9 @@ CoverageRefereeNode::CoverageRefereeNode(lcm::LCM& bus, const config::Config& cf
                             ", " + std::to_string(start.y()) + "), which is not on the floor of the map (" + e.what() + ")");
   }
 
-  lcmbus::subscribe(bus, world::channelOf(robot, "pose3d"), &CoverageRefereeNode::onPose, this);
-  lcmbus::subscribe(bus, world::channelOf(robot, "bumper"), &CoverageRefereeNode::onBumper, this);
-  lcmbus::subscribe(bus, cfg.getString("Vacuum.Episode.Channel"), &CoverageRefereeNode::onEpisode, this);
+  bus.subscribe(world::channelOf(robot, "pose3d"), &CoverageRefereeNode::onPose, this);
+  bus.subscribe(world::channelOf(robot, "bumper"), &CoverageRefereeNode::onBumper, this);
+  bus.subscribe(cfg.getString("Vacuum.Episode.Channel"), &CoverageRefereeNode::onEpisode, this);
   const double period_s = cfg.getDouble("Vacuum.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {

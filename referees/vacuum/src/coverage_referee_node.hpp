@@ -21,7 +21,7 @@ namespace aula::vacuum {
 
 class CoverageRefereeNode {
  public:
-  CoverageRefereeNode(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
   const CoverageReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished() || outcome_.ended(); }
   // The launcher says the run cannot go on (a process died...): grade what there is, and end.

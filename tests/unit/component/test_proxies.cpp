@@ -11,14 +11,14 @@
 using namespace aula::component;
 
 namespace {
-void drain(lcm::LCM& bus) {
+void drain(aula::lcmbus::Bus& bus) {
   while (bus.handleTimeout(0) > 0) {
   }
 }
 }  // namespace
 
 TEST(LaserProxy, MillimetreViewMatchesMetres) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   LaserProxy laser(bus, "LASER");
   aula::laser_t msg{};
   msg.utime = 123;
@@ -44,7 +44,7 @@ TEST(LaserProxy, MillimetreViewMatchesMetres) {
 }
 
 TEST(MotorsProxy, ClampsToTheExerciseLimitsAndZeroesNonFinite) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   MotorsProxy motors(bus, "MOTORS", 2.0, 0.5);
   motors.sendV(10);
   motors.sendW(-3);
@@ -57,7 +57,7 @@ TEST(MotorsProxy, ClampsToTheExerciseLimitsAndZeroesNonFinite) {
 }
 
 TEST(ControlLoop, RunsTheAlgorithmOnSimTimeAndPublishesEveryPeriod) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   MotorsProxy motors(bus, "MOTORS", 1.0, 1.0);
   int executions = 0;
   ControlLoop loop(bus, "test", 80000, motors, [&] {

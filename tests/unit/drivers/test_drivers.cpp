@@ -78,7 +78,7 @@ WorldSpec room(double x, double y, double yaw, double max_v = 25.0, double noise
 
 // Test-side view of the bus: the latest message of each kind.
 struct Listener {
-  explicit Listener(lcm::LCM& bus) {
+  explicit Listener(aula::lcmbus::Bus& bus) {
     bus.subscribe("POSE", &Listener::onPose, this);
     bus.subscribe("LASER", &Listener::onLaser, this);
     bus.subscribe("BUMPER", &Listener::onBumper, this);
@@ -103,12 +103,12 @@ struct Listener {
   bool ever_pressed = false;
 };
 
-void drain(lcm::LCM& bus) {
+void drain(aula::lcmbus::Bus& bus) {
   while (bus.handleTimeout(0) > 0) {
   }
 }
 
-void send(lcm::LCM& bus, double v, double w = 0.0) {
+void send(aula::lcmbus::Bus& bus, double v, double w = 0.0) {
   aula::motors_t m{};
   m.v = v;
   m.w = w;
@@ -123,7 +123,7 @@ aula::sim::SimulatorOptions fastOptions() {
 }
 
 // Runs the simulator for `seconds` of sim time, handling the bus at every tick.
-void runFor(aula::sim::Simulator& sim, lcm::LCM& bus, double seconds) {
+void runFor(aula::sim::Simulator& sim, aula::lcmbus::Bus& bus, double seconds) {
   const int64_t end = sim.timeUs() + static_cast<int64_t>(seconds * 1e6);
   while (sim.timeUs() < end) {
     drain(bus);
@@ -146,7 +146,7 @@ double roomRange(double x, double y, double a) {
 }  // namespace
 
 TEST(LaserDriver, RangesMatchAnalyticDistances) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   const double x = 0.7, y = -1.2, yaw = 0.3;
   aula::sim::Simulator sim(room(x, y, yaw), fastOptions(), bus);
@@ -168,7 +168,7 @@ class WallImpact : public ::testing::TestWithParam<double> {};
 
 TEST_P(WallImpact, StopsAtTheWallWithBumperPressed) {
   const double speed = GetParam();
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   aula::sim::Simulator sim(room(0, 0, 0), fastOptions(), bus);
   double max_x = -1e9;
@@ -193,7 +193,7 @@ TEST_P(WallImpact, StopsAtTheWallWithBumperPressed) {
 INSTANTIATE_TEST_SUITE_P(Speeds, WallImpact, ::testing::Values(1.0, 5.0, 20.0));
 
 TEST(MotorsDriver, WatchdogStopsASilentClient) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   aula::sim::Simulator sim(room(-3, 0, 0), fastOptions(), bus);
   send(bus, 1.0);
@@ -208,7 +208,7 @@ TEST(MotorsDriver, WatchdogStopsASilentClient) {
 }
 
 TEST(MotorsDriver, NonFiniteCommandIsIgnored) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   aula::sim::Simulator sim(room(-3, 0, 0), fastOptions(), bus);
   send(bus, 1.0);
@@ -265,7 +265,7 @@ TEST(MotorsDriver, AckermannTurnsAboutTheRearAxle) {
 namespace {
 // A deterministic bounce controller on noisy laser data; returns the pose stream.
 std::vector<aula::pose3d_t> bounceRun(int64_t seed) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   auto options = fastOptions();
   options.seed = seed;
@@ -303,7 +303,7 @@ TEST(Simulator, SameSeedGivesIdenticalPoseStreams) {
 }
 
 TEST(Simulator, ControlChannelTeleportsPausesAndResets) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   Listener listener(bus);
   aula::sim::Simulator sim(room(0, 0, 0), fastOptions(), bus);
   aula::sim_control_t cmd{};

@@ -26,7 +26,7 @@ aula::sim_control_t setPose(const std::string& robot, double x, double y, double
 }  // namespace
 
 TEST(SimulatorControl, PosesOutsideTheWorldOrWithAWildYawAreRejectedAndCounted) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), {}, bus);
   const int roomba = sim.physics().robotIndex("roomba");
   ASSERT_GE(roomba, 0);
@@ -76,7 +76,7 @@ double simSecondsIn(aula::sim::Simulator& sim, std::chrono::milliseconds wall) {
 }  // namespace
 
 TEST(SimulatorControl, TheWindowsSpeedControlChangesThePaceAndStepAdvancesOneTick) {
-  lcm::LCM bus("memq://");
+  aula::lcmbus::Bus bus("memq://");
   aula::sim::SimulatorOptions options;
   options.real_time_factor = 1.0;
   aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), options, bus);

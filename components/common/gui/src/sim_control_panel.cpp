@@ -8,7 +8,7 @@
 
 namespace aula::component {
 
-SimControlPanel::SimControlPanel(lcm::LCM& bus, QWidget* parent) : QWidget(parent), bus_(bus) {
+SimControlPanel::SimControlPanel(lcmbus::Bus& bus, QWidget* parent) : QWidget(parent), bus_(bus) {
   auto* layout = new QHBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   speed_ = new QComboBox(this);

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace lcm { class LCM; }
+namespace aula::lcmbus { class Bus; }
 namespace aula::physics { class PhysicsWorld; }
 namespace aula::geometry { class Raycaster2D; }
 
@@ -23,7 +23,7 @@ namespace aula::drivers {
 
 // What a driver may touch. Owned by the simulator; outlives every driver.
 struct DriverContext {
-  lcm::LCM* bus = nullptr;
+  lcmbus::Bus* bus = nullptr;
   physics::PhysicsWorld* physics = nullptr;
   // Static world geometry cut at a height (lasers ask for their mount height).
   std::function<const geometry::Raycaster2D*(double z_m)> raycaster_at;

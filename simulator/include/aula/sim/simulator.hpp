@@ -12,6 +12,7 @@
 #include <aula/lockstep_register_t.hpp>
 #include <aula/sim_control_t.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <chrono>
@@ -50,7 +51,7 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec);
 class Simulator {
  public:
   // Throws world::WorldError on bad drivers/parameters.
-  Simulator(world::WorldSpec spec, SimulatorOptions options, lcm::LCM& bus);
+  Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus);
   ~Simulator();
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
@@ -83,6 +84,9 @@ class Simulator {
   using WallTime = std::chrono::steady_clock::time_point;
   bool drawFrameIfDue(const std::function<bool()>& frame, RunClocks& clocks);
   bool waitingForClients() const;
+  // A lockstep run that waited for its clients and has none left (they all left, or were
+  // dropped): the world holds until one comes back instead of running on alone.
+  bool abandoned() const;
   bool startIfReady(WallTime now, RunClocks& clocks);
   bool holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks);
   bool awaitLockstepAcks(WallTime now);
@@ -93,7 +97,7 @@ class Simulator {
 
   world::WorldSpec spec_;
   SimulatorOptions options_;
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   std::unique_ptr<physics::PhysicsWorld> physics_;
   std::map<long long, std::unique_ptr<geometry::Raycaster2D>> raycasters_;  // key: z in mm
   drivers::DriverContext context_;

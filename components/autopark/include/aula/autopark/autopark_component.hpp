@@ -11,6 +11,7 @@
 #include <aula/config/config.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -21,14 +22,14 @@ namespace aula::autopark {
 
 class AutoparkComponent {
  public:
-  AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   void setRunning(bool running);  // "Run my algorithm" toggle
   // Hot reload: loads the algorithm again (a plugin's new build), puts the car back at its start
   // and starts a new episode, running if it ran. False when the new build cannot be used.
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
-  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
+  lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll() { loop_->poll(); }
@@ -48,7 +49,7 @@ class AutoparkComponent {
   void tick(int64_t utime);
   void step();
 
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   world::WorldSpec world_;
   std::string algorithm_name_, episode_channel_, robot_name_;
   double period_s_;

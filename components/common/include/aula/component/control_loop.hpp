@@ -15,7 +15,7 @@ namespace aula::component {
 class ControlLoop {
  public:
   // `step` runs at every due tick while running (the student's execute()).
-  ControlLoop(lcm::LCM& bus, const std::string& client_name, int64_t period_us, MotorsProxy& motors,
+  ControlLoop(lcmbus::Bus& bus, const std::string& client_name, int64_t period_us, MotorsProxy& motors,
               std::function<void()> step);
 
   void setRunning(bool running);  // stopping also zeroes the motors

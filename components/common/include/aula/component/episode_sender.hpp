@@ -10,6 +10,7 @@
 
 #include <aula/component/algorithm_host.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
@@ -33,7 +34,7 @@ struct StartPose {
 
 class EpisodeSender {
  public:
-  EpisodeSender(lcm::LCM& bus, std::string channel, std::string exercise, const AlgorithmHostBase& host)
+  EpisodeSender(lcmbus::Bus& bus, std::string channel, std::string exercise, const AlgorithmHostBase& host)
       : bus_(bus), channel_(std::move(channel)), exercise_(std::move(exercise)), host_(host) {}
 
   void markChanged() { changed_ = true; }
@@ -43,7 +44,7 @@ class EpisodeSender {
   int generation() const { return generation_; }
 
  private:
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   std::string channel_, exercise_;
   const AlgorithmHostBase& host_;
   int64_t last_utime_ = -1'000'000'000;

@@ -11,6 +11,7 @@
 #include <aula/motors_t.hpp>
 #include <aula/pose3d_t.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
@@ -20,40 +21,40 @@ namespace aula::component {
 
 class Pose3dProxy : public Pose3d {
  public:
-  Pose3dProxy(lcm::LCM& bus, const std::string& channel);
+  Pose3dProxy(lcmbus::Bus& bus, const std::string& channel);
   ~Pose3dProxy();
   Pose3dProxy(const Pose3dProxy&) = delete;
   Pose3dProxy& operator=(const Pose3dProxy&) = delete;
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
 };
 
 class LaserProxy : public Laser {
  public:
-  LaserProxy(lcm::LCM& bus, const std::string& channel);
+  LaserProxy(lcmbus::Bus& bus, const std::string& channel);
   ~LaserProxy();
   LaserProxy(const LaserProxy&) = delete;
   LaserProxy& operator=(const LaserProxy&) = delete;
 
  private:
   void onLaser(const lcm::ReceiveBuffer*, const std::string&, const aula::laser_t* msg);
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
 };
 
 class BumperProxy : public Bumper {
  public:
-  BumperProxy(lcm::LCM& bus, const std::string& channel);
+  BumperProxy(lcmbus::Bus& bus, const std::string& channel);
   ~BumperProxy();
   BumperProxy(const BumperProxy&) = delete;
   BumperProxy& operator=(const BumperProxy&) = delete;
 
  private:
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
 };
 
@@ -62,12 +63,12 @@ class BumperProxy : public Bumper {
 // robot stop.
 class MotorsProxy : public Motors {
  public:
-  MotorsProxy(lcm::LCM& bus, std::string channel, double max_v_mps, double max_w_radps);
+  MotorsProxy(lcmbus::Bus& bus, std::string channel, double max_v_mps, double max_w_radps);
 
   void publish(int64_t sim_time_us);
 
  private:
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   std::string channel_;
 };
 

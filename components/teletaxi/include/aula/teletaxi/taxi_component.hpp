@@ -13,6 +13,7 @@
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -26,7 +27,7 @@ class TaxiComponent {
  public:
   // `cfg`: the effective settings; the robot, its channels and the map come from `world`.
   // Throws config::ConfigError for a destination the taxi cannot drive to.
-  TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
   // Why the taxi cannot drive to (x, y) from its start (off the map, inside a building,
   // walled off, too close to the start), or nothing when it can.
   std::optional<std::string> destinationProblem(double x_m, double y_m) const;
@@ -42,7 +43,7 @@ class TaxiComponent {
   // be used (the algorithm's fault says why).
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
-  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
+  lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
   void poll();                           // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
@@ -68,7 +69,7 @@ class TaxiComponent {
  private:
   void tick(int64_t utime);
 
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   std::string episode_channel_;
   std::string algorithm_name_;
   std::unique_ptr<component::Pose3dProxy> pose_;

@@ -12,6 +12,7 @@
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -24,7 +25,7 @@ class VacuumComponent {
  public:
   // `cfg`: the effective settings (aula_settings); the robot, its channels and the map come
   // from `world`.
-  VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const world::WorldSpec& world);
+  VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
 
   void setRunning(bool running);  // "Run my algorithm" toggle
   bool running() const { return loop_->running(); }
@@ -43,7 +44,7 @@ class VacuumComponent {
   // used (the algorithm's fault says why).
   bool reloadAlgorithm();
   int generation() const { return episode_->generation(); }
-  lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
+  lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   const world::OccupancyMap& map() const { return map_; }
@@ -55,7 +56,7 @@ class VacuumComponent {
   void tick(int64_t utime);
   void step();
 
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   std::string algorithm_name_, episode_channel_;
   world::OccupancyMap map_;
   double robot_radius_m_ = 0;

@@ -3,6 +3,7 @@
 // descriptor calls handle() when data arrive; headless, runHeadless() polls the same descriptor.
 // Either way every LCM callback runs on the one main thread that also owns the widgets.
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <QObject>
@@ -17,12 +18,12 @@ class BusPump : public QObject {
   Q_OBJECT
  public:
   // `housekeeping` runs every `housekeeping_ms` of wall time (re-registration, timeouts).
-  BusPump(lcm::LCM& bus, std::function<void()> housekeeping, int housekeeping_ms = 50,
+  BusPump(lcmbus::Bus& bus, std::function<void()> housekeeping, int housekeeping_ms = 50,
           QObject* parent = nullptr);
 
  private:
   void drain();
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   QSocketNotifier notifier_;
   QTimer timer_;
   std::function<void()> housekeeping_;
@@ -30,7 +31,7 @@ class BusPump : public QObject {
 
 // Headless loop: handles the bus until `done()` is true or SIGINT/SIGTERM arrives.
 // `housekeeping` runs at least every 50 ms of wall time. Returns true when stopped by a signal.
-bool runHeadless(lcm::LCM& bus, const std::function<bool()>& done,
+bool runHeadless(lcmbus::Bus& bus, const std::function<bool()>& done,
                  const std::function<void()>& housekeeping);
 
 }  // namespace aula::app

@@ -8,6 +8,7 @@
 #include <aula/process/guarded_main.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <memory>
@@ -27,7 +28,7 @@ struct ProcessSetup {
   config::Config cfg;                  // the effective settings: every declared key
   std::string cfg_path;
   world::WorldSpec world;              // <Section>.World, with every model resolved
-  std::unique_ptr<lcm::LCM> bus;
+  std::unique_ptr<lcmbus::Bus> bus;
   bool headless = false;
 
   // Options every process accepts: --config=FILE, --headless, --lcm-url=URL, --help, plus

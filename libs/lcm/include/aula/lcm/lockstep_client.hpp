@@ -9,6 +9,7 @@
 
 #include <aula/sim_clock_t.hpp>
 
+#include "aula/lcm/bus.hpp"
 #include <lcm/lcm-cpp.hpp>
 
 #include <chrono>
@@ -24,7 +25,7 @@ class LockstepClient {
   // in lockstep or not; in lockstep the ack follows when on_tick returns.
   using TickHandler = std::function<void(int64_t utime)>;
 
-  LockstepClient(lcm::LCM& bus, std::string client_name, int64_t period_us, TickHandler on_tick);
+  LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us, TickHandler on_tick);
   ~LockstepClient();
   LockstepClient(const LockstepClient&) = delete;
   LockstepClient& operator=(const LockstepClient&) = delete;
@@ -53,7 +54,7 @@ class LockstepClient {
   void sendRegister(bool leave);
   void sendAck(int64_t seq, int64_t utime);
 
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
   std::string name_;
   int64_t period_us_;

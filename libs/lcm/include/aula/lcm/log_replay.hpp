@@ -6,6 +6,7 @@
 
 #include <aula/run_record_t.hpp>
 
+#include "aula/lcm/bus.hpp"
 #include <lcm/lcm-cpp.hpp>
 
 #include <functional>
@@ -33,7 +34,7 @@ aula::run_record_t readRunRecord(const std::string& path);
 // until `done()` holds or the log ends; `after_each` runs after every event. A LockstepClient
 // needs nothing special: it follows the recorded ticks, and its registrations and acks reach
 // no simulator. Returns true when the log ended before `done()` held.
-bool replayLog(lcm::LCM& bus, const std::string& path, const std::function<bool()>& done,
+bool replayLog(lcmbus::Bus& bus, const std::string& path, const std::function<bool()>& done,
                const std::function<void()>& after_each);
 
 }  // namespace aula::lcmbus

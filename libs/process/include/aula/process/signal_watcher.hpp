@@ -34,6 +34,8 @@ class SignalWatcher {
     }
     return stop_;
   }
+  // Readable when a stop signal waits (for poll() beside other descriptors).
+  int fd() const { return fd_; }
   // The signal that asked to stop (SIGINT, SIGTERM), or 0.
   int signal() const { return signal_; }
 

@@ -3,6 +3,7 @@
 // possible), pause/resume, and one step while paused. Sent on SIM_CONTROL; a headless run never
 // has this window, so grading runs are never slowed by it.
 
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <QComboBox>
@@ -13,12 +14,12 @@ namespace aula::component {
 
 class SimControlPanel : public QWidget {
  public:
-  explicit SimControlPanel(lcm::LCM& bus, QWidget* parent = nullptr);
+  explicit SimControlPanel(lcmbus::Bus& bus, QWidget* parent = nullptr);
 
  private:
   void send(int8_t command, double real_time_factor = 0);
 
-  lcm::LCM& bus_;
+  lcmbus::Bus& bus_;
   QComboBox* speed_;
   QPushButton* pause_;
   QPushButton* step_;

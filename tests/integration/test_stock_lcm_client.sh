@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# A stock LCM client (python-lcm, an independent process) on the run's URL decodes every channel
+# of a running exercise with the project's own types (lcm-gen -p), although each channel travels
+# on a multicast group of its own (docs/architecture.md, "The bus"). It must see every pose the
+# referee graded.
+# Usage: test_stock_lcm_client.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+source_dir="$1"
+build="$2"
+work="$(mktemp -d "${TMPDIR:-/tmp}/aula-stock-client-XXXXXX")"
+port=$((20000 + RANDOM % 20000))
+url="udpm://239.255.76.67:$port?ttl=0&recv_buf_size=4194304"
+listener=""
+trap '[ -n "$listener" ] && kill "$listener" 2>/dev/null; rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; cat "$work"/*.txt 2>/dev/null || true; exit 1; }
+
+python3 -c 'import lcm' || fail "python-lcm is missing (scripts/install-deps.sh installs it)"
+mkdir "$work/types"
+lcm-gen -p --ppath "$work/types" "$source_dir"/lcmtypes/*.lcm >/dev/null
+
+python3 "$source_dir/tests/integration/stock_lcm_client.py" "$url" "$work/types" "$work/ready" \
+  >"$work/seen.txt" 2>"$work/client.txt" &
+listener=$!
+for _ in $(seq 100); do [ -e "$work/ready" ] && break; sleep 0.1; done
+[ -e "$work/ready" ] || fail "python-lcm did not start"
+
+"$build/bin/aula" run vacuum --headless --algorithm=reference --seed=3 --Vacuum.Referee.Duration=30 \
+  --report="$work/report.json" --lcm-url="$url" >"$work/run.txt" 2>&1 || fail "the run failed"
+wait "$listener" || fail "python-lcm could not decode every message"
+listener=""
+
+for expected in "SIM_CLOCK sim_clock_t" "SIM_LOCKSTEP_REGISTER lockstep_register_t" "SIM_LOCKSTEP_ACK lockstep_ack_t" \
+                "ROOMBA_POSE pose3d_t" "ROOMBA_LASER laser_t" "ROOMBA_BUMPER bumper_t" "ROOMBA_MOTORS motors_t" \
+                "VACUUM_EPISODE episode_t"; do
+  grep -q "^$expected [0-9]" "$work/seen.txt" || fail "python-lcm never saw $expected"
+done
+graded=$(grep '"pose_messages"' "$work/report.json" | sed 's/[^0-9]//g')
+seen=$(awk '$1 == "ROOMBA_POSE" {print $3}' "$work/seen.txt")
+[ "$seen" -ge "$graded" ] || fail "python-lcm saw $seen poses, the referee graded $graded"
+echo "python-lcm decoded every channel:"; cat "$work/seen.txt"

@@ -1,0 +1,179 @@
+// lcmbus::Bus: a process receives only what it subscribes to (a kernel socket filter on LCM's
+// socket), and a stock LCM client on the run's URL still sees every channel.
+#include <aula/lcm/bus.hpp>
+
+#include <aula/config/config.hpp>
+#include <aula/motors_t.hpp>
+
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <linux/filter.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <vector>
+#include <set>
+#include <string>
+#include <thread>
+
+namespace {
+
+using aula::lcmbus::Bus;
+
+// A private port per test process (parallel ctest runs must not cross).
+std::string privateUrl() {
+  return "udpm://239.255.76.67:" + std::to_string(37000 + getpid() % 20000) + "?ttl=0";
+}
+
+struct Count {
+  int messages = 0;
+  void on(const lcm::ReceiveBuffer*, const std::string&, const aula::motors_t*) { ++messages; }
+};
+
+// Handles whatever arrives within `wall_ms`; returns how many packets the bus handed over
+// (LCM's handle() returns for every packet received, subscribed to or not).
+int packetsWithin(Bus& bus, int wall_ms) {
+  int packets = 0;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(wall_ms);
+  while (std::chrono::steady_clock::now() < until) {
+    if (bus.handleTimeout(10) > 0) ++packets;
+  }
+  return packets;
+}
+
+int packetsWithin(lcm::LCM& bus, int wall_ms) {
+  int packets = 0;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(wall_ms);
+  while (std::chrono::steady_clock::now() < until) {
+    if (bus.handleTimeout(10) > 0) ++packets;
+  }
+  return packets;
+}
+
+// The channel of a short LCM packet (after its 8-byte header), as the filter reads it.
+std::string channelOf(const char* payload, ssize_t size) {
+  if (size <= 8) return "";
+  return std::string(payload + 8, strnlen(payload + 8, static_cast<std::size_t>(size - 8)));
+}
+
+TEST(Bus, TheChannelFilterPassesExactlyItsChannels) {
+  const int port = 37000 + getpid() % 20000;
+  const int raw = socket(AF_INET, SOCK_DGRAM, 0);
+  ASSERT_GE(raw, 0);
+  const int yes = 1;
+  setsockopt(raw, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  ASSERT_EQ(bind(raw, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  ip_mreq membership{};
+  inet_pton(AF_INET, "239.255.76.67", &membership.imr_multiaddr);
+  ASSERT_EQ(setsockopt(raw, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership), 0);
+  const auto program = aula::lcmbus::channelFilter({"WANTED", "SIM_CLOCK"});
+  std::vector<sock_filter> instructions;
+  for (const auto& i : program) instructions.push_back(sock_filter{i.code, i.jump_if_true, i.jump_if_false, i.value});
+  sock_fprog filter{static_cast<unsigned short>(instructions.size()), instructions.data()};
+  ASSERT_EQ(setsockopt(raw, SOL_SOCKET, SO_ATTACH_FILTER, &filter, sizeof filter), 0) << strerror(errno);
+
+  lcm::LCM publisher(privateUrl());
+  aula::motors_t command{};
+  for (const char* channel : {"UNWANTED", "WANTE", "WANTED_TOO", "WANTED", "SIM_CLOC", "SIM_CLOCK", "XSIM_CLOCK", "wanted"}) {
+    publisher.publish(channel, &command);
+  }
+  std::vector<std::string> passed;
+  char payload[2000];
+  timeval wait{0, 300000};
+  setsockopt(raw, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+  for (ssize_t size; (size = recv(raw, payload, sizeof payload, 0)) > 0;) passed.push_back(channelOf(payload, size));
+  close(raw);
+  EXPECT_EQ(passed, (std::vector<std::string>{"WANTED", "SIM_CLOCK"}));
+}
+
+TEST(Bus, AMalformedUrlIsAConfigError) {
+  EXPECT_THROW(Bus("udpm://239.255.76.67:notaport?ttl=0"), aula::config::ConfigError);
+  EXPECT_THROW(Bus("udpm://10.0.0.1:7667?ttl=0"), aula::config::ConfigError);
+}
+
+// The socket filter on each of this process's UDP sockets bound to `port`: its length in
+// instructions, 0 for none.
+std::multiset<int> filtersOfSocketsOn(int port) {
+  std::multiset<int> lengths;
+  for (int fd : aula::lcmbus::udpSocketsBoundTo(port)) {
+    socklen_t length = 0;  // SO_GET_FILTER with no buffer: the program's length
+    lengths.insert(getsockopt(fd, SOL_SOCKET, SO_GET_FILTER, nullptr, &length) == 0 ? static_cast<int>(length) : -1);
+  }
+  return lengths;
+}
+
+TEST(Bus, ABusReceivesOnlyTheChannelsItSubscribesTo) {
+  const int port = 37000 + getpid() % 20000;
+  const std::string url = privateUrl();
+  Bus publisher(url);
+  Bus subscriber(url);
+  Count wanted;
+  subscriber.subscribe("WANTED", &Count::on, &wanted);
+  const int filter_length = static_cast<int>(aula::lcmbus::channelFilter({"WANTED"}).size());
+  const int empty_length = static_cast<int>(aula::lcmbus::channelFilter({}).size());
+  EXPECT_EQ(filtersOfSocketsOn(port), (std::multiset<int>{empty_length, filter_length}))
+      << "the publisher subscribes to nothing, the subscriber to WANTED only";
+
+  aula::motors_t command{};
+  for (int i = 0; i < 20; ++i) publisher.publish("UNWANTED", &command);
+  publisher.publish("WANTED", &command);
+  EXPECT_EQ(packetsWithin(subscriber, 300), 1);
+  EXPECT_EQ(wanted.messages, 1);
+}
+
+TEST(Bus, AStockClientOnTheRunsUrlSeesEveryChannel) {
+  const std::string url = privateUrl();
+  Bus publisher(url);
+  lcm::LCM stock(url);  // what lcm-spy, lcm-logger or python-lcm open
+  ASSERT_TRUE(stock.good());
+  Count a, b;
+  stock.subscribe("CHANNEL_A", &Count::on, &a);
+  stock.subscribe("CHANNEL_B", &Count::on, &b);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  aula::motors_t command{};
+  publisher.publish("CHANNEL_A", &command);
+  publisher.publish("CHANNEL_B", &command);
+  publisher.publish("CHANNEL_B", &command);
+  packetsWithin(stock, 300);
+  EXPECT_EQ(a.messages, 1);
+  EXPECT_EQ(b.messages, 2);
+}
+
+TEST(Bus, ASubscriptionByPatternReceivesEveryChannel) {
+  const std::string url = privateUrl();
+  Bus publisher(url);
+  Bus recorder(url);
+  Count all;
+  recorder.subscribe(".*", &Count::on, &all);
+  EXPECT_EQ(filtersOfSocketsOn(37000 + getpid() % 20000),
+            (std::multiset<int>{0, static_cast<int>(aula::lcmbus::channelFilter({}).size())}))
+      << "the recorder's socket has no filter";
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  aula::motors_t command{};
+  publisher.publish("CHANNEL_A", &command);
+  publisher.publish("CHANNEL_B", &command);
+  packetsWithin(recorder, 300);
+  EXPECT_EQ(all.messages, 2);
+}
+
+TEST(Bus, AnInProcessBusIsOnePlainLcm) {
+  Bus bus("memq://");
+  Count count;
+  bus.subscribe("ANY", &Count::on, &count);
+  aula::motors_t command{};
+  bus.publish("ANY", &command);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(count.messages, 1);
+}
+
+}  // namespace
