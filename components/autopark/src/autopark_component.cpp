@@ -49,6 +49,9 @@ AutoparkComponent::AutoparkComponent(lcm::LCM& bus, const config::Config& cfg, c
           {"reactive", makeReactiveAlgorithm}, {"planner", makePlannedAlgorithm}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "autopark", *host_);
+  referee_status_ = std::make_unique<component::RefereeStatusListener>(
+      bus, cfg.getString("Autopark.RefereeStatus.Channel"), "autopark", [this] { return generation(); });
+  referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
   loop_ = std::make_unique<component::ControlLoop>(bus, "autopark", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
                                                    *motors_, [this] { step(); });
   loop_->setOnTick([this](int64_t utime) { tick(utime); });

@@ -38,6 +38,9 @@ TaxiComponent::TaxiComponent(lcm::LCM& bus, const config::Config& cfg, const wor
           {"reference", [](uint64_t) { return makeReferenceAlgorithm(); }}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "teletaxi", *host_);
+  referee_status_ = std::make_unique<component::RefereeStatusListener>(
+      bus, cfg.getString("TeleTaxi.RefereeStatus.Channel"), "teletaxi", [this] { return generation(); });
+  referee_status_->setOnFinished([this](const aula::referee_status_t&) { stop(); });
   api_ = std::make_unique<TaxiApi>(*pose_, *motors_, *grid_);
   loop_ = std::make_unique<component::ControlLoop>(
       bus, "teletaxi", static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_, [this] {

@@ -8,6 +8,7 @@
 #include <aula/component/control_loop.hpp>
 #include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
+#include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -43,6 +44,9 @@ class AutoparkComponent {
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+  // The referee's word on the episode (time left, parked, its end); when it ends, the
+  // algorithm stops.
+  const component::RefereeStatusListener& refereeStatus() const { return *referee_status_; }
 
  private:
   void tick(int64_t utime);
@@ -60,6 +64,7 @@ class AutoparkComponent {
   std::unique_ptr<AutoparkApi> api_;
   std::unique_ptr<component::AlgorithmHost<AutoparkAlgorithm>> host_;  // the algorithm is created at the first tick
   std::unique_ptr<component::EpisodeSender> episode_;
+  std::unique_ptr<component::RefereeStatusListener> referee_status_;
   component::StartPose start_;
   std::unique_ptr<component::ControlLoop> loop_;
   int64_t started_utime_ = -1;
