@@ -74,6 +74,7 @@ void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&
   }
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->started_utime >= 0) referee_->start(msg->started_utime);
+  status_->tick(msg->utime, status());
 }
 
 void ParkingRefereeNode::onTick(int64_t utime) {

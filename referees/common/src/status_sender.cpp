@@ -7,6 +7,8 @@
 namespace aula::referee {
 
 void StatusSender::tick(int64_t utime, const EpisodeStatus& status) {
+  // The end is said once, as it was when the referee ended the episode (its report's numbers).
+  if (last_finished_ && status.generation == last_generation_) return;
   const bool changed = status.generation != last_generation_ || status.started != last_started_ ||
                        status.finished != last_finished_;
   if (!changed && utime - last_utime_ < 1'000'000) return;

@@ -48,6 +48,7 @@ void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, c
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
+  status_->tick(msg->utime, status());
 }
 
 void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {

@@ -96,6 +96,7 @@ void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string
   }
   if (!started_ && msg->started_utime >= 0) start(msg->started_utime);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->tick(msg->utime, status());
 }
 
 referee::Report CoverageRefereeNode::report() const {

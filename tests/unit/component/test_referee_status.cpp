@@ -98,3 +98,23 @@ TEST(RefereeStatusLine, SaysWhatTheRefereeSays) {
   s.summary = "coverage 67.30 %, mark 10.00 / 10";
   EXPECT_EQ(refereeStatusLine(s, "Run"), "Time's up: coverage 67.30 %, mark 10.00 / 10");
 }
+
+TEST(StatusSender, TheEndIsSaidOnceAsItWasAtTheEnd) {
+  lcm::LCM bus("memq://");
+  int generation = 0;
+  RefereeStatusListener listener(bus, "VACUUM_REFEREE", "test", [&] { return generation; });
+  StatusSender sender(bus, "VACUUM_REFEREE", "vacuum");
+  EpisodeStatus end = running(0, 12, 888);
+  end.finished = true;
+  end.ending = "Stopped";
+  sender.tick(12'000'000, end);
+  end.elapsed_s = 15;  // the referee's clock ran on after a fault: the windows keep the end
+  sender.tick(15'000'000, end);
+  drain(bus);
+  EXPECT_DOUBLE_EQ(listener.latest()->elapsed_s, 12);
+  generation = 1;  // a reload: the new episode is sent again
+  sender.tick(16'000'000, running(1, 0, 900));
+  drain(bus);
+  ASSERT_TRUE(listener.latest());
+  EXPECT_FALSE(listener.latest()->finished);
+}

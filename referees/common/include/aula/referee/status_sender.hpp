@@ -26,7 +26,8 @@ class StatusSender {
   StatusSender(lcm::LCM& bus, std::string channel, std::string exercise)
       : bus_(bus), channel_(std::move(channel)), exercise_(std::move(exercise)) {}
 
-  // At a clock tick: sends when the status changed state or a sim second has passed.
+  // At a clock tick or an episode message: sends when the status changed state or a sim second
+  // has passed; after a finished status, nothing more about that episode.
   void tick(int64_t utime, const EpisodeStatus& status);
   // Now, whatever the time (the end of a run that the launcher aborted).
   void send(int64_t utime, const EpisodeStatus& status);
