@@ -29,6 +29,12 @@ VacuumComponent::VacuumComponent(lcm::LCM& bus, const config::Config& cfg, const
           {"reference", makeReferenceAlgorithm}, {"bounce", makeRandomBounceAlgorithm}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "vacuum", *host_);
+  host_->setOnHung([this] {  // the stuck call may still read these: never written again
+    pose_->detach();
+    laser_->detach();
+    bumper_->detach();
+    motors_->halt();
+  });
   referee_status_ = std::make_unique<component::RefereeStatusListener>(
       bus, cfg.getString("Vacuum.RefereeStatus.Channel"), "vacuum-cleaner", [this] { return generation(); });
   referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
@@ -46,6 +52,7 @@ void VacuumComponent::step() {
 }
 
 bool VacuumComponent::reloadAlgorithm() {
+  if (algorithm().hung()) return false;  // a call is still stuck in it: the fault says so
   const bool was_running = running();
   setRunning(false);
   const bool loaded = host_->reload();

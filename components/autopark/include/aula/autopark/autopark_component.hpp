@@ -32,6 +32,8 @@ class AutoparkComponent {
   lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
   void poll() { loop_->poll(); }
   void leave() { loop_->leave(); }
 

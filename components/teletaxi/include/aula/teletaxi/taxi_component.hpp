@@ -45,6 +45,8 @@ class TaxiComponent {
   int generation() const { return episode_->generation(); }
   lcm::LCM& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
   void poll();                           // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
 
