@@ -177,10 +177,11 @@ bool TaxiWindow::screenshotWhenReady(const QString& png_path) {
   auto started = std::make_shared<int>(0);
   connect(poll, &QTimer::timeout, this, [this, png_path, poll, started] {
     refresh();
-    // With autostart, wait until the taxi is well on its way, so the picture shows it driving.
-    const bool ready = component_.pose().received() &&
-                       (!component_.autostart() || (component_.grid().isPathFinded() && component_.simTimeUs() > 8'000'000));
-    if (ready || ++*started > 100) {
+    // With autostart, wait until the referee has ended the episode, so the picture shows the
+    // path, the taxi at the destination and how the episode ended (2 minutes at most).
+    const auto said = component_.refereeStatus().latest();
+    const bool ready = component_.pose().received() && (!component_.autostart() || (said && said->finished));
+    if (ready || ++*started > (component_.autostart() ? 1200 : 100)) {
       poll->stop();
       gui::saveWidgetPng(*this, png_path);
       if (grid_window_ != nullptr) gui::saveWidgetPng(*grid_window_, QString(png_path).replace(".png", "_grid.png"));

@@ -20,7 +20,8 @@ class TaxiWindow : public QMainWindow {
   Q_OBJECT
  public:
   explicit TaxiWindow(TaxiComponent& component);
-  // Grabs the window to `png_path` once the taxi is on the map, then quits the application.
+  // Grabs the window to `png_path` once the taxi is on the map (with autostart: once the referee
+  // ended the episode), then quits the application.
   bool screenshotWhenReady(const QString& png_path);
 
  private:
