@@ -54,6 +54,9 @@ class Viewers {
         if (equals != std::string::npos && table.declares(setting.substr(0, equals))) argv.push_back("--" + setting);
       }
       if (program == ex.referee && !report.empty()) argv.push_back("--report=" + report);
+      // The viewer shows the replayed referee's clock, not the recorded one's (which the log
+      // also plays, and older logs lack): the two talk on a channel of their own.
+      argv.push_back("--" + ex.section + ".RefereeStatus.Channel=AULA_REPLAY_REFEREE_STATUS");
       if (program == ex.component) {
         argv.push_back("--view-only");
         // The viewer's own episode messages must not reach the referee, which grades the

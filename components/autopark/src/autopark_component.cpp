@@ -49,6 +49,14 @@ AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg
           {"reactive", makeReactiveAlgorithm}, {"planner", makePlannedAlgorithm}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "autopark", *host_);
+  host_->setOnHung([this] {  // the stuck call may still read these: never written again
+    for (component::LaserProxy* laser : {front_.get(), rear_.get(), right_.get()}) laser->detach();
+    pose_->detach();
+    motors_->halt();
+  });
+  referee_status_ = std::make_unique<component::RefereeStatusListener>(
+      bus, cfg.getString("Autopark.RefereeStatus.Channel"), "autopark", [this] { return generation(); });
+  referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
   loop_ = std::make_unique<component::ControlLoop>(bus, "autopark", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
                                                    *motors_, [this] { step(); });
   loop_->setOnTick([this](int64_t utime) { tick(utime); });
@@ -61,6 +69,7 @@ void AutoparkComponent::step() {
 }
 
 bool AutoparkComponent::reloadAlgorithm() {
+  if (algorithm().hung()) return false;  // a call is still stuck in it: the fault says so
   const bool was_running = running();
   setRunning(false);
   const bool loaded = host_->reload();

@@ -58,11 +58,14 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   run_ = new gui::RunToggle(central);
   status_ = new QLabel(central);
   status_->setMinimumWidth(240);
+  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
+  referee_->setMaximumWidth(360);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
   side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);
+  side->addWidget(referee_);
   side->addWidget(status_);
   side->addStretch(1);
   bottom->addLayout(side);
@@ -131,6 +134,7 @@ void AutoparkWindow::drawCar(QPainter& p) const {
 
 void AutoparkWindow::refresh() {
   run_->setRunning(component_.running());
+  referee_->setStatus(component_.refereeStatus().latest());
   const auto& pose = component_.api().pose3d;
   status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)

@@ -12,6 +12,7 @@
 
 #include <QLabel>
 #include <aula/component/algorithm_panel.hpp>
+#include <aula/component/referee_status_label.hpp>
 #include <aula/component/sim_control_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
@@ -48,6 +49,7 @@ class AutoparkWindow : public QMainWindow {
   LaserView* lasers_ = nullptr;
   gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
+  component::RefereeStatusLabel* referee_ = nullptr;
   component::AlgorithmPanel* algorithm_ = nullptr;
   int shown_generation_ = 0;  // a new episode (hot reload) clears the trail
   QTimer timer_;

@@ -6,12 +6,28 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <sstream>
 #include <typeinfo>
 
 namespace aula::component {
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string typeName(const std::type_info& type);
+
+// Runs `call`; "" when it returned, else what it threw.
+std::string faultOf(const char* what, const std::function<void()>& call) {
+  try {
+    call();
+  } catch (const std::exception& e) {
+    return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
+  } catch (...) {
+    return std::string(what) + " threw an exception that is not a std::exception";
+  }
+  return "";
+}
 
 std::string typeName(const std::type_info& type) {
   int status = 0;
@@ -90,21 +106,43 @@ std::string AlgorithmHostBase::label() const {
   return fs::path(plugin_->path()).filename().string() + " (built " + plugin_->builtAt() + ")";
 }
 
-bool AlgorithmHostBase::guarded(const char* what, const std::function<void()>& call) {
-  watchdog_.arm(what);
-  try {
-    call();
-  } catch (const std::exception& e) {
-    fault_ = std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
-  } catch (...) {
-    fault_ = std::string(what) + " threw an exception that is not a std::exception";
+void AlgorithmHostBase::containHangs() {
+  if (watchdog_.budgetS() > 0 && !thread_) thread_ = std::make_unique<AlgorithmThread>();
+}
+
+bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
+  if (hung_) return false;
+  if (thread_) {
+    // The outcome is shared with the job: an abandoned call may still write it.
+    auto fault = std::make_shared<std::string>();
+    const bool returned =
+        thread_->run([what, fault, call = std::move(call)] { *fault = faultOf(what, call); }, watchdog_.budgetS());
+    if (!returned) {
+      abandonHungCall(what);
+      return false;
+    }
+    fault_ = *fault;
+  } else {
+    watchdog_.arm(what);
+    fault_ = faultOf(what, call);
+    watchdog_.disarm();
   }
-  watchdog_.disarm();
   noteNonFinite();
   if (fault_.empty()) return true;
   motors_.stop();
   std::cerr << program_ << ": the student's algorithm failed: " << fault_ << "; the robot is stopped" << std::endl;
   return false;
+}
+
+void AlgorithmHostBase::abandonHungCall(const char* what) {
+  hung_ = true;
+  (void)thread_.release();  // still running the call: never joined, never freed
+  std::ostringstream text;
+  text << what << " did not return within " << watchdog_.budgetS() << " s (an endless loop?)";
+  fault_ = text.str();
+  std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted "
+            << "(Component.ExecuteBudget). Fix it, rebuild, and start the run again." << std::endl;
+  if (on_hung_) on_hung_();
 }
 
 void AlgorithmHostBase::noteNonFinite() {

@@ -38,6 +38,13 @@ TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const 
           {"reference", [](uint64_t) { return makeReferenceAlgorithm(); }}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "teletaxi", *host_);
+  host_->setOnHung([this] {  // the stuck call may still read these (and the grid): never written again
+    pose_->detach();
+    motors_->halt();
+  });
+  referee_status_ = std::make_unique<component::RefereeStatusListener>(
+      bus, cfg.getString("TeleTaxi.RefereeStatus.Channel"), "teletaxi", [this] { return generation(); });
+  referee_status_->setOnFinished([this](const aula::referee_status_t&) { stop(); });
   api_ = std::make_unique<TaxiApi>(*pose_, *motors_, *grid_);
   loop_ = std::make_unique<component::ControlLoop>(
       bus, "teletaxi", static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_, [this] {
@@ -109,6 +116,7 @@ bool TaxiComponent::go(std::string* why) {
 }
 
 bool TaxiComponent::reloadAlgorithm() {
+  if (algorithm().hung()) return false;  // a call is still stuck in it: the fault says so
   stop();
   const bool loaded = host_->reload();
   started_utime_ = -1;  // the referee's clock starts again at the next GO!
@@ -132,7 +140,7 @@ void TaxiComponent::teleoperate(double v_mps, double w_radps) {
 void TaxiComponent::poll() { loop_->poll(); }
 
 void TaxiComponent::tick(int64_t utime) {
-  if (pose_->received()) {
+  if (pose_->received() && !host_->hung()) {
     const auto [px, py] = grid_->worldToGrid(pose_->getX(), pose_->getY());
     grid_->setPose(px, py);
   }

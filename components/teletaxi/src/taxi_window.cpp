@@ -37,7 +37,9 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   status_label_->setWordWrap(true);
   velocity_label_->setWordWrap(true);
   info->setMinimumWidth(330);
+  referee_ = new component::RefereeStatusLabel("GO!", info);
   for (auto* l : {destination_label_, position_label_, velocity_label_, status_label_}) info_layout->addWidget(l);
+  info_layout->addWidget(referee_);
   side->addWidget(info);
   algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return reloadAlgorithm(); }, central);
   side->addWidget(algorithm_);
@@ -143,6 +145,15 @@ void TaxiWindow::refresh() {
                                .arg(component_.motors().getV(), 0, 'f', 2)
                                .arg(component_.motors().getW(), 0, 'f', 2)
                                .arg(component_.simTimeUs() / 1e6, 0, 'f', 1));
+  const auto said = component_.refereeStatus().latest();
+  referee_->setStatus(said);
+  if (said && said->finished && end_shown_generation_ != component_.generation()) {
+    // The referee ended the episode: the component stopped the algorithm, so the teleoperator
+    // drives again. Say how it ended instead of "Driving...".
+    end_shown_generation_ = component_.generation();
+    status_label_->setText(QString::fromStdString(said->ending) +
+                           " - the algorithm is stopped; the teleoperator drives the taxi");
+  }
   if (component_.grid().isPathFinded() && !path_shown_) updatePathOverlay();
   if (!component_.grid().isPathFinded() && path_shown_) {
     map_->setOverlay(nullptr);
@@ -166,10 +177,11 @@ bool TaxiWindow::screenshotWhenReady(const QString& png_path) {
   auto started = std::make_shared<int>(0);
   connect(poll, &QTimer::timeout, this, [this, png_path, poll, started] {
     refresh();
-    // With autostart, wait until the taxi is well on its way, so the picture shows it driving.
-    const bool ready = component_.pose().received() &&
-                       (!component_.autostart() || (component_.grid().isPathFinded() && component_.simTimeUs() > 8'000'000));
-    if (ready || ++*started > 100) {
+    // With autostart, wait until the referee has ended the episode, so the picture shows the
+    // path, the taxi at the destination and how the episode ended (2 minutes at most).
+    const auto said = component_.refereeStatus().latest();
+    const bool ready = component_.pose().received() && (!component_.autostart() || (said && said->finished));
+    if (ready || ++*started > (component_.autostart() ? 1200 : 100)) {
       poll->stop();
       gui::saveWidgetPng(*this, png_path);
       if (grid_window_ != nullptr) gui::saveWidgetPng(*grid_window_, QString(png_path).replace(".png", "_grid.png"));

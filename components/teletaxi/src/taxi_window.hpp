@@ -9,6 +9,7 @@
 
 #include <QLabel>
 #include <aula/component/algorithm_panel.hpp>
+#include <aula/component/referee_status_label.hpp>
 #include <aula/component/sim_control_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
@@ -19,7 +20,8 @@ class TaxiWindow : public QMainWindow {
   Q_OBJECT
  public:
   explicit TaxiWindow(TaxiComponent& component);
-  // Grabs the window to `png_path` once the taxi is on the map, then quits the application.
+  // Grabs the window to `png_path` once the taxi is on the map (with autostart: once the referee
+  // ended the episode), then quits the application.
   bool screenshotWhenReady(const QString& png_path);
 
  private:
@@ -34,6 +36,8 @@ class TaxiWindow : public QMainWindow {
   QLabel* position_label_ = nullptr;
   QLabel* velocity_label_ = nullptr;
   QLabel* status_label_ = nullptr;
+  component::RefereeStatusLabel* referee_ = nullptr;
+  int end_shown_generation_ = -1;  // the episode whose end the status line says
   component::AlgorithmPanel* algorithm_ = nullptr;
   QLabel* grid_window_ = nullptr;
   QTimer timer_;

@@ -29,6 +29,15 @@ VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, co
           {"reference", makeReferenceAlgorithm}, {"bounce", makeRandomBounceAlgorithm}},
       algorithm_name_, *motors_, cfg.getDouble("Component.ExecuteBudget"));
   episode_ = std::make_unique<component::EpisodeSender>(bus, episode_channel_, "vacuum", *host_);
+  host_->setOnHung([this] {  // the stuck call may still read these: never written again
+    pose_->detach();
+    laser_->detach();
+    bumper_->detach();
+    motors_->halt();
+  });
+  referee_status_ = std::make_unique<component::RefereeStatusListener>(
+      bus, cfg.getString("Vacuum.RefereeStatus.Channel"), "vacuum-cleaner", [this] { return generation(); });
+  referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
   yaw_ = std::make_unique<YawSensor>(*pose_);
   api_ = std::make_unique<VacuumApi>(VacuumApi{*yaw_, *laser_, *bumper_, *motors_, period_s_});
   loop_ = std::make_unique<component::ControlLoop>(bus, "vacuum-cleaner", static_cast<int64_t>(std::llround(period_s_ * 1e6)),
@@ -43,6 +52,7 @@ void VacuumComponent::step() {
 }
 
 bool VacuumComponent::reloadAlgorithm() {
+  if (algorithm().hung()) return false;  // a call is still stuck in it: the fault says so
   const bool was_running = running();
   setRunning(false);
   const bool loaded = host_->reload();

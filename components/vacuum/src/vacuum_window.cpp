@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace aula::vacuum {
@@ -30,6 +31,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   layout->addWidget(map_, 1);
   auto* side = new QVBoxLayout;
   run_ = new gui::RunToggle(central);
+  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
   status_ = new QLabel(central);
   status_->setWordWrap(true);
   status_->setMinimumWidth(260);
@@ -38,6 +40,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   side->addWidget(run_);
   side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);
+  side->addWidget(referee_);
   side->addWidget(status_);
   side->addWidget(teleop);
   plot_ = new CoveragePlot(component_.runDurationS(), central);
@@ -65,18 +68,22 @@ void VacuumWindow::onTick(int64_t utime) {
     plot_->clear();
     coverage_.reset();
     run_start_utime_ = last_sample_utime_ = -1;
+    end_said_ = false;
   }
   const auto& p = component_.truePose();
   if (!p.received() || p.utime() == last_pose_utime_) return;
   last_pose_utime_ = p.utime();
   map_->paintDisc(p.getX(), p.getY(), component_.robotRadiusM(), QColor(80, 170, 255, 200));
-  // The percentage counts from the first Run, on the referee's own grid (free floor reachable
-  // from where the robot stands), sampled once per sim second for the plot.
-  if (!component_.running() && run_start_utime_ < 0) return;
+  // The percentage counts from the first Run to the end of the referee's episode, on the
+  // referee's own grid (free floor reachable from where the robot stands) and the same poses
+  // in time, sampled once per sim second for the plot.
+  if (component_.startedUtime() < 0) return;
   if (run_start_utime_ < 0) {
-    run_start_utime_ = utime;
+    run_start_utime_ = component_.startedUtime();
     coverage_ = std::make_unique<CoverageGrid>(map_image_, transform_, p.getX(), p.getY());
   }
+  const int64_t episode_us = static_cast<int64_t>(std::llround(component_.runDurationS() * 1e6));
+  if (p.utime() < run_start_utime_ || p.utime() - run_start_utime_ > episode_us) return;
   coverage_->markDisc(p.getX(), p.getY(), component_.robotRadiusM());
   if (utime - last_sample_utime_ >= 1'000'000) {
     last_sample_utime_ = utime;
@@ -88,6 +95,13 @@ void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 2 * component_.robotRadiusM(), 2 * component_.robotRadiusM());
   run_->setRunning(component_.running());
+  const auto said = component_.refereeStatus().latest();
+  referee_->setStatus(said);
+  if (said && said->finished && !end_said_) {
+    end_said_ = true;
+    std::fprintf(stderr, "vacuum-cleaner: this window counted %.2f %% of the floor cleaned since Run\n",
+                 coverage_ ? coverage_->coveragePercent() : 0.0);
+  }
   status_->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(component_.motors().getV(), 0, 'f', 2)

@@ -5,6 +5,7 @@
 // percentage since Run (the referee's CoverageGrid on the same map) with its plot.
 
 #include <aula/component/algorithm_panel.hpp>
+#include <aula/component/referee_status_label.hpp>
 #include <aula/component/sim_control_panel.hpp>
 #include <aula/gui/map_view.hpp>
 #include <aula/gui/run_toggle.hpp>
@@ -38,6 +39,8 @@ class VacuumWindow : public QMainWindow {
   gui::MapView* map_ = nullptr;
   gui::RunToggle* run_ = nullptr;
   QLabel* status_ = nullptr;
+  component::RefereeStatusLabel* referee_ = nullptr;
+  bool end_said_ = false;  // the window's own count, said once in the log at the referee's end
   component::AlgorithmPanel* algorithm_ = nullptr;
   int shown_generation_ = 0;  // a new episode (hot reload) clears the cleaned area
   QTimer timer_;

@@ -4,6 +4,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPushButton>
+#include <QShortcut>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -16,6 +17,12 @@ void TeleoperatorPad::recentre() {
   knob_ = {0, 0};
   update();
   emit moved(0, 0);
+}
+
+void TeleoperatorPad::nudge(double forward, double left) {
+  knob_ = {std::clamp(knob_.x() - left, -1.0, 1.0), std::clamp(knob_.y() + forward, -1.0, 1.0)};
+  update();
+  emit moved(knob_.y(), -knob_.x());
 }
 
 void TeleoperatorPad::setFromWidget(const QPointF& p) {
@@ -52,12 +59,31 @@ Teleoperator::Teleoperator(double max_v_mps, double max_w_radps, QWidget* parent
   pad_ = new TeleoperatorPad(this);
   label_ = new QLabel(this);
   auto* stop_button = new QPushButton("Stop", this);
-  layout->addWidget(new QLabel("Teleoperator", this));
+  auto* title = new QLabel("Teleoperator (keys: W/S faster/slower, A/D left/right, X stop)", this);
+  title->setWordWrap(true);
+  layout->addWidget(title);
   layout->addWidget(pad_, 1);
   layout->addWidget(label_);
   layout->addWidget(stop_button);
   connect(pad_, &TeleoperatorPad::moved, this, &Teleoperator::update);
   connect(stop_button, &QPushButton::clicked, this, &Teleoperator::stop);
+  // Window-wide keys; a disabled teleoperator (a replay's view-only window) ignores them.
+  const struct {
+    Qt::Key key;
+    double forward, left;
+  } keys[] = {{Qt::Key_W, 0.25, 0}, {Qt::Key_S, -0.25, 0}, {Qt::Key_A, 0, 0.25}, {Qt::Key_D, 0, -0.25}};
+  for (const auto& k : keys) {
+    auto* shortcut = new QShortcut(QKeySequence(k.key), this);
+    shortcut->setContext(Qt::WindowShortcut);
+    connect(shortcut, &QShortcut::activated, this, [this, k] {
+      if (isEnabled()) pad_->nudge(k.forward, k.left);
+    });
+  }
+  auto* stop_key = new QShortcut(QKeySequence(Qt::Key_X), this);
+  stop_key->setContext(Qt::WindowShortcut);
+  connect(stop_key, &QShortcut::activated, this, [this] {
+    if (isEnabled()) stop();
+  });
   update(0, 0);
 }
 

@@ -23,6 +23,10 @@ void worldKeys(SettingsTable& t, const std::string& section, const std::string& 
                                        : section == "Vacuum" ? "VACUUM_EPISODE"
                                                              : "AUTOPARK_EPISODE",
          "channel of the component's episode messages to the referee");
+  t.text(section + ".RefereeStatus.Channel", section == "TeleTaxi" ? "TELETAXI_REFEREE"
+                                             : section == "Vacuum" ? "VACUUM_REFEREE"
+                                                                   : "AUTOPARK_REFEREE",
+         "channel of the referee's status (time left, how the episode ended) to the component's window");
 }
 
 // The occupancy map both the component and the referee draw from the world.

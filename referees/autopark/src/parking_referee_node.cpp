@@ -42,6 +42,7 @@ ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& c
   bus.subscribe(world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
   bus.subscribe(world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
   bus.subscribe(cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
+  status_ = std::make_unique<referee::StatusSender>(bus, cfg.getString("Autopark.RefereeStatus.Channel"), "autopark");
   const double period_s = cfg.getDouble("Autopark.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
                                                     [this](int64_t utime) { onTick(utime); });
@@ -73,11 +74,28 @@ void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&
   }
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->started_utime >= 0) referee_->start(msg->started_utime);
+  status_->tick(msg->utime, status());
 }
 
 void ParkingRefereeNode::onTick(int64_t utime) {
   referee_->onTick(utime);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->tick(utime, status());
+}
+
+referee::EpisodeStatus ParkingRefereeNode::status() const {
+  const ParkingReferee& r = *referee_;
+  referee::EpisodeStatus s = outcome_.episodeStatus(r.started(), r.elapsedS(), settings_.timeout_s, r.finished(),
+                                                    r.parked() ? "Parked" : "Time's up");
+  char line[160];
+  std::snprintf(line, sizeof line, "%.2f m from the ideal pose, collisions %lld", r.measures().position_error_m,
+                r.collisions());
+  s.summary = line;
+  if (s.finished) {
+    std::snprintf(line, sizeof line, ", mark %.2f / 10", r.scores().mark);
+    s.summary += line;
+  }
+  return s;
 }
 
 aula::referee::Report ParkingRefereeNode::report() const {
@@ -153,6 +171,7 @@ void ParkingRefereeNode::writePicture(const std::string& png_path) const {
 void ParkingRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->send(clock_->simTimeUs(), status());
 }
 
 }  // namespace aula::autopark

@@ -11,6 +11,7 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
+#include <aula/referee/status_sender.hpp>
 
 #include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
@@ -36,6 +37,8 @@ class ParkingRefereeNode {
   void poll() { clock_->poll(); }
   void leave() { clock_->leave(); }
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+  // What the windows are told (referee_status_t): the time left, and how the episode ended.
+  referee::EpisodeStatus status() const;
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -49,6 +52,7 @@ class ParkingRefereeNode {
   std::unique_ptr<ParkingReferee> referee_;
   aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::unique_ptr<referee::StatusSender> status_;
   std::function<void()> on_finished_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   world::WorldSpec world_;  // the street, drawn into the picture only when one is asked for

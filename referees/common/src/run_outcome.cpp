@@ -38,6 +38,18 @@ void RunOutcome::addTo(Report& report) const {
   if (generation_ > 0) report.set("reloads", static_cast<long long>(generation_));
 }
 
+EpisodeStatus RunOutcome::episodeStatus(bool started, double elapsed_s, double length_s, bool graded_to_end,
+                                        const std::string& graded_ending) const {
+  EpisodeStatus s;
+  s.generation = generation_;
+  s.started = started;
+  s.elapsed_s = started ? elapsed_s : 0.0;
+  s.time_left_s = length_s - s.elapsed_s;
+  s.finished = graded_to_end || ended();
+  if (s.finished) s.ending = ended() ? "Stopped" : graded_ending;
+  return s;
+}
+
 std::string RunOutcome::summary() const {
   std::string out;
   if (!fault_.empty()) out += "  the student's algorithm failed: " + fault_ + "\n";

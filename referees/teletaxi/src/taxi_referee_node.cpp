@@ -24,6 +24,7 @@ TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, co
   bus.subscribe(world::channelOf(robot, "pose3d"), &TaxiRefereeNode::onPose, this);
   bus.subscribe(cfg.getString("TeleTaxi.Episode.Channel"), &TaxiRefereeNode::onEpisode, this);
   bus.subscribe(world::channelOf(robot, "bumper"), &TaxiRefereeNode::onBumper, this);
+  status_ = std::make_unique<referee::StatusSender>(bus, cfg.getString("TeleTaxi.RefereeStatus.Channel"), "teletaxi");
   const double period_s = cfg.getDouble("TeleTaxi.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
@@ -47,6 +48,7 @@ void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, c
   outcome_.announceOnce(finished(), on_finished_);
   if (msg->goal_set) referee_.setGoal(msg->goal_x, msg->goal_y);
   if (msg->started_utime >= 0) referee_.start(msg->started_utime);
+  status_->tick(msg->utime, status());
 }
 
 void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
@@ -59,6 +61,24 @@ void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, co
 void TaxiRefereeNode::onTick(int64_t utime) {
   referee_.onTick(utime);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->tick(utime, status());
+}
+
+referee::EpisodeStatus TaxiRefereeNode::status() const {
+  const bool arrived = referee_.finished() && referee_.grade().reached;
+  referee::EpisodeStatus s = outcome_.episodeStatus(referee_.started(), referee_.elapsedS(), settings_.timeout_s,
+                                                    referee_.finished(), arrived ? "Arrived" : "Time's up");
+  char line[192];
+  if (s.finished) {
+    const TaxiGrade g = referee_.finished() ? referee_.grade() : referee_.provisionalGrade();
+    std::snprintf(line, sizeof line, "mark %.2f / 10, %s", g.mark, g.verdict.c_str());
+  } else if (referee_.hasGoal() && referee_.hasPose()) {
+    std::snprintf(line, sizeof line, "%.1f m to the destination", referee_.distanceToGoalM());
+  } else {
+    line[0] = '\0';
+  }
+  s.summary = line;
+  return s;
 }
 
 aula::referee::Report TaxiRefereeNode::report() const {
@@ -127,6 +147,7 @@ void TaxiRefereeNode::writePicture(const std::string& png_path) const {
 void TaxiRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->send(simTimeUs(), status());
 }
 
 }  // namespace aula::teletaxi

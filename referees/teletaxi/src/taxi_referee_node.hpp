@@ -9,6 +9,7 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
+#include <aula/referee/status_sender.hpp>
 #include <aula/teletaxi/taxi_referee.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -39,6 +40,8 @@ class TaxiRefereeNode {
   int64_t simTimeUs() const { return clock_->simTimeUs(); }
   long long bumps() const { return bumps_; }
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+  // What the windows are told (referee_status_t): the time left, and how the episode ended.
+  referee::EpisodeStatus status() const;
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -52,6 +55,7 @@ class TaxiRefereeNode {
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   aula::referee::RunOutcome outcome_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::unique_ptr<referee::StatusSender> status_;
   std::function<void()> on_finished_;
   long long bumps_ = 0;       // contacts with walls (or anything) after GO!, counted on press
   world::WorldSpec world_;    // drawn into the picture's map only when one is asked for

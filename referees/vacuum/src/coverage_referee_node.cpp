@@ -36,11 +36,13 @@ CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config&
   bus.subscribe(world::channelOf(robot, "pose3d"), &CoverageRefereeNode::onPose, this);
   bus.subscribe(world::channelOf(robot, "bumper"), &CoverageRefereeNode::onBumper, this);
   bus.subscribe(cfg.getString("Vacuum.Episode.Channel"), &CoverageRefereeNode::onEpisode, this);
+  status_ = std::make_unique<referee::StatusSender>(bus, cfg.getString("Vacuum.RefereeStatus.Channel"), "vacuum");
   const double period_s = cfg.getDouble("Vacuum.Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(
       bus, "vacuum-referee", static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
         if (started_) referee_->onTick(utime);  // the episode's clock runs from Run
         outcome_.announceOnce(finished(), on_finished_);
+        status_->tick(utime, status());
       });
   clock_->expectWorld(world.sha256, world.source_path);
 }
@@ -94,6 +96,7 @@ void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string
   }
   if (!started_ && msg->started_utime >= 0) start(msg->started_utime);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->tick(msg->utime, status());
 }
 
 referee::Report CoverageRefereeNode::report() const {
@@ -152,6 +155,21 @@ void CoverageRefereeNode::writePicture(const std::string& png_path) const {
 void CoverageRefereeNode::abort(const std::string& reason) {
   outcome_.abort(reason);
   outcome_.announceOnce(finished(), on_finished_);
+  status_->send(clock_->simTimeUs(), status());
+}
+
+referee::EpisodeStatus CoverageRefereeNode::status() const {
+  const CoverageReferee& r = *referee_;
+  referee::EpisodeStatus s =
+      outcome_.episodeStatus(started_, r.elapsedS(), r.settings().duration_s, r.finished(), "Time's up");
+  char line[128];
+  std::snprintf(line, sizeof line, "coverage %.2f %%", r.coveragePercent());
+  s.summary = line;
+  if (s.finished) {
+    std::snprintf(line, sizeof line, ", mark %.2f / 10", r.mark());
+    s.summary += line;
+  }
+  return s;
 }
 
 }  // namespace aula::vacuum

@@ -9,6 +9,7 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
+#include <aula/referee/status_sender.hpp>
 #include <aula/vacuum/coverage_referee.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -38,6 +39,8 @@ class CoverageRefereeNode {
   const world::OccupancyMap& map() const { return map_; }
   int episode() const { return outcome_.generation(); }  // counts hot reloads
   bool started() const { return started_; }  // the episode's clock runs (after Run)
+  // What the windows are told (referee_status_t): the time left, and how the episode ended.
+  referee::EpisodeStatus status() const;
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -60,6 +63,7 @@ class CoverageRefereeNode {
   std::unique_ptr<CoverageReferee> referee_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   aula::referee::RunOutcome outcome_;
+  std::unique_ptr<referee::StatusSender> status_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   world::OccupancyMap map_;
   std::function<void()> on_finished_;

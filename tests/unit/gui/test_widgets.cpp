@@ -77,7 +77,24 @@ TEST(RunToggle, GreenWhenRunningRedWhenStopped) {
   EXPECT_TRUE(seen);
   EXPECT_TRUE(toggle.running());
   EXPECT_NE(toggle.styleSheet().indexOf("#3c3"), -1);
-  EXPECT_EQ(toggle.text(), "Stop my algorithm");
+  EXPECT_EQ(toggle.text(), "Stop my algorithm (F5)");
+  EXPECT_EQ(toggle.shortcut(), QKeySequence(Qt::Key_F5));
+}
+
+TEST(TeleoperatorPad, KeysNudgeTheKnobByAQuarterWithinThePad) {
+  aula::gui::TeleoperatorPad pad;
+  double forward = 0, left = 0;
+  QObject::connect(&pad, &aula::gui::TeleoperatorPad::moved, [&](double f, double l) {
+    forward = f;
+    left = l;
+  });
+  pad.nudge(0.25, 0);
+  pad.nudge(0.25, 0.25);
+  EXPECT_DOUBLE_EQ(forward, 0.5);
+  EXPECT_DOUBLE_EQ(left, 0.25);
+  for (int i = 0; i < 10; ++i) pad.nudge(-0.25, -0.25);
+  EXPECT_DOUBLE_EQ(forward, -1.0);
+  EXPECT_DOUBLE_EQ(left, -1.0);
 }
 
 int main(int argc, char** argv) {

@@ -46,3 +46,21 @@ TEST(RunOutcome, AnAbortOutlivesAReload) {
   EXPECT_TRUE(outcome.ended());
   EXPECT_EQ(outcome.aborted(), "component crashed (SIGSEGV)");
 }
+
+TEST(RunOutcome, EpisodeStatusSaysHowTheEpisodeEnded) {
+  aula::referee::RunOutcome outcome;
+  auto waiting = outcome.episodeStatus(false, 12.0, 600.0, false, "Arrived");
+  EXPECT_FALSE(waiting.started);
+  EXPECT_DOUBLE_EQ(waiting.elapsed_s, 0.0);  // the clock has not started: nothing elapsed
+  EXPECT_DOUBLE_EQ(waiting.time_left_s, 600.0);
+  EXPECT_FALSE(waiting.finished);
+  EXPECT_EQ(waiting.ending, "");
+  auto arrived = outcome.episodeStatus(true, 42.5, 600.0, true, "Arrived");
+  EXPECT_DOUBLE_EQ(arrived.time_left_s, 557.5);
+  EXPECT_TRUE(arrived.finished);
+  EXPECT_EQ(arrived.ending, "Arrived");
+  outcome.abort("execute() did not return within 2 s");
+  auto stopped = outcome.episodeStatus(true, 50.0, 600.0, false, "Arrived");
+  EXPECT_TRUE(stopped.finished);
+  EXPECT_EQ(stopped.ending, "Stopped");
+}

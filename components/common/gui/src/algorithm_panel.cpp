@@ -66,6 +66,7 @@ void AlgorithmPanel::reloadIfRebuilt() {
 }
 
 void AlgorithmPanel::reload() {
+  if (host_.hung()) return;
   reload_();
   refresh();
 }
@@ -75,7 +76,13 @@ void AlgorithmPanel::refresh() {
   const bool rebuilt = host_.pluginChanged();
   rebuilt_->setText(rebuilt ? "A new build is on disk: press Reload (Ctrl+R) to use it" : "");
   rebuilt_->setVisible(rebuilt);
-  fault_->setText(host_.fault().empty() ? "" : "Your algorithm was stopped: " + QString::fromStdString(host_.fault()));
+  QString fault = host_.fault().empty() ? "" : "Your algorithm was stopped: " + QString::fromStdString(host_.fault());
+  if (host_.hung()) {
+    // The call is still running on its thread: nothing can reload under it.
+    fault += ". The robot is stopped. Fix it, rebuild, and start the run again.";
+    reload_button_->setEnabled(false);
+  }
+  fault_->setText(fault);
   fault_->setVisible(!host_.fault().empty());
   const std::string refused = host_.nonFiniteSummary();
   non_finite_->setText(QString::fromStdString(refused));

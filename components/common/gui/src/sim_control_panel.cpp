@@ -4,6 +4,10 @@
 #include <aula/sim_control_t.hpp>
 
 #include <QHBoxLayout>
+#include <QShortcut>
+
+#include <algorithm>
+#include <utility>
 #include <QLabel>
 
 namespace aula::component {
@@ -37,6 +41,17 @@ SimControlPanel::SimControlPanel(lcmbus::Bus& bus, QWidget* parent) : QWidget(pa
     step_->setEnabled(paused_);
   });
   connect(step_, &QPushButton::clicked, this, [this] { send(aula::sim_control_t::STEP); });
+  // Faster / slower from the keyboard: the next speed in the list ("as started" is only the
+  // first choice, never stepped back to).
+  for (const auto& [key, step] : {std::pair{QKeySequence("Ctrl+]"), 1}, std::pair{QKeySequence("Ctrl+["), -1}}) {
+    auto* shortcut = new QShortcut(key, this);
+    shortcut->setContext(Qt::WindowShortcut);
+    connect(shortcut, &QShortcut::activated, this, [this, step = step] {
+      if (!speed_->isEnabled()) return;
+      speed_->setCurrentIndex(std::clamp(speed_->currentIndex() + step, 1, speed_->count() - 1));
+    });
+  }
+  speed_->setToolTip(speed_->toolTip() + " (Ctrl+] faster, Ctrl+[ slower)");
 }
 
 void SimControlPanel::send(int8_t command, double real_time_factor) {

@@ -8,6 +8,7 @@
 #include <aula/component/control_loop.hpp>
 #include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
+#include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -32,6 +33,8 @@ class AutoparkComponent {
   lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
   void poll() { loop_->poll(); }
   void leave() { loop_->leave(); }
 
@@ -44,6 +47,9 @@ class AutoparkComponent {
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+  // The referee's word on the episode (time left, parked, its end); when it ends, the
+  // algorithm stops.
+  const component::RefereeStatusListener& refereeStatus() const { return *referee_status_; }
 
  private:
   void tick(int64_t utime);
@@ -61,6 +67,7 @@ class AutoparkComponent {
   std::unique_ptr<AutoparkApi> api_;
   std::unique_ptr<component::AlgorithmHost<AutoparkAlgorithm>> host_;  // the algorithm is created at the first tick
   std::unique_ptr<component::EpisodeSender> episode_;
+  std::unique_ptr<component::RefereeStatusListener> referee_status_;
   component::StartPose start_;
   std::unique_ptr<component::ControlLoop> loop_;
   int64_t started_utime_ = -1;

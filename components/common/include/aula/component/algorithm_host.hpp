@@ -5,10 +5,14 @@
 // (.so, built with aula_add_algorithm). Around every call into the algorithm:
 // - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
 // - a call that does not return within the execute budget (wall seconds) ends the process
-//   (ExecuteWatchdog) with its own exit code, which the launcher explains;
+//   (ExecuteWatchdog) with its own exit code, which the launcher explains; with windows
+//   (containHangs) the calls run on an AlgorithmThread instead, and a call that does not return
+//   halts the algorithm for good: the fault says so, the component freezes its devices and
+//   stops the robot (its onHung hook), the window stays responsive;
 // - non-finite motor commands are counted, and said once in the log.
 
 #include <aula/component/devices.hpp>
+#include <aula/component/algorithm_thread.hpp>
 #include <aula/component/execute_watchdog.hpp>
 #include <aula/component/plugin_library.hpp>
 
@@ -45,14 +49,24 @@ class AlgorithmHostBase {
   // One line for the end of the run when commands were refused, else "".
   std::string nonFiniteSummary() const;
 
+  // With windows: calls run on a thread of their own, and one that does not return within the
+  // budget halts the algorithm instead of ending the process (no effect when the budget is 0).
+  void containHangs();
+  // A call was abandoned: nothing runs or reloads any more, and whatever that call can reach
+  // (the algorithm, the plugin, the devices) is never touched or freed again; end the process
+  // with std::_Exit. `hook` runs once, when it happens (the component freezes its devices).
+  bool hung() const { return hung_; }
+  void setOnHung(std::function<void()> hook) { on_hung_ = std::move(hook); }
+
  protected:
   AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
                     double execute_budget_s);
   void loadPlugin();
   // Loads the plugin again; a file that cannot be used becomes the fault.
   bool reloadPlugin();
-  // Runs `call` under the watchdog; an exception becomes the fault. False when it threw.
-  bool guarded(const char* what, const std::function<void()>& call);
+  // Runs `call` under the watchdog (or on the AlgorithmThread); an exception becomes the fault.
+  // False when it threw or hung. `call` must own what it uses: a hung call outlives this frame.
+  bool guarded(const char* what, std::function<void()> call);
 
   std::string program_, exercise_, choice_;
   Motors& motors_;
@@ -63,7 +77,11 @@ class AlgorithmHostBase {
 
  private:
   void noteNonFinite();
+  void abandonHungCall(const char* what);
   ExecuteWatchdog watchdog_;
+  std::unique_ptr<AlgorithmThread> thread_;  // with windows (containHangs)
+  bool hung_ = false;
+  std::function<void()> on_hung_;
   int64_t non_finite_said_ = 0;
 };
 
@@ -85,7 +103,7 @@ class AlgorithmHost : public AlgorithmHostBase {
   // Does nothing once halted by a fault. False when it threw now.
   bool call(uint64_t seed, const char* what, const std::function<void(Algorithm&)>& use) {
     if (!fault_.empty()) return false;
-    return guarded(what, [&] {
+    return guarded(what, [this, seed, use] {  // copies: the call may outlive this frame (a hang)
       if (!algorithm_) algorithm_ = create(seed);
       use(*algorithm_);
     });
@@ -95,6 +113,7 @@ class AlgorithmHost : public AlgorithmHostBase {
   // creates a fresh algorithm. False when the new file cannot be used: the fault says why, and
   // nothing runs (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
   bool reload() {
+    if (hung()) return false;  // the abandoned call may still be running in the algorithm
     algorithm_.reset();
     fault_.clear();
     if (plugin_ == nullptr && builtins_.count(choice_) != 0) return true;

@@ -2,7 +2,9 @@
 // The student's devices (devices.hpp) fed from the bus: each proxy is the plain device plus its
 // LCM subscription (or, for the motors, its publisher). Proxies only cache the latest message;
 // nothing here blocks or spawns threads. All of them are fed by the component's single event
-// loop (LCM handled in the Qt loop or the headless loop).
+// loop (LCM handled in the Qt loop or the headless loop). After a call into the student's code
+// was abandoned (AlgorithmHostBase::hung), a sensor proxy is detached (never written again: the
+// stuck call may still read it) and the motors are halted (they publish 0 whatever it writes).
 
 #include <aula/component/devices.hpp>
 
@@ -25,6 +27,7 @@ class Pose3dProxy : public Pose3d {
   ~Pose3dProxy();
   Pose3dProxy(const Pose3dProxy&) = delete;
   Pose3dProxy& operator=(const Pose3dProxy&) = delete;
+  void detach();  // no more messages: the value stays as it is
 
  private:
   void onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg);
@@ -38,6 +41,7 @@ class LaserProxy : public Laser {
   ~LaserProxy();
   LaserProxy(const LaserProxy&) = delete;
   LaserProxy& operator=(const LaserProxy&) = delete;
+  void detach();  // no more messages: the value stays as it is
 
  private:
   void onLaser(const lcm::ReceiveBuffer*, const std::string&, const aula::laser_t* msg);
@@ -51,6 +55,7 @@ class BumperProxy : public Bumper {
   ~BumperProxy();
   BumperProxy(const BumperProxy&) = delete;
   BumperProxy& operator=(const BumperProxy&) = delete;
+  void detach();  // no more messages: the value stays as it is
 
  private:
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
@@ -66,8 +71,10 @@ class MotorsProxy : public Motors {
   MotorsProxy(lcmbus::Bus& bus, std::string channel, double max_v_mps, double max_w_radps);
 
   void publish(int64_t sim_time_us);
+  void halt() { halted_ = true; }  // from now on every published command is 0
 
  private:
+  bool halted_ = false;
   lcmbus::Bus& bus_;
   std::string channel_;
 };

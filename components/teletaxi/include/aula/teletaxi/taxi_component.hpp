@@ -7,6 +7,7 @@
 #include <aula/component/control_loop.hpp>
 #include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
+#include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
@@ -45,6 +46,8 @@ class TaxiComponent {
   int generation() const { return episode_->generation(); }
   lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
   void poll();                           // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
 
@@ -63,6 +66,9 @@ class TaxiComponent {
   const component::AlgorithmHostBase& algorithm() const { return *host_; }
   double maxV() const { return motors_->maxV(); }
   double maxW() const { return motors_->maxW(); }
+  // The referee's word on the episode (time left, arrival, its end); when it ends, the
+  // algorithm stops and the teleoperator drives again.
+  const component::RefereeStatusListener& refereeStatus() const { return *referee_status_; }
   // Called after every control tick (GUI refresh hooks, tests).
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
 
@@ -86,6 +92,7 @@ class TaxiComponent {
   bool autostart_ = false;
   int64_t started_utime_ = -1;
   std::unique_ptr<component::EpisodeSender> episode_;
+  std::unique_ptr<component::RefereeStatusListener> referee_status_;
   std::function<void(int64_t)> on_tick_;
 };
 

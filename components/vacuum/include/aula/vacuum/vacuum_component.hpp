@@ -7,6 +7,7 @@
 #include <aula/component/control_loop.hpp>
 #include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
+#include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -30,6 +31,8 @@ class VacuumComponent {
   void setRunning(bool running);  // "Run my algorithm" toggle
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps);  // ignored while the algorithm runs
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
   void poll() { loop_->poll(); }
   void leave() { loop_->leave(); }
 
@@ -50,6 +53,9 @@ class VacuumComponent {
   const world::OccupancyMap& map() const { return map_; }
   double robotRadiusM() const { return robot_radius_m_; }
   double runDurationS() const { return run_duration_s_; }  // the referee's Vacuum.Referee.Duration
+  // The referee's word on the episode (time left, its end); when it ends, the algorithm stops.
+  const component::RefereeStatusListener& refereeStatus() const { return *referee_status_; }
+  int64_t startedUtime() const { return started_utime_; }  // the episode's first Run (-1: not yet)
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
 
  private:
@@ -73,6 +79,7 @@ class VacuumComponent {
   std::unique_ptr<component::AlgorithmHost<VacuumAlgorithm>> host_;  // created at the first tick, with the run's seed
   std::unique_ptr<component::ControlLoop> loop_;
   std::unique_ptr<component::EpisodeSender> episode_;
+  std::unique_ptr<component::RefereeStatusListener> referee_status_;
   component::StartPose start_;
   int64_t started_utime_ = -1;  // the first Run of this episode (-1: not yet)
   std::function<void(int64_t)> on_tick_;

@@ -3,7 +3,7 @@
 // runs the algorithm on sim time) until a signal. With a display: the component's window.
 // Either way the component leaves the lockstep at the end, so the simulator never waits for it.
 //
-// Component needs poll(), leave(); Window needs Window(Component&).
+// Component needs poll(), leave(), containHangs(), algorithm().hung(); Window needs Window(Component&).
 // screenshot(window, png_path) arranges `--screenshot=FILE.png` (returns false if it cannot).
 
 #include <aula/app/bus_pump.hpp>
@@ -14,7 +14,9 @@
 #include <QComboBox>
 #include <QString>
 
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 
 namespace aula::app {
 
@@ -26,6 +28,7 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     return 0;
   }
   QApplication app(argc, argv);
+  component.containHangs();  // a hung execute() halts the algorithm; the window stays
   Window window(component);
   BusPump pump(*setup.bus, [&] { component.poll(); });
   if (setup.command_line.flag("view-only")) {
@@ -44,6 +47,13 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     code = app.exec();
   }
   component.leave();
+  if (component.algorithm().hung()) {
+    // A call into the student's code is still running on its thread, in the algorithm, the
+    // plugin and the devices: nothing may be destroyed under it.
+    std::cout.flush();
+    std::cerr.flush();
+    std::_Exit(code);
+  }
   return code;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // JdeRobot's 2D teleoperator: drag the knob; up/down is v (forward positive), left/right is w
-// (left positive, CCW), scaled by maxV / maxW. Stop recentres it.
+// (left positive, CCW), scaled by maxV / maxW. Stop recentres it. The keyboard drives it too,
+// anywhere in its window: W/S a quarter faster/slower, A/D a quarter more to the left/right, X stops.
 
 #include <QWidget>
 
@@ -14,6 +15,8 @@ class TeleoperatorPad : public QWidget {
   explicit TeleoperatorPad(QWidget* parent = nullptr);
   QSize sizeHint() const override { return {180, 180}; }
   void recentre();
+  // Moves the knob by a fraction of each axis (forward, left), clamped to the pad.
+  void nudge(double forward, double left);
   QPointF knob() const { return knob_; }  // each axis in [-1, 1], y up positive
 
  signals:

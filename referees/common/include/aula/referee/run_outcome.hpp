@@ -9,6 +9,7 @@
 // algorithm): the referee grades it from scratch, and the fault of the previous build is gone.
 
 #include <aula/referee/report.hpp>
+#include <aula/referee/status_sender.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -33,6 +34,10 @@ class RunOutcome {
   // The report's fields: algorithm, and when they apply algorithm_error, aborted,
   // non_finite_commands, reloads; "finished" becomes false when the run ended early.
   void addTo(Report& report) const;
+  // The windows' status of an episode of `length_s` sim seconds: finished when graded to its end
+  // (`graded_ending`: "Time's up", "Arrived"...) or ended early ("Stopped"). The summary is the caller's.
+  EpisodeStatus episodeStatus(bool started, double elapsed_s, double length_s, bool graded_to_end,
+                              const std::string& graded_ending) const;
   // "" or one line per reason, for the printed summary.
   std::string summary() const;
   // The caption lines of a picture of the run: which world, seed and algorithm, then summary().

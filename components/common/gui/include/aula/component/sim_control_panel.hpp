@@ -1,6 +1,7 @@
 #pragma once
 // The simulator's pace from the component's window: a real-time factor (1x, 5x, 20x, as fast as
-// possible), pause/resume, and one step while paused. Sent on SIM_CONTROL; a headless run never
+// possible), pause/resume, and one step while paused; Ctrl+] and Ctrl+[ pick the next faster or
+// slower speed from anywhere in the window. Sent on SIM_CONTROL; a headless run never
 // has this window, so grading runs are never slowed by it.
 
 #include <aula/lcm/bus.hpp>

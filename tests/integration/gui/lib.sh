@@ -1,0 +1,53 @@
+# What the GUI tests share (source it, then call gui_test_start NAME BUILD_DIR): the test runs
+# under a virtual display of its own (xvfb-run, re-executing the script), on a private LCM port,
+# in a scratch folder; its processes are ended and the folder removed at exit.
+#   $build $work $port $url   set by gui_test_start
+#   fail MESSAGE              prints the run's logs and exits 1
+#   wait_for SECONDS WHAT COMMAND...   until COMMAND succeeds, or fails naming WHAT
+#   find_window TITLE_REGEX   the window's id, once it is mapped (30 s at most)
+
+gui_test_start() {
+  local name="$1"
+  build="$2"
+  if [ -z "${AULA_GUI_TEST_DISPLAY:-}" ]; then
+    AULA_GUI_TEST_DISPLAY=1 exec xvfb-run -a -s "-screen 0 1400x1000x24" bash "$0" "$build"
+  fi
+  work="$(mktemp -d "${TMPDIR:-/tmp}/aula-$name-XXXXXX")"
+  port=$((20000 + RANDOM % 20000))
+  url="udpm://239.255.76.67:$port?ttl=0"
+  export XDG_CACHE_HOME="$work/cache" XDG_RUNTIME_DIR="$work/runtime"
+  mkdir -m 700 -p "$XDG_RUNTIME_DIR"
+  trap gui_test_cleanup EXIT
+}
+
+gui_test_cleanup() {
+  pkill -TERM -f "239.255.76.67:$port" 2>/dev/null || true
+  sleep 0.3
+  rm -rf "$work"
+}
+
+fail() {
+  echo "FAIL: $*"
+  for log in "$work"/*.log; do
+    [ -f "$log" ] || continue
+    echo "--- $(basename "$log"):"
+    tail -n 40 "$log"
+  done
+  exit 1
+}
+
+wait_for() {
+  local deadline=$((SECONDS + $1)) what="$2"
+  shift 2
+  until "$@" >/dev/null 2>&1; do
+    [ $SECONDS -lt $deadline ] || fail "timed out waiting for $what"
+    sleep 0.2
+  done
+}
+
+find_window() {
+  local id
+  id=$(timeout 30 xdotool search --sync --name "$1" | head -1) || true
+  [ -n "$id" ] || fail "no window named /$1/"
+  echo "$id"
+}
