@@ -3,13 +3,13 @@
 #include <aula/teletaxi/gradient_field.hpp>
 
 #include <benchmark/benchmark.h>
-#include <opencv2/imgcodecs.hpp>
+#include <aula/image/png.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace {
 
 cv::Mat cityMap() {
-  cv::Mat map = cv::imread(std::string(AULA_MAPS_DIR) + "/cityLarge.png", cv::IMREAD_GRAYSCALE);
+  cv::Mat map = aula::image::readGrayPng(std::string(AULA_MAPS_DIR) + "/cityLarge.png");
   if (map.empty()) throw std::runtime_error("build the maps first (target aula_maps)");
   return map;
 }

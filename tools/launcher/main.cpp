@@ -18,7 +18,7 @@
 
 #include "run_recorder.hpp"
 
-#include <opencv2/imgcodecs.hpp>
+#include <aula/image/png.hpp>
 
 #include <algorithm>
 #include <csignal>
@@ -235,7 +235,7 @@ int checkWorld(const CommandLine& cl) {
     const Eigen::Vector4d b = world::staticBounds(spec);
     const double resolution_m = std::max(0.01, std::max(b[2] - b[0], b[3] - b[1]) / 1000.0);
     const auto map = world::occupancyMapOf(spec, {resolution_m, 0.01, 100.0});
-    if (!cv::imwrite(cl.option("map"), map.image)) throw ConfigError("--map=" + cl.option("map") + ": cannot write");
+    if (!aula::image::writePng(cl.option("map"), map.image)) throw ConfigError("--map=" + cl.option("map") + ": cannot write");
     std::cout << "map: " << cl.option("map") << " (" << map.image.cols << " x " << map.image.rows << " px, "
               << resolution_m << " m/px; black = what a robot touches)\n";
   }

@@ -8,7 +8,7 @@
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
-#include <opencv2/imgcodecs.hpp>
+#include <aula/image/png.hpp>
 
 #include <cmath>
 #include <iostream>
@@ -79,7 +79,7 @@ int generateMap(int argc, char** argv) {
   if (cl.flag("z-band")) std::tie(z_min, z_max) = pairOf(cl.option("z-band"), ',', "z-band");
 
   const cv::Mat map = world::rasterizeOccupancy(spec, t, z_min, z_max);
-  if (!cv::imwrite(out, map)) throw std::runtime_error(out + ": cannot write the map image");
+  if (!aula::image::writePng(out, map)) throw std::runtime_error(out + ": cannot write the map image");
   const auto slash = out.rfind('/');
   const std::string file = slash == std::string::npos ? out : out.substr(slash + 1);
   t.save(out.substr(0, out.size() - 4) + ".yaml", file);

@@ -3,7 +3,6 @@
 #include <aula/teletaxi/gradient_field.hpp>
 #include <aula/geometry/map_transform.hpp>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include <cmath>
 #include <cstdio>

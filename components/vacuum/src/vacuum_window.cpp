@@ -5,7 +5,6 @@
 #include <aula/geometry/map_transform.hpp>
 #include <aula/gui/screenshot.hpp>
 
-#include <opencv2/imgcodecs.hpp>
 
 #include <QApplication>
 #include <QHBoxLayout>

@@ -3,7 +3,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/geometry/oriented_box.hpp>
 
-#include <opencv2/imgcodecs.hpp>
+#include <aula/image/png.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -110,7 +110,7 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
   }
   const std::string folder = config::cacheDir() + "/maps";
   const std::string png = folder + "/" + sha256Hex(key.str()) + ".png";
-  if (std::filesystem::exists(png)) out.image = cv::imread(png, cv::IMREAD_GRAYSCALE);
+  if (std::filesystem::exists(png)) out.image = image::readGrayPng(png);
   if (!out.image.empty() && out.image.cols == out.transform.width_px && out.image.rows == out.transform.height_px) {
     return out;
   }
@@ -120,7 +120,7 @@ OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   const std::string partial = png + "." + std::to_string(::getpid()) + ".tmp.png";
-  if (!error && cv::imwrite(partial, out.image)) std::filesystem::rename(partial, png, error);
+  if (!error && image::writePng(partial, out.image)) std::filesystem::rename(partial, png, error);
   return out;
 }
 

@@ -3,6 +3,8 @@
 // Nested models of static models are flattened; <plane> collisions (ground) are ignored.
 #include "aula/world/world_spec.hpp"
 
+#include "world_cache.hpp"
+
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <filesystem>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -262,16 +265,25 @@ std::vector<std::string> modelSearchPath(const std::string& world_path) {
 
 WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path) {
   if (!std::ifstream(path).good()) throw WorldError(path + ": cannot open world file");
-  checkXml(path);
   const std::vector<std::string> folders = model_path.empty() ? modelSearchPath(path) : model_path;
+  const std::string cache_key = worldCacheKey(path, folders);
+  if (auto cached = readCachedWorld(cache_key)) {
+    cached->source_path = path;  // as this caller named it
+    return *cached;
+  }
+  checkXml(path);
   // model://NAME -> the first FOLDER/NAME with a model.config, Gazebo style (GAZEBO_MODEL_PATH).
   sdf::ParserConfig config;
   auto unresolved = std::make_shared<std::vector<std::string>>();
-  config.SetFindCallback([folders, unresolved](const std::string& uri) -> std::string {
+  auto included = std::make_shared<std::vector<std::string>>();  // model folders used: the cache's inputs
+  config.SetFindCallback([folders, unresolved, included](const std::string& uri) -> std::string {
     const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
     for (const auto& folder : folders) {
       const std::string candidate = folder + "/" + name;
-      if (std::ifstream(candidate + "/model.config").good()) return candidate;
+      if (std::ifstream(candidate + "/model.config").good()) {
+        included->push_back(candidate);
+        return candidate;
+      }
     }
     unresolved->push_back(uri);
     return "";  // sdformat reports it; the message below says where we looked
@@ -340,6 +352,15 @@ WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& mod
     if (spec.findRobot(robot.name) != nullptr) throw WorldError(where + ": duplicate robot name");
     spec.robots.push_back(std::move(robot));
   }
+  // The cache's inputs: the world file and every file of each model it included.
+  std::set<std::string> inputs = {path};
+  for (const auto& folder : *included) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      if (entry.is_regular_file(error)) inputs.insert(entry.path().string());
+    }
+  }
+  writeCachedWorld(cache_key, spec, {inputs.begin(), inputs.end()});
   return spec;
 }
 

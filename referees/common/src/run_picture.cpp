@@ -2,7 +2,8 @@
 
 #include <aula/referee/report.hpp>
 
-#include <opencv2/imgcodecs.hpp>
+#include <aula/image/png.hpp>
+
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
@@ -201,8 +202,8 @@ cv::Mat RunPicture::compose(const std::string& title, const std::vector<std::str
 }
 
 void writePngAtomically(const cv::Mat& image, const std::string& path) {
-  std::vector<uchar> png;
-  if (image.empty() || !cv::imencode(".png", image, png)) throw std::runtime_error(path + ": cannot encode the picture");
+  if (image.empty()) throw std::runtime_error(path + ": cannot encode an empty picture");
+  const std::vector<uint8_t> png = image::encodePng(image);
   writeFileAtomically(path, std::string(png.begin(), png.end()), "picture");
 }
 

@@ -1,0 +1,126 @@
+// The parsed-world cache ($XDG_CACHE_HOME/aula/worlds): a cached spec equals the parsed one
+// exactly, and an edited world or model file is parsed again.
+#include <aula/world/world_spec.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace aula::world;
+
+namespace {
+
+// A private cache folder for this test process.
+class WorldCache : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("aula-world-cache-" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    setenv("XDG_CACHE_HOME", (root_ / "cache").c_str(), 1);
+  }
+  void TearDown() override { fs::remove_all(root_); }
+  std::size_t entries() const {
+    std::error_code error;
+    std::size_t n = 0;
+    for (const auto& e : fs::directory_iterator(root_ / "cache" / "aula" / "worlds", error)) n += e.path().extension() == ".txt";
+    return n;
+  }
+  fs::path root_;
+};
+
+void expectSame(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  EXPECT_TRUE(a.matrix() == b.matrix()) << a.matrix() << "\n!=\n" << b.matrix();
+}
+
+void expectSame(const Shape& a, const Shape& b) {
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_TRUE(a.box_size_m == b.box_size_m);
+  EXPECT_EQ(a.radius_m, b.radius_m);
+  EXPECT_EQ(a.length_m, b.length_m);
+}
+
+void write(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+std::string boxModel(double size_m) {
+  const std::string s = std::to_string(size_m);
+  return "<?xml version='1.0'?><sdf version='1.9'><model name='crate'><static>true</static><link name='l'>"
+         "<collision name='c'><geometry><box><size>" + s + " " + s + " 1</size></box></geometry></collision>"
+         "</link></model></sdf>";
+}
+
+}  // namespace
+
+TEST_F(WorldCache, TheCachedSpecEqualsTheParsedOneExactly) {
+  for (const char* name : {"autopark.world", "vacuum.world", "cityLarge.world"}) {
+    const std::string path = std::string(AULA_SOURCE_DIR) + "/worlds/" + name;
+    const WorldSpec parsed = loadWorld(path);
+    const std::size_t written = entries();
+    const WorldSpec cached = loadWorld(path);
+    EXPECT_EQ(entries(), written);
+    EXPECT_EQ(cached.name, parsed.name);
+    EXPECT_EQ(cached.source_path, parsed.source_path);
+    EXPECT_EQ(cached.sha256, parsed.sha256);
+    EXPECT_EQ(cached.physics_step_s, parsed.physics_step_s);
+    ASSERT_EQ(cached.statics.size(), parsed.statics.size()) << name;
+    for (std::size_t i = 0; i < parsed.statics.size(); ++i) {
+      EXPECT_EQ(cached.statics[i].name, parsed.statics[i].name);
+      expectSame(cached.statics[i].pose, parsed.statics[i].pose);
+      expectSame(cached.statics[i].shape, parsed.statics[i].shape);
+    }
+    ASSERT_EQ(cached.robots.size(), parsed.robots.size()) << name;
+    for (std::size_t r = 0; r < parsed.robots.size(); ++r) {
+      const RobotSpec &a = cached.robots[r], &b = parsed.robots[r];
+      EXPECT_EQ(a.name, b.name);
+      EXPECT_EQ(a.mass_kg, b.mass_kg);
+      expectSame(a.pose, b.pose);
+      expectSame(a.shape_offset, b.shape_offset);
+      expectSame(a.shape, b.shape);
+      ASSERT_EQ(a.plugins.size(), b.plugins.size());
+      for (std::size_t p = 0; p < b.plugins.size(); ++p) {
+        EXPECT_EQ(a.plugins[p].name, b.plugins[p].name);
+        EXPECT_EQ(a.plugins[p].type, b.plugins[p].type);
+        EXPECT_EQ(a.plugins[p].owner, b.plugins[p].owner);
+        EXPECT_EQ(a.plugins[p].params, b.plugins[p].params);
+      }
+    }
+  }
+  EXPECT_EQ(entries(), 3u);
+}
+
+TEST_F(WorldCache, AnEditedWorldOrModelFileIsParsedAgain) {
+  const fs::path models = root_ / "models";
+  write(models / "crate" / "model.config", "<?xml version='1.0'?><model><name>crate</name><sdf version='1.9'>model.sdf</sdf></model>");
+  write(models / "crate" / "model.sdf", boxModel(1.0));
+  const fs::path world = root_ / "yard.world";
+  const std::string head = "<?xml version='1.0'?><sdf version='1.9'><world name='yard'>";
+  write(world, head + "<include><uri>model://crate</uri><pose>3 0 0.5 0 0 0</pose></include></world></sdf>");
+
+  EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 1.0);
+  EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 1.0);  // cached
+
+  write(models / "crate" / "model.sdf", boxModel(2.0));
+  EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 2.0) << "an edited model";
+
+  write(world, head + "<include><uri>model://crate</uri><pose>7 0 0.5 0 0 0</pose></include></world></sdf>");
+  const WorldSpec moved = loadWorld(world.string(), {models.string()});
+  EXPECT_EQ(moved.statics.at(0).pose.translation().x(), 7.0) << "an edited world";
+  EXPECT_EQ(moved.sha256, sha256OfFile(world.string()));
+}
+
+TEST_F(WorldCache, ADamagedEntryIsIgnored) {
+  const std::string path = std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world";
+  const WorldSpec parsed = loadWorld(path);
+  for (const auto& e : fs::directory_iterator(root_ / "cache" / "aula" / "worlds")) {
+    std::ofstream(e.path(), std::ios::trunc) << "aula-world-cache-v1\nworld\tvacuum\n";  // cut short
+  }
+  const WorldSpec again = loadWorld(path);
+  EXPECT_EQ(again.statics.size(), parsed.statics.size());
+  EXPECT_EQ(again.robots.size(), parsed.robots.size());
+}
