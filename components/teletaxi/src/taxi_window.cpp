@@ -72,7 +72,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
     std::string why;
     if (!component_.generatePath(&why)) {
       status_label_->setText(QString::fromStdString(why));
-    } else if (!component_.grid().isPathFinded()) {
+    } else if (!component_.hasPath()) {
       // Say what happened, not what was hoped for: the template's generatePath() marks nothing.
       status_label_->setText("generatePath() returned without marking a path (Grid::setPathVal / setPathFinded): "
                              "nothing to follow yet");
@@ -143,6 +143,9 @@ void TaxiWindow::refresh() {
                                .arg(component_.motors().getV(), 0, 'f', 2)
                                .arg(component_.motors().getW(), 0, 'f', 2)
                                .arg(component_.simTimeUs() / 1e6, 0, 'f', 1));
+  if (const auto refused = component_.refusal()) {
+    status_label_->setText("Autostart refused: " + QString::fromStdString(*refused));
+  }
   if (component_.grid().isPathFinded() && !path_shown_) updatePathOverlay();
   if (!component_.grid().isPathFinded() && path_shown_) {
     map_->setOverlay(nullptr);
