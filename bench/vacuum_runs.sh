@@ -23,7 +23,7 @@ for algorithm in $algorithms; do
       --report="$out/$algorithm-$seed.json" --lcm-url="udpm://239.255.76.67:$port?ttl=0" "$@" >/dev/null 2>&1
     end=$(date +%s.%N)
     wall=$(echo "$end - $start" | bc -l)
-    coverage=$(grep '"coverage_percent"' "$out/$algorithm-$seed.json" | sed 's/.*: \([0-9.]*\),/\1/')
+    coverage=$(grep '^  "coverage_percent"' "$out/$algorithm-$seed.json" | sed 's/.*: \([0-9.]*\),/\1/')
     mark=$(grep '^  "mark"' "$out/$algorithm-$seed.json" | sed 's/.*: \([0-9.]*\),/\1/')
     printf '%-9s seed %2s  coverage %6.2f %%  mark %5.2f  wall %5.2f s\n' "$algorithm" "$seed" "$coverage" "$mark" "$wall"
     echo "$coverage" >> "$out/$algorithm.coverage"

@@ -19,14 +19,16 @@ namespace {
 
 
 // Runs one episode; returns the report text.
-std::string runTaxi(const std::string& destination, const std::string& tag) {
+std::string runTaxi(const std::string& destination, const std::string& tag, const std::string& algorithm = "reference",
+                    const std::vector<std::string>& more = {}) {
   const std::string report = ::testing::TempDir() + "teletaxi_" + tag + ".json";
   const std::string log = ::testing::TempDir() + "teletaxi_" + tag + ".log";
   std::remove(report.c_str());
-  aula::process::ChildProcess run({std::string(AULA_BIN_DIR) + "/aula", "run", "teletaxi", "--headless",
-                                   "--algorithm=reference", "--TeleTaxi.Destination=" + destination,
-                                   "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()},
-                                  log, log);
+  std::vector<std::string> args = {std::string(AULA_BIN_DIR) + "/aula", "run", "teletaxi", "--headless",
+                                   "--algorithm=" + algorithm, "--TeleTaxi.Destination=" + destination,
+                                   "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
+  args.insert(args.end(), more.begin(), more.end());
+  aula::process::ChildProcess run(args, log, log);
   const auto code = run.wait(90s);
   EXPECT_TRUE(code.has_value()) << "the run did not end\n" << readFile(log);
   EXPECT_EQ(code.value_or(-1), 0) << readFile(log);
@@ -108,4 +110,17 @@ TEST(TeleTaxiRun, TheReportStatesTheRubricPresetAndItsNumbers) {
                       "    \"TeleTaxi.Referee.FullMarkSpeed\": 2.6,\n    \"TeleTaxi.Referee.MinTravel\": 2.0\n  }"),
             std::string::npos) << json;
   EXPECT_NE(json.find("\"measures\": [\"driving_time_s\", \"final_distance_m\", \"path_length_m\"]"), std::string::npos) << json;
+}
+
+// A taxi that never moves (the student template stays still), its destination 3 m from the start:
+// the original's scale gave it 7.5 for "arriving"; the default gives no distance mark.
+TEST(TeleTaxiRun, ATaxiThatNeverDrivesGetsNoDistanceMarkUnlessTheOriginalRubric) {
+  const std::string still = runTaxi("0,-3", "still", "student");
+  EXPECT_NE(still.find("\"reached\": true"), std::string::npos) << still;
+  EXPECT_LT(aula::testing::jsonNumber(still, "path_length_m"), 0.5) << still;
+  EXPECT_EQ(aula::testing::jsonNumber(still, "mark"), 0.0) << still;
+  EXPECT_NE(still.find("at the destination without driving"), std::string::npos) << still;
+  const std::string original = runTaxi("0,-3", "still_original", "student", {"--TeleTaxi.Referee.Rubric=original"});
+  EXPECT_EQ(aula::testing::jsonNumber(original, "mark"), 7.5) << original;
+  EXPECT_NE(original.find("\"preset\": \"original\""), std::string::npos) << original;
 }
