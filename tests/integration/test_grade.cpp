@@ -95,7 +95,7 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   const std::string first_csv = readFile((out / "grades.csv").string());
 
   // The reference's own marks on the same seeds (the good submission is the reference).
-  std::vector<double> reference;
+  std::vector<double> reference, reference_coverage;
   for (int seed : {1, 2}) {
     const std::string report = (dir / ("reference" + std::to_string(seed) + ".json")).string();
     ASSERT_EQ(runToEnd({aula, "run", "vacuum", "--headless", "--algorithm=reference", "--seed=" + std::to_string(seed),
@@ -103,15 +103,21 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
                        (dir / "reference.txt").string(), 120),
               0);
     reference.push_back(jsonNumber(readFile(report), "mark"));
+    reference_coverage.push_back(jsonNumber(readFile(report), "coverage_percent"));
   }
-  char reference_median[32];
+  char reference_median[32], coverage_median[32];
   std::snprintf(reference_median, sizeof reference_median, "%.2f", 0.5 * (reference[0] + reference[1]));
+  std::snprintf(coverage_median, sizeof coverage_median, "%.2f", 0.5 * (reference_coverage[0] + reference_coverage[1]));
 
   auto rows = readGrades((out / "grades.csv").string());
   ASSERT_EQ(rows.size(), 4u) << first_csv;
-  EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')), "student,median,min,max,median_vacuum,runs,runs_failed,failures");
+  // Beside the mark, the raw measure the referee's report names (its "measures").
+  EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
+            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,failures");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
+  EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;
+  EXPECT_EQ(rows["broken"]["median_coverage_percent"], "") << "it never ran: nothing measured\n" << first_csv;
   EXPECT_EQ(rows["good"]["runs"], "2");
   EXPECT_EQ(rows["good"]["runs_failed"], "0");
   EXPECT_EQ(rows["good"]["failures"], "");
@@ -149,6 +155,9 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
     ++pictures;
   }
   EXPECT_EQ(pictures, 6u) << "one picture per run that ran (the broken submission never ran)";
+  EXPECT_NE(html.find("the referee's rubric: default"), std::string::npos) << "the preset the reports name";
+  EXPECT_NE(html.find("<th>coverage_percent</th>"), std::string::npos);
+  EXPECT_NE(html.find("<div>coverage_percent "), std::string::npos) << "each run's raw measure";
   EXPECT_TRUE(fs::is_regular_file(out / "runs" / "good" / "vacuum-seed1.png"));
   EXPECT_GT(fs::file_size(out / "runs" / "good" / "vacuum-seed1.lcmlog"), 100000u);
 

@@ -1,8 +1,12 @@
 #pragma once
-// Shared by the integration tests: a private LCM port per test process, and small readers.
+// Shared by the integration tests: a private LCM port per test process, running a program to its
+// end, and small readers.
 // Integration tests talk over a private UDP multicast port, so parallel ctest runs never cross
 // (a different group on the same port still receives the cross-talk: isolate by port).
 
+#include <aula/process/child_process.hpp>
+
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -10,7 +14,9 @@
 #include <stdexcept>
 #include <regex>
 #include <sstream>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -46,6 +52,26 @@ inline double jsonNumber(const std::string& json, const std::string& key) {
     return std::nan("");
   }
   return std::stod(m[1]);
+}
+
+struct Outcome {
+  std::optional<int> code;  // none: still running at the limit (then stopped)
+  std::string output;       // stderr, then stdout
+  double wall_s = 0;
+};
+
+// Runs a program to its end (or `limit`), stdout and stderr together.
+inline Outcome runToEnd(std::vector<std::string> args, std::chrono::seconds limit = std::chrono::seconds(60)) {
+  // Two files: one file opened twice would let stdout and stderr overwrite each other.
+  const std::string dir = privateDir();
+  const auto start = std::chrono::steady_clock::now();
+  process::ChildProcess child(std::move(args), dir + "/out.log", dir + "/err.log");
+  Outcome out;
+  out.code = child.wait(limit);
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!out.code) child.stop();
+  out.output = readFile(dir + "/err.log") + readFile(dir + "/out.log");
+  return out;
 }
 
 }  // namespace aula::testing

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -18,14 +19,16 @@ namespace {
 
 
 // Runs one episode; returns the report text.
-std::string runTaxi(const std::string& destination, const std::string& tag) {
+std::string runTaxi(const std::string& destination, const std::string& tag, const std::string& algorithm = "reference",
+                    const std::vector<std::string>& more = {}) {
   const std::string report = ::testing::TempDir() + "teletaxi_" + tag + ".json";
   const std::string log = ::testing::TempDir() + "teletaxi_" + tag + ".log";
   std::remove(report.c_str());
-  aula::process::ChildProcess run({std::string(AULA_BIN_DIR) + "/aula", "run", "teletaxi", "--headless",
-                                   "--algorithm=reference", "--TeleTaxi.Destination=" + destination,
-                                   "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()},
-                                  log, log);
+  std::vector<std::string> args = {std::string(AULA_BIN_DIR) + "/aula", "run", "teletaxi", "--headless",
+                                   "--algorithm=" + algorithm, "--TeleTaxi.Destination=" + destination,
+                                   "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
+  args.insert(args.end(), more.begin(), more.end());
+  aula::process::ChildProcess run(args, log, log);
   const auto code = run.wait(90s);
   EXPECT_TRUE(code.has_value()) << "the run did not end\n" << readFile(log);
   EXPECT_EQ(code.value_or(-1), 0) << readFile(log);
@@ -61,4 +64,63 @@ TEST(TeleTaxiRun, TheSameRunTwiceGivesByteIdenticalReports) {
   const std::string second = runTaxi("120,-40", "repeat_b");
   EXPECT_FALSE(first.empty());
   EXPECT_EQ(first, second);
+}
+
+// The component on its own (no simulator, no launcher): a destination the taxi cannot drive to
+// is refused as soon as it has loaded the world, with the reason, and nothing runs.
+TEST(TeleTaxiComponent, RefusesADestinationInsideABuildingOrAtTheStartWithItsReason) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"60,60", "(60.0, 60.0) is inside a building or obstacle"},
+      {"0,0", "(0.0, 0.0) is closer than 2 m to the taxi's start: choose a destination to drive to"},
+      {"1.2,-0.8", "(1.2, -0.8) is closer than 2 m to the taxi's start"},
+  };
+  for (const auto& [destination, reason] : cases) {
+    const auto out = aula::testing::runToEnd({std::string(AULA_BIN_DIR) + "/teletaxi", "--headless", "--TeleTaxi.Algorithm=reference",
+                                              "--TeleTaxi.Destination=" + destination,
+                                              "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                             30s);
+    ASSERT_TRUE(out.code.has_value()) << destination << ": the component did not end\n" << out.output;
+    EXPECT_EQ(*out.code, 2) << out.output;
+    EXPECT_NE(out.output.find("TeleTaxi.Destination = " + destination + ": " + reason), std::string::npos) << out.output;
+  }
+}
+
+// Headless, the taxi standing where the destination cannot be reached from (here: started
+// inside a building): the component's Generate Path refuses with the reason, the run ends with
+// exit code 2 at once and there is no mark, rather than a 600 s wait for a 0.
+TEST(TeleTaxiRun, ADestinationTheTaxiCannotReachFromWhereItStandsEndsTheRunWithTheReason) {
+  const std::string dir = aula::testing::privateDir();
+  const auto out = aula::testing::runToEnd({std::string(AULA_BIN_DIR) + "/aula", "run", "teletaxi", "--headless",
+                                            "--algorithm=reference", "--Simulator.StartPose.taxi_holo=60,60,0",
+                                            "--report=" + dir + "/report.json", "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                           60s);
+  ASSERT_TRUE(out.code.has_value()) << out.output;
+  EXPECT_EQ(*out.code, 2) << out.output;
+  EXPECT_NE(out.output.find("teletaxi: cannot generate a path: (120.0, -40.0) cannot be reached from where the taxi stands (60."),
+            std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("no mark: the run never started"), std::string::npos) << out.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/report.json")) << out.output;
+  EXPECT_LT(out.wall_s, 20.0) << "refused at once, not after waiting out the referee's timeout";
+}
+
+// The default rubric's report states its preset and numbers; the original's too.
+TEST(TeleTaxiRun, TheReportStatesTheRubricPresetAndItsNumbers) {
+  const std::string json = runTaxi("120,-40", "rubric");
+  EXPECT_NE(json.find("\"rubric\": {\n    \"preset\": \"default\",\n    \"TeleTaxi.Referee.ArrivalRadius\": 5.0,\n"
+                      "    \"TeleTaxi.Referee.FullMarkSpeed\": 2.6,\n    \"TeleTaxi.Referee.MinTravel\": 2.0\n  }"),
+            std::string::npos) << json;
+  EXPECT_NE(json.find("\"measures\": [\"driving_time_s\", \"final_distance_m\", \"path_length_m\"]"), std::string::npos) << json;
+}
+
+// A taxi that never moves (the student template stays still), its destination 3 m from the start:
+// the original's scale gave it 7.5 for "arriving"; the default gives no distance mark.
+TEST(TeleTaxiRun, ATaxiThatNeverDrivesGetsNoDistanceMarkUnlessTheOriginalRubric) {
+  const std::string still = runTaxi("0,-3", "still", "student");
+  EXPECT_NE(still.find("\"reached\": true"), std::string::npos) << still;
+  EXPECT_LT(aula::testing::jsonNumber(still, "path_length_m"), 0.5) << still;
+  EXPECT_EQ(aula::testing::jsonNumber(still, "mark"), 0.0) << still;
+  EXPECT_NE(still.find("at the destination without driving"), std::string::npos) << still;
+  const std::string original = runTaxi("0,-3", "still_original", "student", {"--TeleTaxi.Referee.Rubric=original"});
+  EXPECT_EQ(aula::testing::jsonNumber(original, "mark"), 7.5) << original;
+  EXPECT_NE(original.find("\"preset\": \"original\""), std::string::npos) << original;
 }

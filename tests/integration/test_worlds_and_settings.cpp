@@ -14,7 +14,9 @@
 
 using namespace std::chrono_literals;
 using aula::process::ChildProcess;
+using aula::testing::Outcome;
 using aula::testing::readFile;
+using aula::testing::runToEnd;
 namespace fs = std::filesystem;
 
 namespace {
@@ -22,25 +24,6 @@ namespace {
 const std::string kBin = AULA_BIN_DIR;
 const std::string kWorlds = std::string(AULA_SOURCE_DIR) + "/worlds/";
 
-struct Outcome {
-  std::optional<int> code;
-  std::string output;
-  double wall_s = 0;
-};
-
-// Runs a program to its end (or `limit`), stdout and stderr together.
-Outcome runToEnd(std::vector<std::string> args, std::chrono::seconds limit = 60s) {
-  // Two files: one file opened twice would let stdout and stderr overwrite each other.
-  const std::string dir = aula::testing::privateDir();
-  const auto start = std::chrono::steady_clock::now();
-  ChildProcess child(std::move(args), dir + "/out.log", dir + "/err.log");
-  Outcome out;
-  out.code = child.wait(limit);
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!out.code) child.stop();
-  out.output = readFile(dir + "/err.log") + readFile(dir + "/out.log");
-  return out;
-}
 
 void writeFile(const std::string& path, const std::string& text) {
   fs::create_directories(fs::path(path).parent_path());

@@ -3,6 +3,7 @@
 #include <aula/teletaxi/gradient_field.hpp>
 #include <aula/geometry/map_transform.hpp>
 
+#include <opencv2/core.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -56,21 +57,31 @@ TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const 
 }
 
 std::optional<std::string> TaxiComponent::destinationProblem(double x_m, double y_m) const {
-  char where[96];
-  std::snprintf(where, sizeof where, "(%.1f, %.1f)", x_m, y_m);
   if (const auto problem = world::pointProblem(map_, x_m, y_m)) return problem;
-  const double dx = x_m - start_xy_m_.first, dy = y_m - start_xy_m_.second;
-  if (std::hypot(dx, dy) < kMinTripM) {
+  if (std::hypot(x_m - start_xy_m_.first, y_m - start_xy_m_.second) < kMinTripM) {
+    char where[96];
+    std::snprintf(where, sizeof where, "(%.1f, %.1f)", x_m, y_m);
     return std::string(where) + " is closer than " + std::to_string(static_cast<int>(kMinTripM)) +
            " m to the taxi's start: choose a destination to drive to";
   }
+  return tripProblem(start_xy_m_, {x_m, y_m}, "the taxi's start");
+}
+
+std::optional<std::string> TaxiComponent::tripProblem(std::pair<double, double> from, std::pair<double, double> to,
+                                                      const std::string& from_what) const {
+  if (const auto problem = world::pointProblem(map_, to.first, to.second)) return problem;
+  char where[96];
+  std::snprintf(where, sizeof where, "(%.1f, %.1f)", to.first, to.second);
   // Reachable: the GPP field grown from the destination covers the start.
   GradientField field(map_.image);
-  const auto [gx, gy] = grid_->worldToGrid(x_m, y_m);
+  const auto [gx, gy] = grid_->worldToGrid(to.first, to.second);
   if (!field.compute({gx, gy})) return std::string(where) + " is too close to a building for the taxi";
-  const auto [sx, sy] = grid_->worldToGrid(start_xy_m_.first, start_xy_m_.second);
+  const auto [sx, sy] = grid_->worldToGrid(from.first, from.second);
   if (!std::isfinite(field.value(sx, sy))) {
-    return std::string(where) + " cannot be reached from the taxi's start: it is walled off";
+    char start[96];
+    std::snprintf(start, sizeof start, " (%.1f, %.1f)", from.first, from.second);
+    return std::string(where) + " cannot be reached from " + from_what + start +
+           ": GPP's field from the destination does not reach it (walled off, or the taxi is not on the streets)";
   }
   return std::nullopt;
 }
@@ -86,12 +97,16 @@ void TaxiComponent::setDestination(double x_m, double y_m) {
 }
 
 bool TaxiComponent::generatePath(std::string* why) {
-  auto fail = [&](const char* reason) {
+  auto fail = [&](const std::string& reason) {
     if (why) *why = reason;
     return false;
   };
   if (!destination_) return fail("choose a destination first (double-click on the map)");
   if (!pose_->received()) return fail("no pose from the simulator yet");
+  // The taxi may have been teleoperated (or started) somewhere the destination cannot be reached from.
+  if (const auto problem = tripProblem({pose_->getX(), pose_->getY()}, *destination_, "where the taxi stands")) {
+    return fail("cannot generate a path: " + *problem);
+  }
   const auto [px, py] = grid_->worldToGrid(pose_->getX(), pose_->getY());
   grid_->setPose(px, py);
   grid_->resetPath();
@@ -101,6 +116,10 @@ bool TaxiComponent::generatePath(std::string* why) {
   }
   path_generated_ = true;
   return true;
+}
+
+bool TaxiComponent::hasPath() const {
+  return grid_->isPathFinded() && cv::countNonZero(grid_->path()) > 0;
 }
 
 bool TaxiComponent::go(std::string* why) {
@@ -143,15 +162,25 @@ void TaxiComponent::tick(int64_t utime) {
     const auto [px, py] = grid_->worldToGrid(pose_->getX(), pose_->getY());
     grid_->setPose(px, py);
   }
-  if (autostart_ && destination_ && pose_->received() && !running() && started_utime_ < 0) {
-    if (!path_generated_) generatePath();
-    // GO! takes effect from this tick: the first execute() runs at the next period.
-    started_utime_ = utime;
-    loop_->setRunning(true);
-    episode_->markChanged();
-  }
+  if (autostart_ && destination_ && pose_->received() && !running() && started_utime_ < 0 && !refusal_) autostartAt(utime);
   episode_->tick(utime, {running(), started_utime_, destination_});
   if (on_tick_) on_tick_(utime);
+}
+
+void TaxiComponent::autostartAt(int64_t utime) {
+  if (!path_generated_) {
+    const std::pair<double, double> here{pose_->getX(), pose_->getY()};
+    if (const auto problem = tripProblem(here, *destination_, "where the taxi stands")) {
+      // Nothing to drive to: headless, the process ends with the reason (runComponent).
+      refusal_ = "cannot generate a path: " + *problem;
+      return;
+    }
+    generatePath();  // a fault in the student's generatePath() is the run's fault, graded as such
+  }
+  // GO! takes effect from this tick: the first execute() runs at the next period.
+  started_utime_ = utime;
+  loop_->setRunning(true);
+  episode_->markChanged();
 }
 
 

@@ -74,7 +74,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
     std::string why;
     if (!component_.generatePath(&why)) {
       status_label_->setText(QString::fromStdString(why));
-    } else if (!component_.grid().isPathFinded()) {
+    } else if (!component_.hasPath()) {
       // Say what happened, not what was hoped for: the template's generatePath() marks nothing.
       status_label_->setText("generatePath() returned without marking a path (Grid::setPathVal / setPathFinded): "
                              "nothing to follow yet");
@@ -153,6 +153,9 @@ void TaxiWindow::refresh() {
     end_shown_generation_ = component_.generation();
     status_label_->setText(QString::fromStdString(said->ending) +
                            " - the algorithm is stopped; the teleoperator drives the taxi");
+  }
+  if (const auto refused = component_.refusal()) {
+    status_label_->setText("Autostart refused: " + QString::fromStdString(*refused));
   }
   if (component_.grid().isPathFinded() && !path_shown_) updatePathOverlay();
   if (!component_.grid().isPathFinded() && path_shown_) {

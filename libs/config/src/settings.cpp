@@ -71,6 +71,13 @@ std::string SettingSpec::rangeText() const {
   return unit.empty() ? out : out + " " + unit;
 }
 
+const Preset* SettingSpec::preset(const std::string& name) const {
+  for (const Preset& p : presets) {
+    if (p.name == name) return &p;
+  }
+  return nullptr;
+}
+
 SettingsTable& SettingsTable::add(SettingSpec spec) {
   if (find(spec.key) != nullptr) throw std::logic_error("setting '" + spec.key + "' declared twice in " + owner_);
   if (!isFamily(spec.key)) check(spec, spec.key, spec.default_value, "default of " + owner_);
@@ -138,6 +145,62 @@ SettingsTable& SettingsTable::reals(const std::string& key, const std::string& d
   SettingSpec s = spec(key, SettingType::DoubleList, def, unit, min, max, help);
   s.list_size = count;
   return add(std::move(s));
+}
+
+SettingsTable& SettingsTable::presets(const std::string& key, const std::string& def, std::vector<std::string> governs,
+                                      std::vector<Preset> presets, const std::string& help) {
+  SettingSpec s = spec(key, SettingType::Choice, def, "", -kInf, kInf, help);
+  for (const std::string& governed : governs) {
+    const SettingSpec* target = find(governed);
+    if (target == nullptr || isFamily(governed) || target->key != governed) {
+      throw std::logic_error(owner_ + ": preset setting " + key + " governs '" + governed + "', which is not declared before it");
+    }
+    if (presetOf(governed) != nullptr) throw std::logic_error(owner_ + ": '" + governed + "' is governed by two presets");
+  }
+  for (const Preset& preset : presets) {
+    s.choices.push_back(preset.name);
+    for (const auto& [governed, value] : preset.values) {
+      if (std::find(governs.begin(), governs.end(), governed) == governs.end()) {
+        throw std::logic_error(owner_ + ": preset " + key + " = " + preset.name + " sets '" + governed + "', which it does not govern");
+      }
+      check(*find(governed), governed, value, "preset " + preset.name + " of " + owner_);
+    }
+  }
+  s.governs = std::move(governs);
+  s.presets = std::move(presets);
+  return add(std::move(s));
+}
+
+const SettingSpec* SettingsTable::presetOf(const std::string& key) const {
+  for (const auto& spec : specs_) {
+    if (std::find(spec.governs.begin(), spec.governs.end(), key) != spec.governs.end()) return &spec;
+  }
+  return nullptr;
+}
+
+std::string SettingsTable::presetValue(const std::string& key, const std::string& name) const {
+  const SettingSpec* selector = presetOf(key);
+  const Preset* preset = selector != nullptr ? selector->preset(name) : nullptr;
+  if (preset == nullptr) throw std::logic_error(owner_ + ": no preset '" + name + "' governs '" + key + "'");
+  for (const auto& [governed, value] : preset->values) {
+    if (governed == key) return value;
+  }
+  return find(key)->default_value;
+}
+
+bool SettingsTable::isPresetValue(const std::string& key, const std::string& name, const std::string& value) const {
+  Config both;
+  both.set("preset", presetValue(key, name), "preset");
+  both.set("value", value, "value");
+  switch (find(key)->type) {
+    case SettingType::Int:
+    case SettingType::Double: return both.getDouble("preset") == both.getDouble("value");
+    case SettingType::DoubleList: return both.getDoubleList("preset") == both.getDoubleList("value");
+    case SettingType::Bool: return both.getBool("preset") == both.getBool("value");
+    case SettingType::String:
+    case SettingType::Choice: break;
+  }
+  return both.getString("preset") == both.getString("value");
 }
 
 const SettingSpec* SettingsTable::find(const std::string& key) const {
@@ -227,6 +290,14 @@ Config SettingsTable::resolve(const Config& cfg, const std::vector<const Setting
     if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
     throw ConfigError(message + "; `" + owner_ + " --help` lists the settings");
   }
+  // A preset fills the keys it governs that the .cfg and the command line leave unset.
+  for (const auto& selector : specs_) {
+    if (selector.presets.empty()) continue;
+    const std::string name = out.has(selector.key) ? out.getString(selector.key) : selector.default_value;
+    for (const std::string& key : selector.governs) {
+      if (!out.has(key)) out.set(key, presetValue(key, name), "preset " + name + " (" + selector.key + ")");
+    }
+  }
   for (const auto& spec : specs_) {
     if (isFamily(spec.key) || out.has(spec.key)) continue;
     out.set(spec.key, spec.default_value, "default");
@@ -241,7 +312,15 @@ std::string SettingsTable::help() const {
     if (!isFamily(spec.key)) out << ", default '" << spec.default_value << "'";
     const std::string range = spec.rangeText();
     if (!range.empty()) out << ", " << range;
+    if (const SettingSpec* selector = presetOf(spec.key)) out << ", set by " << selector->key;
     out << ")\n      " << spec.help << "\n";
+    for (const Preset& preset : spec.presets) {
+      out << "      " << preset.name << ": " << preset.help;
+      for (size_t i = 0; i < preset.values.size(); ++i) {
+        out << (i ? ", " : "; ") << preset.values[i].first << " = " << preset.values[i].second;
+      }
+      out << "\n";
+    }
   }
   return out.str();
 }
@@ -262,9 +341,18 @@ std::string SettingsTable::markdown(const Config& effective, const std::string& 
   out << "| setting | value | range | what it means |\n|---|---|---|---|\n";
   for (const SettingSpec& spec : specs_) {
     if (spec.key.rfind(prefix, 0) != 0 || !effective.has(spec.key)) continue;
-    std::string value = effective.getString(spec.key);
-    if (!spec.unit.empty()) value += " " + spec.unit;
+    const std::string unit = spec.unit.empty() ? "" : " " + spec.unit;
+    std::string value = effective.getString(spec.key) + unit;
     std::string help = spec.help;
+    // What another preset would give instead, where it differs: the page shows every preset's numbers.
+    if (const SettingSpec* selector = presetOf(spec.key)) {
+      const std::string selected = effective.getString(selector->key);
+      for (const Preset& preset : selector->presets) {
+        if (preset.name == selected || isPresetValue(spec.key, preset.name, effective.getString(spec.key))) continue;
+        value += "; `" + preset.name + "`: " + presetValue(spec.key, preset.name) + unit;
+      }
+    }
+    for (const Preset& preset : spec.presets) help += "; `" + preset.name + "`: " + preset.help;
     for (size_t at = help.find('|'); at != std::string::npos; at = help.find('|', at + 2)) help.replace(at, 1, "\\|");
     out << "| `" << spec.key << "` | " << value << " | " << spec.rangeText() << " | " << help << " |\n";
   }

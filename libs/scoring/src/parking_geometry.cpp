@@ -16,6 +16,8 @@ double ParkingScene::slotLengthM() const {
   return (front_car.centre.x_m - front_car.length_m / 2) - (rear_car.centre.x_m + rear_car.length_m / 2);
 }
 
+double ParkingScene::idealGapM() const { return (slotLengthM() - car_length_m) / 2; }
+
 ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::string& robot_name) {
   const std::string where = world.source_path.empty() ? world.name : world.source_path;
   std::vector<OrientedBox> parked;
@@ -59,6 +61,7 @@ ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m
   ParkingMeasures m;
   m.front_gap_m = geometry::distance(car, scene.front_car);
   m.rear_gap_m = geometry::distance(car, scene.rear_car);
+  m.ideal_gap_m = scene.idealGapM();
   double lowest = std::numeric_limits<double>::infinity();
   for (const auto& p : car.corners()) lowest = std::min(lowest, p.y());
   m.curb_gap_m = lowest - scene.curb_y_m;

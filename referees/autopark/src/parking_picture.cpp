@@ -39,8 +39,8 @@ void drawGaps(RunPicture& picture, const ParkingRunSummary& run, const OrientedB
   const double lane_y_m = run.y_m;
   const double front_car_m = s.front_car.centre.x_m - s.front_car.length_m / 2;
   const double rear_car_m = s.rear_car.centre.x_m + s.rear_car.length_m / 2;
-  const cv::Scalar front = scoreColour(gapScore(m.front_gap_m, run.settings));
-  const cv::Scalar rear = scoreColour(gapScore(m.rear_gap_m, run.settings));
+  const cv::Scalar front = scoreColour(gapScore(m.front_gap_m, m.ideal_gap_m, run.settings));
+  const cv::Scalar rear = scoreColour(gapScore(m.rear_gap_m, m.ideal_gap_m, run.settings));
   const cv::Scalar curb = scoreColour(curbScore(m.curb_gap_m, run.settings));
   picture.polyline({{front_m, lane_y_m}, {front_car_m, lane_y_m}}, front, 2);
   picture.polyline({{rear_car_m, lane_y_m}, {rear_m, lane_y_m}}, rear, 2);
@@ -131,7 +131,7 @@ cv::Mat parkingPicture(const cv::Mat& street, const geometry::MapTransform& view
   std::snprintf(line, sizeof line, "gaps: front %.2f m, rear %.2f m, curb %.2f m%s; yaw error %.1f deg; %lld collisions",
                 m.front_gap_m, m.rear_gap_m, m.curb_gap_m, m.inside_slot ? "" : " (not in the slot)", m.yaw_error_deg,
                 run.collisions);
-  std::vector<std::string> lines = {terms, line};
+  std::vector<std::string> lines = {terms, line, "rubric " + run.settings.rubric + ": " + gapRuleText(run.settings)};
   lines.insert(lines.end(), run.notes.begin(), run.notes.end());
   return picture.compose(title, lines);
 }

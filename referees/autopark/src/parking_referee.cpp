@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace aula::autopark {
 namespace {
@@ -15,10 +16,55 @@ double angleScore(double yaw_error_deg) {
 
 }  // namespace
 
-double gapScore(double gap_m, const ParkingRefereeSettings& s) {
+ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
+  ParkingRefereeSettings s;
+  s.rubric = cfg.getString("Autopark.Referee.Rubric");
+  s.timeout_s = cfg.getDouble("Autopark.Referee.Timeout");
+  s.still_hold_s = cfg.getDouble("Autopark.Referee.StillHold");
+  s.full_time_s = cfg.getDouble("Autopark.Referee.FullMarkTime");
+  s.gaps_relative_to_slot = cfg.getString("Autopark.Referee.GapRule") == "slot";
+  const auto fractions = cfg.getDoubleList("Autopark.Referee.SlotGapFractions");
+  const auto gaps = cfg.getDoubleList("Autopark.Referee.GapBands");
+  const auto curb = cfg.getDoubleList("Autopark.Referee.CurbBands");
+  // The ranges of each number are declared (aula_settings); their order is checked here.
+  auto bad = [&](const std::string& key, const std::string& what) {
+    throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) + ": " + what);
+  };
+  if (!(fractions[0] <= fractions[1])) bad("Autopark.Referee.SlotGapFractions", "expected half <= full (fractions of the ideal gap)");
+  if (!(gaps[0] <= gaps[1] && gaps[1] < gaps[2])) bad("Autopark.Referee.GapBands", "expected half_from <= full_from < full_to (m)");
+  if (!(curb[0] > 0 && curb[0] <= curb[1])) bad("Autopark.Referee.CurbBands", "expected 0 < full <= half (m)");
+  s.slot_gap_half_fraction = fractions[0];
+  s.slot_gap_full_fraction = fractions[1];
+  s.gap_half_from_m = gaps[0];
+  s.gap_full_from_m = gaps[1];
+  s.gap_full_to_m = gaps[2];
+  s.curb_full_m = curb[0];
+  s.curb_half_m = curb[1];
+  return s;
+}
+
+double gapScore(double gap_m, double ideal_gap_m, const ParkingRefereeSettings& s) {
+  if (s.gaps_relative_to_slot) {
+    if (!(ideal_gap_m > 0) || !(gap_m > 0)) return 0.0;  // no room in the slot, or touching
+    return gap_m >= s.slot_gap_full_fraction * ideal_gap_m ? 100.0 : gap_m >= s.slot_gap_half_fraction * ideal_gap_m ? 50.0 : 0.0;
+  }
   if (gap_m >= s.gap_full_from_m && gap_m < s.gap_full_to_m) return 100.0;
   if (gap_m >= s.gap_half_from_m && gap_m < s.gap_full_from_m) return 50.0;
   return 0.0;
+}
+
+std::string gapRuleText(const ParkingRefereeSettings& s) {
+  char gaps[128], text[256];
+  if (s.gaps_relative_to_slot) {
+    std::snprintf(gaps, sizeof gaps, "gaps of at least %.0f %% of a centred car's (half from %.0f %%)",
+                  100 * s.slot_gap_full_fraction, 100 * s.slot_gap_half_fraction);
+  } else {
+    std::snprintf(gaps, sizeof gaps, "gaps in [%.3g, %.3g) m (half from %.3g m)", s.gap_full_from_m, s.gap_full_to_m,
+                  s.gap_half_from_m);
+  }
+  std::snprintf(text, sizeof text, "full marks for %s, the curb within %.3g m, parked in under %.4g s", gaps,
+                s.curb_full_m, s.full_time_s);
+  return text;
 }
 
 double curbScore(double gap_m, const ParkingRefereeSettings& s) {
@@ -32,7 +78,8 @@ ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_ti
   // Angle and distances grade where the car is in the slot; outside it there is nothing to grade.
   if (m.inside_slot) {
     out.angle = angleScore(m.yaw_error_deg);
-    out.distance = (gapScore(m.front_gap_m, s) + gapScore(m.rear_gap_m, s) + curbScore(m.curb_gap_m, s)) / 3.0;
+    out.distance =
+        (gapScore(m.front_gap_m, m.ideal_gap_m, s) + gapScore(m.rear_gap_m, m.ideal_gap_m, s) + curbScore(m.curb_gap_m, s)) / 3.0;
   }
   if (parked) out.time = park_time_s < s.full_time_s ? 100.0 : 100.0 * s.full_time_s / park_time_s;
   out.collision = collisions == 0 ? 100.0 : 0.0;

@@ -3,6 +3,8 @@
 #include <aula/geometry/angles.hpp>
 #include <aula/autopark/parking_picture.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/referee/rubric.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -12,32 +14,12 @@
 
 namespace aula::autopark {
 
-ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
-  ParkingRefereeSettings s;
-  s.timeout_s = cfg.getDouble("Autopark.Referee.Timeout");
-  s.still_hold_s = cfg.getDouble("Autopark.Referee.StillHold");
-  s.full_time_s = cfg.getDouble("Autopark.Referee.FullMarkTime");
-  const auto gaps = cfg.getDoubleList("Autopark.Referee.GapBands");
-  const auto curb = cfg.getDoubleList("Autopark.Referee.CurbBands");
-  // The ranges of each number are declared (aula_settings); their order is checked here.
-  auto bad = [&](const std::string& key, const std::string& what) {
-    throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) + ": " + what);
-  };
-  if (!(gaps[0] <= gaps[1] && gaps[1] < gaps[2])) bad("Autopark.Referee.GapBands", "expected half_from <= full_from < full_to (m)");
-  if (!(curb[0] > 0 && curb[0] <= curb[1])) bad("Autopark.Referee.CurbBands", "expected 0 < full <= half (m)");
-  s.gap_half_from_m = gaps[0];
-  s.gap_full_from_m = gaps[1];
-  s.gap_full_to_m = gaps[2];
-  s.curb_full_m = curb[0];
-  s.curb_half_m = curb[1];
-  return s;
-}
-
 ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
   const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
   scene_ = ParkingScene::fromWorld(world, car.name);
   settings_ = parkingRefereeSettings(cfg);
+  rubric_ = referee::rubricReport(cfg, settings::tableOf("autopark-referee"), "Autopark.Referee.Rubric");
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
   bus.subscribe(world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
   bus.subscribe(world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
@@ -119,6 +101,7 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("yaw_error_deg", m.yaw_error_deg);
   out.set("position_error_m", m.position_error_m);
   out.set("slot_length_m", r.scene().slotLengthM());
+  out.set("ideal_gap_m", m.ideal_gap_m);
   out.set("collisions", r.collisions());
   out.set("contact_time_s", r.contactS());
   out.set("final_pose", std::vector<double>{r.x(), r.y(), r.yawRad()});
@@ -127,6 +110,9 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("score_time", s.time);
   out.set("score_distance", s.distance);
   out.set("score_collision", s.collision);
+  out.set("rubric", rubric_);
+  // The raw measures `aula grade` shows beside the mark.
+  out.set("measures", std::vector<std::string>{"park_time_s", "front_gap_m", "rear_gap_m", "curb_gap_m"});
   outcome_.addTo(out);
   return out;
 }
@@ -139,9 +125,11 @@ std::string ParkingRefereeNode::summary() const {
   std::snprintf(text, sizeof text,
                 "Autopark mark: %.2f / 10 = 0.025 x (angle %.0f + time %.0f + distances %.1f + collisions %.0f)\n"
                 "  %s after %.1f s sim; %.2f m from the ideal pose, yaw error %.1f deg\n"
-                "  gaps: front %.2f m, rear %.2f m, curb %.2f m; collisions %lld (%.1f s in contact)\n",
+                "  gaps: front %.2f m, rear %.2f m (a centred car: %.2f m), curb %.2f m; collisions %lld (%.1f s in contact)\n"
+                "  rubric %s: %s\n",
                 s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
-                m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.curb_gap_m, r.collisions(), r.contactS());
+                m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.ideal_gap_m, m.curb_gap_m, r.collisions(),
+                r.contactS(), r.settings().rubric.c_str(), gapRuleText(r.settings()).c_str());
   return std::string(text) + outcome_.summary();
 }
 

@@ -48,6 +48,7 @@ class ParkingRefereeNode {
 
   ParkingScene scene_;
   ParkingRefereeSettings settings_;
+  referee::Report rubric_;  // the report's "rubric": the preset and its numbers
   int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   std::unique_ptr<ParkingReferee> referee_;
   aula::referee::RunOutcome outcome_;
@@ -57,8 +58,5 @@ class ParkingRefereeNode {
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   world::WorldSpec world_;  // the street, drawn into the picture only when one is asked for
 };
-
-// Autopark.Referee.* keys; throws config::ConfigError naming the key.
-ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg);
 
 }  // namespace aula::autopark

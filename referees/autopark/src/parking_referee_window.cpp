@@ -51,12 +51,13 @@ void ParkingRefereeWindow::refresh() {
   const double t = r.elapsedS();
   clock_->setText(QString("%1:%2").arg(static_cast<int>(t) / 60, 2, 10, QChar('0')).arg(std::fmod(t, 60.0), 4, 'f', 1, QChar('0')));
   const ParkingMeasures& m = r.measures();
-  distances_->setText(QString("Front car: %1 m\nRear car:  %2 m\nCurb:      %3 m\nTo the ideal pose: %4 m\n%5")
+  distances_->setText(QString("Front car: %1 m\nRear car:  %2 m  (centred: %6 m each)\nCurb:      %3 m\nTo the ideal pose: %4 m\n%5")
                           .arg(m.front_gap_m, 5, 'f', 2)
                           .arg(m.rear_gap_m, 5, 'f', 2)
                           .arg(m.curb_gap_m, 5, 'f', 2)
                           .arg(m.position_error_m, 0, 'f', 2)
-                          .arg(r.parked() ? "PARKED" : m.inside_slot ? "in the slot" : "not in the slot"));
+                          .arg(r.parked() ? "PARKED" : m.inside_slot ? "in the slot" : "not in the slot")
+                          .arg(m.ideal_gap_m, 0, 'f', 2));
   orientation_->setValue(m.yaw_error_deg);
   collisions_->setValue(static_cast<int>(std::min<long long>(r.collisions(), collisions_->maximum())));
   collisions_->setFormat(QString("collisions: %1 (%2 s)").arg(r.collisions()).arg(r.contactS(), 0, 'f', 1));

@@ -64,6 +64,14 @@ void Report::set(const std::string& key, const std::vector<double>& values) {
   put(key, json + "]");
 }
 
+void Report::set(const std::string& key, const std::vector<std::string>& values) {
+  std::string json = "[";
+  for (size_t i = 0; i < values.size(); ++i) json += (i ? ", " : "") + quote(values[i]);
+  put(key, json + "]");
+}
+
+void Report::set(const std::string& key, const Report& object) { put(key, object.json(2)); }
+
 std::string Report::raw(const std::string& key) const {
   for (const auto& [k, v] : fields_) {
     if (k == key) return v;
@@ -71,14 +79,20 @@ std::string Report::raw(const std::string& key) const {
   return "";
 }
 
-std::string Report::toJson() const {
+std::string Report::json(int indent) const {
+  const std::string margin(indent, ' ');
   std::string out = "{\n";
   for (size_t i = 0; i < fields_.size(); ++i) {
-    out += "  " + quote(fields_[i].first) + ": " + fields_[i].second;
+    // A nested object's lines move right with it.
+    std::string value = fields_[i].second;
+    for (size_t at = value.find('\n'); at != std::string::npos; at = value.find('\n', at + 1)) value.insert(at + 1, margin);
+    out += margin + "  " + quote(fields_[i].first) + ": " + value;
     out += i + 1 < fields_.size() ? ",\n" : "\n";
   }
-  return out + "}\n";
+  return out + margin + "}";
 }
+
+std::string Report::toJson() const { return json(0) + "\n"; }
 
 void Report::writeAtomically(const std::string& path) const { writeFileAtomically(path, toJson(), "report"); }
 

@@ -18,11 +18,17 @@ TaxiGrade gradeTaxi(const TaxiGradeInput& in, const TaxiGradeScale& scale) {
     g.verdict = line;
     return g;
   }
-  g.base_mark = in.final_distance_m <= 2.0 ? 8.0 : in.final_distance_m <= 4.0 ? 7.5 : 7.0;
+  const bool drove = in.path_length_m >= scale.min_travel_m;
+  g.base_mark = !drove ? 0.0 : in.final_distance_m <= 2.0 ? 8.0 : in.final_distance_m <= 4.0 ? 7.5 : 7.0;
   g.speed_mark = std::min(10.0, 10.0 * g.average_speed_mps / scale.reference_speed_mps);
   g.mark = std::min(10.0, g.base_mark + 0.2 * g.speed_mark);
-  std::snprintf(line, sizeof line, "reached: %.2f m from the destination, %.2f m/s average",
-                in.final_distance_m, g.average_speed_mps);
+  if (drove) {
+    std::snprintf(line, sizeof line, "reached: %.2f m from the destination, %.2f m/s average",
+                  in.final_distance_m, g.average_speed_mps);
+  } else {
+    std::snprintf(line, sizeof line, "at the destination without driving: %.2f m travelled, under the %.2f m a distance mark needs",
+                  in.path_length_m, scale.min_travel_m);
+  }
   g.verdict = line;
   return g;
 }

@@ -5,6 +5,18 @@
 
 namespace aula::teletaxi {
 
+TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
+  TaxiRefereeSettings s;
+  s.rubric = cfg.getString("TeleTaxi.Referee.Rubric");
+  s.timeout_s = cfg.getDouble("TeleTaxi.Referee.Timeout");
+  s.stop_speed_mps = cfg.getDouble("TeleTaxi.Referee.StopSpeed");
+  s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold");
+  s.scale.arrival_radius_m = cfg.getDouble("TeleTaxi.Referee.ArrivalRadius");
+  s.scale.reference_speed_mps = cfg.getDouble("TeleTaxi.Referee.FullMarkSpeed");
+  s.scale.min_travel_m = cfg.getDouble("TeleTaxi.Referee.MinTravel");
+  return s;
+}
+
 void TaxiReferee::setGoal(double x_m, double y_m) {
   if (started()) return;  // the destination is fixed once the taxi leaves
   goal_set_ = true;

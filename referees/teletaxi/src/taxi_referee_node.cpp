@@ -1,6 +1,8 @@
 #include "taxi_referee_node.hpp"
 
 #include <aula/lcm/bus.hpp>
+#include <aula/referee/rubric.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/teletaxi/taxi_picture.hpp>
 #include <cmath>
 #include <filesystem>
@@ -8,16 +10,9 @@
 
 namespace aula::teletaxi {
 
-TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
-  TaxiRefereeSettings s;
-  s.timeout_s = cfg.getDouble("TeleTaxi.Referee.Timeout");
-  s.stop_speed_mps = cfg.getDouble("TeleTaxi.Referee.StopSpeed");
-  s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold");
-  return s;
-}
-
 TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
+  rubric_ = referee::rubricReport(cfg, settings::tableOf("teletaxi-referee"), "TeleTaxi.Referee.Rubric");
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   map_params_ = {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]};
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString("TeleTaxi.Robot"));
@@ -103,6 +98,9 @@ aula::referee::Report TaxiRefereeNode::report() const {
   r.set("bumps", bumps_);
   r.set("destination_m", std::vector<double>{referee_.goalX(), referee_.goalY()});
   r.set("verdict", g.verdict);
+  r.set("rubric", rubric_);
+  // The raw measures `aula grade` shows beside the mark.
+  r.set("measures", std::vector<std::string>{"driving_time_s", "final_distance_m", "path_length_m"});
   outcome_.addTo(r);
   return r;
 }
@@ -114,10 +112,12 @@ std::string TaxiRefereeNode::summary() const {
                 "TeleTaxi mark: %.2f / 10\n"
                 "  %s\n"
                 "  base %.1f (distance %.2f m) + 0.2 x speed mark %.2f (%.2f m/s = %.1f km/h over %.1f m in %.1f s sim)\n"
-                "  straight distance start -> destination: %.1f m; bumps against walls: %lld\n",
+                "  straight distance start -> destination: %.1f m; bumps against walls: %lld\n"
+                "  rubric %s: arrival within %.3g m, a speed mark of 10 at %.3g m/s, a distance mark from %.3g m travelled\n",
                 g.mark, g.verdict.c_str(), g.base_mark, referee_.distanceToGoalM(), g.speed_mark,
                 g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
-                referee_.elapsedS(), referee_.straightDistanceM(), bumps_);
+                referee_.elapsedS(), referee_.straightDistanceM(), bumps_, settings_.rubric.c_str(),
+                settings_.scale.arrival_radius_m, settings_.scale.reference_speed_mps, settings_.scale.min_travel_m);
   return std::string(text) + outcome_.summary();
 }
 

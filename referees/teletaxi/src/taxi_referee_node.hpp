@@ -50,6 +50,7 @@ class TaxiRefereeNode {
   void onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg);
 
   TaxiRefereeSettings settings_;
+  referee::Report rubric_;  // the report's "rubric": the preset and its numbers
   int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   TaxiReferee referee_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
@@ -63,6 +64,5 @@ class TaxiRefereeNode {
   bool pressed_ = false;
 };
 
-TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg);
 
 }  // namespace aula::teletaxi

@@ -29,9 +29,9 @@ cv::Mat coveragePicture(const cv::Mat& occupancy, const CoverageGrid& grid, cons
   char title[160], line[256];
   std::snprintf(title, sizeof title, "Vacuum: mark %.2f / 10, %.1f %% of the floor cleaned", run.mark,
                 run.coverage_percent);
-  std::snprintf(line, sizeof line, "%.1f of %.1f m2 cleaned in %.0f s sim (full mark at %.0f %%); %lld bumps",
+  std::snprintf(line, sizeof line, "%.1f of %.1f m2 cleaned in %.0f s sim (%s); %lld bumps",
                 grid.cleanedPixels() * grid.transform().resolution_m * grid.transform().resolution_m, grid.floorAreaM2(),
-                run.elapsed_s, run.full_mark_coverage_percent, run.bumps);
+                run.elapsed_s, run.scale.c_str(), run.bumps);
   std::vector<std::string> lines = {line};
   lines.insert(lines.end(), run.notes.begin(), run.notes.end());
   return picture.compose(title, lines);

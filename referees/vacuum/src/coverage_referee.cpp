@@ -2,12 +2,40 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace aula::vacuum {
 
-double coverageMark(double coverage_percent, double full_mark_coverage_percent) {
-  if (!(full_mark_coverage_percent > 0) || !std::isfinite(coverage_percent)) return 0.0;
-  return std::clamp(10.0 * coverage_percent / full_mark_coverage_percent, 0.0, 10.0);
+double coverageMark(double coverage_percent, double half_mark_coverage_percent, double full_mark_coverage_percent) {
+  const double half = half_mark_coverage_percent, full = full_mark_coverage_percent;
+  if (!(half > 0 && half < full) || !std::isfinite(coverage_percent)) return 0.0;
+  const double mark = coverage_percent <= half ? 5.0 * coverage_percent / half
+                                               : 5.0 + 5.0 * (coverage_percent - half) / (full - half);
+  return std::clamp(mark, 0.0, 10.0);
+}
+
+CoverageSettings coverageSettings(const config::Config& cfg) {
+  CoverageSettings s;
+  s.rubric = cfg.getString("Vacuum.Referee.Rubric");
+  s.duration_s = cfg.getDouble("Vacuum.Referee.Duration");
+  s.robot_radius_m = cfg.getDouble("Vacuum.Referee.RobotRadius");
+  s.half_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.HalfMarkCoverage");
+  s.full_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.FullMarkCoverage");
+  // Each number's range is declared (aula_settings); their order is checked here.
+  if (!(s.half_mark_coverage_percent < s.full_mark_coverage_percent)) {
+    throw config::ConfigError(cfg.origin("Vacuum.Referee.FullMarkCoverage") + ": Vacuum.Referee.FullMarkCoverage = " +
+                              cfg.getString("Vacuum.Referee.FullMarkCoverage") + " % must be above Vacuum.Referee.HalfMarkCoverage = " +
+                              cfg.getString("Vacuum.Referee.HalfMarkCoverage") + " % (" +
+                              cfg.origin("Vacuum.Referee.HalfMarkCoverage") + ")");
+  }
+  return s;
+}
+
+std::string scaleText(const CoverageSettings& s) {
+  char text[128];
+  std::snprintf(text, sizeof text, "rubric %s: a 5 at %.4g %%, a 10 at %.4g %%", s.rubric.c_str(),
+                s.half_mark_coverage_percent, s.full_mark_coverage_percent);
+  return text;
 }
 
 CoverageReferee::CoverageReferee(CoverageGrid grid, CoverageSettings settings, int64_t origin_utime)

@@ -2,7 +2,9 @@
 
 #include <aula/geometry/map_transform.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/referee/rubric.hpp>
 #include <aula/referee/run_picture.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/vacuum/coverage_picture.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -15,10 +17,8 @@ namespace aula::vacuum {
 
 CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
-  CoverageSettings& s = settings_;
-  s.duration_s = cfg.getDouble("Vacuum.Referee.Duration");
-  s.full_mark_coverage_percent = cfg.getDouble("Vacuum.Referee.FullMarkCoverage");
-  s.robot_radius_m = cfg.getDouble("Vacuum.Referee.RobotRadius");
+  settings_ = coverageSettings(cfg);
+  rubric_ = referee::rubricReport(cfg, settings::tableOf("vacuum-cleaner-referee"), "Vacuum.Referee.Rubric");
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
   map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});
   // The floor is the free space reachable from where the robot starts in the world.
@@ -111,7 +111,8 @@ referee::Report CoverageRefereeNode::report() const {
   out.set("world_sha256", world_sha256_);
   out.set("finished", r.finished());
   out.set("coverage_percent", r.coveragePercent());
-  out.set("full_mark_coverage_percent", r.settings().full_mark_coverage_percent);
+  out.set("rubric", rubric_);
+  out.set("measures", std::vector<std::string>{"coverage_percent"});  // the raw measure `aula grade` shows
   out.set("coverage_per_100s", r.coveragePer100s());
   out.set("cleaned_area_m2", r.grid().cleanedPixels() * std::pow(r.grid().transform().resolution_m, 2));
   out.set("floor_area_m2", r.grid().floorAreaM2());
@@ -128,10 +129,10 @@ std::string CoverageRefereeNode::summary() const {
   char text[512];
   std::snprintf(text, sizeof text,
                 "Vacuum cleaner mark: %.2f / 10\n"
-                "  coverage %.2f %% of %.1f m2 of floor in %.0f s sim (full mark at %.0f %%)\n"
+                "  coverage %.2f %% of %.1f m2 of floor in %.0f s sim (%s)\n"
                 "  bumps %lld, time stuck %.1f s\n",
-                r.mark(), r.coveragePercent(), r.grid().floorAreaM2(), r.elapsedS(),
-                r.settings().full_mark_coverage_percent, r.bumps(), r.stuckS());
+                r.mark(), r.coveragePercent(), r.grid().floorAreaM2(), r.elapsedS(), scaleText(r.settings()).c_str(),
+                r.bumps(), r.stuckS());
   return std::string(text) + outcome_.summary();
 }
 
@@ -140,7 +141,7 @@ void CoverageRefereeNode::writePicture(const std::string& png_path) const {
   CoverageRunSummary run;
   run.mark = r.mark();
   run.coverage_percent = r.coveragePercent();
-  run.full_mark_coverage_percent = r.settings().full_mark_coverage_percent;
+  run.scale = scaleText(r.settings());
   run.elapsed_s = r.elapsedS();
   run.bumps = r.bumps();
   run.have_pose = have_pose_;

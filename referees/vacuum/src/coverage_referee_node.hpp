@@ -58,6 +58,7 @@ class CoverageRefereeNode {
   std::optional<TimedPoint> waiting_pose_;  // the last pose before the episode started
 
   CoverageSettings settings_;
+  referee::Report rubric_;  // the report's "rubric": the preset and its numbers
   double start_x_m_ = 0, start_y_m_ = 0;
   int64_t episode_from_utime_ = -1;  // truth at or before this sim time is the last episode's
   std::unique_ptr<CoverageReferee> referee_;

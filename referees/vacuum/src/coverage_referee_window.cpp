@@ -59,7 +59,7 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
 void CoverageRefereeWindow::refresh() {
   const CoverageReferee& r = node_.referee();
   percent_->setText(QString("%1 % cleaned").arg(r.coveragePercent(), 0, 'f', 2));
-  bar_->setValue(static_cast<int>(std::min(1000.0, 1000.0 * r.coveragePercent() / r.settings().full_mark_coverage_percent)));
+  bar_->setValue(static_cast<int>(std::lround(100.0 * r.mark())));  // the bar fills as the mark rises
   const double left = r.remainingS();
   countdown_->setText(!node_.started() ? QString("waiting for Run")
                                        : QString("%1:%2 left")
@@ -70,11 +70,12 @@ void CoverageRefereeWindow::refresh() {
 
 void CoverageRefereeWindow::showMark() {
   const CoverageReferee& r = node_.referee();
-  mark_->setText(QString("Mark: %1 / 10%2   (coverage %3 %, bumps %4)")
+  mark_->setText(QString("Mark: %1 / 10%2   (coverage %3 %, bumps %4; %5)")
                      .arg(r.mark(), 0, 'f', 2)
                      .arg(r.finished() ? "" : " so far")
                      .arg(r.coveragePercent(), 0, 'f', 1)
-                     .arg(r.bumps()));
+                     .arg(r.bumps())
+                     .arg(QString::fromStdString(scaleText(r.settings()))));
 }
 
 void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {

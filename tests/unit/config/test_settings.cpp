@@ -115,3 +115,66 @@ TEST(Settings, DeclaringAKeyTwiceOrABadDefaultIsAProgrammingError) {
   EXPECT_THROW(t.real("A.B", 1, "", 0, 2, ""), std::logic_error);
   EXPECT_THROW(t.real("A.C", 5, "", 0, 2, ""), ConfigError);
 }
+
+namespace {
+
+// A referee's rubric: two numbers and a preset over them.
+SettingsTable rubricTable() {
+  SettingsTable t("vacuum-cleaner-referee");
+  t.real("Vacuum.Referee.HalfMark", 40, "%", 0, 100, "worth a 5");
+  t.real("Vacuum.Referee.FullMark", 60, "%", 0, 100, "worth a 10");
+  t.presets("Vacuum.Referee.Rubric", "default", {"Vacuum.Referee.HalfMark", "Vacuum.Referee.FullMark"},
+            {{"default", "calibrated", {}}, {"original", "the thesis's", {{"Vacuum.Referee.FullMark", "30"}, {"Vacuum.Referee.HalfMark", "15"}}}},
+            "the grading scale");
+  return t;
+}
+
+}  // namespace
+
+TEST(SettingsPresets, APresetFillsWhatItGovernsAndAnExplicitValueStillWins) {
+  const SettingsTable t = rubricTable();
+  Config effective = t.resolve(Config());
+  EXPECT_EQ(effective.getString("Vacuum.Referee.Rubric"), "default");
+  EXPECT_DOUBLE_EQ(effective.getDouble("Vacuum.Referee.FullMark"), 60);
+  EXPECT_EQ(effective.origin("Vacuum.Referee.FullMark"), "preset default (Vacuum.Referee.Rubric)");
+
+  effective = t.resolve(Config::fromString("Vacuum.Referee.Rubric = original\n", "v.cfg"));
+  EXPECT_DOUBLE_EQ(effective.getDouble("Vacuum.Referee.HalfMark"), 15);
+  EXPECT_DOUBLE_EQ(effective.getDouble("Vacuum.Referee.FullMark"), 30);
+  EXPECT_EQ(effective.origin("Vacuum.Referee.FullMark"), "preset original (Vacuum.Referee.Rubric)");
+
+  // The .cfg picks the preset, the command line one of its numbers.
+  Config cfg = Config::fromString("Vacuum.Referee.Rubric = original\n", "v.cfg");
+  cfg.set("Vacuum.Referee.FullMark", "50", "command line --Vacuum.Referee.FullMark");
+  effective = t.resolve(cfg);
+  EXPECT_DOUBLE_EQ(effective.getDouble("Vacuum.Referee.HalfMark"), 15);
+  EXPECT_DOUBLE_EQ(effective.getDouble("Vacuum.Referee.FullMark"), 50);
+  EXPECT_EQ(effective.origin("Vacuum.Referee.FullMark"), "command line --Vacuum.Referee.FullMark");
+}
+
+TEST(SettingsPresets, AnUnknownPresetIsNamedWithTheChoices) {
+  const std::string error = errorOf(rubricTable(), Config::fromString("\nVacuum.Referee.Rubric = thesis\n", "v.cfg"));
+  EXPECT_NE(error.find("v.cfg:2: Vacuum.Referee.Rubric = 'thesis': expected one of: default, original"), std::string::npos)
+      << error;
+}
+
+TEST(SettingsPresets, HelpAndMarkdownShowEveryPresetsNumbers) {
+  const SettingsTable t = rubricTable();
+  const std::string help = t.help();
+  EXPECT_NE(help.find("Vacuum.Referee.FullMark  (number, default '60', [0, 100] %, set by Vacuum.Referee.Rubric)"),
+            std::string::npos) << help;
+  EXPECT_NE(help.find("original: the thesis's; Vacuum.Referee.FullMark = 30, Vacuum.Referee.HalfMark = 15"), std::string::npos)
+      << help;
+  const std::string page = t.markdown(t.resolve(Config()), "Vacuum.Referee.");
+  EXPECT_NE(page.find("| `Vacuum.Referee.FullMark` | 60 %; `original`: 30 % |"), std::string::npos) << page;
+  EXPECT_NE(page.find("the grading scale; `default`: calibrated; `original`: the thesis's"), std::string::npos) << page;
+}
+
+TEST(SettingsPresets, APresetOverUndeclaredKeysOrWithABadValueIsAProgrammingError) {
+  SettingsTable t("p");
+  t.real("A.X", 1, "", 0, 10, "x");
+  EXPECT_THROW(t.presets("A.Rubric", "default", {"A.Y"}, {{"default", "", {}}}, "?"), std::logic_error);
+  EXPECT_THROW(t.presets("A.Rubric", "default", {"A.X"}, {{"default", "", {{"A.X", "11"}}}}, "?"), ConfigError);
+  EXPECT_THROW(t.presets("A.Rubric", "default", {"A.X"}, {{"default", "", {{"A.Z", "1"}}}}, "?"), std::logic_error);
+  EXPECT_THROW(t.presets("A.Rubric", "neither", {"A.X"}, {{"default", "", {}}}, "?"), ConfigError);
+}

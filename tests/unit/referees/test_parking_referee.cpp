@@ -97,9 +97,18 @@ TEST(ParkingScores, BandsAndMark) {
   // 20 degrees either way: angle 50.
   EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, 20 * kDeg), true, 60, 0, s).angle, 50.0);
   EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, -20 * kDeg), true, 60, 0, s).angle, 50.0);
-  // 1.3 m from the rear car (50) and 3.7 m from the front one (0): D = (0 + 50 + 100) / 3.
+  // The slot rule (the default): a centred car's gaps are 2.5 m here. 1.3 m from the rear car
+  // (52 % of 2.5: full) and 3.7 m from the front one: D = 100.
   m = measureParking(handScene(), 6.05, -3, 0);
   EXPECT_NEAR(m.rear_gap_m, 1.3, 1e-9);
+  EXPECT_NEAR(m.ideal_gap_m, 2.5, 1e-9);
+  EXPECT_NEAR(scoreParking(m, true, 60, 0, s).distance, 100.0, 1e-9);
+  // 1.0 m (40 %: half) and 0.5 m (20 %: nothing) from the rear car.
+  EXPECT_DOUBLE_EQ(gapScore(1.0, 2.5, s), 50.0);
+  EXPECT_DOUBLE_EQ(gapScore(0.5, 2.5, s), 0.0);
+  EXPECT_DOUBLE_EQ(gapScore(0.1, -0.2, s), 0.0);  // a slot shorter than the car
+  // The original's absolute bands: 1.3 m is 50, 3.7 m is 0: D = (0 + 50 + 100) / 3.
+  s.gaps_relative_to_slot = false;
   EXPECT_NEAR(scoreParking(m, true, 60, 0, s).distance, 50.0, 1e-9);
 }
 

@@ -63,7 +63,8 @@ TEST(TaxiGrade, NoDivisionByZero) {
   const auto g = gradeTaxi(arrived(0.5, 0.0, 0.0));  // destination at the start, GO! and stop
   EXPECT_TRUE(std::isfinite(g.mark));
   EXPECT_DOUBLE_EQ(g.average_speed_mps, 0.0);
-  EXPECT_DOUBLE_EQ(g.mark, 8.0);
+  EXPECT_DOUBLE_EQ(g.mark, 0.0);  // it never drove: no distance mark
+  EXPECT_NE(g.verdict.find("without driving"), std::string::npos) << g.verdict;
   auto in = arrived(NAN);
   EXPECT_FALSE(gradeTaxi(in).reached);
 }
@@ -87,4 +88,19 @@ TEST(Report, JsonIsOrderedFixedFormatAndAtomic) {
   ss << in.rdbuf();
   EXPECT_EQ(ss.str(), r.toJson());
   EXPECT_THROW(r.writeAtomically("/nonexistent/dir/report.json"), std::runtime_error);
+}
+
+TEST(Report, NestedObjectsAndListsOfNamesIndentWithTheirDepth) {
+  aula::referee::Report inner, deeper;
+  deeper.set("x", 1.0);
+  inner.set("preset", "default");
+  inner.set("bands", std::vector<double>{1.0, 1.5});
+  inner.set("deeper", deeper);
+  aula::referee::Report r;
+  r.set("mark", 7.0);
+  r.set("rubric", inner);
+  r.set("measures", std::vector<std::string>{"a", "b\"c"});
+  EXPECT_EQ(r.toJson(),
+            "{\n  \"mark\": 7.0,\n  \"rubric\": {\n    \"preset\": \"default\",\n    \"bands\": [1.0, 1.5],\n"
+            "    \"deeper\": {\n      \"x\": 1.0\n    }\n  },\n  \"measures\": [\"a\", \"b\\\"c\"]\n}\n");
 }

@@ -71,10 +71,13 @@ TEST(CoverageGrid, FloorIsWhatIsReachableFromTheStart) {
 }
 
 TEST(CoverageReferee, MarkPerHundredSecondsAndTheEnd) {
-  EXPECT_DOUBLE_EQ(coverageMark(15.0, 30.0), 5.0);
-  EXPECT_DOUBLE_EQ(coverageMark(45.0, 30.0), 10.0);
-  EXPECT_DOUBLE_EQ(coverageMark(NAN, 30.0), 0.0);
-  EXPECT_DOUBLE_EQ(coverageMark(10.0, 0.0), 0.0);  // no division by zero
+  EXPECT_DOUBLE_EQ(coverageMark(15.0, 15.0, 30.0), 5.0);
+  EXPECT_DOUBLE_EQ(coverageMark(45.0, 15.0, 30.0), 10.0);
+  EXPECT_DOUBLE_EQ(coverageMark(20.0, 40.0, 60.0), 2.5);  // 0 to 5 up to the half mark's coverage
+  EXPECT_DOUBLE_EQ(coverageMark(50.0, 40.0, 60.0), 7.5);  // 5 to 10 from there to the full mark's
+  EXPECT_DOUBLE_EQ(coverageMark(NAN, 15.0, 30.0), 0.0);
+  EXPECT_DOUBLE_EQ(coverageMark(10.0, 0.0, 0.0), 0.0);    // no division by zero
+  EXPECT_DOUBLE_EQ(coverageMark(10.0, 20.0, 20.0), 0.0);
   CoverageSettings s;
   s.duration_s = 300;
   s.robot_radius_m = 0.1;

@@ -5,6 +5,7 @@
 #include <aula/grade/report_html.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string number(double value) {
+  if (!std::isfinite(value)) return "";  // no run measured it
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", value);
   return text;
@@ -73,12 +75,14 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
   struct Runs {
     std::vector<double> marks;
     std::map<std::string, std::vector<double>> by_world;
+    std::map<std::string, std::vector<double>> by_measure;
     std::map<std::string, int> failures;
     std::vector<std::string> failure_order;
     int failed = 0;
   };
   std::map<std::string, Runs> students;
   std::set<std::string> worlds;
+  std::vector<std::string> measures;  // as the reports name them, first seen first
   for (const auto& r : results) {
     Runs& runs = students[r.value("student", "?")];
     const double mark = r.value("mark", 0.0);
@@ -86,6 +90,14 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
     worlds.insert(world);
     runs.marks.push_back(mark);
     runs.by_world[world].push_back(mark);
+    if (r.contains("measures") && r["measures"].is_array()) {
+      for (const auto& name : r["measures"]) {
+        if (!name.is_string()) continue;
+        const std::string measure = name.get<std::string>();
+        if (std::find(measures.begin(), measures.end(), measure) == measures.end()) measures.push_back(measure);
+        if (r.contains(measure) && r[measure].is_number()) runs.by_measure[measure].push_back(r[measure].get<double>());
+      }
+    }
     const std::string failure = failureOf(r);
     if (failure.empty()) continue;
     ++runs.failed;
@@ -101,6 +113,10 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
     for (const std::string& world : worlds) {
       const auto it = runs.by_world.find(world);
       g.world_medians.emplace_back(world, it == runs.by_world.end() ? 0.0 : median(it->second));
+    }
+    for (const std::string& measure : measures) {
+      const auto it = runs.by_measure.find(measure);
+      g.measure_medians.emplace_back(measure, it == runs.by_measure.end() ? std::nan("") : median(it->second));
     }
     g.runs = static_cast<int>(runs.marks.size());
     g.runs_failed = runs.failed;
@@ -118,11 +134,13 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
   std::string csv = "student,median,min,max";
   if (!grades.empty()) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
+    for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
   csv += ",runs,runs_failed,failures\n";
   for (const StudentGrade& g : grades) {
     csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
+    for (const auto& [measure, value] : g.measure_medians) csv += "," + number(value);
     csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + csvField(g.failures) + "\n";
   }
   return csv;

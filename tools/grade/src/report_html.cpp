@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace aula::grade {
@@ -32,9 +33,34 @@ std::string escape(const std::string& text) {
 }
 
 std::string number(double value) {
+  if (!std::isfinite(value)) return "";  // no run measured it
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", value);
   return text;
+}
+
+// "coverage_percent 63.21, ..." for one run: the raw measures its report names.
+std::string measuresOf(const nlohmann::json& result) {
+  std::string out;
+  if (!result.contains("measures") || !result["measures"].is_array()) return out;
+  for (const auto& name : result["measures"]) {
+    if (!name.is_string() || !result.contains(name.get<std::string>())) continue;
+    const auto& value = result[name.get<std::string>()];
+    if (!value.is_number()) continue;
+    out += (out.empty() ? "" : ", ") + name.get<std::string>() + " " + number(value.get<double>());
+  }
+  return out;
+}
+
+// The rubric presets the reports were graded with ("default"; "default, original" if mixed).
+std::string presetsOf(const std::vector<nlohmann::json>& results) {
+  std::set<std::string> presets;
+  for (const auto& r : results) {
+    if (r.contains("rubric") && r["rubric"].is_object()) presets.insert(r["rubric"].value("preset", "?"));
+  }
+  std::string out;
+  for (const std::string& p : presets) out += (out.empty() ? "" : ", ") + p;
+  return out;
 }
 
 // The referee's picture of a run, inlined; "" when there is none.
@@ -116,16 +142,20 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
   html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>Aula grades: " << escape(exercise)
        << "</title><style>" << kStyle << "</style></head><body>\n"
        << "<h1>Aula grades: " << escape(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
-       << " runs, " << failed << " failed. The mark of a student is the median over every world and seed.</p>\n"
+       << " runs, " << failed << " failed. The mark of a student is the median over every world and seed"
+       << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escape(presetsOf(results)))
+       << ". Beside it, the median of each raw measure.</p>\n"
        << histogramSvg(grades) << "\n<table class='sortable'><thead><tr><th>student</th><th>median</th><th>min</th><th>max</th>";
   if (!grades.empty()) {
     for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escape(world) << "</th>";
+    for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escape(measure) << "</th>";
   }
   html << "<th>runs</th><th>failed</th><th>why</th></tr></thead><tbody>\n";
   for (const auto& g : grades) {
     html << "<tr><td class='name'><a href='#" << escape(g.student) << "'>" << escape(g.student) << "</a></td><td>"
          << number(g.median) << "</td><td>" << number(g.min) << "</td><td>" << number(g.max) << "</td>";
     for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
+    for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
     html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td class='why'>" << escape(g.failures)
          << "</td></tr>\n";
   }
@@ -138,6 +168,8 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
       const std::string failure = failureOf(*r);
       html << "<div class='run'><b>" << escape(fs::path(r->value("world", "?")).stem().string()) << ", seed "
            << r->value("seed", 0LL) << ": " << number(r->value("mark", 0.0)) << "</b>";
+      const std::string measures = measuresOf(*r);
+      if (!measures.empty()) html << "<div>" << escape(measures) << "</div>";
       if (!failure.empty()) html << "<div class='failed'>" << escape(failure) << "</div>";
       const std::string picture = pictureUri(*r);
       if (!picture.empty()) html << "<img alt='the referee&apos;s picture of the run' src='" << picture << "'>";

@@ -35,8 +35,15 @@ class TaxiComponent {
   static constexpr double kMinTripM = 2.0;
 
   void setDestination(double x_m, double y_m);  // world metres; clears any previous path
-  // Runs the algorithm's generatePath(); false (with a reason) when not possible yet.
+  // Runs the algorithm's generatePath(); false (with the reason) when it cannot: no destination
+  // or pose yet, the destination unreachable from where the taxi stands now (GPP's field from
+  // the destination does not reach it), or the algorithm failed.
   bool generatePath(std::string* why = nullptr);
+  // The algorithm's generatePath() marked a path (setPathFinded and at least one path cell).
+  bool hasPath() const;
+  // Headless, the run cannot go on (the destination cannot be reached from where the taxi
+  // stands): the reason, and the process ends with exit code 2 (aula_app's runComponent).
+  std::optional<std::string> refusal() const { return refusal_; }
   bool go(std::string* why = nullptr);  // "GO!": execute() every control period from now on
   void stop();                           // "Stop": algorithm off, taxi stopped
   // Hot reload: loads the algorithm again (a plugin's new build), puts the taxi back at its start
@@ -74,6 +81,11 @@ class TaxiComponent {
 
  private:
   void tick(int64_t utime);
+  void autostartAt(int64_t utime);  // Generate Path and GO! (TeleTaxi.Autostart)
+  // Why the taxi cannot drive from (from) to (to): off the map, in a building, walled off.
+  // `from_what` names the start in the message ("the taxi's start").
+  std::optional<std::string> tripProblem(std::pair<double, double> from, std::pair<double, double> to,
+                                         const std::string& from_what) const;
 
   lcmbus::Bus& bus_;
   std::string episode_channel_;
@@ -89,6 +101,7 @@ class TaxiComponent {
   std::unique_ptr<component::ControlLoop> loop_;
   std::optional<std::pair<double, double>> destination_;
   bool path_generated_ = false;
+  std::optional<std::string> refusal_;
   bool autostart_ = false;
   int64_t started_utime_ = -1;
   std::unique_ptr<component::EpisodeSender> episode_;

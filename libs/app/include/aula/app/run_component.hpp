@@ -4,6 +4,10 @@
 // Either way the component leaves the lockstep at the end, so the simulator never waits for it.
 //
 // Component needs poll(), leave(), containHangs(), algorithm().hung(); Window needs Window(Component&).
+// A component that can find once running that its task is impossible (TeleTaxi: a destination the
+// taxi cannot reach from where it stands) also has `std::optional<std::string> refusal() const`:
+// headless, the process then ends with the reason as a ConfigError (exit code 2); the window
+// shows it itself.
 // screenshot(window, png_path) arranges `--screenshot=FILE.png` (returns false if it cannot).
 
 #include <aula/app/bus_pump.hpp>
@@ -17,14 +21,33 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
 
 namespace aula::app {
+
+template <class C, class = void>
+struct CanRefuse : std::false_type {};
+template <class C>
+struct CanRefuse<C, std::void_t<decltype(std::declval<const C&>().refusal())>> : std::true_type {};
+
+template <class Component>
+std::optional<std::string> refusalOf(const Component& component) {
+  if constexpr (CanRefuse<Component>::value) {
+    return component.refusal();
+  } else {
+    return std::nullopt;
+  }
+}
 
 template <class Window, class Component, class Screenshot>
 int runComponent(ProcessSetup& setup, Component& component, int argc, char** argv, Screenshot screenshot) {
   if (setup.headless) {
-    runHeadless(*setup.bus, [] { return false; }, [&] { component.poll(); });
+    runHeadless(*setup.bus, [&] { return refusalOf(component).has_value(); }, [&] { component.poll(); });
     component.leave();
+    if (const auto why = refusalOf(component)) throw config::ConfigError(*why);
     return 0;
   }
   QApplication app(argc, argv);

@@ -16,6 +16,16 @@ namespace aula::config {
 
 enum class SettingType { String, Int, Double, Bool, DoubleList, Choice };
 
+// A named set of values for some of a table's settings: "original" gives a referee's rubric the
+// thesis's scales. A preset setting (a Choice of its presets' names) selects one; the selected
+// preset's values replace the declared defaults of the keys it governs, and a value given in a
+// .cfg or on the command line still wins over both.
+struct Preset {
+  std::string name;  // "default", "original"
+  std::string help;  // one line: what the preset is for
+  std::vector<std::pair<std::string, std::string>> values;  // key -> value, as written in a .cfg
+};
+
 struct SettingSpec {
   std::string key;                 // "Vacuum.MaxV"; a trailing ".*" declares a family of keys
   SettingType type = SettingType::String;
@@ -28,7 +38,13 @@ struct SettingSpec {
   std::vector<std::string> choices;  // Choice: the allowed words
   bool or_plugin = false;          // Choice: a plugin file (PATH.so) is allowed too
   bool free_point = false;         // DoubleList of 2: x, y that must be free floor on the exercise's map
+  // A preset setting: `choices` are the presets' names; the keys it governs (declared before it,
+  // in the same table) take the selected preset's value, or their own default when it has none.
+  std::vector<Preset> presets;
+  std::vector<std::string> governs;
   std::string help;
+
+  const Preset* preset(const std::string& name) const;  // nullptr when not a preset of this setting
 
   std::string typeName() const;
   std::string rangeText() const;   // "[0.005, 1] s", "one of: student, reference", ""
@@ -52,6 +68,10 @@ class SettingsTable {
   SettingsTable& flag(const std::string& key, bool def, const std::string& help);
   SettingsTable& reals(const std::string& key, const std::string& def, size_t count, const std::string& unit,
                        double min, double max, const std::string& help);
+  // A preset setting over `governs` (keys already declared here); `def` names one of `presets`.
+  // Each preset's values are checked against their keys' declarations now (std::logic_error).
+  SettingsTable& presets(const std::string& key, const std::string& def, std::vector<std::string> governs,
+                         std::vector<Preset> presets, const std::string& help);
   SettingsTable& add(SettingSpec spec);
 
   const std::string& owner() const { return owner_; }
@@ -60,9 +80,15 @@ class SettingsTable {
   bool declares(const std::string& key) const { return find(key) != nullptr; }
   // The declared key nearest to `key` by edit distance, or "" when none is close.
   std::string suggest(const std::string& key) const;
+  // The preset setting that governs `key`, or nullptr.
+  const SettingSpec* presetOf(const std::string& key) const;
+  // The value preset `name` gives the governed `key`: its own, or the key's declared default.
+  std::string presetValue(const std::string& key, const std::string& name) const;
+  // Whether `value` is what preset `name` gives `key`, compared as the key's type ("30" = "30.0").
+  bool isPresetValue(const std::string& key, const std::string& name, const std::string& value) const;
 
   // Checks `cfg` and returns the effective settings: every declared key, defaults filled in with
-  // origin "default". Keys that one of `siblings` declares (the other processes that read the
+  // origin "default", or from the selected preset with origin "preset NAME (KEY)". Keys that one of `siblings` declares (the other processes that read the
   // same .cfg) are dropped; any other unknown key is a ConfigError.
   Config resolve(const Config& cfg, const std::vector<const SettingsTable*>& siblings = {}) const;
   // Checks one value against its declaration; throws ConfigError "<origin>: KEY = 'v': what".

@@ -19,6 +19,7 @@ struct ParkingScene {
   double ideal_x_m = 0, ideal_y_m = 0, ideal_yaw_rad = 0;
   double car_length_m = 4, car_width_m = 2;
   double slotLengthM() const;  // free gap between the two parked cars
+  double idealGapM() const;    // to each parked car from a car centred in the slot: (slot - car length) / 2
 
   // Parked cars are static models named parked_car*; the curb is the collision named
   // *curb_parking_side. Throws world::WorldError naming the world when one is missing.
@@ -28,6 +29,7 @@ struct ParkingScene {
 struct ParkingMeasures {
   double front_gap_m = 0;      // car footprint to the front car
   double rear_gap_m = 0;       // car footprint to the rear car
+  double ideal_gap_m = 0;      // either gap of a car centred in the slot (ParkingScene::idealGapM)
   double curb_gap_m = 0;       // nearest footprint corner to the curb face
   double yaw_error_deg = 0;    // heading relative to the curb, in (-90, 90]
   double position_error_m = 0; // car centre to the ideal pose

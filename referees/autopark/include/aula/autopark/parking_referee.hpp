@@ -8,10 +8,17 @@
 // Mark = 0.025 * (A + T + D + C), each 0-100 (the original's formula, its bugs fixed):
 //   A  orientation to the curb: 100 within +-15 deg, 50 within +-45, else 0 (symmetric bands)
 //   T  100 when parked in under full_time_s, else 100 * full_time_s / t; 0 if not parked
-//   D  mean of front gap, rear gap and curb scores: a gap in [gap_full_from, gap_full_to) m is
-//      100, in [gap_half_from, gap_full_from) 50; curb distance <= curb_full 100, < curb_half 50
+//   D  mean of front gap, rear gap and curb scores; curb distance <= curb_full 100, < curb_half 50.
+//      A gap to a parked car, by the rubric's gap rule:
+//        slot (default): with g* = (slot length - car length) / 2, the gap of a centred car,
+//          100 from slot_gap_full_fraction x g*, 50 from slot_gap_half_fraction x g*: a car whose
+//          centre is within (1 - full fraction) x g* of the slot's centre has both gaps at 100,
+//          in a slot of any length;
+//        absolute (the original): 100 in [gap_full_from, gap_full_to) m, 50 in [gap_half_from,
+//          gap_full_from)
 //   C  100 without a collision, else 0
 
+#include <aula/config/config.hpp>
 #include <aula/referee/run_picture.hpp>
 #include <aula/scoring/parking_geometry.hpp>
 
@@ -22,13 +29,20 @@
 namespace aula::autopark {
 
 struct ParkingRefereeSettings {
+  std::string rubric = "default";  // the preset of Autopark.Referee.Rubric, for the reports
   double timeout_s = 300.0;
   double still_hold_s = 3.0;
   double still_speed_mps = 0.05;
   double full_time_s = 170.0;
+  bool gaps_relative_to_slot = true;  // GapRule slot; false: absolute
+  double slot_gap_half_fraction = 0.25, slot_gap_full_fraction = 0.5;
   double gap_half_from_m = 1.0, gap_full_from_m = 1.5, gap_full_to_m = 3.5;
   double curb_full_m = 0.75, curb_half_m = 1.5;
 };
+
+// The referee's settings from its effective configuration; bands out of order are a ConfigError
+// naming where the values came from.
+ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg);
 
 struct ParkingScores {
   double angle = 0, time = 0, distance = 0, collision = 0;
@@ -37,9 +51,12 @@ struct ParkingScores {
 
 ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
                            const ParkingRefereeSettings& s);
-// The D terms: 100, 50 or 0 for one gap to a parked car, and for the curb distance.
-double gapScore(double gap_m, const ParkingRefereeSettings& s);
+// The D terms: 100, 50 or 0 for one gap to a parked car (`ideal_gap_m`: the slot's g*), and for
+// the curb distance.
+double gapScore(double gap_m, double ideal_gap_m, const ParkingRefereeSettings& s);
 double curbScore(double gap_m, const ParkingRefereeSettings& s);
+// The gap rule in words: "gaps of at least 50 % of a centred car's (half marks from 25 %); ..."
+std::string gapRuleText(const ParkingRefereeSettings& s);
 
 class ParkingReferee {
  public:

@@ -18,6 +18,8 @@ class Report {
   void set(const std::string& key, const std::string& value);
   void set(const std::string& key, const char* value) { set(key, std::string(value)); }
   void set(const std::string& key, const std::vector<double>& values);
+  void set(const std::string& key, const std::vector<std::string>& values);
+  void set(const std::string& key, const Report& object);  // a nested object
 
   std::string toJson() const;
   // Throws std::runtime_error naming the path on failure.
@@ -28,6 +30,7 @@ class Report {
 
  private:
   void put(const std::string& key, std::string json);
+  std::string json(int indent) const;
   std::vector<std::pair<std::string, std::string>> fields_;
 };
 

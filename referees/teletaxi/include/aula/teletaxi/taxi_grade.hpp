@@ -6,6 +6,8 @@
 //   speed:    average speed along the path = path length / driving time (sim)
 //   speed mark = min(10, 10 * speed / 2.6);  mark = min(10, base + 0.2 * speed mark)
 //   not reached (timeout or stopped farther than 5 m): mark 0
+//   the base counts only when the taxi travelled at least min_travel_m (default rubric 2 m; the
+//   original's 0 gave 8 to a taxi that never moved)
 
 #include <string>
 
@@ -31,6 +33,7 @@ struct TaxiGrade {
 struct TaxiGradeScale {
   double arrival_radius_m = 5.0;
   double reference_speed_mps = 2.6;  // average speed worth a speed mark of 10
+  double min_travel_m = 2.0;         // the base mark needs at least this path since GO!
 };
 
 TaxiGrade gradeTaxi(const TaxiGradeInput& in, const TaxiGradeScale& scale = {});

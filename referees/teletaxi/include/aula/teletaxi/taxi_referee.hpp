@@ -6,20 +6,26 @@
 // (speed below stop_speed for stop_hold_s) within the arrival radius. A run that has not
 // arrived timeout_s after GO! is "not reached".
 
+#include <aula/config/config.hpp>
 #include <aula/referee/run_picture.hpp>
 #include <aula/teletaxi/taxi_grade.hpp>
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace aula::teletaxi {
 
 struct TaxiRefereeSettings {
+  std::string rubric = "default";  // the preset of TeleTaxi.Referee.Rubric, for the reports
   double timeout_s = 600.0;
   double stop_speed_mps = 0.05;
   double stop_hold_s = 1.0;
   TaxiGradeScale scale;
 };
+
+// The referee's settings from its effective configuration (TeleTaxi.Referee.*).
+TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg);
 
 class TaxiReferee {
  public:

@@ -16,7 +16,8 @@ namespace aula::vacuum {
 inline const cv::Scalar kCleanedColour(240, 175, 90), kNotFloorColour(200, 200, 200);
 
 struct CoverageRunSummary {
-  double mark = 0, coverage_percent = 0, full_mark_coverage_percent = 30, elapsed_s = 0;
+  double mark = 0, coverage_percent = 0, elapsed_s = 0;
+  std::string scale;  // "rubric default: a 5 at 40 %, a 10 at 60 %"
   long long bumps = 0;
   bool have_pose = false;
   double x_m = 0, y_m = 0, yaw_rad = 0, robot_radius_m = 0.165;

@@ -1,24 +1,37 @@
 #pragma once
 // The vacuum cleaner's referee logic on simulated time: coverage of the floor by the robot's
-// true disc footprint, its gain per 100 s, bumps and time stuck; the mark at the end.
-//   mark = min(10, 10 * coverage / full_mark_coverage)   (the original bar: 30 %)
+// true disc footprint, its gain per 100 s, bumps and time stuck; the mark at the end, on two
+// straight lines through (0 %, 0), (half, 5) and (full, 10), and 10 above full:
+//   mark = 5 * c / half                          for c <= half
+//        = 5 + 5 * (c - half) / (full - half)    for half < c < full
+// The `original` rubric (half 15 %, full 30 %) is the thesis's min(10, 10 * c / 30).
 
+#include <aula/config/config.hpp>
 #include <aula/scoring/coverage_grid.hpp>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace aula::vacuum {
 
 struct CoverageSettings {
+  std::string rubric = "default";  // the preset of Vacuum.Referee.Rubric, for the reports
   double duration_s = 900.0;
-  double full_mark_coverage_percent = 30.0;
+  double half_mark_coverage_percent = 40.0;  // worth a 5
+  double full_mark_coverage_percent = 60.0;  // worth a 10
   double robot_radius_m = 0.165;
   double stuck_window_s = 2.0;     // stuck = moved less than stuck_distance_m over this window
   double stuck_distance_m = 0.05;
 };
 
-double coverageMark(double coverage_percent, double full_mark_coverage_percent);
+// 0 for a NaN coverage or a scale without 0 < half < full.
+double coverageMark(double coverage_percent, double half_mark_coverage_percent, double full_mark_coverage_percent);
+// The referee's settings from its effective configuration; a scale without half < full is a
+// ConfigError naming where the values came from.
+CoverageSettings coverageSettings(const config::Config& cfg);
+// "rubric default: a 5 at 40 %, a 10 at 60 %", for summaries and pictures.
+std::string scaleText(const CoverageSettings& s);
 
 class CoverageReferee {
  public:
@@ -33,7 +46,9 @@ class CoverageReferee {
   double elapsedS() const { return (end_utime_ >= 0 ? end_utime_ : now_utime_) / 1e6; }  // since the origin
   double remainingS() const { return std::max(0.0, settings_.duration_s - elapsedS()); }
   double coveragePercent() const { return grid_.coveragePercent(); }
-  double mark() const { return coverageMark(coveragePercent(), settings_.full_mark_coverage_percent); }
+  double mark() const {
+    return coverageMark(coveragePercent(), settings_.half_mark_coverage_percent, settings_.full_mark_coverage_percent);
+  }
   const std::vector<double>& coveragePer100s() const { return per_100s_; }  // gain in each 100 s
   long long bumps() const { return bumps_; }
   double stuckS() const { return stuck_s_; }

@@ -1,6 +1,7 @@
 #pragma once
 // The class's grades from the runs' results: per student the median mark over all worlds and
-// seeds, min, max, the median per world, the failed runs and why. Deterministic: the same
+// seeds, min, max, the median per world, the median of each raw measure the referee's report
+// names in "measures" (coverage %, gaps, time), the failed runs and why. Deterministic: the same
 // results give byte-identical files, whichever engine ran them.
 
 #include <nlohmann/json.hpp>
@@ -14,6 +15,8 @@ struct StudentGrade {
   std::string student;
   double median = 0, min = 0, max = 0;
   std::vector<std::pair<std::string, double>> world_medians;  // by world name
+  // By measure ("coverage_percent"), in the order the reports name them; NaN when no run has it.
+  std::vector<std::pair<std::string, double>> measure_medians;
   int runs = 0, runs_failed = 0;
   std::string failures;  // "reason (x2); other reason"
 };
@@ -22,7 +25,8 @@ struct StudentGrade {
 std::vector<nlohmann::json> readResults(const std::string& out_dir);
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
 double median(std::vector<double> values);
-// grades.csv: student, median, min, max, one median per world, runs, runs_failed, failures.
+// grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
+// failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 std::vector<StudentGrade> collect(const std::string& out_dir);
