@@ -109,11 +109,12 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
 
   auto rows = readGrades((out / "grades.csv").string());
   ASSERT_EQ(rows.size(), 4u) << first_csv;
-  EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')), "student,median,min,max,median_vacuum,runs,runs_failed,failures");
+  EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')), "student,median,min,max,median_vacuum,runs,runs_failed,runs_tampered,failures");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["runs"], "2");
   EXPECT_EQ(rows["good"]["runs_failed"], "0");
+  EXPECT_EQ(rows["good"]["runs_tampered"], "0") << "nobody forged anything";
   EXPECT_EQ(rows["good"]["failures"], "");
 
   EXPECT_LT(std::stod(rows["lazy"]["median"]), 0.1);  // the start footprint only

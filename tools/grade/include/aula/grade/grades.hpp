@@ -15,6 +15,7 @@ struct StudentGrade {
   double median = 0, min = 0, max = 0;
   std::vector<std::pair<std::string, double>> world_medians;  // by world name
   int runs = 0, runs_failed = 0;
+  int runs_tampered = 0;  // runs whose referee counted forged messages (tamperingOf)
   std::string failures;  // "reason (x2); other reason"
 };
 
@@ -22,7 +23,8 @@ struct StudentGrade {
 std::vector<nlohmann::json> readResults(const std::string& out_dir);
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
 double median(std::vector<double> values);
-// grades.csv: student, median, min, max, one median per world, runs, runs_failed, failures.
+// grades.csv: student, median, min, max, one median per world, runs, runs_failed,
+// runs_tampered, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 std::vector<StudentGrade> collect(const std::string& out_dir);
