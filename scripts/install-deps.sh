@@ -17,7 +17,7 @@ packages=(
   xvfb xauth xdotool
   iproute2 procps python3 python3-pip bc
   dpkg-dev bubblewrap ccache
-  nlohmann-json3-dev
+  nlohmann-json3-dev libssl-dev
   slurmctld slurmd slurm-client munge
   chromium
 )

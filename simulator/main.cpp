@@ -88,7 +88,7 @@ int runSimulator(int argc, char** argv) {
               << settings::simulator().help();
     return 0;
   }
-  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "help"});
+  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "key-fd", "help"});
   if (cl.positional.size() != 1) {
     std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
     return process::kExitUsage;
@@ -100,11 +100,14 @@ int runSimulator(int argc, char** argv) {
   takeWorldStep(cfg, spec, options);
   auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
   process::SignalWatcher signals;
-  sim::Simulator simulator(std::move(spec), options, *bus);
+  // --key-fd=N: a graded run's key, from the launcher (docs/grading.md, "What a student's code can do").
+  std::optional<auth::Key> key;
+  if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
+  sim::Simulator simulator(std::move(spec), options, *bus, key);
   std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
             << simulator.spec().sha256.substr(0, 12) << ") with " << simulator.physics().robotCount()
             << " robot(s), step " << options.step_s * 1e3 << " ms, " << (options.lockstep ? "lockstep" : "free-running")
-            << ", seed " << options.seed << std::endl;
+            << ", seed " << options.seed << (key ? ", graded (signed truth, signed SIM_CONTROL only)" : "") << std::endl;
   if (cl.flag("gui")) {
     runWithView(simulator, cl.option("screenshot"), signals);
   } else {

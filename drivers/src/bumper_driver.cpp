@@ -37,6 +37,7 @@ void BumperDriver::step(int64_t sim_time_us) {
   if (!schedule_.due(sim_time_us) && !changed) return;
   last_state_ = msg.state;
   last_side_ = msg.bumper;
+  context_->stamper->stamp(channel_, msg);
   context_->bus->publish(channel_, &msg);
 }
 

@@ -35,6 +35,7 @@ void Pose3dDriver::step(int64_t sim_time_us) {
   msg.q1 = s.orientation.x();
   msg.q2 = s.orientation.y();
   msg.q3 = s.orientation.z();
+  context_->stamper->stamp(channel_, msg);
   context_->bus->publish(channel_, &msg);
 }
 

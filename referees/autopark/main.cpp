@@ -19,7 +19,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark-referee", [&] {
     auto setup = aula::app::refereeSetup(argc, argv, "autopark-referee", kUsage);
-    aula::autopark::ParkingRefereeNode node(*setup.bus, setup.cfg, setup.world);
+    aula::autopark::ParkingRefereeNode node(*setup.bus, setup.cfg, setup.world, setup.run_key);
     return aula::app::runReferee<aula::autopark::ParkingRefereeNode, aula::autopark::ParkingRefereeWindow>(setup, node, argc, argv);
   });
 }

@@ -19,7 +19,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("teletaxi-referee", [&] {
     auto setup = aula::app::refereeSetup(argc, argv, "teletaxi-referee", kUsage);
-    aula::teletaxi::TaxiRefereeNode node(*setup.bus, setup.cfg, setup.world);
+    aula::teletaxi::TaxiRefereeNode node(*setup.bus, setup.cfg, setup.world, setup.run_key);
     return aula::app::runReferee<aula::teletaxi::TaxiRefereeNode, aula::teletaxi::TaxiRefereeWindow>(setup, node, argc, argv);
   });
 }

@@ -17,7 +17,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner-referee", [&] {
     auto setup = aula::app::refereeSetup(argc, argv, "vacuum-cleaner-referee", kUsage);
-    aula::vacuum::CoverageRefereeNode node(*setup.bus, setup.cfg, setup.world);
+    aula::vacuum::CoverageRefereeNode node(*setup.bus, setup.cfg, setup.world, setup.run_key);
     return aula::app::runReferee<aula::vacuum::CoverageRefereeNode, aula::vacuum::CoverageRefereeWindow>(setup, node, argc, argv);
   });
 }

@@ -60,12 +60,13 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
   }
 }
 
-Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus)
-    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop) {
+Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus, std::optional<auth::Key> key)
+    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key) {
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
   context_.bus = &bus_;
   context_.physics = physics_.get();
   context_.seed = static_cast<uint64_t>(options_.seed);
+  context_.stamper = &stamper_;
   context_.raycaster_at = [this](double z_m) { return raycasterAt(z_m); };
   for (int r = 0; r < physics_->robotCount(); ++r) {
     for (const auto& plugin : physics_->robotSpec(r).plugins) {
@@ -112,8 +113,26 @@ void Simulator::log(const std::string& line) const {
   std::cerr << "aula-sim [" << physics_->timeUs() / 1e6 << " s]: " << line << std::endl;
 }
 
+bool Simulator::forgedControl(const std::string& channel, const aula::sim_control_t& msg) {
+  if (!stamper_.keyed()) return false;  // outside grading the windows' controls work as they are
+  if (!auth::verify(*stamper_.key(), channel, msg)) {
+    ++rejected_controls_;
+    log(channel + ": command " + std::to_string(msg.command) + " rejected: not signed with the run's key (a graded run)");
+    return true;
+  }
+  if (msg.auth_seq <= last_control_seq_) {
+    ++rejected_controls_;
+    log(channel + ": command " + std::to_string(msg.command) + " rejected: a replay (auth_seq " +
+        std::to_string(msg.auth_seq) + " <= " + std::to_string(last_control_seq_) + ")");
+    return true;
+  }
+  last_control_seq_ = msg.auth_seq;
+  return false;
+}
+
 void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
                           const aula::sim_control_t* msg) {
+  if (forgedControl(channel, *msg)) return;
   switch (msg->command) {
     case aula::sim_control_t::PAUSE:
       paused_ = true;
@@ -207,6 +226,8 @@ void Simulator::publishClock() {
   tick.world_sha256 = spec_.sha256;
   tick.clients = lockstep_.clients();
   tick.num_clients = static_cast<int32_t>(tick.clients.size());
+  tick.rejected_controls = rejected_controls_;
+  stamper_.stamp(lcmbus::kClockChannel, tick);
   bus_.publish(lcmbus::kClockChannel, &tick);
 }
 

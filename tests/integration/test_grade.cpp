@@ -113,13 +113,14 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   ASSERT_EQ(rows.size(), 4u) << first_csv;
   // Beside the mark, the raw measure the referee's report names (its "measures").
   EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
-            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,failures");
+            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,failures");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;
   EXPECT_EQ(rows["broken"]["median_coverage_percent"], "") << "it never ran: nothing measured\n" << first_csv;
   EXPECT_EQ(rows["good"]["runs"], "2");
   EXPECT_EQ(rows["good"]["runs_failed"], "0");
+  EXPECT_EQ(rows["good"]["runs_tampered"], "0") << "nobody forged anything";
   EXPECT_EQ(rows["good"]["failures"], "");
 
   EXPECT_LT(std::stod(rows["lazy"]["median"]), 0.1);  // the start footprint only

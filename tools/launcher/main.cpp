@@ -6,6 +6,7 @@
 // (children die with it: PR_SET_PDEATHSIG) and exits non-zero if any process failed.
 // Every --Key=value is checked against the declared settings (aula_settings) and handed only to
 // the processes that declare it; the world is resolved once and handed to all three.
+#include <aula/auth/run_key.hpp>
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_command.hpp>
@@ -417,12 +418,26 @@ int supervise(const Supervision& run) {
 
   int control[2] = {-1, -1};
   if (run.has_referee && pipe2(control, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
+  // A graded run's key, for the simulator and the referee only (never the component, which runs
+  // the student's code): each reads it from a pipe of its own, not from its command line.
+  const std::optional<aula::auth::Key> key =
+      run.headless && run.has_referee ? std::optional<aula::auth::Key>(aula::auth::randomKey()) : std::nullopt;
   std::vector<std::unique_ptr<aula::process::ChildProcess>> children;
   for (size_t i = 0; i < lines.size(); ++i) {
     const bool referee = run.has_referee && i == 2;
+    const bool keyed = key && (i == 0 || referee);
     std::vector<std::string> args = lines[i];
-    if (referee) args.push_back("--control-fd=" + std::to_string(aula::process::ChildProcess::kPassedFd));
-    children.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", referee ? control[0] : -1));
+    std::vector<int> passed;
+    if (referee) {
+      args.push_back("--control-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
+      passed.push_back(control[0]);
+    }
+    if (keyed) {
+      args.push_back("--key-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
+      passed.push_back(aula::auth::keyPipe(*key));
+    }
+    children.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed));
+    if (keyed) close(passed.back());  // the child has its copy
   }
   if (control[0] >= 0) close(control[0]);
   int result = 0;

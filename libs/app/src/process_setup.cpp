@@ -29,7 +29,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   std::vector<std::string> takes_value = {"config", "lcm-url"};
   std::vector<std::string> known = {"config", "lcm-url", "headless", "help", "control-fd"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
-  if (exercise != nullptr && exercise->referee == program) known.push_back("replay");
+  if (exercise != nullptr && exercise->referee == program) known.insert(known.end(), {"replay", "key-fd"});
   if (exercise != nullptr && exercise->component == program) known.push_back("view-only");  // aula replay
   ProcessSetup setup;
   setup.program = program;
@@ -70,6 +70,9 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
     setup.world = world::loadWorld(config::resolveWorldPath(setup.cfg.getString(key), setup.cfg.origin(key) + ": " + key));
     std::cerr << program << ": world " << setup.world.source_path << " (sha256 " << setup.world.sha256.substr(0, 12)
               << ")" << std::endl;
+  }
+  if (setup.command_line.flag("key-fd")) {
+    setup.run_key = auth::readKey(static_cast<int>(setup.command_line.optionDouble("key-fd", -1)), "--key-fd");
   }
   setup.bus = lcmbus::openBus(replay ? lcmbus::kReplayUrl : lcmbus::resolveUrl(setup.command_line, setup.cfg));
   return setup;

@@ -61,8 +61,9 @@ void LockstepClient::expectWorld(const std::string& sha256, const std::string& p
   expected_world_path_ = path;
 }
 
-void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string&,
+void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& channel,
                              const aula::sim_clock_t* tick) {
+  if (accept_ && !accept_(channel, *tick)) return;
   if (!expected_world_sha256_.empty() && tick->world_sha256 != expected_world_sha256_) {
     world_mismatch_ = "the simulator runs world '" + tick->world + "' (sha256 " + tick->world_sha256.substr(0, 12) +
                       ") but this process was given " + expected_world_path_ + " (sha256 " +

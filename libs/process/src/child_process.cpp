@@ -22,7 +22,7 @@ int decode(int status) {
 }  // namespace
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
-                           const std::string& stderr_path, int pass_fd) {
+                           const std::string& stderr_path, std::vector<int> pass_fds) {
   if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
   name_ = argv[0];
   // A pipe closed on exec tells the parent whether exec succeeded.
@@ -53,10 +53,12 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     } else {
       redirect(stderr_path, STDERR_FILENO);
     }
-    if (pass_fd == kPassedFd) {
-      fcntl(kPassedFd, F_SETFD, 0);  // keep it across exec
-    } else if (pass_fd >= 0) {
-      dup2(pass_fd, kPassedFd);  // the copy has no FD_CLOEXEC
+    // First every passed descriptor out of the way (a source may be one of the targets), then
+    // each onto its number; dup2's copy has no FD_CLOEXEC, so it survives exec.
+    constexpr int kAboveTargets = 100;
+    for (int& fd : pass_fds) fd = fcntl(fd, F_DUPFD_CLOEXEC, kAboveTargets);
+    for (size_t i = 0; i < pass_fds.size(); ++i) {
+      if (pass_fds[i] >= 0) dup2(pass_fds[i], passedFd(i));
     }
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());

@@ -14,8 +14,10 @@
 
 namespace aula::autopark {
 
-ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
+ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                                       const std::optional<auth::Key>& run_key)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
+  outcome_.truth() = referee::TruthGate(run_key);
   const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
   scene_ = ParkingScene::fromWorld(world, car.name);
   settings_ = parkingRefereeSettings(cfg);
@@ -29,14 +31,19 @@ ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& c
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
                                                     [this](int64_t utime) { onTick(utime); });
   clock_->expectWorld(world.sha256, world.source_path);
+  clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
+    return outcome_.truth().acceptTick(channel, tick);
+  });
 }
 
-void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
   referee_->onPose(msg->utime, msg->x, msg->y, msg->yaw);
 }
 
-void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
   const long long before = referee_->collisions();
   referee_->onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
@@ -48,7 +55,8 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&,
   }
 }
 
-void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
+void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
+  if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
   if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
     // Hot reload: the car is back at its start; the clock starts again at the next Run.
     referee_ = std::make_unique<ParkingReferee>(scene_, settings_);

@@ -18,13 +18,16 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace aula::autopark {
 
 class ParkingRefereeNode {
  public:
-  ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `run_key`: a graded run's key (--key-fd): only the truth the simulator signed is graded.
+  ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                     const std::optional<auth::Key>& run_key = std::nullopt);
 
   const ParkingReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished() || outcome_.ended(); }

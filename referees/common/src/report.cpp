@@ -72,6 +72,12 @@ void Report::set(const std::string& key, const std::vector<std::string>& values)
 
 void Report::set(const std::string& key, const Report& object) { put(key, object.json(2)); }
 
+void Report::set(const std::string& key, const std::map<std::string, long long>& counts) {
+  std::string json = "{";
+  for (const auto& [name, count] : counts) json += (json.size() > 1 ? ", " : "") + quote(name) + ": " + std::to_string(count);
+  put(key, json + "}");
+}
+
 std::string Report::raw(const std::string& key) const {
   for (const auto& [k, v] : fields_) {
     if (k == key) return v;

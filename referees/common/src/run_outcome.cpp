@@ -36,6 +36,7 @@ void RunOutcome::addTo(Report& report) const {
   if (non_finite_commands_ > 0) report.set("non_finite_commands", static_cast<long long>(non_finite_commands_));
   // Graded is the episode after this many hot reloads of the algorithm.
   if (generation_ > 0) report.set("reloads", static_cast<long long>(generation_));
+  truth_.addTo(report);
 }
 
 EpisodeStatus RunOutcome::episodeStatus(bool started, double elapsed_s, double length_s, bool graded_to_end,
@@ -57,7 +58,7 @@ std::string RunOutcome::summary() const {
   if (non_finite_commands_ > 0) {
     out += "  " + std::to_string(non_finite_commands_) + " motor commands were not finite numbers (set to 0)\n";
   }
-  return out;
+  return out + truth_.summary();
 }
 
 std::vector<std::string> RunOutcome::pictureNotes(const std::string& world_file, long long seed) const {

@@ -10,8 +10,10 @@
 
 namespace aula::teletaxi {
 
-TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
+TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                                 const std::optional<auth::Key>& run_key)
     : settings_(taxiRefereeSettings(cfg)), referee_(settings_), world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
+  outcome_.truth() = referee::TruthGate(run_key);
   rubric_ = referee::rubricReport(cfg, settings::tableOf("teletaxi-referee"), "TeleTaxi.Referee.Rubric");
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   map_params_ = {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]};
@@ -25,14 +27,19 @@ TaxiRefereeNode::TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, co
       bus, "teletaxi-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
       [this](int64_t utime) { onTick(utime); });
   clock_->expectWorld(world.sha256, world.source_path);
+  clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
+    return outcome_.truth().acceptTick(channel, tick);
+  });
 }
 
-void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+void TaxiRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
   referee_.onPose(msg->utime, msg->x, msg->y, msg->yaw);
 }
 
-void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
+void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
+  if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
   if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
     // Hot reload: the taxi is back at its start; the clock starts again at the next GO!.
     referee_ = TaxiReferee(settings_);
@@ -46,7 +53,8 @@ void TaxiRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, c
   status_->tick(msg->utime, status());
 }
 
-void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+void TaxiRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
   const bool pressed = msg->state == aula::bumper_t::PRESSED;
   if (pressed && !pressed_ && referee_.started() && !referee_.finished()) ++bumps_;

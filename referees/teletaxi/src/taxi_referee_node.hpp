@@ -19,13 +19,16 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace aula::teletaxi {
 
 class TaxiRefereeNode {
  public:
-  TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `run_key`: a graded run's key (--key-fd): only the truth the simulator signed is graded.
+  TaxiRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                  const std::optional<auth::Key>& run_key = std::nullopt);
 
   const TaxiReferee& referee() const { return referee_; }
   bool finished() const { return referee_.finished() || outcome_.ended(); }

@@ -15,8 +15,10 @@
 
 namespace aula::vacuum {
 
-CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
+CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                                         const std::optional<auth::Key>& run_key)
     : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256) {
+  outcome_.truth() = referee::TruthGate(run_key);
   settings_ = coverageSettings(cfg);
   rubric_ = referee::rubricReport(cfg, settings::tableOf("vacuum-cleaner-referee"), "Vacuum.Referee.Rubric");
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
@@ -45,6 +47,9 @@ CoverageRefereeNode::CoverageRefereeNode(lcmbus::Bus& bus, const config::Config&
         status_->tick(utime, status());
       });
   clock_->expectWorld(world.sha256, world.source_path);
+  clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
+    return outcome_.truth().acceptTick(channel, tick);
+  });
 }
 
 std::unique_ptr<CoverageReferee> CoverageRefereeNode::newReferee(int64_t origin_utime) const {
@@ -60,7 +65,8 @@ void CoverageRefereeNode::start(int64_t utime) {
   waiting_pose_.reset();
 }
 
-void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* msg) {
+void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
   ++pose_messages_;
   if (!started_) {
@@ -79,12 +85,14 @@ void CoverageRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string&, 
   if (on_pose_) on_pose_(msg->x, msg->y, msg->yaw);
 }
 
-void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string&, const aula::bumper_t* msg) {
+void CoverageRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_ || !started_) return;
   referee_->onBump(msg->utime, msg->state == aula::bumper_t::PRESSED);
 }
 
-void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string&, const aula::episode_t* msg) {
+void CoverageRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
+  if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
   if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
     // Hot reload: the robot is back at its start; a new 900 s from now.
     referee_ = newReferee(msg->utime);

@@ -22,7 +22,9 @@ namespace aula::vacuum {
 
 class CoverageRefereeNode {
  public:
-  CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `run_key`: a graded run's key (--key-fd): only the truth the simulator signed is graded.
+  CoverageRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                      const std::optional<auth::Key>& run_key = std::nullopt);
   const CoverageReferee& referee() const { return *referee_; }
   bool finished() const { return referee_->finished() || outcome_.ended(); }
   // The launcher says the run cannot go on (a process died...): grade what there is, and end.

@@ -2,6 +2,7 @@
 // simulator (yaw 1e308 aborted DART's verifyTransform) or put a robot outside its world.
 #include <aula/lcm/bus.hpp>
 #include <aula/sim/simulator.hpp>
+#include <aula/sim_clock_t.hpp>
 #include <aula/sim_control_t.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -10,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace {
 
@@ -98,4 +100,60 @@ TEST(SimulatorControl, TheWindowsSpeedControlChangesThePaceAndStepAdvancesOneTic
   const auto step = command(aula::sim_control_t::STEP);
   bus.publish(aula::lcmbus::kControlChannel, &step);
   EXPECT_NEAR(simSecondsIn(sim, std::chrono::milliseconds(200)), options.clock_period_us / 1e6, 1e-9) << "one tick";
+}
+
+// A graded run (the simulator has the run's key): only SIM_CONTROL signed with it is obeyed,
+// each signed request once; the rest is refused, counted, and said in the signed clock.
+TEST(SimulatorControl, AGradedSimulatorObeysOnlySignedControlOnce) {
+  aula::lcmbus::Bus bus("memq://");
+  const aula::auth::Key key = aula::auth::randomKey();
+  aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), {}, bus, key);
+  const int roomba = sim.physics().robotIndex("roomba");
+  const Eigen::Vector3d start = sim.physics().robotState(roomba).position_m;
+  std::vector<aula::sim_clock_t> ticks;
+  struct Ticks {
+    std::vector<aula::sim_clock_t>* out;
+    void on(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* t) { out->push_back(*t); }
+  } listener{&ticks};
+  bus.subscribe(aula::lcmbus::kClockChannel, &Ticks::on, &listener);
+  auto send = [&](const aula::sim_control_t& msg) {
+    bus.publish(aula::lcmbus::kControlChannel, &msg);
+    while (bus.handleTimeout(0) > 0) {
+    }
+  };
+  aula::sim_control_t teleport = setPose("roomba", start.x() + 0.5, start.y(), 0.0);
+  teleport.auth_seq = 1;
+  send(teleport);  // unsigned
+  aula::sim_control_t other_key = teleport;
+  aula::auth::sign(aula::auth::randomKey(), aula::lcmbus::kControlChannel, other_key);
+  send(other_key);
+  EXPECT_EQ(sim.rejectedControls(), 2);
+  EXPECT_NEAR((sim.physics().robotState(roomba).position_m - start).norm(), 0.0, 1e-9);
+
+  aula::auth::sign(key, aula::lcmbus::kControlChannel, teleport);
+  send(teleport);
+  EXPECT_EQ(sim.rejectedControls(), 2);
+  EXPECT_NEAR(sim.physics().robotState(roomba).position_m.x(), start.x() + 0.5, 1e-6);
+  send(teleport);  // the same signed request again: a replay
+  EXPECT_EQ(sim.rejectedControls(), 3);
+
+  sim.advanceToNextTick();
+  while (bus.handleTimeout(0) > 0) {
+  }
+  ASSERT_FALSE(ticks.empty());
+  EXPECT_EQ(ticks.back().rejected_controls, 3);
+  EXPECT_TRUE(aula::auth::verify(key, aula::lcmbus::kClockChannel, ticks.back())) << "the clock is signed";
+}
+
+TEST(SimulatorControl, WithoutAKeyTheWindowsControlsWorkAsBefore) {
+  aula::lcmbus::Bus bus("memq://");
+  aula::sim::Simulator sim(aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world"), {}, bus);
+  const int roomba = sim.physics().robotIndex("roomba");
+  const Eigen::Vector3d start = sim.physics().robotState(roomba).position_m;
+  const aula::sim_control_t teleport = setPose("roomba", start.x() + 0.5, start.y(), 0.0);
+  bus.publish(aula::lcmbus::kControlChannel, &teleport);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(sim.rejectedControls(), 0);
+  EXPECT_NEAR(sim.physics().robotState(roomba).position_m.x(), start.x() + 0.5, 1e-6);
 }

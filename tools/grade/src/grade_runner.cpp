@@ -118,6 +118,15 @@ std::string failureOf(const nlohmann::json& result) {
   return result.contains("failure") ? result["failure"].get<std::string>() : "";
 }
 
+std::string tamperingOf(const nlohmann::json& result) {
+  if (!result.contains("tampering") || !result["tampering"].is_object() || result["tampering"].empty()) return "";
+  std::string text = "tampering:";
+  for (const auto& [channel, count] : result["tampering"].items()) {
+    text += (text.back() == ':' ? " " : ", ") + channel + " " + count.dump();
+  }
+  return text;
+}
+
 bool upToDate(const PlannedRun& run) {
   const auto result = readJson(run.result_path);
   if (!result) return false;

@@ -79,6 +79,7 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
     std::map<std::string, int> failures;
     std::vector<std::string> failure_order;
     int failed = 0;
+    int tampered = 0;
   };
   std::map<std::string, Runs> students;
   std::set<std::string> worlds;
@@ -98,6 +99,7 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
         if (r.contains(measure) && r[measure].is_number()) runs.by_measure[measure].push_back(r[measure].get<double>());
       }
     }
+    if (!tamperingOf(r).empty()) ++runs.tampered;
     const std::string failure = failureOf(r);
     if (failure.empty()) continue;
     ++runs.failed;
@@ -120,6 +122,7 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
     }
     g.runs = static_cast<int>(runs.marks.size());
     g.runs_failed = runs.failed;
+    g.runs_tampered = runs.tampered;
     std::sort(runs.failure_order.begin(), runs.failure_order.end());
     for (const std::string& failure : runs.failure_order) {
       const int count = runs.failures[failure];
@@ -136,12 +139,12 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
     for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
-  csv += ",runs,runs_failed,failures\n";
+  csv += ",runs,runs_failed,runs_tampered,failures\n";
   for (const StudentGrade& g : grades) {
     csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
     for (const auto& [measure, value] : g.measure_medians) csv += "," + number(value);
-    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + csvField(g.failures) + "\n";
+    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "\n";
   }
   return csv;
 }

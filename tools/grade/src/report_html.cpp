@@ -137,12 +137,18 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
     if (exercise.empty()) exercise = r.value("exercise", "");
   }
   int failed = 0;
-  for (const auto& r : results) failed += failureOf(r).empty() ? 0 : 1;
+  int tampered = 0;
+  for (const auto& r : results) {
+    failed += failureOf(r).empty() ? 0 : 1;
+    tampered += tamperingOf(r).empty() ? 0 : 1;
+  }
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>Aula grades: " << escape(exercise)
        << "</title><style>" << kStyle << "</style></head><body>\n"
        << "<h1>Aula grades: " << escape(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
-       << " runs, " << failed << " failed. The mark of a student is the median over every world and seed"
+       << " runs, " << failed << " failed"
+       << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages the referee refused)" : "")
+       << ". The mark of a student is the median over every world and seed"
        << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escape(presetsOf(results)))
        << ". Beside it, the median of each raw measure.</p>\n"
        << histogramSvg(grades) << "\n<table class='sortable'><thead><tr><th>student</th><th>median</th><th>min</th><th>max</th>";
@@ -150,13 +156,14 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
     for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escape(world) << "</th>";
     for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escape(measure) << "</th>";
   }
-  html << "<th>runs</th><th>failed</th><th>why</th></tr></thead><tbody>\n";
+  html << "<th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
   for (const auto& g : grades) {
     html << "<tr><td class='name'><a href='#" << escape(g.student) << "'>" << escape(g.student) << "</a></td><td>"
          << number(g.median) << "</td><td>" << number(g.min) << "</td><td>" << number(g.max) << "</td>";
     for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
     for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
-    html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td class='why'>" << escape(g.failures)
+    html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
+         << ">" << g.runs_tampered << "</td><td class='why'>" << escape(g.failures)
          << "</td></tr>\n";
   }
   html << "</tbody></table>\n";
@@ -171,6 +178,8 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
       const std::string measures = measuresOf(*r);
       if (!measures.empty()) html << "<div>" << escape(measures) << "</div>";
       if (!failure.empty()) html << "<div class='failed'>" << escape(failure) << "</div>";
+      const std::string tampering = tamperingOf(*r);
+      if (!tampering.empty()) html << "<div class='failed'>" << escape(tampering) << "</div>";
       const std::string picture = pictureUri(*r);
       if (!picture.empty()) html << "<img alt='the referee&apos;s picture of the run' src='" << picture << "'>";
       html << "</div>\n";

@@ -7,6 +7,7 @@
 // step(sim_time_us) after every physics step. Drivers read parameters in attach() and
 // document them at the top of their source file (Stage style).
 
+#include <aula/auth/run_key.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cstdint>
@@ -28,6 +29,8 @@ struct DriverContext {
   // Static world geometry cut at a height (lasers ask for their mount height).
   std::function<const geometry::Raycaster2D*(double z_m)> raycaster_at;
   uint64_t seed = 0;                                 // run seed (noise)
+  // Numbers (and in a graded run signs) what the referee grades: the pose and the bumper.
+  auth::Stamper* stamper = nullptr;
 };
 
 class Driver {

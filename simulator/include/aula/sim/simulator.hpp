@@ -2,6 +2,7 @@
 // The simulator process core: the DART world, the drivers on its robots, the one clock, the
 // control channel and lockstep. Single-threaded: LCM is handled between physics steps.
 
+#include <aula/auth/run_key.hpp>
 #include <aula/drivers/driver.hpp>
 #include <aula/geometry/raycaster2d.hpp>
 #include <aula/physics/physics_world.hpp>
@@ -50,8 +51,11 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec);
 
 class Simulator {
  public:
-  // Throws world::WorldError on bad drivers/parameters.
-  Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus);
+  // Throws world::WorldError on bad drivers/parameters. With `key` (a graded run: the launcher's
+  // --key-fd) the truth the referee grades and the clock are signed, and SIM_CONTROL is obeyed
+  // only when signed with it.
+  Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus,
+            std::optional<auth::Key> key = std::nullopt);
   ~Simulator();
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
@@ -66,14 +70,17 @@ class Simulator {
   const world::WorldSpec& spec() const { return spec_; }
   int64_t timeUs() const { return physics_->timeUs(); }
   const SimulatorOptions& options() const { return options_; }
-  // SIM_CONTROL requests refused (an unknown robot, a pose outside the world, a yaw not in
-  // [-pi, pi], an unknown command): each is logged and counted, and none reaches DART.
+  // SIM_CONTROL requests refused (in a graded run one not signed with the run's key, or a
+  // replayed one; an unknown robot, a pose outside the world, a yaw not in [-pi, pi], an unknown
+  // command): each is logged and counted, none reaches DART, and the clock tells the referee.
   long long rejectedControls() const { return rejected_controls_; }
   // Why a SET_POSE to (x, y, yaw) cannot be done, or nullopt.
   std::optional<std::string> poseProblem(double x_m, double y_m, double yaw_rad) const;
 
  private:
   void onControl(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_control_t* msg);
+  // In a graded run: a request not signed with the run's key, or not newer than the last obeyed.
+  bool forgedControl(const std::string& channel, const aula::sim_control_t& msg);
   void onRegister(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* m);
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
   void publishClock();
@@ -109,6 +116,8 @@ class Simulator {
   bool paused_ = false;
   double measured_rtf_ = 0.0;
   long long rejected_controls_ = 0;
+  auth::Stamper stamper_;           // numbers and signs the truth and the clock
+  int64_t last_control_seq_ = 0;    // the auth_seq of the last signed request obeyed
   bool repace_ = false;        // SET_RTF: pacing restarts from the current time
   bool step_pending_ = false;  // STEP while paused
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put

@@ -4,6 +4,7 @@
 // (aula_settings), load the exercise's world, open the LCM bus. Errors are ConfigError or
 // WorldError (exit code 2) or BusError (exit code 1), each naming the file, line, key or URL.
 
+#include <aula/auth/run_key.hpp>
 #include <aula/config/config.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/world/world_spec.hpp>
@@ -12,6 +13,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,9 @@ struct ProcessSetup {
   world::WorldSpec world;              // <Section>.World, with every model resolved
   std::unique_ptr<lcmbus::Bus> bus;
   bool headless = false;
+  // A referee's --key-fd=N: the graded run's key from the launcher (nothing in a run without
+  // one: windows, three terminals, a regrade).
+  std::optional<auth::Key> run_key;
 
   // Options every process accepts: --config=FILE, --headless, --lcm-url=URL, --help, plus
   // `extra_options` (e.g. "report", "screenshot"); a referee also takes --replay=FILE.lcmlog

@@ -37,6 +37,10 @@ class LockstepClient {
   // of another world are not followed, and the next poll() throws config::ConfigError saying
   // which world each side has.
   void expectWorld(const std::string& sha256, const std::string& path);
+  // Ticks that `accept(channel, tick)` refuses are not followed at all (a referee's check that
+  // the clock is its simulator's: a forged tick must not move its time).
+  using TickFilter = std::function<bool(const std::string& channel, const aula::sim_clock_t& tick)>;
+  void setTickFilter(TickFilter accept) { accept_ = std::move(accept); }
   // Leave lockstep (the simulator stops waiting). Also done by the destructor.
   void leave();
 
@@ -59,6 +63,7 @@ class LockstepClient {
   std::string name_;
   int64_t period_us_;
   TickHandler on_tick_;
+  TickFilter accept_;
   int64_t last_seq_ = -1;
   int64_t last_utime_ = 0;
   int64_t next_due_us_ = 0;

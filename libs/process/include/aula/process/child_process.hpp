@@ -14,12 +14,15 @@ namespace aula::process {
 class ChildProcess {
  public:
   // argv[0] is the program (a path or a name on PATH). stdout/stderr go to the given files
-  // (empty: inherited; the same path twice: one file with both, in order). `pass_fd` >= 0 is handed to the child as its descriptor 3 (the
-  // launcher's private control pipe); nothing else of the parent's is inherited past exec
-  // beyond what lacks FD_CLOEXEC. Throws std::runtime_error when the program cannot be started.
+  // (empty: inherited; the same path twice: one file with both, in order). `pass_fds[i]` is
+  // handed to the child as its descriptor kPassedFd + i (the launcher's private control pipe,
+  // the run's key: passedFd(i) is the number to tell the child); nothing else of the parent's is
+  // inherited past exec beyond what lacks FD_CLOEXEC. Throws std::runtime_error when the program
+  // cannot be started.
   ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",
-               const std::string& stderr_path = "", int pass_fd = -1);
+               const std::string& stderr_path = "", std::vector<int> pass_fds = {});
   static constexpr int kPassedFd = 3;
+  static constexpr int passedFd(size_t index) { return kPassedFd + static_cast<int>(index); }
   ~ChildProcess();  // stops the child if still running
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

@@ -3,6 +3,7 @@
 // reader never sees half a report. Numbers are printed with a fixed format so the same run
 // gives byte-identical files.
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,8 @@ class Report {
   void set(const std::string& key, const std::vector<double>& values);
   void set(const std::string& key, const std::vector<std::string>& values);
   void set(const std::string& key, const Report& object);  // a nested object
+  // An object of counts by name, in the map's (sorted) order: {"ROOMBA_POSE": 1532}.
+  void set(const std::string& key, const std::map<std::string, long long>& counts);
 
   std::string toJson() const;
   // Throws std::runtime_error naming the path on failure.

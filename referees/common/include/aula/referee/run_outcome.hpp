@@ -10,6 +10,7 @@
 
 #include <aula/referee/report.hpp>
 #include <aula/referee/status_sender.hpp>
+#include <aula/referee/truth_gate.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -31,8 +32,12 @@ class RunOutcome {
   const std::string& fault() const { return fault_; }
   const std::string& aborted() const { return aborted_; }
   int generation() const { return generation_; }
+  // What was let through to grading and what was forged (a graded run's key, set by the node).
+  TruthGate& truth() { return truth_; }
+  const TruthGate& truth() const { return truth_; }
   // The report's fields: algorithm, and when they apply algorithm_error, aborted,
-  // non_finite_commands, reloads; "finished" becomes false when the run ended early.
+  // non_finite_commands, reloads, tampering, truth_gaps; "finished" becomes false when the run
+  // ended early.
   void addTo(Report& report) const;
   // The windows' status of an episode of `length_s` sim seconds: finished when graded to its end
   // (`graded_ending`: "Time's up", "Arrived"...) or ended early ("Stopped"). The summary is the caller's.
@@ -48,6 +53,7 @@ class RunOutcome {
   int64_t non_finite_commands_ = 0;
   int generation_ = 0;
   bool announced_ = false;
+  TruthGate truth_;
 };
 
 }  // namespace aula::referee

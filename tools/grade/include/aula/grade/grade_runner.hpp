@@ -27,5 +27,8 @@ void runLocal(const Manifest& manifest, int jobs,
 
 // The failure of a result, or "" when the run went to its end.
 std::string failureOf(const nlohmann::json& result);
+// "" or what the referee caught someone forging in the run: "tampering: ROOMBA_POSE 1532, SIM_CONTROL 1"
+// (the report's "tampering"). Such a run keeps the mark of its true behaviour, and is flagged.
+std::string tamperingOf(const nlohmann::json& result);
 
 }  // namespace aula::grade

@@ -18,6 +18,7 @@ struct StudentGrade {
   // By measure ("coverage_percent"), in the order the reports name them; NaN when no run has it.
   std::vector<std::pair<std::string, double>> measure_medians;
   int runs = 0, runs_failed = 0;
+  int runs_tampered = 0;  // runs whose referee counted forged messages (tamperingOf)
   std::string failures;  // "reason (x2); other reason"
 };
 
@@ -26,7 +27,7 @@ std::vector<nlohmann::json> readResults(const std::string& out_dir);
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
 double median(std::vector<double> values);
 // grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
-// failures.
+// runs_tampered, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 std::vector<StudentGrade> collect(const std::string& out_dir);

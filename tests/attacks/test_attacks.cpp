@@ -1,0 +1,151 @@
+// Attacks on a graded run (issue 15, "Truth the component cannot forge"): `aula run vacuum
+// --headless` with the do-nothing template, a 60 s episode, real processes on a private LCM
+// port; an attacker process (aula-test-attacker) joins the bus once the run has started and
+// forges one kind of traffic. Each case compares with the same run unattacked (same seed): the
+// report must be the unattacked one's, plus the "tampering" it counted when the attack is one
+// the referee or the simulator can tell; and the run must end well within its wall timeout.
+#include "test_support.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <optional>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace std::chrono_literals;
+using aula::testing::jsonNumber;
+using aula::testing::readFile;
+
+namespace {
+
+struct RunResult {
+  std::optional<int> code;  // nullopt: still running at the wall timeout
+  std::optional<int> attacker_code;
+  double wall_s = 0;
+  std::string report, log;
+};
+
+constexpr auto kWallTimeout = 120s;
+
+// `aula run vacuum --headless` (seed 3, 60 s), attacked by `attack` ("" none) and running
+// `algorithm` (the template by default: it stays still).
+RunResult runVacuum(const std::string& dir, const std::string& attack, const std::string& algorithm = "student") {
+  const std::string tag = attack.empty() ? "clean" : attack;
+  const std::string report = dir + "/" + tag + ".json", log = dir + "/" + tag + ".log";
+  const std::string url = aula::testing::privateLcmUrl();
+  RunResult run;
+  const auto start = std::chrono::steady_clock::now();
+  {
+    aula::process::ChildProcess launcher(
+        {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=" + algorithm, "--seed=3",
+         "--Vacuum.Referee.Duration=60", "--report=" + report, "--lcm-url=" + url},
+        log, log);
+    std::optional<aula::process::ChildProcess> attacker;
+    if (!attack.empty()) {
+      attacker.emplace(std::vector<std::string>{AULA_ATTACKER, "--lcm-url=" + url, "--attack=" + attack, "--after-s=10"},
+                       dir + "/attacker.log", dir + "/attacker.log");
+    }
+    run.code = launcher.wait(kWallTimeout);
+    if (attacker) run.attacker_code = attacker->wait(5s);
+  }
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.report = readFile(report);
+  run.log = readFile(log) + (attack.empty() ? "" : "--- attacker:\n" + readFile(dir + "/attacker.log"));
+  return run;
+}
+
+// The report without its "tampering" line: what the grading itself says.
+std::string graded(const std::string& report) {
+  const std::string field = "\"tampering\": \\{[^}]*\\}";
+  const std::string last = std::regex_replace(report, std::regex(",\n  " + field + "\n"), "\n");
+  return std::regex_replace(last, std::regex("  " + field + ",\n"), "");
+}
+
+std::string tampering(const std::string& report) {
+  std::smatch m;
+  return std::regex_search(report, m, std::regex("\"tampering\": (\\{[^}]*\\})")) ? m[1].str() : "";
+}
+
+class Attacks : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = aula::testing::privateDir();
+    clean_ = runVacuum(dir_, "");
+    ASSERT_EQ(clean_.code, 0) << clean_.log;
+    ASSERT_EQ(tampering(clean_.report), "") << "an unattacked run's report has no tampering field";
+  }
+  // The attacked run ended by itself, its grading is the clean run's, and it counted `expected`.
+  void expectGradedAsCleanWith(const std::string& attack, const std::string& expected) {
+    const RunResult run = runVacuum(dir_, attack);
+    ASSERT_TRUE(run.code.has_value()) << "the attacked run hung:\n" << run.log;
+    EXPECT_EQ(run.attacker_code, 0) << "the attack was not sent:\n" << run.log;
+    EXPECT_EQ(*run.code, 0) << run.log;
+    EXPECT_EQ(graded(run.report), clean_.report) << run.log;
+    EXPECT_EQ(tampering(run.report), expected) << run.report;
+  }
+  std::string dir_;
+  RunResult clean_;
+};
+
+}  // namespace
+
+// Forged poses sweeping the house (99 % coverage if graded): none is graded, each is counted.
+TEST_F(Attacks, APoseFloodIsNotGradedAndIsCounted) {
+  const RunResult run = runVacuum(dir_, "pose-flood");
+  ASSERT_TRUE(run.code.has_value()) << run.log;
+  EXPECT_EQ(run.attacker_code, 0) << run.log;
+  EXPECT_EQ(graded(run.report), clean_.report) << run.log;
+  EXPECT_NEAR(jsonNumber(run.report, "coverage_percent"), jsonNumber(clean_.report, "coverage_percent"), 1e-9);
+  // Three sweeps of 37 x 37 poses; the kernel may drop some of a burst, never add any.
+  std::smatch m;
+  const std::string counted = tampering(run.report);
+  ASSERT_TRUE(std::regex_search(counted, m, std::regex("\"ROOMBA_POSE\": ([0-9]+)"))) << run.report;
+  EXPECT_GT(std::stol(m[1]), 1000) << run.report;
+  EXPECT_LE(std::stol(m[1]), 3 * 37 * 37) << run.report;
+}
+
+// A teleport, a pause and a reset from outside: the simulator obeys none of them.
+TEST_F(Attacks, SimControlTeleportPauseAndResetAreRefusedAndCounted) {
+  expectGradedAsCleanWith("control", "{\"SIM_CONTROL\": 3}");
+}
+
+// Ticks of the referee's own signed clock only: a forged SIM_CLOCK far in the future moves
+// nothing it grades.
+TEST_F(Attacks, AForgedClockIsIgnoredByTheRefereeAndCounted) {
+  expectGradedAsCleanWith("clock", "{\"SIM_CLOCK\": 20}");
+}
+
+// A forged reload and a later start on VACUUM_EPISODE: a graded run has one episode.
+TEST_F(Attacks, AForgedEpisodeDoesNotRestartTheGradingAndIsCounted) {
+  expectGradedAsCleanWith("episode", "{\"VACUUM_EPISODE\": 2}");
+}
+
+// Acks and a leave in the component's name: not told apart from the component's own (it has no
+// key), so nothing is counted; the run must still end by itself with a still robot's grade.
+TEST_F(Attacks, ForgedLockstepAckAndLeaveDoNotHangTheRun) { expectGradedAsCleanWith("lockstep", ""); }
+
+// 10,000 random packets over every channel: nothing decodes as signed truth, nothing hangs.
+TEST_F(Attacks, GarbageOnEveryChannelChangesNoMarkAndHangsNothing) {
+  const RunResult run = runVacuum(dir_, "garbage");
+  ASSERT_TRUE(run.code.has_value()) << run.log;
+  EXPECT_EQ(run.attacker_code, 0) << run.log;
+  EXPECT_EQ(*run.code, 0) << run.log;
+  EXPECT_EQ(jsonNumber(run.report, "mark"), jsonNumber(clean_.report, "mark")) << run.report;
+  EXPECT_EQ(jsonNumber(run.report, "coverage_percent"), jsonNumber(clean_.report, "coverage_percent")) << run.report;
+}
+
+// The same pose flood and a teleport from inside the student's execute(): graded as the still
+// robot it is, and the report shows what it tried.
+TEST_F(Attacks, APluginThatForgesFromExecuteIsGradedOnItsRealBehaviour) {
+  const RunResult run = runVacuum(dir_, "", AULA_CHEAT_PLUGIN);
+  ASSERT_EQ(run.code, 0) << run.log;
+  EXPECT_EQ(jsonNumber(run.report, "mark"), jsonNumber(clean_.report, "mark")) << run.report;
+  EXPECT_EQ(jsonNumber(run.report, "coverage_percent"), jsonNumber(clean_.report, "coverage_percent")) << run.report;
+  const std::string counted = tampering(run.report);
+  EXPECT_NE(counted.find("\"ROOMBA_POSE\": "), std::string::npos) << run.report;
+  EXPECT_NE(counted.find("\"SIM_CONTROL\": 1"), std::string::npos) << run.report;
+}
