@@ -171,8 +171,10 @@ Bus::Bus(std::string url) : url_(std::move(url)) {
 
 Bus::~Bus() {
   if (print_stats_) {
-    std::cerr << "aula-bus: " << program_invocation_short_name << " handled " << handled_ << " messages on " << url_
-              << std::endl;
+    // One write, so that the three processes' lines do not interleave on a shared terminal.
+    const std::string line = std::string("aula-bus: ") + program_invocation_short_name + " handled " +
+                             std::to_string(handled_) + " messages on " + url_ + "\n";
+    std::cerr.write(line.data(), static_cast<std::streamsize>(line.size())).flush();
   }
 }
 
