@@ -2,6 +2,7 @@
 
 #include <aula/config/paths.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/process/signal_watcher.hpp>
 #include <aula/lcm/log_replay.hpp>
 #include <aula/settings/tables.hpp>
 
@@ -46,6 +47,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   const bool replay = setup.command_line.flag("replay");
   if (replay) lcmbus::requireLog(setup.command_line.option("replay"));
   setup.headless = setup.command_line.flag("headless") || replay;
+  if (setup.headless) process::blockStopSignals();  // before any thread starts (runHeadless watches them)
   if (opens_window && !setup.headless && !haveDisplay()) {
     throw config::ConfigError("no display (DISPLAY is not set): use --headless");
   }
