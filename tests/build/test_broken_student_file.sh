@@ -13,7 +13,7 @@ fail() { echo "FAIL: $*"; cat "$work"/*.txt 2>/dev/null || true; exit 1; }
 
 student="$source_dir/components/vacuum/student/MyAlgorithm.cpp"
 { cat "$student"; echo 'this line does not compile;'; } >"$work/MyAlgorithm.cpp"
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../free_udp_port.py")
 in_sandbox() { bwrap --dev-bind / / --ro-bind "$work/MyAlgorithm.cpp" "$student" "$@"; }
 
 in_sandbox grep -q "this line does not compile" "$student" || fail "the broken copy is not mounted"

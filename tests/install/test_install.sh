@@ -10,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
 # Nothing but the prefix from here on: the trees are empty folders inside the sandbox.
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../free_udp_port.py")
 case "$exercise" in
   vacuum) short="--Vacuum.Referee.Duration=20" ;;
   teletaxi) short="--TeleTaxi.Referee.Timeout=20" ;;

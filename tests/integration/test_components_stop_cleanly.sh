@@ -5,7 +5,7 @@
 # Usage: test_components_stop_cleanly.sh BUILD_DIR
 set -euo pipefail
 build="$1"
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../free_udp_port.py")
 for program in teletaxi vacuum-cleaner autopark; do
   "$build/bin/$program" --headless --lcm-url="udpm://239.255.76.67:$port?ttl=0" >/dev/null 2>&1 &
   pid=$!

@@ -24,8 +24,7 @@ const std::string kAula = std::string(AULA_BIN_DIR) + "/aula";
 
 // Another private port for lcm-logplayer, away from the run's.
 std::string otherPrivateUrl() {
-  std::random_device random;
-  return "udpm://239.255.76.67:" + std::to_string(20000 + random() % 20000) + "?ttl=0";
+  return "udpm://239.255.76.67:" + std::to_string(aula::testing::freeUdpPort()) + "?ttl=0";
 }
 
 // Events per channel, read with LCM's own log reader.

@@ -8,7 +8,7 @@ set -euo pipefail
 source_dir="$1"
 build="$2"
 work="$(mktemp -d "${TMPDIR:-/tmp}/aula-stock-client-XXXXXX")"
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../free_udp_port.py")
 url="udpm://239.255.76.67:$port?ttl=0&recv_buf_size=4194304"
 listener=""
 trap '[ -n "$listener" ] && kill "$listener" 2>/dev/null; rm -rf "$work"' EXIT

@@ -20,12 +20,15 @@
 
 #include <gtest/gtest.h>
 
+#include "../free_udp_port.hpp"
+
 #include <unistd.h>
 
 namespace aula::testing {
 
+// This test process's private LCM URL: one port for the whole process.
 inline std::string privateLcmUrl() {
-  const int port = 17000 + static_cast<int>(getpid() % 20000);
+  static const int port = freeUdpPort();
   return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0&recv_buf_size=4194304";
 }
 

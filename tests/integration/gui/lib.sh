@@ -13,7 +13,7 @@ gui_test_start() {
     AULA_GUI_TEST_DISPLAY=1 exec xvfb-run -a -s "-screen 0 1400x1000x24" bash "$0" "$build"
   fi
   work="$(mktemp -d "${TMPDIR:-/tmp}/aula-$name-XXXXXX")"
-  port=$((20000 + RANDOM % 20000))
+  port=$(python3 "$(dirname "${BASH_SOURCE[0]}")/../../free_udp_port.py")
   url="udpm://239.255.76.67:$port?ttl=0"
   export XDG_CACHE_HOME="$work/cache" XDG_RUNTIME_DIR="$work/runtime"
   mkdir -m 700 -p "$XDG_RUNTIME_DIR"

@@ -8,7 +8,7 @@
 set -euo pipefail
 build="$1"
 work="$(mktemp -d "${TMPDIR:-/tmp}/aula-hot-reload-XXXXXX")"
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../../free_udp_port.py")
 cleanup() {
   pkill -TERM -f "239.255.76.67:$port" 2>/dev/null || true
   rm -rf "$work"

@@ -7,7 +7,7 @@
 set -euo pipefail
 build="$1"
 work="$(mktemp -d "${TMPDIR:-/tmp}/aula-replay-XXXXXX")"
-port=$((20000 + RANDOM % 20000))
+port=$(python3 "$(dirname "$0")/../../free_udp_port.py")
 trap 'pkill -TERM -f "$work" 2>/dev/null || true; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; cat "$work"/*.txt 2>/dev/null || true; exit 1; }
 

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../../free_udp_port.hpp"
+
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <linux/filter.h>
@@ -24,10 +26,13 @@ namespace {
 
 using aula::lcmbus::Bus;
 
-// A private port per test process (parallel ctest runs must not cross).
-std::string privateUrl() {
-  return "udpm://239.255.76.67:" + std::to_string(37000 + getpid() % 20000) + "?ttl=0";
+// This test process's private port (one the OS hands out).
+int privatePort() {
+  static const int port = aula::testing::freeUdpPort();
+  return port;
 }
+
+std::string privateUrl() { return "udpm://239.255.76.67:" + std::to_string(privatePort()) + "?ttl=0"; }
 
 struct Count {
   int messages = 0;
@@ -61,7 +66,7 @@ std::string channelOf(const char* payload, ssize_t size) {
 }
 
 TEST(Bus, TheChannelFilterPassesExactlyItsChannels) {
-  const int port = 37000 + getpid() % 20000;
+  const int port = privatePort();
   const int raw = socket(AF_INET, SOCK_DGRAM, 0);
   ASSERT_GE(raw, 0);
   const int yes = 1;
@@ -110,7 +115,7 @@ std::multiset<int> filtersOfSocketsOn(int port) {
 }
 
 TEST(Bus, ABusReceivesOnlyTheChannelsItSubscribesTo) {
-  const int port = 37000 + getpid() % 20000;
+  const int port = privatePort();
   const std::string url = privateUrl();
   Bus publisher(url);
   Bus subscriber(url);
@@ -153,7 +158,7 @@ TEST(Bus, ASubscriptionByPatternReceivesEveryChannel) {
   Bus recorder(url);
   Count all;
   recorder.subscribe(".*", &Count::on, &all);
-  EXPECT_EQ(filtersOfSocketsOn(37000 + getpid() % 20000),
+  EXPECT_EQ(filtersOfSocketsOn(privatePort()),
             (std::multiset<int>{0, static_cast<int>(aula::lcmbus::channelFilter({}).size())}))
       << "the recorder's socket has no filter";
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
