@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <memory>
+#include <vector>
 #include <regex>
 #include <sstream>
 
@@ -51,4 +53,30 @@ TEST(VacuumRun, SameSeedSameReportDifferentSeedDifferentRun) {
   // 50 Hz for 900 s, both ends counted: the referee saw every pose message the driver sent.
   EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(a, "pose_messages"), 45001.0) << a;
   EXPECT_NE(a.find("\"coverage_per_100s\": ["), std::string::npos) << a;
+}
+
+// Two runs of the same seed at once, each on its own port, contending for the same two cores:
+// lockstep makes each report byte-identical to the other and to a run alone.
+TEST(VacuumRun, TwoRunsAtOnceGiveTheSameReportAsOneAlone) {
+  const std::string alone = runVacuum(5, "alone");
+  std::vector<std::unique_ptr<aula::process::ChildProcess>> runs;
+  std::vector<std::string> reports, logs;
+  for (const char* tag : {"together_a", "together_b"}) {
+    reports.push_back(::testing::TempDir() + "vacuum_" + tag + ".json");
+    logs.push_back(::testing::TempDir() + "vacuum_" + tag + ".log");
+    std::remove(reports.back().c_str());
+    const std::string url = "udpm://239.255.76.67:" + std::to_string(aula::testing::freeUdpPort()) + "?ttl=0";
+    runs.push_back(std::make_unique<aula::process::ChildProcess>(
+        std::vector<std::string>{std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=reference",
+                                 "--seed=5", "--report=" + reports.back(), "--lcm-url=" + url},
+        logs.back(), logs.back()));
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto code = runs[i]->wait(200s);
+    ASSERT_EQ(code.value_or(-1), 0) << readFile(logs[i]);
+  }
+  ASSERT_FALSE(alone.empty());
+  EXPECT_EQ(readFile(reports[0]), alone) << "a run beside another must grade as a run alone";
+  EXPECT_EQ(readFile(reports[1]), alone);
+  EXPECT_DOUBLE_EQ(aula::testing::jsonNumber(alone, "pose_messages"), 45001.0) << alone;
 }
