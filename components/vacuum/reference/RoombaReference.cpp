@@ -23,27 +23,98 @@ namespace {
 
 using geometry::wrapAngle;
 
+// Every tuning constant of the reference, with its unit. The defaults are the tuned values.
+struct Settings {
+  double max_speed_mps = 0.5;
+  // Spiral: the radius grows by spiral_growth_m2ps / radius each second (never divided by less
+  // than spiral_min_radius_m); it ends when something is ahead or after spiral_max_s.
+  double spiral_start_radius_m = 0.15;
+  double spiral_growth_m2ps = 0.05;
+  double spiral_min_radius_m = 0.1;
+  double spiral_stop_front_m = 0.3;
+  double spiral_stop_wide_m = 0.2;
+  double spiral_max_s = 40.0;
+  // Laser sectors, from straight ahead (rad).
+  double front_half_rad = 0.45;
+  double front_wide_half_rad = 1.0;
+  double right_from_rad = -1.58;
+  double right_to_rad = -1.25;
+  // Dead reckoning: a wall this close at the nose means the robot did not move.
+  double blocked_front_m = 0.12;
+  // Straight runs.
+  double cross_slow_front_m = 0.5;
+  double cross_slow_speed_mps = 0.3;
+  double cross_stop_front_m = 0.22;
+  double cross_stop_wide_m = 0.17;
+  double quick_fail_reset_s = 1.0;   // a run longer than this is not boxed in
+  double quick_fail_window_s = 0.5;  // blocked this soon after a turn is a quick fail
+  int quick_fails_to_escape = 3;
+  // Wall following (right hand).
+  double wall_every_s = 60.0;        // at most one wall-follow per this long
+  double wall_trigger_right_m = 0.5; // a wall this close on the right starts one
+  double wall_time_s = 45.0;
+  double wall_corner_front_m = 0.3;
+  double wall_corner_wide_m = 0.18;
+  double wall_corner_turn_radps = 1.8;
+  double wall_lost_m = 0.7;
+  double wall_search_speed_mps = 0.3;
+  double wall_search_turn_radps = 1.3;
+  double wall_speed_mps = 0.45;
+  double wall_gain_radps_per_m = 5.0;
+  double wall_follow_distance_m = 0.24;
+  double wall_max_turn_radps = 1.5;
+  // Bumps and escapes.
+  double bump_debounce_s = 0.3;
+  double bump_window_s = 5.0;
+  int bumps_to_trapped = 3;
+  double backoff_speed_mps = 0.15;
+  double backoff_s = 0.3;
+  double backoff_trapped_s = 0.8;
+  double trapped_turn_spread_rad = 0.7;  // trapped: turn round, +- this
+  double spin_speed_mps = 0.05;          // slower than this counts as spinning on the spot
+  double spin_limit_s = 4.0;
+  // Turning on the spot to a heading.
+  double turn_max_radps = 2.8;
+  double turn_min_radps = 0.5;
+  double turn_gain_per_s = 3.0;
+  double turn_tolerance_rad = 0.1;
+  double turn_timeout_s = 3.0;
+  // Choosing a heading.
+  int heading_half_width_beams = 8;  // ~8 degrees, the robot's width at ~1 m
+  double heading_skip_ahead_rad = 0.35;
+  double heading_min_clear_m = 0.8;
+  double heading_max_reach_m = 4.0;
+  double novelty_floor = 0.05;
+  double novelty_start_m = 0.5;
+  double open_half_rad = 1.57;
+  double open_side_m = 0.9;       // free this far in the front half (+- open_half_rad): open space
+  double spiral_chance = 0.35;    // in open space, spiral with this probability
+  // Dead-reckoned memory.
+  double memory_cell_m = 0.25;
+};
+
 class RoombaReference : public VacuumAlgorithm {
  public:
-  explicit RoombaReference(uint64_t seed) : rng_(seed * 2654435761ull + 17) {}
+  explicit RoombaReference(uint64_t seed, Settings settings = {})
+      : s_(settings), rng_(seed * 2654435761ull + 17) {}
 
   void execute(VacuumApi& api) override {
     const double dt = api.period_s;
     t_ += dt;
     const auto& laser = api.laser.getLaserData();
     if (laser.numLaser == 0) return;  // no scan yet
-    const double front = sectorMin(laser, -0.45, 0.45);
-    const double front_wide = sectorMin(laser, -1.0, 1.0);
-    const double right = sectorMin(laser, -1.58, -1.25);
+    const double front = sectorMin(laser, -s_.front_half_rad, s_.front_half_rad);
+    const double front_wide = sectorMin(laser, -s_.front_wide_half_rad, s_.front_wide_half_rad);
+    const double right = sectorMin(laser, s_.right_from_rad, s_.right_to_rad);
     const double yaw = api.pose3d.getYaw();
     const bool bumped = api.bumper.getBumperData().state == 1;
-    deadReckon(yaw, bumped || front < 0.12, dt);
+    deadReckon(yaw, bumped || front < s_.blocked_front_m, dt);
 
     // A bump ends a forward move. While backing off or turning (a disc can always turn on the
     // spot) a held bumper is ignored, or a robot wedged in a nook would back off forever.
     const bool moving_forward = mode_ == Mode::Cross || mode_ == Mode::Wall || mode_ == Mode::Spiral;
-    if (bumped && moving_forward && (!was_bumped_ || t_ - mode_start_ > 0.3)) {
-      bumps_recent_ = t_ - last_bump_t_ < 5.0 ? bumps_recent_ + 1 : 1;
+    if (bumped && moving_forward && (!was_bumped_ || t_ - mode_start_ > s_.bump_debounce_s)) {
+      bumps_recent_ = t_ - last_bump_t_ < s_.bump_window_s ? bumps_recent_ + 1 : 1;
       last_bump_t_ = t_;
       enter(Mode::Backoff);
     }
@@ -51,65 +122,67 @@ class RoombaReference : public VacuumAlgorithm {
     double v = 0, w = 0;
     switch (mode_) {
       case Mode::Spiral: {
-        spiral_radius_ += 0.05 * dt / std::max(spiral_radius_, 0.1);  // rings ~0.3 m apart
+        spiral_radius_ += s_.spiral_growth_m2ps * dt / std::max(spiral_radius_, s_.spiral_min_radius_m);
         v = max_v_;
         w = v / spiral_radius_;
-        if (front < 0.3 || front_wide < 0.2 || t_ - mode_start_ > 40.0) chooseHeading(laser, yaw, false);
+        if (front < s_.spiral_stop_front_m || front_wide < s_.spiral_stop_wide_m || t_ - mode_start_ > s_.spiral_max_s) chooseHeading(laser, yaw, false);
         break;
       }
       case Mode::Cross: {
-        v = front < 0.5 ? 0.3 : max_v_;
-        if (t_ - mode_start_ > 1.0) quick_fails_ = 0;  // a real run: not boxed in
-        if (front < 0.22 || front_wide < 0.17) {
+        v = front < s_.cross_slow_front_m ? s_.cross_slow_speed_mps : max_v_;
+        if (t_ - mode_start_ > s_.quick_fail_reset_s) quick_fails_ = 0;  // a real run: not boxed in
+        if (front < s_.cross_stop_front_m || front_wide < s_.cross_stop_wide_m) {
           // Blocked again right after turning, several times: boxed in without touching
           // anything. Back out and turn round.
-          if (t_ - mode_start_ < 0.5 && ++quick_fails_ >= 3) {
+          if (t_ - mode_start_ < s_.quick_fail_window_s && ++quick_fails_ >= s_.quick_fails_to_escape) {
             quick_fails_ = 0;
-            bumps_recent_ = 3;
+            bumps_recent_ = s_.bumps_to_trapped;
             enter(Mode::Backoff);
           } else {
             chooseHeading(laser, yaw, false);
           }
-        } else if (t_ - wall_end_t_ > wall_every_s_ && right < 0.5) {
+        } else if (t_ - wall_end_t_ > s_.wall_every_s && right < s_.wall_trigger_right_m) {
           enter(Mode::Wall);  // a wall on the right: follow it for a while
         }
         break;
       }
       case Mode::Wall: {
-        if (front < 0.3 || front_wide < 0.18) {
+        if (front < s_.wall_corner_front_m || front_wide < s_.wall_corner_wide_m) {
           v = 0.0;
-          w = 1.8;  // corner ahead: turn left on the spot
-        } else if (right > 0.7) {
-          v = 0.3;
-          w = -1.3;  // lost the wall: curve right to find it
+          w = s_.wall_corner_turn_radps;  // corner ahead: turn left on the spot
+        } else if (right > s_.wall_lost_m) {
+          v = s_.wall_search_speed_mps;
+          w = -s_.wall_search_turn_radps;  // lost the wall: curve right to find it
         } else {
-          v = 0.45;
-          w = std::clamp(-5.0 * (right - 0.24), -1.5, 1.5);
+          v = s_.wall_speed_mps;
+          w = std::clamp(-s_.wall_gain_radps_per_m * (right - s_.wall_follow_distance_m), -s_.wall_max_turn_radps,
+                         s_.wall_max_turn_radps);
         }
-        if (t_ - mode_start_ > wall_time_s_) {
+        if (t_ - mode_start_ > s_.wall_time_s) {
           wall_end_t_ = t_;
           chooseHeading(laser, yaw, false);
         }
         break;
       }
       case Mode::Backoff: {
-        v = -0.15;
-        if (t_ - mode_start_ > (bumps_recent_ >= 3 ? 0.8 : 0.3)) chooseHeading(laser, yaw, bumps_recent_ >= 3);
+        v = -s_.backoff_speed_mps;
+        const bool trapped = bumps_recent_ >= s_.bumps_to_trapped;
+        if (t_ - mode_start_ > (trapped ? s_.backoff_trapped_s : s_.backoff_s)) chooseHeading(laser, yaw, trapped);
         break;
       }
       case Mode::Turn: {
         const double error = wrapAngle(turn_target_ - yaw);
-        w = std::copysign(std::min(2.8, 0.5 + 3.0 * std::abs(error)), error);
-        if (std::abs(error) < 0.1 || t_ - mode_start_ > 3.0) enter(turn_next_);
+        w = std::copysign(std::min(s_.turn_max_radps, s_.turn_min_radps + s_.turn_gain_per_s * std::abs(error)), error);
+        if (std::abs(error) < s_.turn_tolerance_rad || t_ - mode_start_ > s_.turn_timeout_s) enter(turn_next_);
         break;
       }
     }
     // Spinning on the spot for long (a corner the wall follower cannot leave, a nook where every
     // turn faces an obstacle): back out and turn round.
-    spin_s_ = std::abs(v) < 0.05 ? spin_s_ + dt : 0.0;
-    if (spin_s_ > 4.0) {
+    spin_s_ = std::abs(v) < s_.spin_speed_mps ? spin_s_ + dt : 0.0;
+    if (spin_s_ > s_.spin_limit_s) {
       spin_s_ = 0;
-      bumps_recent_ = 3;
+      bumps_recent_ = s_.bumps_to_trapped;
       wall_end_t_ = t_;
       enter(Mode::Backoff);
     }
@@ -121,9 +194,9 @@ class RoombaReference : public VacuumAlgorithm {
  private:
   enum class Mode { Spiral, Cross, Wall, Backoff, Turn };
 
-  // Dead-reckoned memory: cells of kCellM around the start, marked where the robot has been.
-  static constexpr double kCellM = 0.25;
-  static constexpr int kCells = 200;  // 50 x 50 m
+  // Dead-reckoned memory: cells of Settings::memory_cell_m around the start, marked where the
+  // robot has been.
+  static constexpr int kCells = 200;
 
   void deadReckon(double yaw, bool blocked, double dt) {
     // Last period's command; a pressed bumper or a wall at the nose means it did not move.
@@ -138,13 +211,13 @@ class RoombaReference : public VacuumAlgorithm {
         if (inside(c + dc, r + dr)) visited_[(r + dr) * kCells + c + dc] = 1;
       }
   }
-  static int cellOf(double v_m) { return static_cast<int>(std::floor(v_m / kCellM)) + kCells / 2; }
+  int cellOf(double v_m) const { return static_cast<int>(std::floor(v_m / s_.memory_cell_m)) + kCells / 2; }
   static bool inside(int c, int r) { return c >= 0 && r >= 0 && c < kCells && r < kCells; }
 
   // Fraction of the not-yet-visited cells along a heading, up to range_m.
   double novelty(double heading_rad, double range_m) const {
     int fresh = 0, total = 0;
-    for (double d = 0.5; d <= range_m; d += kCellM) {
+    for (double d = s_.novelty_start_m; d <= range_m; d += s_.memory_cell_m) {
       const int c = cellOf(x_m_ + d * std::cos(heading_rad)), r = cellOf(y_m_ + d * std::sin(heading_rad));
       ++total;
       if (inside(c, r) && !visited_[r * kCells + c]) ++fresh;
@@ -164,7 +237,7 @@ class RoombaReference : public VacuumAlgorithm {
   void enter(Mode m) {
     mode_ = m;
     mode_start_ = t_;
-    if (m == Mode::Spiral) spiral_radius_ = 0.15;
+    if (m == Mode::Spiral) spiral_radius_ = s_.spiral_start_radius_m;
   }
 
   // A new heading: a random open direction the laser sees (a corridor at least as wide as the
@@ -172,20 +245,20 @@ class RoombaReference : public VacuumAlgorithm {
   // turn back (the way it came in is free).
   void chooseHeading(const component::LaserData& laser, double yaw, bool trapped) {
     std::vector<std::pair<double, double>> options;  // (angle, weight)
-    const int half_width = 8;  // beams on each side: ~8 degrees, the robot's width at ~1 m
+    const int half_width = s_.heading_half_width_beams;
     for (int i = half_width; i + half_width < laser.numLaser; i += 2) {
       const double a = laser.angle(i);
-      if (std::abs(a) < 0.35) continue;  // straight ahead is what just got blocked
+      if (std::abs(a) < s_.heading_skip_ahead_rad) continue;  // straight ahead is what just got blocked
       double clear = laser.maxRange;
       for (int k = i - half_width; k <= i + half_width; ++k) clear = std::min<double>(clear, laser.values_m[k]);
-      if (clear < 0.8) continue;
-      const double reach = std::min(clear, 4.0);
+      if (clear < s_.heading_min_clear_m) continue;
+      const double reach = std::min(clear, s_.heading_max_reach_m);
       const double fresh = novelty(yaw + a, reach);
-      options.emplace_back(a, reach * (novelty_floor_ + fresh) * (novelty_floor_ + fresh));
+      options.emplace_back(a, reach * (s_.novelty_floor + fresh) * (s_.novelty_floor + fresh));
     }
     double delta;
     if (trapped || options.empty()) {
-      delta = M_PI + std::uniform_real_distribution<double>(-0.7, 0.7)(rng_);
+      delta = M_PI + std::uniform_real_distribution<double>(-s_.trapped_turn_spread_rad, s_.trapped_turn_spread_rad)(rng_);
       bumps_recent_ = 0;
     } else {
       double total = 0;
@@ -200,25 +273,25 @@ class RoombaReference : public VacuumAlgorithm {
       }
     }
     // Open space all around: spiral there now and then.
-    const bool open = sectorMin(laser, -1.57, 1.57) > 0.9;
-    const Mode next = open && std::uniform_real_distribution<double>(0, 1)(rng_) < 0.35 ? Mode::Spiral : Mode::Cross;
+    const bool open = sectorMin(laser, -s_.open_half_rad, s_.open_half_rad) > s_.open_side_m;
+    const Mode next = open && std::uniform_real_distribution<double>(0, 1)(rng_) < s_.spiral_chance ? Mode::Spiral : Mode::Cross;
     turn_target_ = wrapAngle(yaw + delta);
     turn_next_ = next;
     enter(Mode::Turn);
   }
 
+  const Settings s_;
+  const double max_v_ = s_.max_speed_mps;
   std::mt19937_64 rng_;
   Mode mode_ = Mode::Spiral;
   Mode turn_next_ = Mode::Cross;
   double t_ = 0, mode_start_ = 0, last_bump_t_ = -100, wall_end_t_ = 0;
-  double spiral_radius_ = 0.15, turn_target_ = 0;
-  double max_v_ = 0.5, wall_time_s_ = 45.0, wall_every_s_ = 60.0;
+  double spiral_radius_ = s_.spiral_start_radius_m, turn_target_ = 0;
   int bumps_recent_ = 0;
   int quick_fails_ = 0;
   double spin_s_ = 0;
   bool was_bumped_ = false;
   double commanded_v_ = 0, x_m_ = 0, y_m_ = 0;
-  double novelty_floor_ = 0.05;
   std::vector<uint8_t> visited_ = std::vector<uint8_t>(kCells * kCells, 0);
 };
 
