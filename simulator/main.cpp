@@ -14,6 +14,7 @@
 #include <aula/world/world_spec.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 
@@ -103,7 +104,15 @@ int runSimulator(int argc, char** argv) {
   // --key-fd=N: a graded run's key, from the launcher (docs/grading.md, "What a student's code can do").
   std::optional<auth::Key> key;
   if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
+  // Another simulator on this URL would drive our clients with its clock: before our first tick,
+  // listen for one (while the world loads, then up to kListenForOthers in all).
+  constexpr auto kListenForOthers = std::chrono::milliseconds(300);
+  const auto listen_until = std::chrono::steady_clock::now() + kListenForOthers;
   sim::Simulator simulator(std::move(spec), options, *bus, key);
+  if (const auto other = simulator.otherSimulatorUntil(listen_until)) {
+    throw config::ConfigError("another simulator (instance " + std::to_string(other->instance) + ", world " +
+                              other->world + ") is already running on " + bus->url());
+  }
   std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
             << simulator.spec().sha256.substr(0, 12) << ") with " << simulator.physics().robotCount()
             << " robot(s), step " << options.step_s * 1e3 << " ms, " << (options.lockstep ? "lockstep" : "free-running")
@@ -115,6 +124,7 @@ int runSimulator(int argc, char** argv) {
   }
   std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time";
   if (simulator.rejectedControls() > 0) std::cerr << "; " << simulator.rejectedControls() << " SIM_CONTROL requests rejected";
+  if (simulator.foreignTicks() > 0) std::cerr << "; " << simulator.foreignTicks() << " ticks of another simulator heard";
   std::cerr << "\n";
   return 0;
 }

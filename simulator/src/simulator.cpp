@@ -17,6 +17,17 @@ namespace {
 using WallClock = std::chrono::steady_clock;
 
 int64_t secondsToUs(double s) { return static_cast<int64_t>(std::llround(s * 1e6)); }
+
+// 63 random bits from the kernel (never the seed: a run's report depends on the seed only), not 0.
+int64_t randomInstance() {
+  for (;;) {
+    const auth::Key bytes = auth::randomKey();
+    uint64_t id = 0;
+    for (int i = 0; i < 8; ++i) id = (id << 8) | bytes[static_cast<size_t>(i)];
+    id >>= 1;
+    if (id != 0) return static_cast<int64_t>(id);
+  }
+}
 }  // namespace
 
 SimulatorOptions SimulatorOptions::fromConfig(const config::Config& cfg) {
@@ -61,7 +72,10 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
 }
 
 Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus, std::optional<auth::Key> key)
-    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key) {
+    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key),
+      instance_(randomInstance()) {
+  // The clock channel first: a simulator already running on this bus is heard while the world loads.
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
   context_.bus = &bus_;
   context_.physics = physics_.get();
@@ -113,6 +127,29 @@ void Simulator::log(const std::string& line) const {
   std::cerr << "aula-sim [" << physics_->timeUs() / 1e6 << " s]: " << line << std::endl;
 }
 
+std::optional<aula::sim_clock_t> Simulator::otherSimulatorUntil(WallClock::time_point until) {
+  probing_ = true;
+  while (!first_foreign_) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - WallClock::now()).count();
+    if (left <= 0) break;
+    bus_.handleTimeout(static_cast<int>(std::max<long long>(1, left)));
+  }
+  probing_ = false;
+  return first_foreign_;
+}
+
+// Our own ticks come back to us (one read each); another instance's are another simulator's, or forged.
+void Simulator::onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick) {
+  if (tick->instance == instance_) return;
+  if (++foreign_ticks_ == 1) {
+    first_foreign_ = *tick;
+    if (!probing_) {
+      log("another simulator (instance " + std::to_string(tick->instance) + ", world '" + tick->world +
+          "') publishes on " + bus_.url() + "; its ticks are not ours, our clients ignore them");
+    }
+  }
+}
+
 bool Simulator::forgedControl(const std::string& channel, const aula::sim_control_t& msg) {
   if (!stamper_.keyed()) return false;  // outside grading the windows' controls work as they are
   if (!auth::verify(*stamper_.key(), channel, msg)) {
@@ -132,6 +169,7 @@ bool Simulator::forgedControl(const std::string& channel, const aula::sim_contro
 
 void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
                           const aula::sim_control_t* msg) {
+  if (probing_) return;
   if (forgedControl(channel, *msg)) return;
   switch (msg->command) {
     case aula::sim_control_t::PAUSE:
@@ -183,6 +221,7 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
 
 void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
                            const aula::lockstep_register_t* msg) {
+  if (probing_) return;  // a client re-sends its registration until listed
   if (msg->leave) {
     if (lockstep_.leave(msg->client)) log("lockstep client '" + msg->client + "' left");
     return;
@@ -227,6 +266,7 @@ void Simulator::publishClock() {
   tick.clients = lockstep_.clients();
   tick.num_clients = static_cast<int32_t>(tick.clients.size());
   tick.rejected_controls = rejected_controls_;
+  tick.instance = instance_;
   stamper_.stamp(lcmbus::kClockChannel, tick);
   bus_.publish(lcmbus::kClockChannel, &tick);
 }

@@ -4,6 +4,8 @@
 //   pose-flood   forged poses on ROOMBA_POSE sweeping the whole house
 //   control      SIM_CONTROL: teleport the roomba, pause, reset the world
 //   clock        SIM_CLOCK copies of the real tick with a huge seq
+//   clock-instance  the same, from another simulator instance (another `instance` id)
+//   none         nothing: exits 0 once the run has got that far (a test's cue)
 //   lockstep     acks and a leave for the component's name (vacuum-cleaner)
 //   episode      VACUUM_EPISODE: a reload (new generation) and a later start
 //   garbage      10,000 random packets spread over every channel of the run
@@ -75,7 +77,8 @@ void control(lcm::LCM& lcm) {
   lcm.publish(aula::lcmbus::kControlChannel, &msg);
 }
 
-void forgedClock(lcm::LCM& lcm, aula::sim_clock_t tick) {
+void forgedClock(lcm::LCM& lcm, aula::sim_clock_t tick, bool other_instance) {
+  if (other_instance) tick.instance ^= 0x5a5a5a5a5a5aLL;  // a simulator that listed our clients too
   tick.seq = 1000000000000LL;
   tick.utime += 500000000;  // and far in the future: a referee following it would end at once
   tick.auth_seq += 1000000;
@@ -147,7 +150,9 @@ int main(int argc, char** argv) {
   }
   if (attack == "pose-flood") poseFlood(lcm, *tick);
   else if (attack == "control") control(lcm);
-  else if (attack == "clock") forgedClock(lcm, *tick);
+  else if (attack == "clock") forgedClock(lcm, *tick, false);
+  else if (attack == "clock-instance") forgedClock(lcm, *tick, true);
+  else if (attack == "none") {}
   else if (attack == "lockstep") lockstep(lcm, *tick);
   else if (attack == "episode") episode(lcm, *tick);
   else if (attack == "garbage") garbage(lcm);

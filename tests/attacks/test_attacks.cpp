@@ -33,8 +33,17 @@ constexpr auto kWallTimeout = 120s;
 
 // `aula run vacuum --headless` (seed 3, 60 s), attacked by `attack` ("" none) and running
 // `algorithm` (the template by default: it stays still).
-RunResult runVacuum(const std::string& dir, const std::string& attack, const std::string& algorithm = "student") {
-  const std::string tag = attack.empty() ? "clean" : attack;
+// `second_sim`: once the run is 5 s in, a second aula-sim on the run's URL (its exit code, wall
+// time and output in `second`).
+struct SecondSim {
+  std::optional<int> code;
+  double wall_s = 0;
+  std::string output;
+};
+RunResult runVacuum(const std::string& dir, const std::string& attack, const std::string& algorithm = "student",
+                    double duration_s = 60, SecondSim* second_sim = nullptr) {
+  const std::string tag = (attack.empty() ? "clean" : attack) + std::to_string(static_cast<int>(duration_s)) +
+                          (second_sim != nullptr ? "-second-sim" : "");
   const std::string report = dir + "/" + tag + ".json", log = dir + "/" + tag + ".log";
   const std::string url = aula::testing::privateLcmUrl();
   RunResult run;
@@ -42,12 +51,25 @@ RunResult runVacuum(const std::string& dir, const std::string& attack, const std
   {
     aula::process::ChildProcess launcher(
         {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=" + algorithm, "--seed=3",
-         "--Vacuum.Referee.Duration=60", "--report=" + report, "--lcm-url=" + url},
+         "--Vacuum.Referee.Duration=" + std::to_string(duration_s), "--report=" + report, "--lcm-url=" + url},
         log, log);
     std::optional<aula::process::ChildProcess> attacker;
     if (!attack.empty()) {
       attacker.emplace(std::vector<std::string>{AULA_ATTACKER, "--lcm-url=" + url, "--attack=" + attack, "--after-s=10"},
                        dir + "/attacker.log", dir + "/attacker.log");
+    }
+    if (second_sim != nullptr) {
+      aula::process::ChildProcess cue({AULA_ATTACKER, "--lcm-url=" + url, "--attack=none", "--after-s=5"},
+                                      dir + "/cue.log", dir + "/cue.log");
+      if (cue.wait(40s) == 0) {
+        const auto second_start = std::chrono::steady_clock::now();
+        aula::process::ChildProcess second({std::string(AULA_BIN_DIR) + "/aula-sim", AULA_VACUUM_WORLD, "--lockstep",
+                                            "--rtf=0", "--lcm-url=" + url},
+                                           dir + "/second.log", dir + "/second.log");
+        second_sim->code = second.wait(10s);
+        second_sim->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - second_start).count();
+      }
+      second_sim->output = readFile(dir + "/second.log") + readFile(dir + "/cue.log");
     }
     run.code = launcher.wait(kWallTimeout);
     if (attacker) run.attacker_code = attacker->wait(5s);
@@ -148,4 +170,41 @@ TEST_F(Attacks, APluginThatForgesFromExecuteIsGradedOnItsRealBehaviour) {
   const std::string counted = tampering(run.report);
   EXPECT_NE(counted.find("\"ROOMBA_POSE\": "), std::string::npos) << run.report;
   EXPECT_NE(counted.find("\"SIM_CONTROL\": 1"), std::string::npos) << run.report;
+}
+
+// A forged clock from another simulator instance, far ahead: the component (and the referee's
+// own clock) follow only the instance that listed them, so nothing moves, nothing hangs; the
+// simulator hears another instance on its clock channel and says so.
+TEST_F(Attacks, AClockOfAnotherSimulatorInstanceIsIgnored) {
+  const RunResult run = runVacuum(dir_, "clock-instance");
+  ASSERT_TRUE(run.code.has_value()) << "the attacked run hung:\n" << run.log;
+  EXPECT_EQ(run.attacker_code, 0) << run.log;
+  EXPECT_EQ(*run.code, 0) << run.log;
+  EXPECT_LT(run.wall_s, clean_.wall_s + 10) << run.log;
+  EXPECT_EQ(graded(run.report), clean_.report) << run.log;
+  // Unsigned: the referee's gate counts those sent before the run ended (20 go out over 200 ms).
+  EXPECT_TRUE(std::regex_match(tampering(run.report), std::regex("\\{\"SIM_CLOCK\": ([1-9]|1[0-9]|20)\\}"))) << run.report;
+  EXPECT_NE(run.log.find("vacuum-cleaner: ignoring SIM_CLOCK ticks of another simulator"), std::string::npos) << run.log;
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("another simulator \\(instance [0-9]+, world '[^']*'\\) publishes on udpm://")))
+      << run.log;
+}
+
+// A second aula-sim started on a running run's URL hears the run's clock before its own first
+// tick and exits 2 at once; the run it would have disturbed grades as if it had never started.
+TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
+  // Long enough that the run is still going when the second simulator has loaded its world.
+  constexpr double kLongEpisodeS = 300;
+  const RunResult clean = runVacuum(dir_, "", "student", kLongEpisodeS);
+  ASSERT_EQ(clean.code, 0) << clean.log;
+  SecondSim second;
+  const RunResult run = runVacuum(dir_, "", "student", kLongEpisodeS, &second);
+  ASSERT_TRUE(run.code.has_value()) << "the run hung:\n" << run.log;
+  EXPECT_EQ(*run.code, 0) << run.log;
+  ASSERT_EQ(second.code, 2) << second.output;
+  EXPECT_LT(second.wall_s, 2.0) << second.output;
+  EXPECT_TRUE(std::regex_search(second.output,
+                                std::regex("aula-sim: another simulator \\(instance [0-9]+, world [^)]+\\) is already "
+                                           "running on udpm://")))
+      << second.output;
+  EXPECT_EQ(run.report, clean.report) << run.log;
 }

@@ -7,11 +7,13 @@
 #include <aula/lockstep_ack_t.hpp>
 #include <aula/lockstep_register_t.hpp>
 
+#include <iostream>
 #include <utility>
 
 namespace aula::lcmbus {
 namespace {
 constexpr auto kRegisterResend = std::chrono::milliseconds(100);
+constexpr auto kForeignLogEvery = std::chrono::seconds(10);
 }
 
 LockstepClient::LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us,
@@ -61,9 +63,24 @@ void LockstepClient::expectWorld(const std::string& sha256, const std::string& p
   expected_world_path_ = path;
 }
 
+void LockstepClient::noteForeignTick(const aula::sim_clock_t& tick) {
+  ++foreign_ticks_;
+  const auto now = std::chrono::steady_clock::now();
+  if (foreign_ticks_ > 1 && tick.instance == last_logged_foreign_ && now - last_foreign_log_ < kForeignLogEvery) return;
+  last_logged_foreign_ = tick.instance;
+  last_foreign_log_ = now;
+  std::cerr << name_ << ": ignoring " << kClockChannel << " ticks of another simulator (instance " << tick.instance
+            << ", world '" << tick.world << "'; following instance " << instance_ << "): " << foreign_ticks_
+            << " so far" << std::endl;
+}
+
 void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& channel,
                              const aula::sim_clock_t* tick) {
   if (accept_ && !accept_(channel, *tick)) return;
+  if (instance_locked_ && tick->instance != instance_) {
+    noteForeignTick(*tick);
+    return;
+  }
   if (!expected_world_sha256_.empty() && tick->world_sha256 != expected_world_sha256_) {
     world_mismatch_ = "the simulator runs world '" + tick->world + "' (sha256 " + tick->world_sha256.substr(0, 12) +
                       ") but this process was given " + expected_world_path_ + " (sha256 " +
@@ -78,6 +95,10 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& chann
   bool listed = false;
   for (const auto& c : tick->clients) listed = listed || c == name_;
   registered_ = listed && !left_;
+  if (listed && !instance_locked_) {  // our simulator: from now on we follow it only
+    instance_locked_ = true;
+    instance_ = tick->instance;
+  }
 
   if (tick->seq == last_seq_) {
     // The simulator re-sent a tick: our ack was lost. Ack again, do not run twice.

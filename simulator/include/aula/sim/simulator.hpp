@@ -11,6 +11,7 @@
 
 #include <aula/lockstep_ack_t.hpp>
 #include <aula/lockstep_register_t.hpp>
+#include <aula/sim_clock_t.hpp>
 #include <aula/sim_control_t.hpp>
 
 #include <aula/lcm/bus.hpp>
@@ -74,6 +75,15 @@ class Simulator {
   // replayed one; an unknown robot, a pose outside the world, a yaw not in [-pi, pi], an unknown
   // command): each is logged and counted, none reaches DART, and the clock tells the referee.
   long long rejectedControls() const { return rejected_controls_; }
+  // This process's instance id (random, 63 bits, never 0): every tick carries it.
+  int64_t instance() const { return instance_; }
+  // Before the first tick: listens on the clock channel until `until` (wall) for a tick of
+  // another instance, i.e. another simulator already running on this bus, and returns it.
+  // Nothing else is handled meanwhile (a register would make this one tick).
+  std::optional<aula::sim_clock_t> otherSimulatorUntil(std::chrono::steady_clock::time_point until);
+  // Ticks of another instance heard on the clock channel (another simulator, or a forgery).
+  long long foreignTicks() const { return foreign_ticks_; }
+
   // Why a SET_POSE to (x, y, yaw) cannot be done, or nullopt.
   std::optional<std::string> poseProblem(double x_m, double y_m, double yaw_rad) const;
 
@@ -83,6 +93,7 @@ class Simulator {
   bool forgedControl(const std::string& channel, const aula::sim_control_t& msg);
   void onRegister(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* m);
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
+  void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
   void publishClock();
   void resetWorld();
   // The steps of run(). startIfReady, holdWhilePausedOrWaiting and awaitLockstepAcks return true
@@ -120,6 +131,10 @@ class Simulator {
   int64_t last_control_seq_ = 0;    // the auth_seq of the last signed request obeyed
   bool repace_ = false;        // SET_RTF: pacing restarts from the current time
   bool step_pending_ = false;  // STEP while paused
+  int64_t instance_ = 0;
+  bool probing_ = false;       // otherSimulatorUntil: only the clock is heard
+  std::optional<aula::sim_clock_t> first_foreign_;
+  long long foreign_ticks_ = 0;
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
 };
 

@@ -50,12 +50,19 @@ class LockstepClient {
   bool paused() const { return paused_; }
   bool clockSeen() const { return last_seq_ >= 0; }
   double realTimeFactor() const { return rtf_; }
+  // The simulator this client follows: the instance of the first tick that listed it. Ticks of
+  // any other instance (a second simulator on the same URL, or a forgery) are then ignored,
+  // counted and logged (one line, repeated at most every 10 s of wall time).
+  bool instanceLocked() const { return instance_locked_; }
+  int64_t instance() const { return instance_; }
+  long long foreignTicks() const { return foreign_ticks_; }
   // The latest tick as received (world name, seed, clients...).
   const aula::sim_clock_t& lastTick() const { return last_tick_; }
 
  private:
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
   void sendRegister(bool leave);
+  void noteForeignTick(const aula::sim_clock_t& tick);
   void sendAck(int64_t seq, int64_t utime);
 
   lcmbus::Bus& bus_;
@@ -73,6 +80,11 @@ class LockstepClient {
   bool left_ = false;
   double rtf_ = 0.0;
   aula::sim_clock_t last_tick_{};
+  bool instance_locked_ = false;
+  int64_t instance_ = 0;
+  long long foreign_ticks_ = 0;
+  int64_t last_logged_foreign_ = 0;
+  std::chrono::steady_clock::time_point last_foreign_log_{};
   std::chrono::steady_clock::time_point last_register_{};
   std::string expected_world_sha256_, expected_world_path_;
   std::string world_mismatch_;  // set by a tick of another world
