@@ -105,8 +105,10 @@ int runSimulator(int argc, char** argv) {
   std::optional<auth::Key> key;
   if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
-  // listen for one (while the world loads, then up to kListenForOthers in all).
-  constexpr auto kListenForOthers = std::chrono::milliseconds(300);
+  // listen for one (while the world loads, then up to kListenForOthers in all). A simulator ticks
+  // at least every 100 ms of wall time while it waits for clients or is paused, and faster when it
+  // runs (but for one paced below 0.15x real time): 150 ms hears it, and every run's start pays it.
+  constexpr auto kListenForOthers = std::chrono::milliseconds(150);
   const auto listen_until = std::chrono::steady_clock::now() + kListenForOthers;
   sim::Simulator simulator(std::move(spec), options, *bus, key);
   if (const auto other = simulator.otherSimulatorUntil(listen_until)) {
