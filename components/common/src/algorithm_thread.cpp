@@ -1,7 +1,5 @@
 #include "aula/component/algorithm_thread.hpp"
 
-#include <aula/process/signal_watcher.hpp>
-
 #include <chrono>
 #include <csignal>
 
@@ -9,8 +7,7 @@
 
 namespace aula::component {
 
-AlgorithmThread::AlgorithmThread()
-    : thread_(process::startWithStopSignalsBlocked([this] { return std::thread([this] { loop(); }); })) {}
+AlgorithmThread::AlgorithmThread() : thread_([this] { loop(); }) {}
 
 AlgorithmThread::~AlgorithmThread() {
   {

@@ -1,7 +1,5 @@
 #include "aula/component/execute_watchdog.hpp"
 
-#include <aula/process/signal_watcher.hpp>
-
 #include <aula/process/exit_codes.hpp>
 
 #include <chrono>
@@ -25,9 +23,7 @@ int64_t steadyNowNs() {
 
 ExecuteWatchdog::ExecuteWatchdog(std::string program, double budget_s)
     : program_(std::move(program)), budget_s_(budget_s) {
-  if (budget_s_ > 0) {
-    thread_ = process::startWithStopSignalsBlocked([this] { return std::thread([this] { watch(); }); });
-  }
+  if (budget_s_ > 0) thread_ = std::thread([this] { watch(); });
 }
 
 ExecuteWatchdog::~ExecuteWatchdog() {

@@ -19,38 +19,29 @@ namespace {
 
 constexpr const char* kUdpmScheme = "udpm://";
 
-// A udpm:// URL taken apart: LCM's defaults for what it leaves out.
-struct UdpmUrl {
-  std::string group = "239.255.76.67";
-  int port = 7667;
-  std::string options;  // "?ttl=0..." or ""
-};
-
 bool isUdpm(const std::string& url) { return url.rfind(kUdpmScheme, 0) == 0; }
 
-UdpmUrl parseUdpm(const std::string& url) {
-  UdpmUrl parsed;
+// The port of a udpm:// URL (LCM's 7667 when it names none), its group checked too.
+int udpmPort(const std::string& url) {
   std::string rest = url.substr(std::strlen(kUdpmScheme));
-  if (const auto q = rest.find('?'); q != std::string::npos) {
-    parsed.options = rest.substr(q);
-    rest = rest.substr(0, q);
-  }
+  rest = rest.substr(0, rest.find('?'));
+  int port = 7667;
   if (const auto colon = rest.find(':'); colon != std::string::npos) {
-    const std::string port = rest.substr(colon + 1);
+    const std::string text = rest.substr(colon + 1);
     char* end = nullptr;
-    const long value = std::strtol(port.c_str(), &end, 10);
-    if (port.empty() || *end != '\0' || value <= 0 || value > 65535) {
-      throw config::ConfigError("LCM URL '" + url + "': port '" + port + "' is not a number from 1 to 65535");
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || value <= 0 || value > 65535) {
+      throw config::ConfigError("LCM URL '" + url + "': port '" + text + "' is not a number from 1 to 65535");
     }
-    parsed.port = static_cast<int>(value);
+    port = static_cast<int>(value);
     rest = rest.substr(0, colon);
   }
-  if (!rest.empty()) parsed.group = rest;
+  const std::string group = rest.empty() ? "239.255.76.67" : rest;
   in_addr address{};
-  if (inet_pton(AF_INET, parsed.group.c_str(), &address) != 1 || (ntohl(address.s_addr) >> 28) != 0xE) {
-    throw config::ConfigError("LCM URL '" + url + "': '" + parsed.group + "' is not an IPv4 multicast group (224.0.0.0 to 239.255.255.255)");
+  if (inet_pton(AF_INET, group.c_str(), &address) != 1 || (ntohl(address.s_addr) >> 28) != 0xE) {
+    throw config::ConfigError("LCM URL '" + url + "': '" + group + "' is not an IPv4 multicast group (224.0.0.0 to 239.255.255.255)");
   }
-  return parsed;
+  return port;
 }
 
 // LCM subscribes to a regular expression; Aula's channels are plain names.
@@ -140,8 +131,8 @@ Bus::Bus(std::string url) : url_(std::move(url)) {
   const char* stats = std::getenv("AULA_BUS_STATS");  // bench/exercise_overhead.sh
   print_stats_ = stats != nullptr && *stats != '\0';
   const bool udpm = isUdpm(url_);
-  const UdpmUrl parsed = udpm ? parseUdpm(url_) : UdpmUrl{};
-  const std::set<int> before = udpm ? udpSocketsBoundTo(parsed.port) : std::set<int>{};
+  const int port = udpm ? udpmPort(url_) : 0;
+  const std::set<int> before = udpm ? udpSocketsBoundTo(port) : std::set<int>{};
   receiver_ = std::make_unique<lcm::LCM>(url_);
   if (!receiver_->good()) {
     std::string why = "cannot open the LCM bus '" + url_ + "'";
@@ -157,7 +148,7 @@ Bus::Bus(std::string url) : url_(std::move(url)) {
   // socket on the port that appears now is it.
   if (receiver_->getFileno() < 0) throw BusError("cannot open the LCM bus '" + url_ + "': LCM's self test failed");
   std::vector<int> appeared;
-  for (int fd : udpSocketsBoundTo(parsed.port)) {
+  for (int fd : udpSocketsBoundTo(port)) {
     if (before.count(fd) == 0) appeared.push_back(fd);
   }
   if (appeared.size() != 1) {

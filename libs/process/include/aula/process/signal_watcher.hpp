@@ -9,43 +9,32 @@
 
 namespace aula::process {
 
-// Starts a thread (`start()` returns it) with SIGINT and SIGTERM blocked, so the thread inherits
-// the block. A thread that does not block them can be handed a stop signal meant for the main
-// loop's SignalWatcher, and its default action kills the whole process before it can leave
-// lockstep and exit cleanly (seen: the TeleTaxi component ending with 143 at every run's end).
-// Blocks SIGINT and SIGTERM in the calling thread, and so in every thread it starts from now on.
-// A headless process calls it first thing, before any library starts a thread of its own (TBB's
-// workers under OpenCV), so that only its SignalWatcher ever takes a stop signal (a signal that
-// arrives before the watcher exists waits, pending, and the watcher reads it).
-inline void blockStopSignals() {
+// SIGINT and SIGTERM: what the launcher, a terminal's Ctrl-C or a Slurm job's end send.
+inline sigset_t stopSignals() {
   sigset_t stop;
   sigemptyset(&stop);
   sigaddset(&stop, SIGINT);
   sigaddset(&stop, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop, nullptr);
+  return stop;
 }
 
-template <class Start>
-auto startWithStopSignalsBlocked(Start start) {
-  sigset_t stop, previous;
-  sigemptyset(&stop);
-  sigaddset(&stop, SIGINT);
-  sigaddset(&stop, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &stop, &previous);
-  auto started = start();
-  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-  return started;
+// Blocks the stop signals in the calling thread, and so in every thread it starts from now on.
+// A headless process calls it first thing, before any library starts a thread of its own (TBB's
+// workers under OpenCV), so that only its SignalWatcher ever takes a stop signal: a thread that
+// does not block them can be handed one, and its default action kills the whole process before
+// it can leave lockstep (seen: the TeleTaxi component ending with 143 at every run's end). A
+// signal that arrives before the watcher exists waits, pending, and the watcher reads it.
+inline void blockStopSignals() {
+  const sigset_t stop = stopSignals();
+  pthread_sigmask(SIG_BLOCK, &stop, nullptr);
 }
 
 class SignalWatcher {
  public:
   SignalWatcher() {
-    sigset_t mask;
-    sigemptyset(&mask);
-    sigaddset(&mask, SIGINT);
-    sigaddset(&mask, SIGTERM);
-    sigprocmask(SIG_BLOCK, &mask, nullptr);
-    fd_ = signalfd(-1, &mask, SFD_NONBLOCK | SFD_CLOEXEC);
+    blockStopSignals();
+    const sigset_t stop = stopSignals();
+    fd_ = signalfd(-1, &stop, SFD_NONBLOCK | SFD_CLOEXEC);
   }
   ~SignalWatcher() {
     if (fd_ >= 0) close(fd_);
