@@ -1,0 +1,177 @@
+#pragma once
+// What every academic component is, whatever its exercise: the robot named by
+// `<Prefix>.Robot`, its true pose (for the window) and its motors, the algorithm table by name
+// (the exercise's built-ins, "student", or a plugin), the sim-time control loop, the episode
+// messages for the referee, the referee's status, teleoperation, Autostart and hot reload.
+// An exercise derives from it, adds its own sensors and API, and says how the student's
+// algorithm is called (`execute`). The settings it reads are the same keys under every
+// exercise's prefix: Period, Algorithm, Robot, MaxV, MaxW, Autostart, Episode.Channel,
+// RefereeStatus.Channel, and Component.ExecuteBudget.
+
+#include <aula/component/algorithm_host.hpp>
+#include <aula/component/control_loop.hpp>
+#include <aula/component/episode_sender.hpp>
+#include <aula/component/proxies.hpp>
+#include <aula/component/referee_status.hpp>
+#include <aula/config/config.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace aula::component {
+
+struct ExerciseNames {
+  std::string settings_prefix;  // "Vacuum": the keys Vacuum.Period, Vacuum.Robot...
+  std::string program;          // "vacuum-cleaner": the lockstep client's and the log's name
+  std::string exercise;         // "vacuum": the plugins' exercise and the episode messages'
+};
+
+template <class Algorithm>
+class ExerciseComponent {
+ public:
+  using Host = AlgorithmHost<Algorithm>;
+  using Builtins = std::map<std::string, typename Host::Factory>;
+
+  // `cfg`: the effective settings; the robot and its channels come from `world`. Throws
+  // PluginError (exit 2) for an algorithm that cannot be used, WorldError for a missing robot.
+  ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                    const ExerciseNames& names, Builtins builtins)
+      : bus_(bus), algorithm_name_(cfg.getString(names.settings_prefix + ".Algorithm")) {
+    const std::string& p = names.settings_prefix;
+    const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
+    start_ = {robot.name, robot.pose.translation().x(), robot.pose.translation().y(), world::yawOf(robot.pose)};
+    autostart_ = cfg.getBool(p + ".Autostart");
+    pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
+    motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
+                                            cfg.getDouble(p + ".MaxW"));
+    host_ = std::make_unique<Host>(names.program, names.exercise, std::move(builtins), algorithm_name_, *motors_,
+                                   cfg.getDouble("Component.ExecuteBudget"));
+    episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.exercise, *host_);
+    host_->setOnHung([this] {  // the stuck call may still read these: never written again
+      pose_->detach();
+      detachSensors();
+      motors_->halt();
+    });
+    referee_status_ = std::make_unique<RefereeStatusListener>(bus, cfg.getString(p + ".RefereeStatus.Channel"),
+                                                              names.program, [this] { return generation(); });
+    referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
+    const double period_s = cfg.getDouble(p + ".Period");
+    loop_ = std::make_unique<ControlLoop>(bus, names.program, static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
+                                          [this] { step(); });
+    loop_->setOnTick([this](int64_t utime) { tick(utime); });
+  }
+  virtual ~ExerciseComponent() = default;
+  ExerciseComponent(const ExerciseComponent&) = delete;
+  ExerciseComponent& operator=(const ExerciseComponent&) = delete;
+
+  // "Run my algorithm" (TeleTaxi's GO!) and its Stop; stopping stops the robot.
+  void setRunning(bool running) {
+    loop_->setRunning(running);
+    if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
+    episode_->markChanged();
+  }
+  bool running() const { return loop_->running(); }
+  void teleoperate(double v_mps, double w_radps) {  // ignored while the algorithm runs
+    if (running()) return;
+    motors_->sendV(v_mps);
+    motors_->sendW(w_radps);
+  }
+  // Hot reload: loads the algorithm again (a plugin's new build), puts the robot back at its
+  // start and starts a new episode, running again if it ran and the exercise allows it. False
+  // when the new build cannot be used (the algorithm's fault says why).
+  bool reloadAlgorithm() {
+    if (host_->hung()) return false;  // a call is still stuck in it: the fault says so
+    const bool was_running = running();
+    setRunning(false);
+    const bool loaded = host_->reload();
+    started_utime_ = -1;  // the referee's clock starts again at the next Run
+    const bool may_resume = startNewEpisode();
+    episode_->restart(start_);
+    if (was_running && loaded && may_resume) setRunning(true);
+    return loaded;
+  }
+  // With windows: a hung execute() halts the algorithm instead of ending the process.
+  void containHangs() { host_->containHangs(); }
+  void poll() { loop_->poll(); }  // housekeeping (lockstep registration)
+  void leave() { loop_->leave(); }
+
+  int generation() const { return episode_->generation(); }
+  lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
+  int64_t simTimeUs() const { return loop_->simTimeUs(); }
+  int64_t startedUtime() const { return started_utime_; }  // the episode's first Run (-1: not yet)
+  bool autostart() const { return autostart_; }
+  const std::string& algorithmName() const { return algorithm_name_; }
+  const AlgorithmHostBase& algorithm() const { return *host_; }
+  const Pose3dProxy& truePose() const { return *pose_; }  // the window's, never the algorithm's unless its API has it
+  const MotorsProxy& motors() const { return *motors_; }
+  double maxV() const { return motors_->maxV(); }
+  double maxW() const { return motors_->maxW(); }
+  const StartPose& startPose() const { return start_; }
+  // The referee's word on the episode (time left, its end); when it ends, the algorithm stops.
+  const RefereeStatusListener& refereeStatus() const { return *referee_status_; }
+  // Called after every control tick (GUI refresh hooks, tests).
+  void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
+
+ protected:
+  // The student's execute() on the exercise's API, every control period while running.
+  virtual void execute(Algorithm& algorithm) = 0;
+  // A hung call may still read the exercise's own sensors: freeze them (the pose is frozen here).
+  virtual void detachSensors() {}
+  // At every tick, before Autostart and the episode message (TeleTaxi: the taxi on its grid).
+  virtual void beforeTick(int64_t /*utime*/) {}
+  // Autostart waits until this holds (TeleTaxi: a destination and the taxi's pose).
+  virtual bool readyToAutostart() const { return true; }
+  // Just before Autostart runs the algorithm: false when it cannot run (TeleTaxi: no path).
+  virtual bool prepareAutostart() { return true; }
+  // What the episode messages carry besides the run state (TeleTaxi: the destination).
+  virtual std::optional<std::pair<double, double>> episodeGoal() const { return std::nullopt; }
+  // The exercise's state for a new episode (hot reload); false when the algorithm may not run
+  // on at once (TeleTaxi: a new path must be generated first).
+  virtual bool startNewEpisode() { return true; }
+
+  Pose3dProxy& poseProxy() { return *pose_; }
+  MotorsProxy& motorsProxy() { return *motors_; }
+  Host& host() { return *host_; }
+  EpisodeSender& episode() { return *episode_; }
+
+ private:
+  void step() {
+    if (!host_->call(static_cast<uint64_t>(loop_->seed()), "execute()", [this](Algorithm& a) { execute(a); })) {
+      setRunning(false);
+    }
+  }
+  void tick(int64_t utime) {
+    beforeTick(utime);
+    // Autostart runs the algorithm from the first tick it can (sim time 0 in a headless lockstep
+    // run; later when windows join a running world), once.
+    if (autostart_ && !autostarted_ && readyToAutostart()) {
+      autostarted_ = true;
+      if (prepareAutostart()) setRunning(true);
+    }
+    episode_->tick(utime, {running(), started_utime_, episodeGoal()});
+    if (on_tick_) on_tick_(utime);
+  }
+
+  lcmbus::Bus& bus_;
+  std::string algorithm_name_;
+  StartPose start_;
+  bool autostart_ = false;
+  bool autostarted_ = false;
+  int64_t started_utime_ = -1;  // the first Run of this episode (-1: not yet)
+  std::unique_ptr<Pose3dProxy> pose_;
+  std::unique_ptr<MotorsProxy> motors_;
+  std::unique_ptr<Host> host_;
+  std::unique_ptr<EpisodeSender> episode_;
+  std::unique_ptr<RefereeStatusListener> referee_status_;
+  std::unique_ptr<ControlLoop> loop_;
+  std::function<void(int64_t)> on_tick_;
+};
+
+}  // namespace aula::component
