@@ -17,32 +17,24 @@ function(aula_add_algorithm)
     message(FATAL_ERROR "aula_add_algorithm(NAME name EXERCISE vacuum|teletaxi|autopark SOURCES ...): "
                         "NAME, EXERCISE and SOURCES are required")
   endif()
-  if(ARG_EXERCISE STREQUAL "vacuum")
-    set(AULA_HEADER "aula/vacuum/vacuum_algorithm.hpp")
-    set(AULA_CLASS "aula::vacuum::VacuumAlgorithm")
-    set(AULA_MAKE "aula::vacuum::makeStudentAlgorithm(seed)")
-  elseif(ARG_EXERCISE STREQUAL "teletaxi")
-    set(AULA_HEADER "aula/teletaxi/taxi_algorithm.hpp")
-    set(AULA_CLASS "aula::teletaxi::TaxiAlgorithm")
-    set(AULA_MAKE "((void)seed, aula::teletaxi::makeStudentAlgorithm())")
-  elseif(ARG_EXERCISE STREQUAL "autopark")
-    set(AULA_HEADER "aula/autopark/autopark_algorithm.hpp")
-    set(AULA_CLASS "aula::autopark::AutoparkAlgorithm")
-    set(AULA_MAKE "aula::autopark::makeStudentAlgorithm(seed)")
+  # The exercise's API target says what a plugin implements (aula_declare_algorithm_api).
+  if(TARGET Aula::${ARG_EXERCISE}_api)
+    set(_api Aula::${ARG_EXERCISE}_api)
+  elseif(TARGET aula_${ARG_EXERCISE}_api)
+    set(_api aula_${ARG_EXERCISE}_api)
   else()
-    message(FATAL_ERROR "aula_add_algorithm(${ARG_NAME}): EXERCISE must be vacuum, teletaxi or autopark, "
-                        "not '${ARG_EXERCISE}'")
+    message(FATAL_ERROR "aula_add_algorithm(${ARG_NAME}): no exercise '${ARG_EXERCISE}' (no target "
+                        "Aula::${ARG_EXERCISE}_api); the exercises are vacuum, teletaxi and autopark")
   endif()
+  get_target_property(AULA_HEADER ${_api} AULA_ALGORITHM_HEADER)
+  get_target_property(AULA_CLASS ${_api} AULA_ALGORITHM_CLASS)
+  get_target_property(AULA_MAKE ${_api} AULA_ALGORITHM_MAKE)
   set(AULA_EXERCISE "${ARG_EXERCISE}")
   set(_entry "${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_aula_entry.cpp")
   configure_file("${_AULA_ALGORITHM_DIR}/aula_algorithm_entry.cpp.in" "${_entry}" @ONLY)
 
   add_library(${ARG_NAME} MODULE ${ARG_SOURCES} "${_entry}")
-  if(TARGET Aula::${ARG_EXERCISE}_api)
-    target_link_libraries(${ARG_NAME} PRIVATE Aula::${ARG_EXERCISE}_api)
-  else()
-    target_link_libraries(${ARG_NAME} PRIVATE aula_${ARG_EXERCISE}_api)
-  endif()
+  target_link_libraries(${ARG_NAME} PRIVATE ${_api})
   # lib<name>.so, like any shared library; hidden by default (see above).
   set_target_properties(${ARG_NAME} PROPERTIES
     PREFIX "lib" SUFFIX ".so"
@@ -53,4 +45,17 @@ function(aula_add_algorithm)
   if(ARG_OUTPUT_DIRECTORY)
     set_target_properties(${ARG_NAME} PROPERTIES LIBRARY_OUTPUT_DIRECTORY "${ARG_OUTPUT_DIRECTORY}")
   endif()
+endfunction()
+
+# aula_declare_algorithm_api(TARGET aula_<exercise>_api HEADER h CLASS c MAKE expr)
+#
+# An exercise's API target (an INTERFACE library named aula_<exercise>_api) says what a plugin of
+# that exercise implements: the header declaring the algorithm's class, the class, and the C++
+# expression that makes the student's algorithm from `uint64_t seed` (a std::unique_ptr). The
+# properties are exported with the target, so an installed Aula's plugins read them too.
+function(aula_declare_algorithm_api)
+  cmake_parse_arguments(ARG "" "TARGET;HEADER;CLASS;MAKE" "" ${ARGN})
+  set_target_properties(${ARG_TARGET} PROPERTIES
+    AULA_ALGORITHM_HEADER "${ARG_HEADER}" AULA_ALGORITHM_CLASS "${ARG_CLASS}" AULA_ALGORITHM_MAKE "${ARG_MAKE}"
+    EXPORT_PROPERTIES "AULA_ALGORITHM_HEADER;AULA_ALGORITHM_CLASS;AULA_ALGORITHM_MAKE")
 endfunction()

@@ -80,18 +80,11 @@ constexpr const char* kUsage =
     "  --Key=value a declared setting (`aula config EXERCISE` lists them), e.g. --Vacuum.Referee.Duration=300\n"
     "exercises:\n";
 
-const char* describe(const std::string& exercise) {
-  if (exercise == "teletaxi") return "global navigation with Gradient Path Planning";
-  if (exercise == "vacuum") return "clean the house without localization";
-  if (exercise == "autopark") return "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car)";
-  return "the roomba bouncing around the house (no referee)";
-}
-
 int usage(std::ostream& out, int code) {
   const std::string text = kUsage;
   const auto at = text.find("%GRADE%");
   out << text.substr(0, at) << aula::grade::kGradeUsage << text.substr(at + 7);
-  for (const auto& ex : aula::settings::exercises()) out << "  " << ex.name << "  " << describe(ex.name) << "\n";
+  for (const auto& ex : aula::settings::exercises()) out << "  " << ex.name << "  " << ex.summary << "\n";
   return code;
 }
 

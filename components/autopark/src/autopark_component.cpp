@@ -17,7 +17,7 @@ LaserMount mountOf(const world::RobotSpec& car, const std::string& plugin_name) 
 }  // namespace
 
 AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, {"Autopark", "autopark", "autopark"},
+    : ExerciseComponent(bus, cfg, world, "autopark",
                         {{"reactive", makeReactiveAlgorithm}, {"planner", makePlannedAlgorithm}}),
       world_(world) {
   const world::RobotSpec* car = &world::requireRobot(world_, cfg.getString("Autopark.Robot"));

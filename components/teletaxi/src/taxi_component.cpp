@@ -11,7 +11,7 @@
 
 namespace aula::teletaxi {
 TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, {"TeleTaxi", "teletaxi", "teletaxi"},
+    : ExerciseComponent(bus, cfg, world, "teletaxi",
                         {{"reference", [](uint64_t) { return makeReferenceAlgorithm(); }}}) {
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});

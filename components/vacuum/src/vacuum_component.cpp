@@ -3,7 +3,7 @@
 namespace aula::vacuum {
 
 VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, {"Vacuum", "vacuum-cleaner", "vacuum"},
+    : ExerciseComponent(bus, cfg, world, "vacuum",
                         {{"reference", makeReferenceAlgorithm}, {"bounce", makeRandomBounceAlgorithm}}) {
   run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration");
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");

@@ -1,5 +1,6 @@
 #include "aula/settings/tables.hpp"
 
+#include <cctype>
 #include <stdexcept>
 
 namespace aula::settings {
@@ -19,13 +20,11 @@ void worldKeys(SettingsTable& t, const std::string& section, const std::string& 
   t.text(section + ".World", world,
          "the SDF world (absolute, or relative to the data folder); `aula run --world=FILE` sets it for all processes");
   t.text(section + ".Robot", robot, "the robot's model name in the world; its plugins name its channels");
-  t.text(section + ".Episode.Channel", section == "TeleTaxi" ? "TELETAXI_EPISODE"
-                                       : section == "Vacuum" ? "VACUUM_EPISODE"
-                                                             : "AUTOPARK_EPISODE",
-         "channel of the component's episode messages to the referee");
-  t.text(section + ".RefereeStatus.Channel", section == "TeleTaxi" ? "TELETAXI_REFEREE"
-                                             : section == "Vacuum" ? "VACUUM_REFEREE"
-                                                                   : "AUTOPARK_REFEREE",
+  // Channels named after the section: VACUUM_EPISODE, VACUUM_REFEREE...
+  std::string upper = section;
+  for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  t.text(section + ".Episode.Channel", upper + "_EPISODE", "channel of the component's episode messages to the referee");
+  t.text(section + ".RefereeStatus.Channel", upper + "_REFEREE",
          "channel of the referee's status (time left, how the episode ended) to the component's window");
 }
 
@@ -219,12 +218,14 @@ const std::vector<Exercise>& exercises() {
   static const SettingsTable park = makeAutoparkComponent(), park_referee = makeAutoparkReferee();
   static const std::vector<Exercise> all = {
       {"teletaxi", "TeleTaxi", "config/teleTaxi.cfg", "teletaxi", "teletaxi-referee", &taxi, &taxi_referee,
-       {"pose3d", "motors", "bumper"}},
+       {"pose3d", "motors", "bumper"}, "global navigation with Gradient Path Planning"},
       {"vacuum", "Vacuum", "config/vacuumCleaner.cfg", "vacuum-cleaner", "vacuum-cleaner-referee", &vacuum,
-       &vacuum_referee, {"pose3d", "motors", "laser", "bumper"}},
+       &vacuum_referee, {"pose3d", "motors", "laser", "bumper"}, "clean the house without localization"},
       {"autopark", "Autopark", "config/autopark.cfg", "autopark", "autopark-referee", &park, &park_referee,
-       {"pose3d", "motors", "bumper", "laser:laser_front", "laser:laser_rear", "laser:laser_right"}},
-      {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr, {"pose3d", "motors", "laser", "bumper"}},
+       {"pose3d", "motors", "bumper", "laser:laser_front", "laser:laser_rear", "laser:laser_right"},
+       "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car)"},
+      {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr, {"pose3d", "motors", "laser", "bumper"},
+       "the roomba bouncing around the house (no referee)"},
   };
   return all;
 }
@@ -241,6 +242,11 @@ const Exercise* exerciseNamed(const std::string& name) {
     if (e.name == name) return &e;
   }
   return nullptr;
+}
+
+const Exercise& requireExercise(const std::string& name) {
+  if (const Exercise* e = exerciseNamed(name)) return *e;
+  throw std::logic_error("no exercise named '" + name + "' in the settings' table of exercises");
 }
 
 const config::SettingsTable& tableOf(const std::string& program) {

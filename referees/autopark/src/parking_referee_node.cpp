@@ -2,51 +2,24 @@
 
 #include <aula/geometry/angles.hpp>
 #include <aula/autopark/parking_picture.hpp>
-#include <aula/lcm/bus.hpp>
-#include <aula/referee/rubric.hpp>
-#include <aula/settings/tables.hpp>
 #include <aula/world/occupancy_map.hpp>
-#include <aula/world/world_spec.hpp>
 
-#include <cmath>
-#include <filesystem>
 #include <cstdio>
 
 namespace aula::autopark {
 
 ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
                                        const std::optional<auth::Key>& run_key)
-    : world_file_(std::filesystem::path(world.source_path).filename().string()), world_sha256_(world.sha256), world_(world) {
-  outcome_.truth() = referee::TruthGate(run_key);
-  const world::RobotSpec& car = world::requireRobot(world, cfg.getString("Autopark.Robot"));
-  scene_ = ParkingScene::fromWorld(world, car.name);
+    : RefereeNode(bus, cfg, world, run_key, "autopark"),
+      world_(world) {
+  scene_ = ParkingScene::fromWorld(world, robotName());
   settings_ = parkingRefereeSettings(cfg);
-  rubric_ = referee::rubricReport(cfg, settings::tableOf("autopark-referee"), "Autopark.Referee.Rubric");
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
-  bus.subscribe(world::channelOf(car, "pose3d"), &ParkingRefereeNode::onPose, this);
-  bus.subscribe(world::channelOf(car, "bumper"), &ParkingRefereeNode::onBumper, this);
-  bus.subscribe(cfg.getString("Autopark.Episode.Channel"), &ParkingRefereeNode::onEpisode, this);
-  status_ = std::make_unique<referee::StatusSender>(bus, cfg.getString("Autopark.RefereeStatus.Channel"), "autopark");
-  const double period_s = cfg.getDouble("Autopark.Referee.Period");
-  clock_ = std::make_unique<lcmbus::LockstepClient>(bus, "autopark-referee", static_cast<int64_t>(std::llround(period_s * 1e6)),
-                                                    [this](int64_t utime) { onTick(utime); });
-  clock_->expectWorld(world.sha256, world.source_path);
-  clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
-    return outcome_.truth().acceptTick(channel, tick);
-  });
 }
 
-void ParkingRefereeNode::onPose(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
-  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
-  if (msg->utime <= episode_from_utime_) return;
-  referee_->onPose(msg->utime, msg->x, msg->y, msg->yaw);
-}
-
-void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg) {
-  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
-  if (msg->utime <= episode_from_utime_) return;
+void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
   const long long before = referee_->collisions();
-  referee_->onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
+  referee_->onContact(utime, pressed);
   if (referee_->collisions() > before) {
     // Say where, so a student can see which part of the manoeuvre touched something.
     std::fprintf(stderr, "autopark-referee [%.2f s]: collision %lld, car at x %.2f y %.2f yaw %.1f deg\n",
@@ -55,27 +28,18 @@ void ParkingRefereeNode::onBumper(const lcm::ReceiveBuffer*, const std::string& 
   }
 }
 
-void ParkingRefereeNode::onEpisode(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
-  if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
-  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
-    // Hot reload: the car is back at its start; the clock starts again at the next Run.
-    referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
-    episode_from_utime_ = msg->utime;
-  }
-  outcome_.announceOnce(finished(), on_finished_);
-  if (msg->started_utime >= 0) referee_->start(msg->started_utime);
-  status_->tick(msg->utime, status());
+void ParkingRefereeNode::startNewEpisode(int64_t) {
+  // Hot reload: the car is back at its start; the clock starts again at the next Run.
+  referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
 }
 
-void ParkingRefereeNode::onTick(int64_t utime) {
-  referee_->onTick(utime);
-  outcome_.announceOnce(finished(), on_finished_);
-  status_->tick(utime, status());
+void ParkingRefereeNode::onEpisode(const aula::episode_t& msg) {
+  if (msg.started_utime >= 0) referee_->start(msg.started_utime);
 }
 
 referee::EpisodeStatus ParkingRefereeNode::status() const {
   const ParkingReferee& r = *referee_;
-  referee::EpisodeStatus s = outcome_.episodeStatus(r.started(), r.elapsedS(), settings_.timeout_s, r.finished(),
+  referee::EpisodeStatus s = outcome().episodeStatus(r.started(), r.elapsedS(), settings_.timeout_s, r.finished(),
                                                     r.parked() ? "Parked" : "Time's up");
   char line[160];
   std::snprintf(line, sizeof line, "%.2f m from the ideal pose, collisions %lld", r.measures().position_error_m,
@@ -88,19 +52,10 @@ referee::EpisodeStatus ParkingRefereeNode::status() const {
   return s;
 }
 
-aula::referee::Report ParkingRefereeNode::report() const {
+void ParkingRefereeNode::addGrading(referee::Report& out) const {
   const ParkingReferee& r = *referee_;
   const ParkingScores s = r.scores();
   const ParkingMeasures& m = r.measures();
-  const auto& tick = clock_->lastTick();
-  aula::referee::Report out;
-  out.set("exercise", "autopark");
-  out.set("mark", s.mark);
-  out.set("sim_time_s", clock_->simTimeUs() / 1e6);
-  out.set("seed", static_cast<long long>(tick.seed));
-  out.set("world", world_file_);
-  out.set("world_sha256", world_sha256_);
-  out.set("finished", r.finished());
   out.set("parked", r.parked());
   out.set("park_time_s", r.elapsedS());
   out.set("front_gap_m", m.front_gap_m);
@@ -118,14 +73,9 @@ aula::referee::Report ParkingRefereeNode::report() const {
   out.set("score_time", s.time);
   out.set("score_distance", s.distance);
   out.set("score_collision", s.collision);
-  out.set("rubric", rubric_);
-  // The raw measures `aula grade` shows beside the mark.
-  out.set("measures", std::vector<std::string>{"park_time_s", "front_gap_m", "rear_gap_m", "curb_gap_m"});
-  outcome_.addTo(out);
-  return out;
 }
 
-std::string ParkingRefereeNode::summary() const {
+std::string ParkingRefereeNode::gradeSummary() const {
   const ParkingReferee& r = *referee_;
   const ParkingScores s = r.scores();
   const ParkingMeasures& m = r.measures();
@@ -138,10 +88,10 @@ std::string ParkingRefereeNode::summary() const {
                 s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
                 m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.ideal_gap_m, m.curb_gap_m, r.collisions(),
                 r.contactS(), r.settings().rubric.c_str(), gapRuleText(r.settings()).c_str());
-  return std::string(text) + outcome_.summary();
+  return text;
 }
 
-void ParkingRefereeNode::writePicture(const std::string& png_path) const {
+cv::Mat ParkingRefereeNode::picture(const std::vector<std::string>& notes) const {
   const ParkingReferee& r = *referee_;
   ParkingRunSummary run;
   run.scene = r.scene();
@@ -157,17 +107,11 @@ void ParkingRefereeNode::writePicture(const std::string& png_path) const {
   run.y_m = r.y();
   run.yaw_rad = r.yawRad();
   run.trail = r.trail().points();
-  run.notes = outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed));
+  run.notes = notes;
   const geometry::MapTransform view = parkingView(run);
   // Everything a car can touch, kerbs included (the ground plane is not drawn).
   const cv::Mat street = world::rasterizeOccupancy(world_, view, 0.01, 100.0);
-  referee::writePngAtomically(parkingPicture(street, view, run), png_path);
-}
-
-void ParkingRefereeNode::abort(const std::string& reason) {
-  outcome_.abort(reason);
-  outcome_.announceOnce(finished(), on_finished_);
-  status_->send(clock_->simTimeUs(), status());
+  return parkingPicture(street, view, run);
 }
 
 }  // namespace aula::autopark

@@ -15,6 +15,7 @@
 #include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cmath>
@@ -27,46 +28,19 @@
 
 namespace aula::component {
 
-struct ExerciseNames {
-  std::string settings_prefix;  // "Vacuum": the keys Vacuum.Period, Vacuum.Robot...
-  std::string program;          // "vacuum-cleaner": the lockstep client's and the log's name
-  std::string exercise;         // "vacuum": the plugins' exercise and the episode messages'
-};
-
 template <class Algorithm>
 class ExerciseComponent {
  public:
   using Host = AlgorithmHost<Algorithm>;
   using Builtins = std::map<std::string, typename Host::Factory>;
 
+  // `exercise`: its name in the settings' table of exercises ("vacuum"), which gives the keys'
+  // section ("Vacuum") and the program's name ("vacuum-cleaner", also its lockstep client's).
   // `cfg`: the effective settings; the robot and its channels come from `world`. Throws
   // PluginError (exit 2) for an algorithm that cannot be used, WorldError for a missing robot.
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
-                    const ExerciseNames& names, Builtins builtins)
-      : bus_(bus), algorithm_name_(cfg.getString(names.settings_prefix + ".Algorithm")) {
-    const std::string& p = names.settings_prefix;
-    const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
-    start_ = {robot.name, robot.pose.translation().x(), robot.pose.translation().y(), world::yawOf(robot.pose)};
-    autostart_ = cfg.getBool(p + ".Autostart");
-    pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
-    motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
-                                            cfg.getDouble(p + ".MaxW"));
-    host_ = std::make_unique<Host>(names.program, names.exercise, std::move(builtins), algorithm_name_, *motors_,
-                                   cfg.getDouble("Component.ExecuteBudget"));
-    episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.exercise, *host_);
-    host_->setOnHung([this] {  // the stuck call may still read these: never written again
-      pose_->detach();
-      detachSensors();
-      motors_->halt();
-    });
-    referee_status_ = std::make_unique<RefereeStatusListener>(bus, cfg.getString(p + ".RefereeStatus.Channel"),
-                                                              names.program, [this] { return generation(); });
-    referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
-    const double period_s = cfg.getDouble(p + ".Period");
-    loop_ = std::make_unique<ControlLoop>(bus, names.program, static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
-                                          [this] { step(); });
-    loop_->setOnTick([this](int64_t utime) { tick(utime); });
-  }
+                    const std::string& exercise, Builtins builtins)
+      : ExerciseComponent(bus, cfg, world, settings::requireExercise(exercise), std::move(builtins)) {}
   virtual ~ExerciseComponent() = default;
   ExerciseComponent(const ExerciseComponent&) = delete;
   ExerciseComponent& operator=(const ExerciseComponent&) = delete;
@@ -142,6 +116,33 @@ class ExerciseComponent {
   EpisodeSender& episode() { return *episode_; }
 
  private:
+  ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                    const settings::Exercise& names, Builtins builtins)
+      : bus_(bus), algorithm_name_(cfg.getString(names.section + ".Algorithm")) {
+    const std::string& p = names.section;
+    const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
+    start_ = {robot.name, robot.pose.translation().x(), robot.pose.translation().y(), world::yawOf(robot.pose)};
+    autostart_ = cfg.getBool(p + ".Autostart");
+    pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
+    motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
+                                            cfg.getDouble(p + ".MaxW"));
+    host_ = std::make_unique<Host>(names.component, names.name, std::move(builtins), algorithm_name_, *motors_,
+                                   cfg.getDouble("Component.ExecuteBudget"));
+    episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.name, *host_);
+    host_->setOnHung([this] {  // the stuck call may still read these: never written again
+      pose_->detach();
+      detachSensors();
+      motors_->halt();
+    });
+    referee_status_ = std::make_unique<RefereeStatusListener>(bus, cfg.getString(p + ".RefereeStatus.Channel"),
+                                                              names.component, [this] { return generation(); });
+    referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
+    const double period_s = cfg.getDouble(p + ".Period");
+    loop_ = std::make_unique<ControlLoop>(bus, names.component, static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
+                                          [this] { step(); });
+    loop_->setOnTick([this](int64_t utime) { tick(utime); });
+  }
+
   void step() {
     if (!host_->call(static_cast<uint64_t>(loop_->seed()), "execute()", [this](Algorithm& a) { execute(a); })) {
       setRunning(false);

@@ -25,6 +25,8 @@ struct Exercise {
   const config::SettingsTable* referee_settings;  // nullptr when the exercise has none
   // What the exercise needs of its robot's plugins: "TYPE" or "TYPE:NAME" (`aula check-world`).
   std::vector<std::string> required_plugins;
+  std::string summary;  // one line for `aula --help`: what the student does
+
 
   std::vector<const config::SettingsTable*> tables() const;
 };
@@ -33,6 +35,8 @@ const std::vector<Exercise>& exercises();
 // The exercise a program belongs to ("vacuum-cleaner-referee" -> vacuum); nullptr if none.
 const Exercise* exerciseOfProgram(const std::string& program);
 const Exercise* exerciseNamed(const std::string& name);
+// The exercise an exercise's own code names ("vacuum"); throws std::logic_error if unknown.
+const Exercise& requireExercise(const std::string& name);
 // The table of a program ("aula-sim", "vacuum-cleaner", ...); throws std::logic_error if unknown.
 const config::SettingsTable& tableOf(const std::string& program);
 

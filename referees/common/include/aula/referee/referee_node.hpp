@@ -1,0 +1,98 @@
+#pragma once
+// What every referee process is, whatever its exercise: it hears the truth the simulator
+// asserts (the robot's pose and bumper, signed in a graded run), the component's episode
+// messages and the clock, in lockstep; it tells the windows the episode's status; and at the end
+// it writes the report (its header, the exercise's grading, the rubric, the run's outcome), the
+// printed summary and the picture. An exercise derives from it and says how it grades (the
+// hooks below). The settings it reads are the same keys under every exercise's prefix: Robot,
+// Episode.Channel, RefereeStatus.Channel, Referee.Period and Referee.Rubric.
+
+#include <aula/auth/run_key.hpp>
+#include <aula/bumper_t.hpp>
+#include <aula/config/config.hpp>
+#include <aula/episode_t.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/lcm/lockstep_client.hpp>
+#include <aula/pose3d_t.hpp>
+#include <aula/referee/report.hpp>
+#include <aula/referee/run_outcome.hpp>
+#include <aula/referee/status_sender.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <opencv2/core.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aula::referee {
+
+class RefereeNode {
+ public:
+  virtual ~RefereeNode();
+  RefereeNode(const RefereeNode&) = delete;
+  RefereeNode& operator=(const RefereeNode&) = delete;
+
+  // Graded to the end of the episode, or ended early (a fault, an abort).
+  bool finished() const { return gradedToEnd() || outcome_.ended(); }
+  bool endedEarly() const { return outcome_.ended(); }
+  // The launcher says the run cannot go on (a process died...): grade what there is, and end.
+  void abort(const std::string& reason);
+  Report report() const;
+  std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
+  void writePicture(const std::string& png_path) const;                        // --picture
+  void poll() { clock_->poll(); }
+  void leave() { clock_->leave(); }
+  int64_t simTimeUs() const { return clock_->simTimeUs(); }
+  int episode() const { return outcome_.generation(); }  // counts hot reloads
+  void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
+  // What the windows are told (referee_status_t): the time left, and how the episode ended.
+  virtual EpisodeStatus status() const = 0;
+
+ protected:
+  // `exercise`: its name in the settings' table of exercises ("vacuum"), which gives the keys'
+  // section ("Vacuum") and the referee program's settings table; the lockstep client is
+  // "<exercise>-referee". `run_key`: a graded run's key (--key-fd): only the truth the simulator
+  // signed is graded.
+  RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+              const std::optional<auth::Key>& run_key, const std::string& exercise);
+
+  // The exercise's grading. The truth and the bumper arrive only when signed (in a graded run)
+  // and of the current episode.
+  virtual bool gradedToEnd() const = 0;
+  virtual void onTruePose(const aula::pose3d_t& msg) = 0;
+  virtual void onContact(int64_t utime, bool pressed) = 0;
+  virtual void startNewEpisode(int64_t utime) = 0;            // hot reload: grade from scratch
+  virtual void onEpisode(const aula::episode_t& msg) = 0;  // its start, its goal
+  virtual void onClockTick(int64_t utime) = 0;
+  // The report: the header has these two; the exercise's own fields follow it.
+  virtual double mark() const = 0;
+  virtual double gradedTimeS() const { return simTimeUs() / 1e6; }
+  virtual void addGrading(Report& report) const = 0;
+  virtual std::vector<std::string> measures() const = 0;  // the raw measures `aula grade` shows
+  virtual std::string gradeSummary() const = 0;
+  // The picture of the run; `notes` are its caption's world, seed, algorithm and outcome lines.
+  virtual cv::Mat picture(const std::vector<std::string>& notes) const = 0;
+
+  const RunOutcome& outcome() const { return outcome_; }
+  const std::string& robotName() const { return robot_name_; }
+
+ private:
+  void onPoseMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg);
+  void onBumperMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg);
+  void onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg);
+  void announce(int64_t utime);  // the end once to the window, the status to the component
+
+  std::string exercise_, robot_name_;
+  std::string world_file_, world_sha256_;  // the file name and its content's hash
+  Report rubric_;                          // the report's "rubric": the preset and its numbers
+  int64_t episode_from_utime_ = -1;        // truth at or before this sim time is the last episode's
+  RunOutcome outcome_;
+  std::unique_ptr<StatusSender> status_;
+  std::unique_ptr<lcmbus::LockstepClient> clock_;
+  std::function<void()> on_finished_;
+};
+
+}  // namespace aula::referee

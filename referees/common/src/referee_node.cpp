@@ -1,0 +1,95 @@
+#include "aula/referee/referee_node.hpp"
+
+#include <aula/referee/rubric.hpp>
+#include <aula/referee/run_picture.hpp>
+#include <aula/settings/tables.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+namespace aula::referee {
+
+RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                         const std::optional<auth::Key>& run_key, const std::string& exercise)
+    : exercise_(exercise),
+      world_file_(std::filesystem::path(world.source_path).filename().string()),
+      world_sha256_(world.sha256) {
+  const settings::Exercise& names = settings::requireExercise(exercise);
+  const std::string& p = names.section;
+  outcome_.truth() = TruthGate(run_key);
+  rubric_ = rubricReport(cfg, *names.referee_settings, p + ".Referee.Rubric");
+  const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
+  robot_name_ = robot.name;
+  bus.subscribe(world::channelOf(robot, "pose3d"), &RefereeNode::onPoseMessage, this);
+  bus.subscribe(world::channelOf(robot, "bumper"), &RefereeNode::onBumperMessage, this);
+  bus.subscribe(cfg.getString(p + ".Episode.Channel"), &RefereeNode::onEpisodeMessage, this);
+  status_ = std::make_unique<StatusSender>(bus, cfg.getString(p + ".RefereeStatus.Channel"), exercise);
+  const double period_s = cfg.getDouble(p + ".Referee.Period");
+  clock_ = std::make_unique<lcmbus::LockstepClient>(bus, exercise + "-referee",
+                                                    static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
+                                                      onClockTick(utime);
+                                                      announce(utime);
+                                                    });
+  clock_->expectWorld(world.sha256, world.source_path);
+  clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
+    return outcome_.truth().acceptTick(channel, tick);
+  });
+}
+
+RefereeNode::~RefereeNode() = default;
+
+void RefereeNode::onPoseMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
+  if (msg->utime <= episode_from_utime_) return;
+  onTruePose(*msg);
+}
+
+void RefereeNode::onBumperMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg) {
+  if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
+  if (msg->utime <= episode_from_utime_) return;
+  onContact(msg->utime, msg->state == aula::bumper_t::PRESSED);
+}
+
+void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
+  if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
+    // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
+    episode_from_utime_ = msg->utime;
+    startNewEpisode(msg->utime);
+  }
+  onEpisode(*msg);
+  announce(msg->utime);
+}
+
+void RefereeNode::announce(int64_t utime) {
+  outcome_.announceOnce(finished(), on_finished_);
+  status_->tick(utime, status());
+}
+
+void RefereeNode::abort(const std::string& reason) {
+  outcome_.abort(reason);
+  outcome_.announceOnce(finished(), on_finished_);
+  status_->send(simTimeUs(), status());
+}
+
+Report RefereeNode::report() const {
+  Report out;
+  out.set("exercise", exercise_);
+  out.set("mark", mark());
+  out.set("sim_time_s", gradedTimeS());
+  out.set("seed", static_cast<long long>(clock_->lastTick().seed));
+  out.set("world", world_file_);
+  out.set("world_sha256", world_sha256_);
+  out.set("finished", gradedToEnd());
+  addGrading(out);
+  out.set("rubric", rubric_);
+  out.set("measures", measures());
+  outcome_.addTo(out);
+  return out;
+}
+
+void RefereeNode::writePicture(const std::string& png_path) const {
+  writePngAtomically(picture(outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed))), png_path);
+}
+
+}  // namespace aula::referee
