@@ -13,6 +13,8 @@
 #include <aula/sim/simulator.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <fstream>
@@ -89,7 +91,7 @@ int runSimulator(int argc, char** argv) {
               << settings::simulator().help();
     return 0;
   }
-  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "key-fd", "help"});
+  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "key-fd", "status-fd", "help"});
   if (cl.positional.size() != 1) {
     std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
     return process::kExitUsage;
@@ -104,6 +106,8 @@ int runSimulator(int argc, char** argv) {
   // --key-fd=N: a graded run's key, from the launcher (docs/grading.md, "What a student's code can do").
   std::optional<auth::Key> key;
   if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
+  // --status-fd=N: the launcher's pipe, told why the simulator ended a run early.
+  const int status_fd = cl.flag("status-fd") ? static_cast<int>(cl.optionDouble("status-fd", -1)) : -1;
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
   // listen for one (while the world loads, then up to kListenForOthers in all). A simulator ticks
   // at least every 100 ms of wall time while it waits for clients or is paused, and faster when it
@@ -128,6 +132,14 @@ int runSimulator(int argc, char** argv) {
   if (simulator.rejectedControls() > 0) std::cerr << "; " << simulator.rejectedControls() << " SIM_CONTROL requests rejected";
   if (simulator.foreignTicks() > 0) std::cerr << "; " << simulator.foreignTicks() << " ticks of another simulator heard";
   std::cerr << "\n";
+  if (!simulator.endedBecause().empty()) {
+    // The launcher's private line (--status-fd): why, for the referee's report.
+    if (status_fd >= 0) {
+      const std::string line = "ended " + simulator.endedBecause() + "\n";
+      (void)!::write(status_fd, line.data(), line.size());
+    }
+    return process::kExitFailed;
+  }
   return 0;
 }
 

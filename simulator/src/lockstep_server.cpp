@@ -5,10 +5,11 @@
 
 namespace aula::sim {
 
-bool LockstepServer::join(const std::string& client, int64_t period_us) {
+bool LockstepServer::join(const std::string& client, int64_t period_us, int pid) {
   const bool is_new = clients_.count(client) == 0;
   Client& c = clients_[client];
   c.period_us = std::max<int64_t>(1, period_us);
+  c.pid = pid;
   return is_new;
 }
 
@@ -20,6 +21,7 @@ void LockstepServer::tick(int64_t seq, int64_t utime, WallClock::time_point now)
       c.next_due_us = (utime / c.period_us + 1) * c.period_us;
       c.awaited_seq = seq;
       c.awaited_since = now;
+      c.listed_silent_at = now;
     }
   }
 }
@@ -34,17 +36,14 @@ bool LockstepServer::waiting() const {
                      [](const auto& kv) { return kv.second.awaited_seq >= 0; });
 }
 
-std::vector<std::string> LockstepServer::dropStale(WallClock::time_point now) {
-  std::vector<std::string> dropped;
-  for (auto it = clients_.begin(); it != clients_.end();) {
-    if (it->second.awaited_seq >= 0 && now - it->second.awaited_since > drop_after_) {
-      dropped.push_back(it->first);
-      it = clients_.erase(it);
-    } else {
-      ++it;
-    }
+std::vector<LockstepServer::Silent> LockstepServer::silent(WallClock::time_point now) {
+  std::vector<Silent> out;
+  for (auto& [name, c] : clients_) {
+    if (c.awaited_seq < 0 || now - c.listed_silent_at < drop_after_) continue;
+    c.listed_silent_at = now;
+    out.push_back({name, c.pid, std::chrono::duration_cast<std::chrono::milliseconds>(now - c.awaited_since)});
   }
-  return dropped;
+  return out;
 }
 
 int64_t LockstepServer::nextDueAfter(int64_t utime) const {

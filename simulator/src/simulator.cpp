@@ -7,7 +7,10 @@
 #include <aula/world/occupancy_map.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -73,7 +76,8 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
 
 Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus, std::optional<auth::Key> key)
     : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key),
-      instance_(randomInstance()) {
+      instance_(randomInstance()),
+      graded_(key.has_value()) {
   // The clock channel first: a simulator already running on this bus is heard while the world loads.
   subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
@@ -231,7 +235,7 @@ void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
         std::to_string(msg->period_us) + " us: ignored");
     return;
   }
-  if (lockstep_.join(msg->client, msg->period_us)) {
+  if (lockstep_.join(msg->client, msg->period_us, msg->pid)) {
     log("lockstep client '" + msg->client + "' joined, period " +
         std::to_string(msg->period_us / 1000.0) + " ms");
     // The newcomer must see (and ack) the current tick before the world moves on; the
@@ -314,7 +318,10 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
       repace_ = false;
     }
     if (startIfReady(now, clocks) || holdWhilePausedOrWaiting(now, clocks)) continue;
-    if (options_.lockstep && awaitLockstepAcks(now)) continue;
+    if (options_.lockstep && awaitLockstepAcks(now)) {
+      if (!ended_because_.empty()) break;
+      continue;
+    }
 
     advanceToNextTick();
     clocks.last_publish = WallClock::now();
@@ -371,9 +378,24 @@ bool Simulator::holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks) {
 }
 
 bool Simulator::awaitLockstepAcks(WallTime now) {
-  for (const auto& name : lockstep_.dropStale(now)) {
-    log("lockstep client '" + name + "' dropped: no ack for " + std::to_string(options_.lockstep_drop.count()) +
-        " ms (wall)");
+  for (const LockstepServer::Silent& c : lockstep_.silent(now)) {
+    char silent[160];
+    std::snprintf(silent, sizeof silent, "lockstep client '%s' silent for %.1f s", c.client.c_str(),
+                  c.silent_for.count() / 1000.0);
+    if (graded_) {
+      // A graded run never goes on without the student's component or the referee.
+      ended_because_ = silent;
+      log(ended_because_ + " (wall): a graded run does not go on without it; the run ends");
+      return true;
+    }
+    if (c.pid > 0 && (::kill(c.pid, 0) == 0 || errno == EPERM)) {
+      log(std::string(silent) + " (wall): waiting while its process " + std::to_string(c.pid) +
+          " lives (stopped in a debugger?)");
+      repace_ = true;  // when it resumes, real time counts from then: no rush to catch up
+      continue;
+    }
+    lockstep_.leave(c.client);
+    log(std::string(silent) + " (wall) and its process is gone: dropped");
   }
   if (!lockstep_.waiting()) return false;
   const int ready = bus_.handleTimeout(static_cast<int>(options_.lockstep_resend.count()));

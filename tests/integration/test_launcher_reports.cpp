@@ -1,6 +1,8 @@
 // The launcher's report rules: a stale report never passes for a new run's, a dead referee
-// leaves a report that says so (and no mark), Ctrl-C is exit 130, and a headless run past its
-// wall-clock budget ends with the reason.
+// leaves a report that says so (and no mark), Ctrl-C is exit 130, a headless run past its
+// wall-clock budget ends with the reason, and a graded run never goes on without a client that
+// stopped acking (the simulator ends it, and the report says which and for how long); outside
+// grading, the simulator waits for a stopped client as long as its process lives.
 #include <aula/process/child_process.hpp>
 
 #include "test_support.hpp"
@@ -22,7 +24,7 @@ namespace {
 
 const std::string kAula = std::string(AULA_BIN_DIR) + "/aula";
 
-// The pid of `parent`'s child whose command line contains `name`, or -1.
+// The pid of `parent`'s child whose program is `name` (its path's last part), or -1.
 pid_t childNamed(pid_t parent, const std::string& name) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
     const std::string pid = entry.path().filename().string();
@@ -37,9 +39,27 @@ pid_t childNamed(pid_t parent, const std::string& name) {
     pid_t ppid = -1;
     rest >> state >> ppid;
     if (ppid != parent) continue;
-    if (readFile((entry.path() / "cmdline").string()).find(name) != std::string::npos) return std::stoi(pid);
+    const std::string cmdline = readFile((entry.path() / "cmdline").string());
+    const std::string program = cmdline.substr(0, cmdline.find('\0'));
+    if (fs::path(program).filename() == name) return std::stoi(pid);
   }
   return -1;
+}
+
+// Stops `pid` (SIGSTOP) for `how_long`: a breakpoint, a machine that stalls a process.
+void stopFor(pid_t pid, std::chrono::milliseconds how_long) {
+  ::kill(pid, SIGSTOP);
+  std::this_thread::sleep_for(how_long);
+  ::kill(pid, SIGCONT);
+}
+
+pid_t waitForChild(pid_t parent, const std::string& name) {
+  pid_t child = -1;
+  for (int i = 0; i < 100 && child < 0; ++i) {
+    std::this_thread::sleep_for(100ms);
+    child = childNamed(parent, name);
+  }
+  return child;
 }
 
 std::vector<std::string> slowRun(const std::string& report) {
@@ -99,5 +119,62 @@ TEST(LauncherReports, ARunPastItsWallClockBudgetEndsWithTheReason) {
   const std::string json = readFile(report);
   EXPECT_NE(json.find("wall-clock budget of 3 s ran out"), std::string::npos) << json << readFile(out);
   EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
+  fs::remove_all(dir);
+}
+
+// A graded run (headless: the run's key) whose component or referee stops acking for longer than
+// Simulator.Lockstep.DropAfterMs (5 s) is not run on without it: the simulator ends it, the report
+// says which client was silent and for how long, with "finished": false, and the exit is 1.
+class SilentClient : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
+
+TEST_P(SilentClient, EndsAGradedRunWithTheReason) {
+  const auto [program, lockstep_name] = GetParam();
+  const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
+  ChildProcess run(slowRun(report), out, out);
+  const pid_t client = waitForChild(run.pid(), program);
+  ASSERT_GT(client, 0) << readFile(out);
+  std::this_thread::sleep_for(1s);
+  stopFor(client, 7s);
+  EXPECT_EQ(run.wait(30s).value_or(-1), 1) << readFile(out);
+  const std::string json = readFile(report);
+  EXPECT_NE(json.find(std::string("\"aborted\": \"lockstep client '") + lockstep_name + "' silent for 5."), std::string::npos)
+      << json << readFile(out);
+  EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
+  EXPECT_NE(readFile(out).find("the simulator ended the run"), std::string::npos) << readFile(out);
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(LauncherReports, SilentClient,
+                         ::testing::Values(std::make_pair("vacuum-cleaner", "vacuum-cleaner"),
+                                           std::make_pair("vacuum-cleaner-referee", "vacuum-referee")),
+                         [](const auto& info) { return info.index == 0 ? std::string("Component") : std::string("Referee"); });
+
+// Outside grading (three terminals, windows: no key), a component stopped in a debugger is waited
+// for as long as its process lives: the run goes on when it resumes and finishes as usual.
+TEST(LauncherReports, OutsideGradingAStoppedComponentIsWaitedFor) {
+  const std::string dir = privateDir(), report = dir + "/r.json";
+  const std::string bin = AULA_BIN_DIR, url = "--lcm-url=" + privateLcmUrl();
+  const std::string worlds = std::string(AULA_SOURCE_DIR) + "/worlds/";
+  ChildProcess sim({bin + "/aula-sim", worlds + "vacuum.world", "--lockstep", "--Simulator.Lockstep.WaitForClients=2",
+                    "--Simulator.Lockstep.DropAfterMs=1000", "--rtf=1", url},
+                   dir + "/sim.log", dir + "/sim.log");
+  ChildProcess component({bin + "/vacuum-cleaner", "--headless", url, "--Vacuum.Algorithm=reference",
+                          "--Vacuum.Autostart=true"},
+                         dir + "/component.log", dir + "/component.log");
+  ChildProcess referee({bin + "/vacuum-cleaner-referee", "--headless", url, "--Vacuum.Referee.Duration=6",
+                        "--report=" + report},
+                       dir + "/referee.log", dir + "/referee.log");
+  std::this_thread::sleep_for(1500ms);
+  stopFor(component.pid(), 3500ms);  // 3.5 times Simulator.Lockstep.DropAfterMs
+  EXPECT_EQ(referee.wait(60s).value_or(-1), 0) << readFile(dir + "/referee.log") << readFile(dir + "/sim.log");
+  const std::string json = readFile(report);
+  EXPECT_NE(json.find("\"finished\": true"), std::string::npos) << json;
+  EXPECT_EQ(json.find("aborted"), std::string::npos) << json;
+  const std::string sim_log = readFile(dir + "/sim.log");
+  EXPECT_NE(sim_log.find("silent for"), std::string::npos) << sim_log;
+  EXPECT_NE(sim_log.find("waiting while its process"), std::string::npos) << sim_log;
+  EXPECT_EQ(sim_log.find("dropped"), std::string::npos) << sim_log;
+  component.stop();
+  sim.stop();
   fs::remove_all(dir);
 }

@@ -36,6 +36,7 @@
 #include <nlohmann/json.hpp>
 
 #include <aula/process/exit_codes.hpp>
+#include <aula/process/line_pipe.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
 
@@ -409,8 +410,10 @@ int supervise(const Supervision& run) {
   const auto& lines = run.lines;
   const auto started = std::chrono::steady_clock::now();
 
-  int control[2] = {-1, -1};
-  if (run.has_referee && pipe2(control, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
+  int control[2] = {-1, -1}, status[2] = {-1, -1};
+  if (run.has_referee && (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0)) {
+    throw std::runtime_error("pipe2 failed");
+  }
   // A graded run's key, for the simulator and the referee only (never the component, which runs
   // the student's code): each reads it from a pipe of its own, not from its command line.
   const std::optional<aula::auth::Key> key =
@@ -421,6 +424,10 @@ int supervise(const Supervision& run) {
     const bool keyed = key && (i == 0 || referee);
     std::vector<std::string> args = lines[i];
     std::vector<int> passed;
+    if (i == 0 && status[1] >= 0) {  // the simulator says why it ended a graded run early
+      args.push_back("--status-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
+      passed.push_back(status[1]);
+    }
     if (referee) {
       args.push_back("--control-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
       passed.push_back(control[0]);
@@ -433,15 +440,31 @@ int supervise(const Supervision& run) {
     if (keyed) close(passed.back());  // the child has its copy
   }
   if (control[0] >= 0) close(control[0]);
+  if (status[1] >= 0) close(status[1]);
+  aula::process::LinePipe simulator_status(status[0]);
   int result = 0;
-  bool told_referee = false;
+  bool told_referee = false, referee_exited = false;
+  std::string abort_reason;
   auto tellReferee = [&](const std::string& why) {
     const std::string line = "abort " + why + "\n";
     (void)!write(control[1], line.data(), line.size());
     told_referee = true;
+    abort_reason = why;
     result = 1;
   };
+  // The referee is told why the run ends and has a few seconds to grade what there is.
   std::optional<std::chrono::steady_clock::time_point> out_of_time;
+  bool simulator_ended_run = false;
+  auto readSimulatorStatus = [&] {
+    for (const std::string& line : simulator_status.lines()) {
+      if (line.rfind("ended ", 0) != 0 || simulator_ended_run) continue;
+      simulator_ended_run = true;
+      std::cerr << "aula: the simulator ended the run: " << line.substr(6) << "\n";
+      if (!told_referee) tellReferee(line.substr(6));
+      out_of_time = std::chrono::steady_clock::now();
+      result = 1;
+    }
+  };
   for (;;) {
     if (signals.stopRequested()) {
       std::cerr << "aula: stopping (" << (signals.signal() == SIGINT ? "SIGINT" : "SIGTERM") << ")\n";
@@ -459,10 +482,14 @@ int supervise(const Supervision& run) {
     }
     // The referee had its chance to grade and say why: now everything stops.
     if (out_of_time && std::chrono::steady_clock::now() - *out_of_time > std::chrono::seconds(5)) break;
+    readSimulatorStatus();
     bool finished = false;
     for (size_t i = 0; i < children.size(); ++i) {
       const auto code = children[i]->poll();
       if (!code) continue;
+      if (i == 0) readSimulatorStatus();  // its last words were written before it exited
+      if (run.has_referee && i == 2) referee_exited = true;
+      if (i == 0 && simulator_ended_run) continue;  // the referee grades what there is and ends the run
       if (run.has_referee && i == 2 && *code > 128) {
         const std::string why = programName(children[i]->name()) + " died (" + signalName(*code) + ")";
         std::cerr << "aula: " << why << ": the run has no mark\n";
@@ -505,6 +532,11 @@ int supervise(const Supervision& run) {
     if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != lines[0][0]) {
       std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
     }
+  }
+  if (told_referee && !referee_exited) {
+    // Told why, the referee did not answer in time (stopped, hung): the report says why, with no mark.
+    std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
+    writeAbortedReport(run, abort_reason + "; the referee did not answer");
   }
   return result;
 }

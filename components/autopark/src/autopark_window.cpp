@@ -161,7 +161,7 @@ void LaserView::paintEvent(QPaintEvent*) {
   p.fillRect(rect(), QColor(250, 250, 250));
   p.setRenderHint(QPainter::Antialiasing);
   const AutoparkApi& api = component_.api();
-  // Car frame, x up the widget; 12 m across the smaller side.
+  // Car frame, x up the widget; 24 m across the smaller side.
   const double scale = std::min(width(), height()) / 24.0;
   const QPointF centre(width() / 2.0, height() / 2.0);
   auto toWidget = [&](double x_m, double y_m) { return QPointF(centre.x() - y_m * scale, centre.y() - x_m * scale); };

@@ -7,6 +7,8 @@
 #include <aula/lockstep_ack_t.hpp>
 #include <aula/lockstep_register_t.hpp>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <utility>
 
@@ -46,6 +48,7 @@ void LockstepClient::sendRegister(bool leave) {
   msg.client = name_;
   msg.period_us = period_us_;
   msg.leave = leave;
+  msg.pid = static_cast<int32_t>(::getpid());  // outside grading, a silent client is waited for while it lives
   bus_.publish(kLockstepRegisterChannel, &msg);
   last_register_ = std::chrono::steady_clock::now();
 }
@@ -105,7 +108,10 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& chann
     if (registered_ && lockstep_) sendAck(tick->seq, tick->utime);
     return;
   }
-  if (tick->seq < last_seq_) return;  // stale duplicate
+  // A seq below the last one: the simulator is the one sender of its ticks, on one socket that
+  // never reorders them, so the last one was not its (a forged tick with a huge seq, which a
+  // client without the run's key cannot tell apart): follow the simulator again, or this client
+  // would ignore every real tick from now on and stop acking.
   if (tick->utime < last_utime_) next_due_us_ = 0;  // world reset: time went back
   last_seq_ = tick->seq;
   last_utime_ = tick->utime;

@@ -54,7 +54,7 @@ SettingsTable makeSimulator() {
   t.flag("Simulator.Lockstep", false, "advance only when every registered client has acknowledged");
   t.integer("Simulator.Lockstep.WaitForClients", 0, "clients", 0, 64, "lockstep: wait for this many clients before the first step");
   t.integer("Simulator.Lockstep.ResendMs", 20, "ms", 1, 60000, "lockstep: re-send an unacknowledged tick after this wall time");
-  t.integer("Simulator.Lockstep.DropAfterMs", 5000, "ms", 1, 86400000, "lockstep: drop a client silent for this wall time");
+  t.integer("Simulator.Lockstep.DropAfterMs", 5000, "ms", 1, 86400000, "lockstep: a client silent this long (wall) ends a graded run; otherwise it is waited for while its process lives, and dropped once it is gone");
   t.real("Simulator.ClockPeriod", 0.02, "s", 1e-4, 10, "SIM_CLOCK tick period, seconds of simulated time");
   t.integer("Simulator.Seed", 0, "", -9223372036854775807LL, 9223372036854775807LL, "seed of every random process (sensor noise)");
   t.real("Simulator.Duration", 0, "s", 0, 1e9, "stop after this much simulated time (0: run until stopped)");

@@ -35,19 +35,24 @@ TEST(LockstepServer, WaitsOnlyForDueClientsUntilTheyAck) {
   EXPECT_FALSE(server.waiting());
 }
 
-TEST(LockstepServer, DropsSilentClientsAfterTheTimeout) {
+TEST(LockstepServer, ListsASilentClientOncePerTimeoutWithItsProcess) {
   LockstepServer server(100ms);
   const auto t0 = LockstepServer::WallClock::now();
-  server.join("slow", 10000);
+  server.join("slow", 10000, 4242);
   server.join("fast", 10000);
   server.tick(0, 0, t0);
   server.ack("fast", 0);
-  EXPECT_TRUE(server.dropStale(t0 + 50ms).empty());
-  const auto dropped = server.dropStale(t0 + 150ms);
-  ASSERT_EQ(dropped.size(), 1u);
-  EXPECT_EQ(dropped[0], "slow");
-  EXPECT_FALSE(server.waiting());
-  EXPECT_EQ(server.clients(), std::vector<std::string>{"fast"});
+  EXPECT_TRUE(server.silent(t0 + 50ms).empty());
+  const auto silent = server.silent(t0 + 150ms);
+  ASSERT_EQ(silent.size(), 1u);
+  EXPECT_EQ(silent[0].client, "slow");
+  EXPECT_EQ(silent[0].pid, 4242);
+  EXPECT_EQ(silent[0].silent_for, 150ms);
+  EXPECT_TRUE(server.silent(t0 + 200ms).empty()) << "listed again only after another timeout";
+  ASSERT_EQ(server.silent(t0 + 260ms).size(), 1u);
+  EXPECT_TRUE(server.waiting()) << "nothing is dropped here: the simulator decides";
+  server.ack("slow", 0);
+  EXPECT_TRUE(server.silent(t0 + 500ms).empty());
 }
 
 TEST(LockstepServer, LeaveAndReset) {

@@ -16,16 +16,22 @@ class LockstepServer {
 
   explicit LockstepServer(std::chrono::milliseconds drop_after) : drop_after_(drop_after) {}
 
-  // Returns true when the client is new (worth a log line).
-  bool join(const std::string& client, int64_t period_us);
+  // Returns true when the client is new (worth a log line). `pid`: its process (0: unknown).
+  bool join(const std::string& client, int64_t period_us, int pid = 0);
   bool leave(const std::string& client);
   // Marks the clients due at this tick (period divides into utime) as awaited.
   void tick(int64_t seq, int64_t utime, WallClock::time_point now);
   void ack(const std::string& client, int64_t seq);
   // True while some due client has not acked the current tick.
   bool waiting() const;
-  // Drops clients that have not acked for drop_after; returns their names.
-  std::vector<std::string> dropStale(WallClock::time_point now);
+  // The clients that have not acked their tick for drop_after or more: each is listed once per
+  // drop_after it stays silent (the caller decides: end the run, wait, or drop it).
+  struct Silent {
+    std::string client;
+    int pid = 0;
+    std::chrono::milliseconds silent_for{0};
+  };
+  std::vector<Silent> silent(WallClock::time_point now);
   // Earliest sim time after `utime` at which some client is due (INT64_MAX if none).
   int64_t nextDueAfter(int64_t utime) const;
   // World reset: time starts again from zero.
@@ -40,6 +46,8 @@ class LockstepServer {
     int64_t next_due_us = 0;
     int64_t awaited_seq = -1;  // -1: nothing awaited
     WallClock::time_point awaited_since{};
+    WallClock::time_point listed_silent_at{};  // when silent() last listed it for this tick
+    int pid = 0;
   };
   std::map<std::string, Client> clients_;
   std::chrono::milliseconds drop_after_;

@@ -37,7 +37,9 @@ struct SimulatorOptions {
   int64_t clock_period_us = 20000;   // SIM_CLOCK ticks at least this often (sim time)
   int lockstep_wait_clients = 0;     // lockstep: do not start before this many clients joined
   std::chrono::milliseconds lockstep_resend{20};   // re-send an unacked tick after (wall)
-  std::chrono::milliseconds lockstep_drop{5000};   // drop a silent client after (wall)
+  // A client silent this long (wall): a graded run ends; otherwise the simulator waits while
+  // the client's process lives (a debugger's breakpoint) and drops it once it is gone.
+  std::chrono::milliseconds lockstep_drop{5000};
   double duration_s = 0.0;           // stop after this much sim time; 0 = run until stopped
   bool start_paused = false;
 
@@ -83,6 +85,9 @@ class Simulator {
   std::optional<aula::sim_clock_t> otherSimulatorUntil(std::chrono::steady_clock::time_point until);
   // Ticks of another instance heard on the clock channel (another simulator, or a forgery).
   long long foreignTicks() const { return foreign_ticks_; }
+  // Why the simulator ended a graded run before its end ("lockstep client 'vacuum-cleaner'
+  // silent for 5.0 s"), or "": run() has returned then, and nothing more is published.
+  const std::string& endedBecause() const { return ended_because_; }
 
   // Why a SET_POSE to (x, y, yaw) cannot be done, or nullopt.
   std::optional<std::string> poseProblem(double x_m, double y_m, double yaw_rad) const;
@@ -136,6 +141,8 @@ class Simulator {
   std::optional<aula::sim_clock_t> first_foreign_;
   long long foreign_ticks_ = 0;
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
+  bool graded_ = false;       // a run key: no client is ever dropped, a silent one ends the run
+  std::string ended_because_;
 };
 
 }  // namespace aula::sim

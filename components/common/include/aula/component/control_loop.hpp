@@ -1,5 +1,5 @@
 #pragma once
-// Runs the student's algorithm every control period of SIMULATED time (80 ms by default), in
+// Runs the student's algorithm every control period of SIMULATED time (<Exercise>.Period), in
 // lockstep with the simulator when it is in lockstep: the tick is acknowledged only after the
 // algorithm ran and the motor command was published.
 

@@ -17,10 +17,10 @@
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
 #include <aula/app/bus_pump.hpp>
-#include <aula/app/control_pipe.hpp>
 #include <aula/app/process_setup.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/lcm/log_replay.hpp>
+#include <aula/process/line_pipe.hpp>
 
 #include <QApplication>
 
@@ -45,7 +45,7 @@ template <class Node, class Window>
 int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   const std::string report_path = setup.command_line.option("report");
   const std::string picture_path = setup.command_line.option("picture");
-  ControlPipe control(setup.command_line.flag("control-fd")
+  process::LinePipe control(setup.command_line.flag("control-fd")
                           ? static_cast<int>(setup.command_line.optionDouble("control-fd", -1))
                           : -1);
   // "discard": the run never started (a process refused its settings or plugin): no mark at

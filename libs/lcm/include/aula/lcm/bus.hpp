@@ -16,7 +16,7 @@ namespace aula::config { class Config; struct CommandLine; }
 
 namespace aula::lcmbus {
 
-// Default channels of the simulator's own messages (overridable in simulator.cfg).
+// The simulator's own channels (fixed: every process and stock tool finds the clock by name).
 inline constexpr const char* kDefaultUrl = "udpm://239.255.76.67:7667?ttl=0";
 inline constexpr const char* kClockChannel = "SIM_CLOCK";
 inline constexpr const char* kControlChannel = "SIM_CONTROL";

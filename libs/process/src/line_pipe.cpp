@@ -1,21 +1,21 @@
-#include "aula/app/control_pipe.hpp"
+#include "aula/process/line_pipe.hpp"
 
 #include <cerrno>
 
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace aula::app {
+namespace aula::process {
 
-ControlPipe::ControlPipe(int fd) : fd_(fd) {
+LinePipe::LinePipe(int fd) : fd_(fd) {
   if (fd_ >= 0) ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) | O_NONBLOCK);
 }
 
-ControlPipe::~ControlPipe() {
+LinePipe::~LinePipe() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-std::vector<std::string> ControlPipe::lines() {
+std::vector<std::string> LinePipe::lines() {
   std::vector<std::string> out;
   if (fd_ < 0) return out;
   char buffer[4096];
@@ -38,4 +38,4 @@ std::vector<std::string> ControlPipe::lines() {
   return out;
 }
 
-}  // namespace aula::app
+}  // namespace aula::process
