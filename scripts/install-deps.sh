@@ -16,7 +16,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool
   iproute2 procps python3 python3-pip bc
-  dpkg-dev bubblewrap ccache
+  dpkg-dev bubblewrap libseccomp-dev ccache
   nlohmann-json3-dev libssl-dev
   slurmctld slurmd slurm-client munge
   chromium

@@ -208,3 +208,41 @@ TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
       << second.output;
   EXPECT_EQ(run.report, clean.report) << run.log;
 }
+
+// A plugin that tries to write outside, to see and ptrace the simulator and the referee, and to
+// open TCP and Unix sockets: without the sandbox every try succeeds (so this test can fail);
+// with `aula run --sandbox` (what `aula grade` runs) every one is refused, and the run is graded
+// as usual (LCM's UDP multicast still works).
+TEST(Sandbox, AStudentsPluginCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSockets) {
+  // A folder outside /tmp (the sandbox has a /tmp of its own), beside the test's binary.
+  const std::string dir = std::string(AULA_BIN_DIR) + "/escape-target-" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  ::setenv("AULA_TEST_ESCAPE_DIR", dir.c_str(), 1);  // inherited by the launcher and its children
+  // What each try gives in the sandbox: the read-only filesystem, the process namespace, seccomp.
+  const std::vector<std::pair<std::string, std::string>> tries = {
+      {"write a file outside", "Read-only file system"},
+      {"see the simulator or the referee in /proc", "No such process"},
+      {"open a TCP socket", "Permission denied"},
+      {"open a Unix socket", "Permission denied"},
+      {"ptrace another process", "Operation not permitted"}};
+  for (const bool sandboxed : {false, true}) {
+    SCOPED_TRACE(sandboxed ? "--sandbox" : "no sandbox");
+    const std::string report = dir + "/report.json", log = dir + (sandboxed ? "/sandboxed.log" : "/open.log");
+    std::filesystem::remove(dir + "/escaped.txt");
+    std::vector<std::string> argv = {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless",
+                                     std::string("--algorithm=") + AULA_ESCAPE_PLUGIN, "--Vacuum.Referee.Duration=5",
+                                     "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
+    if (sandboxed) argv.push_back("--sandbox");
+    aula::process::ChildProcess run(argv, log, log);
+    ASSERT_EQ(run.wait(60s).value_or(-1), 0) << readFile(log);
+    const std::string out = readFile(log);
+    for (const auto& [what, why] : tries) {
+      const std::string said = "escape: " + what + (sandboxed ? ": refused (" + why + ")" : ": done");
+      EXPECT_NE(out.find(said), std::string::npos) << "expected '" << said << "' in\n" << out;
+    }
+    EXPECT_EQ(std::filesystem::exists(dir + "/escaped.txt"), !sandboxed);
+    EXPECT_NE(readFile(report).find("\"finished\": true"), std::string::npos) << readFile(report);
+  }
+  ::unsetenv("AULA_TEST_ESCAPE_DIR");
+  std::filesystem::remove_all(dir);
+}

@@ -39,6 +39,7 @@
 #include <aula/process/line_pipe.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
+#include <aula/sandbox/sandbox.hpp>
 
 #include <fcntl.h>
 #include <sstream>
@@ -53,7 +54,7 @@ using aula::config::SettingsTable;
 using aula::settings::Exercise;
 
 constexpr const char* kUsage =
-    "usage: aula run EXERCISE [--headless] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
+    "usage: aula run EXERCISE [--headless [--sandbox]] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--picture=FILE.png] [--record=FILE.lcmlog] [--lockstep] [--rtf=X]\n"
     "                [--duration=SECONDS] [--timeout=WALL_SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--markdown] [--Key=value ...]\n"
@@ -73,6 +74,8 @@ constexpr const char* kUsage =
     "  regrade     grade a run recorded with --record again, from the log alone (no simulator)\n"
     "  replay      play a recorded run back into the exercise's windows (pause, speed, time slider)\n"
     "  --record    write the whole run to FILE.lcmlog (LCM's log format; lcm-logplayer plays it)\n"
+    "  --sandbox   run the component (the student's code) in bubblewrap: read-only files, no other\n"
+    "              process in sight, IPv4 datagram sockets only (as `aula grade` does; docs/grading.md)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
     "  --timeout   a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); past it the\n"
     "              run ends, graded so far, and exits 1\n"
@@ -384,6 +387,7 @@ struct Supervision {
   std::vector<std::vector<std::string>> lines;  // simulator, component, referee
   bool has_referee = false;
   bool headless = false;
+  bool sandbox = false;      // --sandbox: the component (the student's code) runs in aula_sandbox
   double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
   std::string exercise, report_path;
   std::string algorithm;        // what the component runs ("student", "libmy_algorithm.so")
@@ -436,8 +440,14 @@ int supervise(const Supervision& run) {
       args.push_back("--key-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
       passed.push_back(aula::auth::keyPipe(*key));
     }
+    const bool sandboxed = run.sandbox && run.has_referee && i == 1;
+    if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
+      const int seccomp_child_fd = aula::process::ChildProcess::passedFd(passed.size());
+      passed.push_back(aula::sandbox::seccompProgram());
+      args = aula::sandbox::wrap(args, seccomp_child_fd);
+    }
     children.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed));
-    if (keyed) close(passed.back());  // the child has its copy
+    if (keyed || sandboxed) close(passed.back());  // the child has its copy
   }
   if (control[0] >= 0) close(control[0]);
   if (status[1] >= 0) close(status[1]);
@@ -574,7 +584,7 @@ int main(int argc, char** argv) {
       return aula::grade::gradeCommand(cl, binDir());
     }
     if (!cl.positional.empty() && cl.positional[0] == "replay") return replay(argc, argv);
-    cl.requireKnown({"headless", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
+    cl.requireKnown({"headless", "sandbox", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
                      "duration", "timeout", "lcm-url", "config", "map", "markdown", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
@@ -604,6 +614,12 @@ int main(int argc, char** argv) {
       cl.options["headless"] = "";
     }
     if (cl.flag("rtf")) cl.optionDouble("rtf", 0);  // a number, or a usage error now
+    if (cl.flag("sandbox") && !cl.flag("headless")) {
+      throw ConfigError("--sandbox runs the student's component headless, in bubblewrap: add --headless");
+    }
+    if (cl.flag("sandbox") && aula::sandbox::bubblewrapPath().empty()) {
+      throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
+    }
     // The referee's output files: a folder that is not there is refused before anything starts.
     for (const char* output : {"report", "picture"}) {
       if (cl.flag(output)) aula::config::requireWritableFolder(cl.option(output), std::string("--") + output + "=" + cl.option(output));
@@ -619,6 +635,7 @@ int main(int argc, char** argv) {
     supervision.exercise = ex->name;
     supervision.report_path = cl.option("report");
     supervision.headless = cl.flag("headless");
+    supervision.sandbox = cl.flag("sandbox");
     supervision.wall_budget_s = cl.flag("timeout") ? timeout_s : supervision.headless ? defaultWallBudget(*ex, cl, run) : 0;
     supervision.lines = commandLines(*ex, cl, run);
     supervision.has_referee = ex->referee_settings != nullptr;

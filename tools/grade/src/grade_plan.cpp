@@ -238,7 +238,8 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.log_path = stem.string() + ".log";
         if (s.compile_error.empty()) {
           const int port = 20000 + (base_port - 20000 + index) % 20000;
-          r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--algorithm=" + s.plugin,
+          // --sandbox: the student's code in bubblewrap (docs/grading.md, "What a student's code can do").
+          r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--sandbox", "--algorithm=" + s.plugin,
                     "--world=" + world_path, "--seed=" + std::to_string(seed), "--report=" + r.report_path,
                     "--picture=" + stem.string() + ".png",
                     "--lcm-url=udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"};
