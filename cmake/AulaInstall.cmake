@@ -90,7 +90,7 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap")
 # aula grade --engine=slurm submits with sbatch; report.html screenshots use a browser.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "slurm-client")
 include(CPack)

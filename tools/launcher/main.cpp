@@ -409,147 +409,174 @@ void writeAbortedReport(const Supervision& run, const std::string& why) {
   aula::grade::writeFileAtomically(run.report_path, report.dump(2) + "\n");
 }
 
-int supervise(const Supervision& run) {
-  aula::process::SignalWatcher signals;  // before the children start: they unblock for themselves
-  const auto& lines = run.lines;
-  const auto started = std::chrono::steady_clock::now();
+// One supervised run: its children, the private lines to them, and what has happened so far.
+class RunSupervisor {
+ public:
+  explicit RunSupervisor(const Supervision& run) : run_(run) {}
 
-  int control[2] = {-1, -1}, status[2] = {-1, -1};
-  if (run.has_referee && (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0)) {
-    throw std::runtime_error("pipe2 failed");
+  int supervise() {
+    aula::process::SignalWatcher signals;  // before the children start: they unblock for themselves
+    start();
+    for (;;) {
+      if (signals.stopRequested()) {
+        std::cerr << "aula: stopping (" << (signals.signal() == SIGINT ? "SIGINT" : "SIGTERM") << ")\n";
+        result_ = 128 + signals.signal();
+        break;
+      }
+      checkWallBudget();
+      // The referee had its chance to grade and say why: now everything stops.
+      if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
+      readSimulatorStatus();
+      bool finished = false;
+      for (size_t i = 0; i < children_.size(); ++i) {
+        if (const auto code = children_[i]->poll()) finished = onExit(i, *code) || finished;
+      }
+      if (finished) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    stopAll();
+    return result_;
   }
-  // A graded run's key, for the simulator and the referee only (never the component, which runs
-  // the student's code): each reads it from a pipe of its own, not from its command line.
-  const std::optional<aula::auth::Key> key =
-      run.headless && run.has_referee ? std::optional<aula::auth::Key>(aula::auth::randomKey()) : std::nullopt;
-  std::vector<std::unique_ptr<aula::process::ChildProcess>> children;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const bool referee = run.has_referee && i == 2;
-    const bool keyed = key && (i == 0 || referee);
-    std::vector<std::string> args = lines[i];
-    std::vector<int> passed;
-    if (i == 0 && status[1] >= 0) {  // the simulator says why it ended a graded run early
-      args.push_back("--status-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
-      passed.push_back(status[1]);
+
+ private:
+  // Starts the simulator, the component (sandboxed if asked) and the referee, each with its
+  // private lines: the simulator's status pipe, the referee's control pipe, a graded run's key.
+  void start() {
+    int control[2] = {-1, -1}, status[2] = {-1, -1};
+    if (run_.has_referee && (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0)) {
+      throw std::runtime_error("pipe2 failed");
     }
-    if (referee) {
-      args.push_back("--control-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
-      passed.push_back(control[0]);
+    // A graded run's key, for the simulator and the referee only (never the component, which runs
+    // the student's code): each reads it from a pipe of its own, not from its command line.
+    const std::optional<aula::auth::Key> key =
+        run_.headless && run_.has_referee ? std::optional<aula::auth::Key>(aula::auth::randomKey()) : std::nullopt;
+    for (size_t i = 0; i < run_.lines.size(); ++i) {
+      const bool referee = run_.has_referee && i == 2;
+      const bool keyed = key && (i == 0 || referee);
+      std::vector<std::string> args = run_.lines[i];
+      std::vector<int> passed;
+      auto pass = [&](const std::string& option, int fd) {
+        args.push_back("--" + option + "=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
+        passed.push_back(fd);
+      };
+      if (i == 0 && status[1] >= 0) pass("status-fd", status[1]);  // why the simulator ended a graded run
+      if (referee) pass("control-fd", control[0]);
+      if (keyed) pass("key-fd", aula::auth::keyPipe(*key));
+      const bool sandboxed = run_.sandbox && run_.has_referee && i == 1;
+      if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
+        const int seccomp_child_fd = aula::process::ChildProcess::passedFd(passed.size());
+        passed.push_back(aula::sandbox::seccompProgram());
+        args = aula::sandbox::wrap(args, seccomp_child_fd);
+      }
+      children_.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed));
+      if (keyed || sandboxed) close(passed.back());  // the child has its copy
     }
-    if (keyed) {
-      args.push_back("--key-fd=" + std::to_string(aula::process::ChildProcess::passedFd(passed.size())));
-      passed.push_back(aula::auth::keyPipe(*key));
-    }
-    const bool sandboxed = run.sandbox && run.has_referee && i == 1;
-    if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
-      const int seccomp_child_fd = aula::process::ChildProcess::passedFd(passed.size());
-      passed.push_back(aula::sandbox::seccompProgram());
-      args = aula::sandbox::wrap(args, seccomp_child_fd);
-    }
-    children.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed));
-    if (keyed || sandboxed) close(passed.back());  // the child has its copy
+    if (control[0] >= 0) close(control[0]);
+    if (status[1] >= 0) close(status[1]);
+    control_fd_ = control[1];
+    simulator_status_ = std::make_unique<aula::process::LinePipe>(status[0]);
   }
-  if (control[0] >= 0) close(control[0]);
-  if (status[1] >= 0) close(status[1]);
-  aula::process::LinePipe simulator_status(status[0]);
-  int result = 0;
-  bool told_referee = false, referee_exited = false;
-  std::string abort_reason;
-  auto tellReferee = [&](const std::string& why) {
+
+  void tellReferee(const std::string& why) {
     const std::string line = "abort " + why + "\n";
-    (void)!write(control[1], line.data(), line.size());
-    told_referee = true;
-    abort_reason = why;
-    result = 1;
-  };
+    (void)!write(control_fd_, line.data(), line.size());
+    told_referee_ = true;
+    abort_reason_ = why;
+    result_ = 1;
+  }
+
   // The referee is told why the run ends and has a few seconds to grade what there is.
-  std::optional<std::chrono::steady_clock::time_point> out_of_time;
-  bool simulator_ended_run = false;
-  auto readSimulatorStatus = [&] {
-    for (const std::string& line : simulator_status.lines()) {
-      if (line.rfind("ended ", 0) != 0 || simulator_ended_run) continue;
-      simulator_ended_run = true;
-      std::cerr << "aula: the simulator ended the run: " << line.substr(6) << "\n";
-      if (!told_referee) tellReferee(line.substr(6));
-      out_of_time = std::chrono::steady_clock::now();
-      result = 1;
-    }
-  };
-  for (;;) {
-    if (signals.stopRequested()) {
-      std::cerr << "aula: stopping (" << (signals.signal() == SIGINT ? "SIGINT" : "SIGTERM") << ")\n";
-      result = 128 + signals.signal();
-      break;
-    }
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    if (run.wall_budget_s > 0 && wall_s > run.wall_budget_s && !out_of_time) {
+  void endRun(const std::string& why) {
+    if (run_.has_referee && !told_referee_) tellReferee(why);
+    ending_since_ = std::chrono::steady_clock::now();
+    result_ = 1;
+  }
+
+  void checkWallBudget() {
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    if (run_.wall_budget_s > 0 && wall_s > run_.wall_budget_s && !ending_since_) {
       std::ostringstream why;
-      why << "the run's wall-clock budget of " << run.wall_budget_s << " s ran out (--timeout)";
+      why << "the run's wall-clock budget of " << run_.wall_budget_s << " s ran out (--timeout)";
       std::cerr << "aula: " << why.str() << "\n";
-      out_of_time = std::chrono::steady_clock::now();
-      if (run.has_referee && !told_referee) tellReferee(why.str());
-      result = 1;
-    }
-    // The referee had its chance to grade and say why: now everything stops.
-    if (out_of_time && std::chrono::steady_clock::now() - *out_of_time > std::chrono::seconds(5)) break;
-    readSimulatorStatus();
-    bool finished = false;
-    for (size_t i = 0; i < children.size(); ++i) {
-      const auto code = children[i]->poll();
-      if (!code) continue;
-      if (i == 0) readSimulatorStatus();  // its last words were written before it exited
-      if (run.has_referee && i == 2) referee_exited = true;
-      if (i == 0 && simulator_ended_run) continue;  // the referee grades what there is and ends the run
-      if (run.has_referee && i == 2 && *code > 128) {
-        const std::string why = programName(children[i]->name()) + " died (" + signalName(*code) + ")";
-        std::cerr << "aula: " << why << ": the run has no mark\n";
-        writeAbortedReport(run, why);
-        result = 1;
-        finished = true;
-        continue;
-      }
-      if (run.has_referee && i < 2 && *code == aula::process::kExitUsage && control[1] >= 0) {
-        (void)!write(control[1], "discard\n", 8);  // the run never started: the referee gives no mark
-      }
-      if (run.has_referee && i == 1 && *code == 0 && !run.headless) {
-        std::cerr << "aula: the component's window was closed: stopping the run\n";
-        finished = true;
-        continue;
-      }
-      const std::string fault = run.has_referee && i == 1 ? componentFault(*code, run.execute_budget_s) : "";
-      if (!fault.empty() && !told_referee) {
-        std::cerr << "aula: " << programName(children[i]->name()) << " (running the algorithm '" << run.algorithm
-                  << "') ended the run: " << fault << "\n";
-        tellReferee(fault);
-        continue;  // the referee grades what there is and ends the run
-      }
-      const bool referee_ended_early = run.has_referee && i == 2 && *code == aula::process::kExitFailed;
-      if (referee_ended_early) {
-        std::cerr << "aula: the run ended before its end: the referee's report says why\n";
-        result = 1;
-      } else if (*code != 0 && !(told_referee && i == 1)) {
-        std::cerr << "aula: " << programName(children[i]->name()) << " exited with code " << *code << "\n";
-        result = *code == 2 ? 2 : 1;
-      }
-      finished = finished || (*code != 0 && !(told_referee && i == 1)) || i + 1 == children.size() || i == 0;
-    }
-    if (finished) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  if (control[1] >= 0) close(control[1]);
-  for (auto c = children.rbegin(); c != children.rend(); ++c) {
-    const int code = (*c)->stop();
-    if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result == 0 && (*c)->name() != lines[0][0]) {
-      std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
+      endRun(why.str());
     }
   }
-  if (told_referee && !referee_exited) {
-    // Told why, the referee did not answer in time (stopped, hung): the report says why, with no mark.
-    std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
-    writeAbortedReport(run, abort_reason + "; the referee did not answer");
+
+  void readSimulatorStatus() {
+    for (const std::string& line : simulator_status_->lines()) {
+      if (line.rfind("ended ", 0) != 0 || simulator_ended_run_) continue;
+      simulator_ended_run_ = true;
+      std::cerr << "aula: the simulator ended the run: " << line.substr(6) << "\n";
+      endRun(line.substr(6));
+    }
   }
-  return result;
-}
+
+  // Child `i` exited with `code`: says why and decides. True when the run is over.
+  bool onExit(size_t i, int code) {
+    const bool has_referee = run_.has_referee;
+    if (i == 0) readSimulatorStatus();  // its last words were written before it exited
+    if (has_referee && i == 2) referee_exited_ = true;
+    if (i == 0 && simulator_ended_run_) return false;  // the referee grades what there is and ends the run
+    const std::string name = programName(children_[i]->name());
+    if (has_referee && i == 2 && code > 128) {
+      const std::string why = name + " died (" + signalName(code) + ")";
+      std::cerr << "aula: " << why << ": the run has no mark\n";
+      writeAbortedReport(run_, why);
+      result_ = 1;
+      return true;
+    }
+    if (has_referee && i < 2 && code == aula::process::kExitUsage && control_fd_ >= 0) {
+      (void)!write(control_fd_, "discard\n", 8);  // the run never started: the referee gives no mark
+    }
+    if (has_referee && i == 1 && code == 0 && !run_.headless) {
+      std::cerr << "aula: the component's window was closed: stopping the run\n";
+      return true;
+    }
+    const std::string fault = has_referee && i == 1 ? componentFault(code, run_.execute_budget_s) : "";
+    if (!fault.empty() && !told_referee_) {
+      std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: " << fault << "\n";
+      tellReferee(fault);
+      return false;  // the referee grades what there is and ends the run
+    }
+    const bool faulted_component = told_referee_ && i == 1;
+    if (has_referee && i == 2 && code == aula::process::kExitFailed) {
+      std::cerr << "aula: the run ended before its end: the referee's report says why\n";
+      result_ = 1;
+    } else if (code != 0 && !faulted_component) {
+      std::cerr << "aula: " << name << " exited with code " << code << "\n";
+      result_ = code == 2 ? 2 : 1;
+    }
+    return (code != 0 && !faulted_component) || i + 1 == children_.size() || i == 0;
+  }
+
+  // The clients first (they send their last commands and leave lockstep), the simulator last.
+  void stopAll() {
+    if (control_fd_ >= 0) close(control_fd_);
+    for (auto c = children_.rbegin(); c != children_.rend(); ++c) {
+      const int code = (*c)->stop();
+      if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result_ == 0 && (*c)->name() != run_.lines[0][0]) {
+        std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
+      }
+    }
+    if (told_referee_ && !referee_exited_) {
+      // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
+      std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
+      writeAbortedReport(run_, abort_reason_ + "; the referee did not answer");
+    }
+  }
+
+  const Supervision& run_;
+  const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  std::vector<std::unique_ptr<aula::process::ChildProcess>> children_;
+  int control_fd_ = -1;  // the referee's control pipe, our end
+  std::unique_ptr<aula::process::LinePipe> simulator_status_;
+  int result_ = 0;
+  bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
+  std::string abort_reason_;
+  std::optional<std::chrono::steady_clock::time_point> ending_since_;
+};
+
+int supervise(const Supervision& run) { return RunSupervisor(run).supervise(); }
 
 // A headless run's wall-clock budget when --timeout does not say: the episode's sim length at
 // real time (or at --rtf), half again, plus a minute for start-up. A run past it is stuck.
