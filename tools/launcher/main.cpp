@@ -74,6 +74,7 @@ constexpr const char* kUsage =
     "  regrade     grade a run recorded with --record again, from the log alone (no simulator)\n"
     "  replay      play a recorded run back into the exercise's windows (pause, speed, time slider)\n"
     "  --record    write the whole run to FILE.lcmlog (LCM's log format; lcm-logplayer plays it)\n"
+    "  --lcm-url   the run's bus (udpm://GROUP:PORT?ttl=0); port 0: a free one from the OS\n"
     "  --sandbox   run the component (the student's code) in bubblewrap: read-only files, no other\n"
     "              process in sight, IPv4 datagram sockets only (as `aula grade` does; docs/grading.md)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
@@ -657,6 +658,8 @@ int main(int argc, char** argv) {
     }
     const double timeout_s = cl.optionDouble("timeout", 0);
     if (cl.flag("timeout") && !(timeout_s > 0)) throw ConfigError("--timeout=" + cl.option("timeout") + ": seconds > 0");
+    // Port 0 (`aula grade`'s runs): a port the OS hands out, now, for all three processes.
+    if (cl.flag("lcm-url")) cl.options["lcm-url"] = aula::lcmbus::withFreePort(cl.option("lcm-url"));
     const RunSettings run = resolveSettings(*ex, cl);
     Supervision supervision;
     supervision.exercise = ex->name;

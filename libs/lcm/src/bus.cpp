@@ -7,6 +7,7 @@
 #include <netinet/in.h>
 #include <linux/filter.h>
 #include <sys/socket.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdlib>
@@ -62,6 +63,27 @@ std::string resolveUrl(const config::CommandLine& cl, const config::Config& cfg)
   if (cfg.has("Aula.LcmUrl") && cfg.origin("Aula.LcmUrl") != "default") return cfg.getString("Aula.LcmUrl");
   if (const char* env = std::getenv("LCM_DEFAULT_URL"); env != nullptr && *env != '\0') return env;
   return kDefaultUrl;
+}
+
+int freeUdpPort() {
+  const int probe = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  socklen_t size = sizeof address;
+  const bool bound = probe >= 0 && bind(probe, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
+                     getsockname(probe, reinterpret_cast<sockaddr*>(&address), &size) == 0;
+  if (probe >= 0) close(probe);
+  if (!bound) throw BusError("cannot get a free UDP port from the OS");
+  return ntohs(address.sin_port);
+}
+
+std::string withFreePort(const std::string& url) {
+  if (!isUdpm(url)) return url;
+  const size_t query = url.find('?');
+  const std::string head = url.substr(0, query);
+  const size_t colon = head.rfind(':');
+  if (colon == std::string::npos || colon < std::strlen(kUdpmScheme) || head.substr(colon + 1) != "0") return url;
+  return head.substr(0, colon + 1) + std::to_string(freeUdpPort()) + (query == std::string::npos ? "" : url.substr(query));
 }
 
 std::set<int> udpSocketsBoundTo(int port) {

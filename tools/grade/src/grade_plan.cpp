@@ -216,7 +216,6 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
   // Each run on its own port, so runs at once never hear each other (a group alone is not
   // enough: engineering.md). A random base keeps two batches on one machine apart too.
   std::random_device random;
-  const int base_port = 20000 + static_cast<int>(random() % 20000);
   int index = 0;
   for (const Submission& s : submissions) {
     for (const std::string& world_path : request.worlds) {
@@ -237,12 +236,12 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.report_path = stem.string() + ".report.json";
         r.log_path = stem.string() + ".log";
         if (s.compile_error.empty()) {
-          const int port = 20000 + (base_port - 20000 + index) % 20000;
           // --sandbox: the student's code in bubblewrap (docs/grading.md, "What a student's code can do").
           r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--sandbox", "--algorithm=" + s.plugin,
                     "--world=" + world_path, "--seed=" + std::to_string(seed), "--report=" + r.report_path,
                     "--picture=" + stem.string() + ".png",
-                    "--lcm-url=udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0"};
+                    // Port 0: the launcher takes one the OS hands out, where and when the run starts.
+                    "--lcm-url=udpm://239.255.76.67:0?ttl=0"};
           if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");
           for (const auto& [key, value] : request.overrides) r.argv.push_back("--" + key + "=" + value);
         }

@@ -32,6 +32,13 @@ class BusError : public std::runtime_error {
 // then kDefaultUrl.
 std::string resolveUrl(const config::CommandLine& cl, const config::Config& cfg);
 
+// A UDP port the OS hands out (bound to port 0, then released): the kernel never hands out a
+// port that a running run's LCM sockets are bound to. Throws BusError if it cannot.
+int freeUdpPort();
+// `url` with a port the OS hands out when it is a udpm:// URL whose port is 0 (the launcher's,
+// and so `aula grade`'s: runs at once on one machine never meet on a port); else `url` as it is.
+std::string withFreePort(const std::string& url);
+
 // LCM keeps at most 30 undelivered messages per subscription and silently drops the rest. In
 // lockstep a client may sleep while the simulator runs a whole sync period ahead (a 1 s
 // referee period is 50 pose messages), so every Aula subscription queues up to this many:
