@@ -70,3 +70,28 @@ TEST(AutoparkRun, PlannerParksTheCarLikeCarInTheOnePointThreeLengthSlot) {
   EXPECT_LE(std::abs(jsonNumber(run, "yaw_error_deg")), 5.0) << run;
   EXPECT_NE(run.find("\"algorithm\": \"planner\""), std::string::npos) << run;
 }
+
+// A slot too short for two arcs of the car-like car's 5 m radius (the shipped 1.2 L street): the
+// reactive reference says so, with the length it would need, and does not try. No contact, and
+// never "parked".
+TEST(AutoparkRun, ReactiveDeclinesASlotTooShortForItsArcsAndSaysWhy) {
+  const std::string run = runAutopark("declines", {"--algorithm=reactive", "--seed=10", "--world=worlds/autopark_ackermann_1.2L.world"});
+  EXPECT_NE(run.find("DECLINED"), std::string::npos) << run;
+  EXPECT_NE(run.find("slot too short for a reactive park: 4."), std::string::npos) << run;
+  EXPECT_NE(run.find(" m, need 6."), std::string::npos) << run;
+  EXPECT_EQ(jsonNumber(run, "collisions"), 0.0) << run;
+  EXPECT_NE(run.find("\"parked\": false"), std::string::npos) << run;
+  EXPECT_EQ(run.find("PARKED"), std::string::npos) << run;
+}
+
+// Facing the wrong way at the start: the car turns round (on the spot, or a three-point turn for
+// the car-like car) without touching anything, then searches and parks.
+TEST(AutoparkRun, ReactiveTurnsRoundFromAReversedStartAndParks) {
+  for (const char* world : {"worlds/autopark.world", "worlds/autopark_ackermann.world"}) {
+    SCOPED_TRACE(world);
+    const std::string run = runAutopark("reversed", {"--algorithm=reactive", "--seed=11", std::string("--world=") + world,
+                                                     "--Simulator.StartPose.car=-7,2.5,3.14159"});
+    EXPECT_NE(run.find("TURN at x -7.00 y 2.50 yaw 180.0 deg"), std::string::npos) << run;
+    expectParkedWell(run);
+  }
+}

@@ -1,21 +1,25 @@
-// Autopark reference solution, reactive (the thesis's manoeuvre, made robust):
+// Autopark reference solution, reactive (the thesis's manoeuvre, made robust and general):
+//   TURN      a start facing the wrong way: turn round before searching (on the spot for a car
+//             that turns in place; a three-point turn for a car-like one, each leg until
+//             something is near ahead or behind).
 //   SEARCH    drive along the lane, keeping a safe distance from the parked cars, while the
 //             SlotDetector builds a profile of the parking side from the three lasers; at the
 //             street's end (something close ahead or behind) search the other way.
-//   APPROACH  drive to the manoeuvre's start: alongside the car ahead of the slot, where two
-//             equal arcs of radius R bring the car into the slot, a little behind its centre
-//             (reversing in close behind the car ahead is where a parallel park scrapes).
+//   (a slot)  plan for what the lasers measured (planTwoArcPark: the slot's length, the parked
+//             cars' line, the curb): two equal arcs of the point the car turns about, swept
+//             against the parked cars and the curb for every end point in the slot; none clear:
+//   DECLINED  stop and say why ("slot too short for a reactive park: 5.0 m, need 5.9 m").
+//   APPROACH  drive along the lane to where the arcs start.
 //   ARC1      reverse steering right (the rear swings towards the curb) until the remaining
 //             lateral offset is what the second arc removes: R (1 - cos yaw);
-//             the arcs are those of the point the car turns about (its centre for a car that
-//             turns in place, its rear axle for a car-like one), so one plan suits both;
 //   ARC2      reverse steering left until the car is parallel to the curb;
 //   CENTRE    forward or back, straight, until the front and rear lasers see equal gaps;
-//   PARKED    stop.
-// Every arc has radius >= R = 5 m, so the same manoeuvre suits a car-like (Ackermann) car.
+//   PARKED    stop: only when the car is in the slot, parallel; anywhere else it is
+//   FAILED    stop and say where it ended.
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/car_geometry.hpp>
 #include <aula/autopark/street_search.hpp>
+#include <aula/autopark/two_arc_park.hpp>
 #include <aula/geometry/angles.hpp>
 
 #include <algorithm>
@@ -24,6 +28,19 @@
 
 namespace aula::autopark {
 namespace {
+
+// The nearest echo straight ahead of a laser within a band `half_width_m` either side of its
+// axis (the car's width), metres; the laser's max range when nothing is there.
+double clearanceAhead(const component::LaserData& scan, double half_width_m) {
+  double nearest = scan.maxRange;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    const double r = scan.values_m[i], a = scan.angle(i);
+    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;
+    const double ahead = r * std::cos(a), aside = r * std::sin(a);
+    if (ahead > 0 && std::abs(aside) <= half_width_m) nearest = std::min(nearest, ahead);
+  }
+  return nearest;
+}
 
 class ReactiveParker : public AutoparkAlgorithm {
  public:
@@ -35,21 +52,16 @@ class ReactiveParker : public AutoparkAlgorithm {
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
     // The point the car turns about: it moves on arcs of radius |v / w|.
     const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
-    if (!search_) {
-      radius_m_ = std::max(kArcRadiusM, api.min_turn_radius_m);
-      StreetSearch::Settings settings;
-      settings.min_slot_length_m = api.car_length_m + kSlotMarginM;
-      settings.turn_radius_m = radius_m_;
-      search_.emplace(api, settings);
-    }
+    if (!search_) start(api, yaw);
     double v = 0, w = 0;
     switch (mode_) {
+      case Mode::Turn:
+        turnRound(api, yaw, v, w);
+        break;
       case Mode::Search: {
         const StreetSearch::Step step = search_->search(api, x, y, yaw);
         if (step.slot) {
-          slot_ = *step.slot;
-          planManoeuvre(api);
-          mode_ = Mode::Approach;
+          planFor(api, *step.slot);
           break;
         }
         v = step.v_mps;
@@ -57,7 +69,7 @@ class ReactiveParker : public AutoparkAlgorithm {
         break;
       }
       case Mode::Approach: {
-        const double to_go = start_x_m_ - x;
+        const double to_go = plan_.start_x_m - x;
         if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(geometry::wrapAngle(yaw)) < 0.05) {
           mode_ = Mode::Arc1;
           break;
@@ -69,40 +81,30 @@ class ReactiveParker : public AutoparkAlgorithm {
       }
       case Mode::Arc1: {
         v = -kManoeuvreMps;
-        w = kManoeuvreMps / radius_m_;  // reversing, yaw grows: the rear swings right
-        const double remaining = pivot_y - goal_y_m_;
-        if (remaining <= radius_m_ * (1 - std::cos(yaw)) || yaw > 1.2) mode_ = Mode::Arc2;
+        w = kManoeuvreMps / plan_.radius_m;  // reversing, yaw grows: the rear swings right
+        const double remaining = pivot_y - plan_.goal_y_m;
+        if (remaining <= plan_.radius_m * (1 - std::cos(yaw)) || yaw > plan_.arc_rad + 0.1) mode_ = Mode::Arc2;
         break;
       }
       case Mode::Arc2: {
         v = -kManoeuvreMps;
-        w = -kManoeuvreMps / radius_m_;
+        w = -kManoeuvreMps / plan_.radius_m;
         // Parallel to the curb, or the car behind is close: straighten up later, forwards.
         if (yaw <= 0.0 || rangeAhead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
         break;
       }
-      case Mode::Centre: {
-        const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
-        const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
-        const double yaw_error = geometry::wrapAngle(yaw);
-        if (std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03) {
-          mode_ = Mode::Parked;
-          break;
-        }
-        v = std::clamp(0.8 * error, -0.5, 0.5);
-        if (std::abs(v) < 0.1) v = std::copysign(0.1, error);
-        // Straighten while moving: the yaw follows the sign of the motion.
-        w = std::clamp(-2.0 * yaw_error * (v > 0 ? 1 : -1) * std::abs(v), -std::abs(v) / radius_m_, std::abs(v) / radius_m_);
-        if (std::abs(yaw_error) < 0.03) w = 0;
-        if (++centre_moves_ > 2000) mode_ = Mode::Parked;  // never oscillate forever
+      case Mode::Centre:
+        centre(api, x, y, yaw, v, w);
         break;
-      }
       case Mode::Parked:
+      case Mode::Declined:
+      case Mode::Failed:
         break;
     }
     if (mode_ != logged_mode_) {
       // One line per phase, so a student can follow the manoeuvre in the terminal.
-      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), x, y, geometry::headingDeg(yaw));
+      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
+                   geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
       logged_mode_ = mode_;
     }
     api.motors.sendV(v);
@@ -110,35 +112,105 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
 
  private:
-  enum class Mode { Search, Approach, Arc1, Arc2, Centre, Parked };
+  enum class Mode { Turn, Search, Approach, Arc1, Arc2, Centre, Parked, Declined, Failed };
   static const char* name(Mode m) {
-    static const char* const names[] = {"SEARCH", "APPROACH", "ARC1", "ARC2", "CENTRE", "PARKED"};
+    static const char* const names[] = {"TURN", "SEARCH", "APPROACH", "ARC1", "ARC2", "CENTRE", "PARKED", "DECLINED", "FAILED"};
     return names[static_cast<int>(m)];
   }
-  static constexpr double kSlotMarginM = 0.8;      // shortest slot: the car plus this
-  static constexpr double kArcRadiusM = 5.0;
-  static constexpr double kCurbClearanceM = 0.45;  // where the parked car's side ends up
-  static constexpr double kBehindCentreM = 1.0;    // the arcs end this far behind the slot's centre
+  static constexpr double kArcRadiusM = 5.0;       // the search's steering limit
   static constexpr double kCruiseMps = 2.0, kReverseMps = 1.5, kManoeuvreMps = 0.8;
+  static constexpr double kTurnMps = 0.8, kTurnRadps = 0.6;
+  static constexpr double kTurnClearanceM = 0.8;   // a three-point turn's leg ends this close to something
 
-  // Where the two arcs start: they bring the centre from the lane to the slot's centre line.
-  void planManoeuvre(const AutoparkApi& api) {
-    search_->holdLane(search_->laneYFor(slot_.edge_y_m));
-    goal_y_m_ = slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2;
-    const double offset = search_->laneY() - goal_y_m_;
-    const double cos_arc = std::clamp(1.0 - offset / (2 * radius_m_), -1.0, 1.0);
-    const double arc_length_x = 2 * radius_m_ * std::sqrt(1 - cos_arc * cos_arc);
-    // Room behind: end no closer than 0.6 m to the car behind; CENTRE then drives forward.
-    const double behind = std::clamp((slot_.lengthM() - api.car_length_m) / 2 - 0.6, 0.0, kBehindCentreM);
-    // The pivot starts and ends at the same body offset, parallel to the street.
-    start_x_m_ = slot_.centreXM() - behind + arc_length_x;
+  void start(const AutoparkApi& api, double yaw) {
+    car_ = {api.car_length_m, api.car_width_m, api.turn_centre_x_m, api.min_turn_radius_m};
+    StreetSearch::Settings settings;
+    settings.min_slot_length_m = api.car_length_m;  // shorter is no slot; longer ones the plan judges
+    settings.turn_radius_m = std::max(kArcRadiusM, api.min_turn_radius_m);
+    search_.emplace(api, settings);
+    // Facing the other way (the parked cars on its left): turn round first.
+    if (std::abs(geometry::wrapAngle(yaw)) > M_PI / 2) mode_ = Mode::Turn;
+  }
+
+  // Round to face +x: on the spot, or legs of a three-point turn (forward steering one way, back
+  // steering the other, both turning the car the same way) for a car-like car.
+  void turnRound(const AutoparkApi& api, double yaw, double& v, double& w) {
+    const double heading_error = geometry::wrapAngle(-yaw);  // to turn, towards 0
+    if (std::abs(heading_error) < (api.min_turn_radius_m > 0 ? 0.3 : 0.05)) {
+      mode_ = Mode::Search;  // the lane keeping straightens what is left
+      return;
+    }
+    const double turn_sign = heading_error > 0 ? 1.0 : -1.0;  // the shorter way round
+    if (api.min_turn_radius_m <= 0) {
+      w = turn_sign * kTurnRadps;
+      return;
+    }
+    const double half_width = api.car_width_m / 2 + 0.2;
+    if (turn_forward_ && clearanceAhead(api.laser1.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = false;
+    if (!turn_forward_ && clearanceAhead(api.laser2.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = true;
+    v = turn_forward_ ? kTurnMps : -kTurnMps;
+    w = turn_sign * kTurnMps / api.min_turn_radius_m;  // forward: steer to the turn; back: the other way
+  }
+
+  void planFor(AutoparkApi& api, const Slot& slot) {
+    slot_ = slot;
+    search_->holdLane(search_->laneYFor(slot.edge_y_m));
+    plan_ = planTwoArcPark(slot, search_->laneY(), car_);
+    if (!plan_.feasible) {
+      api.status = plan_.why;
+      mode_ = Mode::Declined;
+      return;
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "slot %.1f m: two arcs of R %.2f m from x %.2f", slot.lengthM(), plan_.radius_m,
+                  plan_.start_x_m);
+    api.status = line;
+    mode_ = Mode::Approach;
+  }
+
+  void centre(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
+    const auto& front = api.laser1.getLaserData();
+    const auto& rear = api.laser2.getLaserData();
+    const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
+    const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
+    const double yaw_error = geometry::wrapAngle(yaw);
+    const bool settled = std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03;
+    if (settled || ++centre_moves_ > 2000) {  // never oscillate forever
+      finish(api, x, y, yaw);
+      return;
+    }
+    v = std::clamp(0.8 * error, -0.5, 0.5);
+    if (std::abs(v) < 0.1) v = std::copysign(0.1, error);
+    // Straighten while moving: the yaw follows the sign of the motion.
+    const double limit = std::abs(v) / std::max(plan_.radius_m, api.min_turn_radius_m);
+    w = std::clamp(-2.0 * yaw_error * (v > 0 ? 1 : -1) * std::abs(v), -limit, limit);
+    if (std::abs(yaw_error) < 0.03) w = 0;
+  }
+
+  // PARKED only in the slot and parallel to it; anything else is said as it is.
+  void finish(AutoparkApi& api, double x, double y, double yaw) {
+    const double half = api.car_length_m / 2;
+    const bool in_slot = x - half > slot_.rear_x_m - 0.1 && x + half < slot_.front_x_m + 0.1 &&
+                         std::abs(y - plan_.goal_y_m) < 0.4 && std::abs(geometry::wrapAngle(yaw)) < 0.1;
+    char line[160];
+    if (in_slot) {
+      std::snprintf(line, sizeof line, "parked in the %.1f m slot", slot_.lengthM());
+      mode_ = Mode::Parked;
+    } else {
+      std::snprintf(line, sizeof line, "not in the slot: ended at x %.2f y %.2f (the slot is x %.2f to %.2f, line y %.2f)",
+                    x, y, slot_.rear_x_m, slot_.front_x_m, plan_.goal_y_m);
+      mode_ = Mode::Failed;
+    }
+    api.status = line;
   }
 
   std::optional<StreetSearch> search_;
+  CarShape car_;
   Slot slot_;
+  TwoArcPlan plan_;
   Mode mode_ = Mode::Search, logged_mode_ = Mode::Parked;
-  double t_ = 0, radius_m_ = kArcRadiusM;
-  double goal_y_m_ = 0, start_x_m_ = 0;
+  double t_ = 0;
+  bool turn_forward_ = true;
   int centre_moves_ = 0;
 };
 

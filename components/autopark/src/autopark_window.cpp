@@ -57,6 +57,7 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   auto* side = new QVBoxLayout;
   run_ = new gui::RunToggle(central);
   status_ = new QLabel(central);
+  status_->setWordWrap(true);  // the algorithm's status can be a sentence
   status_->setMinimumWidth(240);
   referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
   referee_->setMaximumWidth(360);
@@ -136,7 +137,7 @@ void AutoparkWindow::refresh() {
   run_->setRunning(component_.running());
   referee_->setStatus(component_.refereeStatus().latest());
   const auto& pose = component_.api().pose3d;
-  status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7")
+  status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7\n%8")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(pose.getX(), 0, 'f', 2)
                        .arg(pose.getY(), 0, 'f', 2)
@@ -145,7 +146,8 @@ void AutoparkWindow::refresh() {
                        .arg(component_.api().motors.getW(), 0, 'f', 2)
                        .arg(component_.api().min_turn_radius_m > 0
                                 ? QString("car-like, R = %1 m").arg(component_.api().min_turn_radius_m, 0, 'f', 1)
-                                : QString("turns in place")));
+                                : QString("turns in place"))
+                       .arg(QString::fromStdString(component_.api().status)));
   map_->update();
   lasers_->update();
 }

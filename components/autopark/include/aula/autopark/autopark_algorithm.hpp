@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <string>
 
 namespace aula::autopark {
 
@@ -46,6 +47,9 @@ struct AutoparkApi {
   // its rear axle (about -1.3 m) for a car-like one. That point moves on circles of radius v / w.
   double turn_centre_x_m = 0.0;
   double wheelbase_m = 2.6;  // for drawing the wheels
+  // What the algorithm says about where it stands ("slot too short for a reactive park: 5.0 m,
+  // need 5.9 m"): the window shows it under the car's numbers.
+  std::string status{};
 };
 
 class AutoparkAlgorithm {
