@@ -1,5 +1,7 @@
 #include "aula/app/bus_pump.hpp"
 
+#include <QCoreApplication>
+
 #include <chrono>
 #include <csignal>
 
@@ -14,8 +16,12 @@ BusPump::BusPump(lcmbus::Bus& bus, std::function<void()> housekeeping, int house
     : QObject(parent),
       bus_(bus),
       notifier_(bus.getFileno(), QSocketNotifier::Read),
+      stop_notifier_(stop_signals_.fd(), QSocketNotifier::Read),
       housekeeping_(std::move(housekeeping)) {
   connect(&notifier_, &QSocketNotifier::activated, this, [this] { drain(); });
+  connect(&stop_notifier_, &QSocketNotifier::activated, this, [this] {
+    if (stop_signals_.stopRequested()) QCoreApplication::quit();
+  });
   connect(&timer_, &QTimer::timeout, this, [this] {
     drain();  // memq:// has no descriptor activity; also catches anything the notifier missed
     if (housekeeping_) housekeeping_();

@@ -47,7 +47,9 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   const bool replay = setup.command_line.flag("replay");
   if (replay) lcmbus::requireLog(setup.command_line.option("replay"));
   setup.headless = setup.command_line.flag("headless") || replay;
-  if (setup.headless) process::blockStopSignals();  // before any thread starts (runHeadless watches them)
+  // Before any thread starts (Qt's, TBB's): only the watcher ever takes a stop signal, headless
+  // (runHeadless) or with a window (BusPump, which closes it).
+  if (setup.headless || opens_window) process::blockStopSignals();
   if (opens_window && !setup.headless && !haveDisplay()) {
     throw config::ConfigError("no display (DISPLAY is not set): use --headless");
   }

@@ -1,9 +1,12 @@
 #pragma once
 // LCM in an event loop without threads: in a Qt application a QSocketNotifier on the bus's file
 // descriptor calls handle() when data arrive; headless, runHeadless() polls the same descriptor.
-// Either way every LCM callback runs on the one main thread that also owns the widgets.
+// Either way every LCM callback runs on the one main thread that also owns the widgets. The stop
+// signals (Ctrl-C, the launcher's SIGTERM) are watched the same way: headless they end the loop,
+// with a window they quit the application, so the process leaves lockstep and exits cleanly.
 
 #include <aula/lcm/bus.hpp>
+#include <aula/process/signal_watcher.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <QObject>
@@ -25,6 +28,8 @@ class BusPump : public QObject {
   void drain();
   lcmbus::Bus& bus_;
   QSocketNotifier notifier_;
+  process::SignalWatcher stop_signals_;
+  QSocketNotifier stop_notifier_;
   QTimer timer_;
   std::function<void()> housekeeping_;
 };
