@@ -60,11 +60,11 @@ if command -v strace >/dev/null; then
   printf '%-9s %9s %9s %9s %9s  %s\n' exercise sendmsg recvmsg handled "recv/handled" "(one run, seed $(echo "$seeds" | awk '{print $1}'), under strace)"
   for exercise in $exercises; do
     seed=$(echo "$seeds" | awk '{print $1}')
-    AULA_BUS_STATS=1 strace -f -c -e trace=sendmsg,recvmsg -o "$out/$exercise.strace" \
+    AULA_BUS_STATS=1 strace -f -c -e trace=sendmsg,recvmsg,recvfrom -o "$out/$exercise.strace" \
       "$build/bin/aula" run "$exercise" --headless --algorithm="$(algorithm_of "$exercise")" --seed="$seed" \
       --report="$out/$exercise-strace.json" --lcm-url="$url" >/dev/null 2>"$out/$exercise.stats"
     sent=$(awk '$NF=="sendmsg" {print $4}' "$out/$exercise.strace")
-    received=$(awk '$NF=="recvmsg" {print $4}' "$out/$exercise.strace")
+    received=$(awk '$NF=="recvmsg" || $NF=="recvfrom" {s += $4} END {print s + 0}' "$out/$exercise.strace")
     handled=$(grep -o 'handled [0-9]* messages' "$out/$exercise.stats" | awk '{s += $2} END {print s + 0}')
     printf '%-9s %9s %9s %9s %9.2f\n' "$exercise" "$sent" "$received" "$handled" "$(echo "$received / $handled" | bc -l)"
   done

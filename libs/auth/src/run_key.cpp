@@ -1,11 +1,13 @@
 #include "aula/auth/run_key.hpp"
 
 #include <openssl/evp.h>
-#include <openssl/hmac.h>
+#include <openssl/core_names.h>
+#include <openssl/params.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/random.h>
@@ -66,14 +68,39 @@ Key readKey(int fd, const std::string& what) {
   return key;
 }
 
-Tag tagOf(const Key& key, const std::vector<uint8_t>& bytes, const std::string& channel) {
+Signer::Signer(const Key& key) {
+  EVP_MAC* hmac = EVP_MAC_fetch(nullptr, "HMAC", nullptr);
+  if (hmac != nullptr) context_ = EVP_MAC_CTX_new(hmac);
+  EVP_MAC_free(hmac);  // the context holds its own reference
+  char digest[] = "SHA256";
+  const OSSL_PARAM params[] = {OSSL_PARAM_construct_utf8_string(OSSL_MAC_PARAM_DIGEST, digest, 0), OSSL_PARAM_construct_end()};
+  if (context_ == nullptr || EVP_MAC_init(context_, key.data(), key.size(), params) != 1) {
+    EVP_MAC_CTX_free(context_);
+    throw std::runtime_error("HMAC-SHA256 is not available from OpenSSL");
+  }
+}
+
+Signer::Signer(const Signer& other) : context_(EVP_MAC_CTX_dup(other.context_)) {
+  if (context_ == nullptr) throw std::runtime_error("cannot copy an HMAC-SHA256 context");
+}
+
+Signer& Signer::operator=(const Signer& other) {
+  if (this != &other) {
+    Signer copy(other);
+    std::swap(context_, copy.context_);
+  }
+  return *this;
+}
+
+Signer::~Signer() { EVP_MAC_CTX_free(context_); }
+
+Tag Signer::tagOf(const std::vector<uint8_t>& bytes, const std::string& channel) {
   Tag tag{};
-  unsigned int length = 0;
-  std::vector<uint8_t> data(bytes);
-  data.insert(data.end(), channel.begin(), channel.end());
-  if (HMAC(EVP_sha256(), key.data(), static_cast<int>(key.size()), data.data(), data.size(), tag.data(), &length) ==
-          nullptr ||
-      length != tag.size()) {
+  size_t length = 0;
+  // A null key restarts the MAC with the key it holds (its hashed pads), hashing nothing again.
+  if (EVP_MAC_init(context_, nullptr, 0, nullptr) != 1 || EVP_MAC_update(context_, bytes.data(), bytes.size()) != 1 ||
+      EVP_MAC_update(context_, reinterpret_cast<const unsigned char*>(channel.data()), channel.size()) != 1 ||
+      EVP_MAC_final(context_, tag.data(), &length, tag.size()) != 1 || length != tag.size()) {
     throw std::runtime_error("HMAC-SHA256 failed");
   }
   return tag;

@@ -1,49 +1,36 @@
 #include "aula/lcm/bus.hpp"
 
+#include "aula/lcm/udpm_receiver.hpp"
+
 #include <aula/config/config.hpp>
 
+#include <lcm/lcm.h>
+
 #include <arpa/inet.h>
-#include <dirent.h>
 #include <netinet/in.h>
 #include <linux/filter.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <vector>
 
+// LCM's provider interface (lcm_internal.h, not installed; exported by liblcm from 1.3 to 1.5):
+// how a provider hands a received message to the subscriptions.
+extern "C" {
+int lcm_try_enqueue_message(lcm_t* lcm, const char* channel);
+int lcm_dispatch_handlers(lcm_t* lcm, lcm_recv_buf_t* buffer, const char* channel);
+}
+
 namespace aula::lcmbus {
 namespace {
 
-constexpr const char* kUdpmScheme = "udpm://";
-
-bool isUdpm(const std::string& url) { return url.rfind(kUdpmScheme, 0) == 0; }
-
-// The port of a udpm:// URL (LCM's 7667 when it names none), its group checked too.
-int udpmPort(const std::string& url) {
-  std::string rest = url.substr(std::strlen(kUdpmScheme));
-  rest = rest.substr(0, rest.find('?'));
-  int port = 7667;
-  if (const auto colon = rest.find(':'); colon != std::string::npos) {
-    const std::string text = rest.substr(colon + 1);
-    char* end = nullptr;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || value <= 0 || value > 65535) {
-      throw config::ConfigError("LCM URL '" + url + "': port '" + text + "' is not a number from 1 to 65535");
-    }
-    port = static_cast<int>(value);
-    rest = rest.substr(0, colon);
-  }
-  const std::string group = rest.empty() ? "239.255.76.67" : rest;
-  in_addr address{};
-  if (inet_pton(AF_INET, group.c_str(), &address) != 1 || (ntohl(address.s_addr) >> 28) != 0xE) {
-    throw config::ConfigError("LCM URL '" + url + "': '" + group + "' is not an IPv4 multicast group (224.0.0.0 to 239.255.255.255)");
-  }
-  return port;
-}
+constexpr const char* kSelfTestChannel = "LCM_SELF_TEST";
 
 // LCM subscribes to a regular expression; Aula's channels are plain names.
 bool isPattern(const std::string& channel) {
@@ -78,37 +65,13 @@ int freeUdpPort() {
 }
 
 std::string withFreePort(const std::string& url) {
-  if (!isUdpm(url)) return url;
+  if (!isUdpmUrl(url)) return url;
   const size_t query = url.find('?');
   const std::string head = url.substr(0, query);
   const size_t colon = head.rfind(':');
-  if (colon == std::string::npos || colon < std::strlen(kUdpmScheme) || head.substr(colon + 1) != "0") return url;
+  if (colon == std::string::npos || colon < std::strlen("udpm://") || head.substr(colon + 1) != "0") return url;
   return head.substr(0, colon + 1) + std::to_string(freeUdpPort()) + (query == std::string::npos ? "" : url.substr(query));
 }
-
-std::set<int> udpSocketsBoundTo(int port) {
-  std::set<int> found;
-  DIR* fds = opendir("/proc/self/fd");
-  if (fds == nullptr) return found;
-  std::vector<int> candidates;
-  while (const dirent* entry = readdir(fds)) {
-    char* end = nullptr;
-    const long fd = std::strtol(entry->d_name, &end, 10);
-    if (*end == '\0' && fd != dirfd(fds)) candidates.push_back(static_cast<int>(fd));
-  }
-  closedir(fds);
-  for (int fd : candidates) {
-    int type = 0;
-    socklen_t type_size = sizeof type;
-    sockaddr_in address{};
-    socklen_t address_size = sizeof address;
-    if (getsockopt(fd, SOL_SOCKET, SO_TYPE, &type, &type_size) != 0 || type != SOCK_DGRAM) continue;
-    if (getsockname(fd, reinterpret_cast<sockaddr*>(&address), &address_size) != 0) continue;
-    if (address.sin_family == AF_INET && ntohs(address.sin_port) == port) found.insert(fd);
-  }
-  return found;
-}
-
 
 std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels) {
   // Offsets from the start of the UDP header, where a UDP socket's filter starts reading.
@@ -152,34 +115,18 @@ std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& 
 Bus::Bus(std::string url) : url_(std::move(url)) {
   const char* stats = std::getenv("AULA_BUS_STATS");  // bench/exercise_overhead.sh
   print_stats_ = stats != nullptr && *stats != '\0';
-  const bool udpm = isUdpm(url_);
-  const int port = udpm ? udpmPort(url_) : 0;
-  const std::set<int> before = udpm ? udpSocketsBoundTo(port) : std::set<int>{};
-  receiver_ = std::make_unique<lcm::LCM>(url_);
-  if (!receiver_->good()) {
-    std::string why = "cannot open the LCM bus '" + url_ + "'";
-    if (udpm) {
-      why +=
-          ": UDP multicast needs a multicast route. On a machine without a default route, run as "
-          "root: 'ip link set lo multicast on; ip route add 224.0.0.0/4 dev lo'";
-    }
-    throw BusError(why);
-  }
+  const bool udpm = isUdpmUrl(url_);
+  const UdpmUrl address = udpm ? parseUdpmUrl(url_) : UdpmUrl{};
+  lcm_ = std::make_unique<lcm::LCM>(url_);
+  if (!lcm_->good()) throw BusError("cannot open the LCM bus '" + url_ + "'");
   if (!udpm) return;
-  // LCM makes its receiving socket (and thread) on the first getFileno() or subscribe(): the one
-  // socket on the port that appears now is it.
-  if (receiver_->getFileno() < 0) throw BusError("cannot open the LCM bus '" + url_ + "': LCM's self test failed");
-  std::vector<int> appeared;
-  for (int fd : udpSocketsBoundTo(port)) {
-    if (before.count(fd) == 0) appeared.push_back(fd);
-  }
-  if (appeared.size() != 1) {
-    std::cerr << "aula: LCM bus " << url_ << ": cannot tell LCM's receiving socket (" << appeared.size()
-              << " new sockets on the port); this process receives every channel" << std::endl;
-    return;
-  }
-  receive_fd_ = appeared.front();
-  applyFilter();
+  dispatcher_ = std::make_unique<lcm::LCM>("memq://");
+  if (!dispatcher_->good()) throw BusError("cannot open the LCM bus '" + url_ + "': no in-process LCM");
+  receiver_ = std::make_unique<UdpmReceiver>(address, std::set<std::string>{kSelfTestChannel});
+  selfTest();
+  receiver_->receiveOnly(channels_);
+  while (receiver_->next(0)) {
+  }  // other processes' self tests, queued before the filter closed
 }
 
 Bus::~Bus() {
@@ -191,31 +138,87 @@ Bus::~Bus() {
   }
 }
 
-void Bus::receive(const std::string& channel) {
-  if (receive_fd_ < 0 || receive_all_) return;
-  if (isPattern(channel)) {
-    receive_all_ = true;
-    const int unused = 0;  // the kernel wants an int, and ignores it
-    if (setsockopt(receive_fd_, SOL_SOCKET, SO_DETACH_FILTER, &unused, sizeof unused) != 0) {
-      throw BusError("LCM bus " + url_ + ": cannot lift the socket filter for '" + channel + "': " + std::strerror(errno));
+void Bus::selfTest() {
+  // As LCM's own udpm self test: a message of ours must come back through the group. Without a
+  // multicast route the publish itself fails.
+  const std::string nonce = std::to_string(getpid()) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(this));
+  const std::string no_route = "cannot open the LCM bus '" + url_ +
+                               "': UDP multicast needs a multicast route. On a machine without a default route, run as "
+                               "root: 'ip link set lo multicast on; ip route add 224.0.0.0/4 dev lo'";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (lcm_->publish(kSelfTestChannel, nonce.data(), static_cast<unsigned int>(nonce.size())) != 0) throw BusError(no_route);
+    const auto resend = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
+    while (std::chrono::steady_clock::now() < resend) {
+      const auto message = receiver_->next(20);
+      if (message && std::string(reinterpret_cast<const char*>(message->data), message->size) == nonce) return;
     }
-    return;
   }
-  if (channels_.insert(channel).second) applyFilter();
+  throw BusError(no_route + " (LCM's self test: nothing came back in 2 s)");
 }
 
-void Bus::applyFilter() {
-  static_assert(sizeof(SocketFilterInstruction) == sizeof(sock_filter), "the kernel's sock_filter layout");
-  std::vector<SocketFilterInstruction> program = channelFilter(channels_);
-  std::vector<sock_filter> kernel_program(program.size());
-  for (std::size_t i = 0; i < program.size(); ++i) {
-    kernel_program[i] = sock_filter{program[i].code, program[i].jump_if_true, program[i].jump_if_false, program[i].value};
+std::vector<uint8_t>& Bus::holdSlot(const std::string& channel) {
+  if (held_count_ == held_.size()) held_.emplace_back();
+  auto& slot = held_[held_count_++];
+  slot.first = channel;
+  return slot.second;
+}
+
+int Bus::flush() {
+  holding_ = false;
+  int status = 0;
+  for (std::size_t i = 0; i < held_count_; ++i) {
+    const auto& [channel, bytes] = held_[i];
+    const int sent = lcm_->publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
+    if (status == 0) status = sent;
   }
-  sock_fprog filter{static_cast<unsigned short>(kernel_program.size()), kernel_program.data()};
-  if (setsockopt(receive_fd_, SOL_SOCKET, SO_ATTACH_FILTER, &filter, sizeof filter) != 0) {
-    throw BusError("LCM bus " + url_ + ": cannot set the socket filter for " + std::to_string(channels_.size()) +
-                   " channels: " + std::strerror(errno));
+  held_count_ = 0;
+  return status;
+}
+
+int Bus::getFileno() { return receiver_ ? receiver_->fd() : lcm_->getFileno(); }
+
+void Bus::dispatch(const LcmMessage& message) {
+  lcm_t* lcm = dispatcher_->getUnderlyingLCM();
+  lcm_recv_buf_t buffer{const_cast<uint8_t*>(message.data), message.size, receiver_->receivedUtime(), lcm};
+  // What LCM's udpm provider does with a message: count it into each subscription's queue, then
+  // call the handlers.
+  if (lcm_try_enqueue_message(lcm, message.channel) != 0) lcm_dispatch_handlers(lcm, &buffer, message.channel);
+  ++handled_;
+}
+
+int Bus::handle() {
+  if (!receiver_) {
+    const int status = lcm_->handle();
+    if (status == 0) ++handled_;
+    return status;
   }
+  const auto message = receiver_->next(-1);
+  if (!message) return -1;
+  dispatch(*message);
+  return 0;
+}
+
+int Bus::handleTimeout(int timeout_ms) {
+  if (!receiver_) {
+    const int status = lcm_->handleTimeout(timeout_ms);
+    if (status > 0) ++handled_;
+    return status;
+  }
+  const auto message = receiver_->next(timeout_ms);
+  if (!message) return 0;
+  dispatch(*message);
+  return 1;
+}
+
+void Bus::receive(const std::string& channel) {
+  if (!receiver_ || receive_all_) return;
+  if (isPattern(channel)) {
+    receive_all_ = true;
+    receiver_->receiveAll();
+    return;
+  }
+  if (channels_.insert(channel).second) receiver_->receiveOnly(channels_);
 }
 
 std::unique_ptr<Bus> openBus(const std::string& url) { return std::make_unique<Bus>(url); }

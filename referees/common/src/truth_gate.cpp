@@ -11,7 +11,7 @@ bool TruthGate::inSequence(const std::string& channel, int64_t seq) {
     return true;
   }
   if (seq <= last->second) {
-    if (!key_) return true;  // without a key nothing tells a replay from a stray: as before
+    if (!signer_) return true;  // without a key nothing tells a replay from a stray: as before
     ++tampering_[channel];   // signed, but seen already: a replay of the simulator's message
     return false;
   }
@@ -27,7 +27,7 @@ bool TruthGate::acceptTick(const std::string& channel, const aula::sim_clock_t& 
 }
 
 bool TruthGate::contradictsEpisode(const std::string& channel, const aula::episode_t& msg) {
-  if (!key_) return false;  // with windows a reload starts a new episode, GO! picks a goal
+  if (!signer_) return false;  // with windows a reload starts a new episode, GO! picks a goal
   if (!first_episode_) {
     first_episode_ = msg;
     return false;

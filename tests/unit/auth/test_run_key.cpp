@@ -48,19 +48,19 @@ TEST(RunKey, ATagHoldsForItsMessageItsChannelAndItsKeyOnly) {
   const aula::auth::Key key = aula::auth::randomKey();
   aula::pose3d_t msg = pose(1.0);
   msg.auth_seq = 7;
-  aula::auth::sign(key, "ROOMBA_POSE", msg);
-  EXPECT_TRUE(aula::auth::verify(key, "ROOMBA_POSE", msg));
-  EXPECT_FALSE(aula::auth::verify(key, "TAXI_POSE", msg)) << "replayed on another channel";
-  EXPECT_FALSE(aula::auth::verify(aula::auth::randomKey(), "ROOMBA_POSE", msg));
+  aula::auth::sign(aula::auth::Signer(key), "ROOMBA_POSE", msg);
+  EXPECT_TRUE(aula::auth::verify(aula::auth::Signer(key), "ROOMBA_POSE", msg));
+  EXPECT_FALSE(aula::auth::verify(aula::auth::Signer(key), "TAXI_POSE", msg)) << "replayed on another channel";
+  EXPECT_FALSE(aula::auth::verify(aula::auth::Signer(aula::auth::randomKey()), "ROOMBA_POSE", msg));
   aula::pose3d_t moved = msg;
   moved.x = 1.0000001;
-  EXPECT_FALSE(aula::auth::verify(key, "ROOMBA_POSE", moved));
+  EXPECT_FALSE(aula::auth::verify(aula::auth::Signer(key), "ROOMBA_POSE", moved));
   aula::pose3d_t renumbered = msg;
   renumbered.auth_seq = 8;
-  EXPECT_FALSE(aula::auth::verify(key, "ROOMBA_POSE", renumbered)) << "the sequence number is covered too";
+  EXPECT_FALSE(aula::auth::verify(aula::auth::Signer(key), "ROOMBA_POSE", renumbered)) << "the sequence number is covered too";
   aula::pose3d_t unsigned_msg = pose(1.0);
   unsigned_msg.auth_seq = 7;
-  EXPECT_FALSE(aula::auth::verify(key, "ROOMBA_POSE", unsigned_msg));
+  EXPECT_FALSE(aula::auth::verify(aula::auth::Signer(key), "ROOMBA_POSE", unsigned_msg));
 }
 
 TEST(RunKey, TheStamperNumbersEachChannelAndSignsOnlyWithAKey) {
@@ -74,7 +74,7 @@ TEST(RunKey, TheStamperNumbersEachChannelAndSignsOnlyWithAKey) {
   EXPECT_EQ(a.auth_seq, 1);
   EXPECT_EQ(b.auth_seq, 2);
   EXPECT_EQ(c.auth_seq, 1);
-  EXPECT_TRUE(aula::auth::verify(key, "ROOMBA_POSE", b));
+  EXPECT_TRUE(aula::auth::verify(aula::auth::Signer(key), "ROOMBA_POSE", b));
   aula::sim_control_t control{};
   plain.stamp("SIM_CONTROL", control);
   EXPECT_EQ(control.auth_seq, 1);

@@ -1,5 +1,6 @@
-// lcmbus::Bus: a process receives only what it subscribes to (a kernel socket filter on LCM's
-// socket), and a stock LCM client on the run's URL still sees every channel.
+// lcmbus::Bus: a process receives only what it subscribes to (a kernel socket filter on its
+// receiving socket), on the thread that handles them, and a stock LCM client on the run's URL
+// still sees every channel.
 #include <aula/lcm/bus.hpp>
 
 #include <aula/config/config.hpp>
@@ -106,11 +107,26 @@ TEST(Bus, AMalformedUrlIsAConfigError) {
   EXPECT_THROW(Bus("udpm://10.0.0.1:7667?ttl=0"), aula::config::ConfigError);
 }
 
+// This process's UDP sockets bound to `port`: each Bus's receiving socket on a udpm:// URL.
+std::set<int> udpSocketsBoundTo(int port) {
+  std::set<int> found;
+  for (int fd = 0; fd < 1024; ++fd) {
+    int type = 0;
+    socklen_t type_size = sizeof type;
+    sockaddr_in address{};
+    socklen_t address_size = sizeof address;
+    if (getsockopt(fd, SOL_SOCKET, SO_TYPE, &type, &type_size) != 0 || type != SOCK_DGRAM) continue;
+    if (getsockname(fd, reinterpret_cast<sockaddr*>(&address), &address_size) != 0) continue;
+    if (address.sin_family == AF_INET && ntohs(address.sin_port) == port) found.insert(fd);
+  }
+  return found;
+}
+
 // The socket filter on each of this process's UDP sockets bound to `port`: its length in
 // instructions, 0 for none.
 std::multiset<int> filtersOfSocketsOn(int port) {
   std::multiset<int> lengths;
-  for (int fd : aula::lcmbus::udpSocketsBoundTo(port)) {
+  for (int fd : udpSocketsBoundTo(port)) {
     socklen_t length = 0;  // SO_GET_FILTER with no buffer: the program's length
     lengths.insert(getsockopt(fd, SOL_SOCKET, SO_GET_FILTER, nullptr, &length) == 0 ? static_cast<int>(length) : -1);
   }

@@ -38,15 +38,15 @@ TEST(TruthGate, AGradedRunGradesOnlyWhatTheSimulatorSignedOnce) {
   const aula::auth::Key key = aula::auth::randomKey();
   TruthGate gate(key);
   aula::pose3d_t real = pose(1, 1.0);
-  aula::auth::sign(key, "ROOMBA_POSE", real);
+  aula::auth::sign(aula::auth::Signer(key), "ROOMBA_POSE", real);
   EXPECT_TRUE(gate.accept("ROOMBA_POSE", real));
   EXPECT_FALSE(gate.accept("ROOMBA_POSE", pose(2, 9.0))) << "unsigned";
   aula::pose3d_t other_key = pose(2, 9.0);
-  aula::auth::sign(aula::auth::randomKey(), "ROOMBA_POSE", other_key);
+  aula::auth::sign(aula::auth::Signer(aula::auth::randomKey()), "ROOMBA_POSE", other_key);
   EXPECT_FALSE(gate.accept("ROOMBA_POSE", other_key)) << "signed by someone else";
   EXPECT_FALSE(gate.accept("ROOMBA_POSE", real)) << "a replay of a real message";
   aula::pose3d_t next = pose(2, 1.1);
-  aula::auth::sign(key, "ROOMBA_POSE", next);
+  aula::auth::sign(aula::auth::Signer(key), "ROOMBA_POSE", next);
   EXPECT_TRUE(gate.accept("ROOMBA_POSE", next));
   EXPECT_EQ(gate.tampering(), (std::map<std::string, long long>{{"ROOMBA_POSE", 3}}));
   EXPECT_TRUE(gate.gaps().empty()) << "forgeries are not lost messages";
@@ -75,7 +75,7 @@ TEST(TruthGate, TheSimulatorsRefusedControlsComeWithItsSignedClock) {
   aula::sim_clock_t tick{};
   tick.auth_seq = 1;
   tick.rejected_controls = 3;
-  aula::auth::sign(key, "SIM_CLOCK", tick);
+  aula::auth::sign(aula::auth::Signer(key), "SIM_CLOCK", tick);
   EXPECT_TRUE(gate.acceptTick("SIM_CLOCK", tick));
   EXPECT_EQ(gate.tampering(), (std::map<std::string, long long>{{"SIM_CLOCK", 1}, {"SIM_CONTROL", 3}}));
 }

@@ -125,12 +125,12 @@ TEST(SimulatorControl, AGradedSimulatorObeysOnlySignedControlOnce) {
   teleport.auth_seq = 1;
   send(teleport);  // unsigned
   aula::sim_control_t other_key = teleport;
-  aula::auth::sign(aula::auth::randomKey(), aula::lcmbus::kControlChannel, other_key);
+  aula::auth::sign(aula::auth::Signer(aula::auth::randomKey()), aula::lcmbus::kControlChannel, other_key);
   send(other_key);
   EXPECT_EQ(sim.rejectedControls(), 2);
   EXPECT_NEAR((sim.physics().robotState(roomba).position_m - start).norm(), 0.0, 1e-9);
 
-  aula::auth::sign(key, aula::lcmbus::kControlChannel, teleport);
+  aula::auth::sign(aula::auth::Signer(key), aula::lcmbus::kControlChannel, teleport);
   send(teleport);
   EXPECT_EQ(sim.rejectedControls(), 2);
   EXPECT_NEAR(sim.physics().robotState(roomba).position_m.x(), start.x() + 0.5, 1e-6);
@@ -142,7 +142,7 @@ TEST(SimulatorControl, AGradedSimulatorObeysOnlySignedControlOnce) {
   }
   ASSERT_FALSE(ticks.empty());
   EXPECT_EQ(ticks.back().rejected_controls, 3);
-  EXPECT_TRUE(aula::auth::verify(key, aula::lcmbus::kClockChannel, ticks.back())) << "the clock is signed";
+  EXPECT_TRUE(aula::auth::verify(aula::auth::Signer(key), aula::lcmbus::kClockChannel, ticks.back())) << "the clock is signed";
 }
 
 TEST(SimulatorControl, WithoutAKeyTheWindowsControlsWorkAsBefore) {

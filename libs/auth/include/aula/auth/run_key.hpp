@@ -37,46 +37,74 @@ int keyPipe(const Key& key);
 // descriptor is not open or holds anything but 32 bytes.
 Key readKey(int fd, const std::string& what);
 
-// HMAC-SHA256(key, bytes || channel).
-Tag tagOf(const Key& key, const std::vector<uint8_t>& bytes, const std::string& channel);
+// HMAC-SHA256 under one key, prepared once: a tag costs about 0.5 us instead of the 2.5 us of
+// OpenSSL's one-shot HMAC() (which fetches the algorithm and hashes the key every time), and a
+// graded vacuum run tags about 60 000 messages on each side.
+class Signer {
+ public:
+  explicit Signer(const Key& key);  // throws std::runtime_error when OpenSSL cannot
+  Signer(const Signer& other);
+  Signer& operator=(const Signer& other);
+  ~Signer();
 
-// The message's encoding with its tag zeroed: what the tag covers.
-template <class Message>
-std::vector<uint8_t> signedBytes(Message msg) {
-  std::fill(std::begin(msg.auth), std::end(msg.auth), uint8_t{0});
-  std::vector<uint8_t> bytes(static_cast<size_t>(msg.getEncodedSize()));
-  msg.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  return bytes;
-}
+  // HMAC-SHA256(key, bytes || channel).
+  Tag tagOf(const std::vector<uint8_t>& bytes, const std::string& channel);
+
+  // The message's tag: over its encoding with its `auth` zeroed, then the channel.
+  template <class Message>
+  Tag tagOfMessage(Message msg, const std::string& channel) {
+    std::fill(std::begin(msg.auth), std::end(msg.auth), uint8_t{0});
+    scratch_.resize(static_cast<size_t>(msg.getEncodedSize()));
+    msg.encode(scratch_.data(), 0, static_cast<int>(scratch_.size()));
+    return tagOf(scratch_, channel);
+  }
+
+ private:
+  struct evp_mac_ctx_st* context_ = nullptr;  // EVP_MAC_CTX holding the key
+  std::vector<uint8_t> scratch_;            // the encoding being tagged
+};
 
 template <class Message>
-void sign(const Key& key, const std::string& channel, Message& msg) {
-  const Tag tag = tagOf(key, signedBytes(msg), channel);
+void sign(Signer& signer, const std::string& channel, Message& msg) {
+  const Tag tag = signer.tagOfMessage(msg, channel);
   std::copy(tag.begin(), tag.end(), std::begin(msg.auth));
 }
 
-// True when `msg` carries the tag `key` gives it on `channel` (compared in constant time).
+// True when `msg` carries the tag the signer's key gives it on `channel` (compared in constant time).
 template <class Message>
-bool verify(const Key& key, const std::string& channel, const Message& msg) {
-  const Tag tag = tagOf(key, signedBytes(msg), channel);
+bool verify(Signer& signer, const std::string& channel, const Message& msg) {
+  const Tag tag = signer.tagOfMessage(msg, channel);
   return CRYPTO_memcmp(tag.data(), msg.auth, kTagBytes) == 0;
+}
+
+// The same with a signer made for the occasion (tests: one message, one key).
+template <class Message>
+void sign(Signer&& signer, const std::string& channel, Message& msg) {
+  sign(signer, channel, msg);
+}
+template <class Message>
+bool verify(Signer&& signer, const std::string& channel, const Message& msg) {
+  return verify(signer, channel, msg);
 }
 
 // The publishing side: numbers every message per channel (auth_seq 1, 2, ...: a receiver counts
 // the gaps), and signs it when the run has a key.
 class Stamper {
  public:
-  explicit Stamper(std::optional<Key> key = std::nullopt) : key_(key) {}
-  bool keyed() const { return key_.has_value(); }
-  const std::optional<Key>& key() const { return key_; }
+  explicit Stamper(const std::optional<Key>& key = std::nullopt) {
+    if (key) signer_.emplace(*key);
+  }
+  bool keyed() const { return signer_.has_value(); }
+  // The run's key, prepared (keyed() only): what checks a message signed with it.
+  Signer& signer() { return *signer_; }
   template <class Message>
   void stamp(const std::string& channel, Message& msg) {
     msg.auth_seq = ++seq_[channel];
-    if (key_) sign(*key_, channel, msg);
+    if (signer_) sign(*signer_, channel, msg);
   }
 
  private:
-  std::optional<Key> key_;
+  std::optional<Signer> signer_;
   std::map<std::string, int64_t> seq_;
 };
 

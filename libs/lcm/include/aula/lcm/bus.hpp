@@ -58,17 +58,21 @@ struct SocketFilterInstruction {
 };
 std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels);
 
-// This process's UDP sockets bound to `port`: LCM's receiving sockets on a udpm:// URL.
-std::set<int> udpSocketsBoundTo(int port);
+class UdpmReceiver;
+struct LcmMessage;
 
 // One process's LCM bus, with lcm::LCM's calls (publish, subscribe, handle...).
 //
-// Every channel stays on the run's one URL (udpm://GROUP:PORT), where every stock LCM tool sees it.
-// On udpm://, the process's receiving socket (LCM's, read by LCM's receive thread) carries a
-// kernel socket filter (channelFilter) that passes only the channels the process subscribes to:
-// the others are dropped before they are queued, so they cost no read, no wake-up and no copy.
-// Order is kept: what passes arrives as it was sent, on the one socket. Other URLs (memq://,
-// file://) are one plain lcm::LCM.
+// Every channel stays on the run's one URL (udpm://GROUP:PORT), where every stock LCM tool sees it:
+// messages go out through LCM's own publish. On udpm:// they come in through a UdpmReceiver on the
+// thread that calls handle(), not LCM's receive thread (one recvmsg and one wake-up per message
+// instead of two wake-ups and five system calls), and its socket carries a kernel socket filter
+// (channelFilter) that passes only the channels the process subscribes to: the others are dropped
+// before they are queued. Order is kept: what passes arrives as it was sent, on the one socket.
+// The subscriptions are LCM's own (lcm::LCM::subscribe on an in-process lcm::LCM), and each
+// message is handed to them by LCM's own dispatch (lcm_dispatch_handlers, what LCM's udpm
+// provider calls), so handlers, decoding and queues are LCM's. Other URLs (memq://, file://) are
+// one plain lcm::LCM.
 class Bus {
  public:
   // Opens the bus or throws BusError with the reason and the fix (e.g. no multicast route).
@@ -81,46 +85,62 @@ class Bus {
 
   template <class Message>
   int publish(const std::string& channel, const Message* message) {
-    return receiver_->publish(channel, message);
+    if (!holding_) return lcm_->publish(channel, message);
+    std::vector<uint8_t>& bytes = holdSlot(channel);
+    bytes.resize(static_cast<std::size_t>(message->getEncodedSize()));
+    return message->encode(bytes.data(), 0, static_cast<int>(bytes.size())) < 0 ? -1 : 0;
   }
   int publish(const std::string& channel, const void* data, unsigned int size) {
-    return receiver_->publish(channel, data, size);
+    if (!holding_) return lcm_->publish(channel, data, size);
+    const auto* bytes = static_cast<const uint8_t*>(data);
+    holdSlot(channel).assign(bytes, bytes + size);
+    return 0;
   }
+
+  // Holds what is published from here until flush(), which sends it all in order. A burst wakes
+  // a sleeping receiver once instead of once per message: the simulator holds the sensor
+  // messages of a tick period while it steps the physics, and sends them just before the tick.
+  void hold() { holding_ = true; }
+  // Sends what was held, in order; 0, or the first failed publish's status.
+  int flush();
 
   // lcm::LCM::subscribe with the queue above, and the channel let through the socket filter. A
   // channel given as a regular expression (".*", a recorder) lifts the filter: every channel.
   template <class... SubscribeArgs>
   lcm::Subscription* subscribe(const std::string& channel, SubscribeArgs&&... args) {
-    lcm::Subscription* subscription = receiver_->subscribe(channel, std::forward<SubscribeArgs>(args)...);
+    lcm::Subscription* subscription = subscriptions().subscribe(channel, std::forward<SubscribeArgs>(args)...);
     if (subscription != nullptr) subscription->setQueueCapacity(kQueueCapacity);
     receive(channel);
     return subscription;
   }
-  void unsubscribe(lcm::Subscription* subscription) { receiver_->unsubscribe(subscription); }
+  void unsubscribe(lcm::Subscription* subscription) { subscriptions().unsubscribe(subscription); }
 
-  int handle() {
-    const int status = receiver_->handle();
-    if (status == 0) ++handled_;
-    return status;
-  }
-  int handleTimeout(int timeout_ms) {
-    const int status = receiver_->handleTimeout(timeout_ms);
-    if (status > 0) ++handled_;
-    return status;
-  }
-  // Messages handled so far (LCM hands over only the subscribed ones).
+  // Waits for the next message and hands it to its subscriptions: 0, or -1 on an error or a
+  // signal.
+  int handle();
+  // The same, waiting at most `timeout_ms` (0: only what is already queued): 1 when a message was
+  // handed over, 0 when none came in time, -1 on an error.
+  int handleTimeout(int timeout_ms);
+  // Messages handled so far (only the subscribed ones reach the process).
   long long handled() const { return handled_; }
   // The descriptor that becomes readable when a message waits (for select, poll, QSocketNotifier).
-  int getFileno() { return receiver_->getFileno(); }
+  int getFileno();
 
  private:
+  lcm::LCM& subscriptions() { return dispatcher_ ? *dispatcher_ : *lcm_; }
+  std::vector<uint8_t>& holdSlot(const std::string& channel);
+  void dispatch(const LcmMessage& message);
+  void selfTest();
   void receive(const std::string& channel);
-  void applyFilter();
 
   std::string url_;
-  std::unique_ptr<lcm::LCM> receiver_;
-  int receive_fd_ = -1;          // LCM's receiving socket (udpm://), -1 when not found
+  std::unique_ptr<lcm::LCM> lcm_;         // the URL's LCM: publishes (and receives, off udpm://)
+  std::unique_ptr<lcm::LCM> dispatcher_;  // udpm://: an in-process LCM holding the subscriptions
+  std::unique_ptr<UdpmReceiver> receiver_;  // udpm://: the run's multicast socket, read here
   bool receive_all_ = false;     // a pattern subscription: no filter
+  bool holding_ = false;         // hold() until flush()
+  std::vector<std::pair<std::string, std::vector<uint8_t>>> held_;  // reused: the first held_count_ wait
+  std::size_t held_count_ = 0;
   std::set<std::string> channels_;  // let through the filter
   long long handled_ = 0;
   bool print_stats_ = false;  // $AULA_BUS_STATS set: say how many messages were handled, at the end

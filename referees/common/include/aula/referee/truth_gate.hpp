@@ -29,14 +29,16 @@ namespace aula::referee {
 
 class TruthGate {
  public:
-  explicit TruthGate(std::optional<auth::Key> key = std::nullopt) : key_(key) {}
-  bool keyed() const { return key_.has_value(); }
+  explicit TruthGate(const std::optional<auth::Key>& key = std::nullopt) {
+    if (key) signer_.emplace(*key);
+  }
+  bool keyed() const { return signer_.has_value(); }
 
   // True when `msg` (a type with auth_seq and auth) on `channel` may be graded; otherwise it
   // was counted as tampering.
   template <class Message>
   bool accept(const std::string& channel, const Message& msg) {
-    if (key_ && !auth::verify(*key_, channel, msg)) {
+    if (signer_ && !auth::verify(*signer_, channel, msg)) {
       ++tampering_[channel];
       return false;
     }
@@ -59,7 +61,7 @@ class TruthGate {
  private:
   bool inSequence(const std::string& channel, int64_t seq);
 
-  std::optional<auth::Key> key_;
+  std::optional<auth::Signer> signer_;  // the run's key, prepared
   std::map<std::string, int64_t> last_seq_;
   std::map<std::string, long long> tampering_, gaps_;
   long long simulator_rejected_controls_ = 0;

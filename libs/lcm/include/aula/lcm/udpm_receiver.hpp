@@ -1,0 +1,96 @@
+#pragma once
+// Receiving LCM's UDP multicast wire format on the calling thread.
+//
+// LCM 1.3.1 (and LCM up to 1.5) receives a udpm:// URL on a thread of its own: every message
+// costs that thread a select and a recvmsg, a write to a notify pipe, and the application a poll,
+// a read of the pipe and two thread wake-ups. In a lockstep run those wake-ups sit on the
+// critical path of every control period. UdpmReceiver reads the same multicast socket (bound and
+// joined as LCM binds and joins it) on the thread that handles the messages: one recvmsg per
+// datagram, one wake-up. What it yields is handed to LCM's own dispatch (lcmbus::Bus), so the
+// subscriptions, their decoding and their queues stay LCM's.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace aula::lcmbus {
+
+// A udpm:// URL: udpm://GROUP:PORT?ttl=N&recv_buf_size=BYTES (LCM's defaults for what it omits).
+struct UdpmUrl {
+  std::string group = "239.255.76.67";
+  int port = 7667;
+  int recv_buf_size = 0;  // bytes; 0 = the kernel's default
+};
+bool isUdpmUrl(const std::string& url);
+// Throws config::ConfigError naming the URL and what is wrong with it.
+UdpmUrl parseUdpmUrl(const std::string& url);
+
+// One message out of LCM's datagrams: valid until the next datagram is added.
+struct LcmMessage {
+  const char* channel = nullptr;  // NUL-terminated
+  const uint8_t* data = nullptr;
+  uint32_t size = 0;
+};
+
+// Rebuilds messages from LCM datagrams: a short message ("LC02": magic, sequence number, channel,
+// NUL, payload) is one datagram; a long one ("LC03") comes in fragments, reassembled per sender
+// (LCM sends a message's fragments back to back; a new message from a sender drops the unfinished
+// one, as LCM's receiver does). Anything else is counted and ignored.
+class LcmDatagramAssembler {
+ public:
+  // `sender`: the datagram's source (address and port), which keys its fragments.
+  std::optional<LcmMessage> add(const uint8_t* datagram, std::size_t size, uint64_t sender);
+  long long malformed() const { return malformed_; }
+
+ private:
+  struct Partial {
+    uint32_t sequence = 0;
+    std::string channel;
+    std::vector<uint8_t> data;
+    uint16_t fragments_left = 0;
+  };
+  std::optional<LcmMessage> addFragment(const uint8_t* datagram, std::size_t size, uint64_t sender);
+
+  std::map<uint64_t, Partial> partial_;  // by sender
+  Partial completed_;                    // the last long message completed (what add returned)
+  long long malformed_ = 0;
+};
+
+// The multicast socket of a udpm:// URL, read on the caller's thread.
+class UdpmReceiver {
+ public:
+  // Opens, binds and joins as LCM does (SO_REUSEADDR, so every process of the run binds the
+  // port), with `initial_channels` let through its kernel socket filter. Throws BusError.
+  UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& initial_channels);
+  ~UdpmReceiver();
+  UdpmReceiver(const UdpmReceiver&) = delete;
+  UdpmReceiver& operator=(const UdpmReceiver&) = delete;
+
+  // Readable when a datagram waits (poll, QSocketNotifier).
+  int fd() const { return fd_; }
+  // The kernel socket filter (channelFilter): only these channels' short messages are queued.
+  void receiveOnly(const std::set<std::string>& channels);
+  // No filter: every channel (a subscription by pattern).
+  void receiveAll();
+
+  // The next complete message. `timeout_ms` < 0 waits for one, 0 takes only what is queued, > 0
+  // waits that long at most. Nothing when none came (or a signal interrupted the wait).
+  std::optional<LcmMessage> next(int timeout_ms);
+  // Wall time (microseconds since the epoch) at which the last message's last datagram was read:
+  // LCM's recv_utime.
+  int64_t receivedUtime() const { return received_utime_; }
+
+ private:
+  int fd_ = -1;
+  std::vector<uint8_t> datagram_;
+  LcmDatagramAssembler assembler_;
+  int64_t received_utime_ = 0;
+};
+
+}  // namespace aula::lcmbus
