@@ -7,6 +7,8 @@
 #include <aula/config/paths.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/lcm/log_replay.hpp>
+#include <aula/motors_t.hpp>
 #include <aula/process/exit_codes.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
@@ -31,7 +33,9 @@ constexpr const char* kUsage =
     "  --config     simulator settings (default: config/simulator.cfg if present)\n"
     "  --lockstep   advance only when every registered client has acknowledged\n"
     "  --rtf X      real-time factor in free-running mode (0 = as fast as possible)\n"
-    "  --duration   stop after this many simulated seconds\n";
+    "  --duration   stop after this many simulated seconds\n"
+    "  --commands=RUN.lcmlog  drive the robots with the motors commands recorded in a run's log\n"
+    "               (aula run --record), each at the tick it answered: the run's motions, no component\n";
 
 // The simulator settings: the .cfg (--config, else the data folder's if present), then the
 // command-line flags and --Simulator.Key=value, checked against the declared table.
@@ -85,13 +89,13 @@ void runWithView(aula::sim::Simulator& simulator, const std::string& screenshot,
 
 int runSimulator(int argc, char** argv) {
   using namespace aula;
-  const auto cl = config::CommandLine::parse(argc, argv, {"config", "rtf", "seed", "lcm-url", "duration"});
+  const auto cl = config::CommandLine::parse(argc, argv, {"config", "rtf", "seed", "lcm-url", "duration", "commands"});
   if (cl.flag("help")) {
     std::cout << kUsage << "\nSettings (in the .cfg, or --Key=value on the command line):\n"
               << settings::simulator().help();
     return 0;
   }
-  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "key-fd", "status-fd", "help"});
+  cl.requireKnown({"config", "lockstep", "rtf", "seed", "lcm-url", "duration", "paused", "gui", "screenshot", "key-fd", "status-fd", "commands", "help"});
   if (cl.positional.size() != 1) {
     std::cerr << "aula-sim: expected exactly one WORLD file\n" << kUsage;
     return process::kExitUsage;
@@ -115,6 +119,9 @@ int runSimulator(int argc, char** argv) {
   constexpr auto kListenForOthers = std::chrono::milliseconds(150);
   const auto listen_until = std::chrono::steady_clock::now() + kListenForOthers;
   sim::Simulator simulator(std::move(spec), options, *bus, key);
+  if (cl.flag("commands")) {
+    simulator.driveWith(lcmbus::recordedMessagesOfType(cl.option("commands"), aula::motors_t::getHash()));
+  }
   if (const auto other = simulator.otherSimulatorUntil(listen_until)) {
     throw config::ConfigError("another simulator (instance " + std::to_string(other->instance) + ", world " +
                               other->world + ") is already running on " + bus->url());

@@ -295,6 +295,19 @@ void Simulator::advanceToNextTick() {
   publishClock();
 }
 
+void Simulator::driveWith(std::vector<lcmbus::RecordedMessage> commands) {
+  recorded_commands_ = std::move(commands);
+  next_recorded_command_ = 0;
+}
+
+void Simulator::injectDueCommands() {
+  while (next_recorded_command_ < recorded_commands_.size() &&
+         recorded_commands_[next_recorded_command_].tick_us <= physics_->timeUs()) {
+    const lcmbus::RecordedMessage& command = recorded_commands_[next_recorded_command_++];
+    bus_.inject(command.channel, command.bytes.data(), static_cast<unsigned int>(command.bytes.size()));
+  }
+}
+
 // The wall-clock bookkeeping of one run(): where pacing counts from, the window the real-time
 // factor is measured over, and when the clock and the viewer last went out.
 struct Simulator::RunClocks {
@@ -315,6 +328,7 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
     if (!drawFrameIfDue(frame, clocks)) break;
     while (bus_.handleTimeout(0) > 0) {
     }
+    if (started_) injectDueCommands();
     const auto now = WallClock::now();
     if (repace_) {  // a new pace counts from now, not from the start of the run
       clocks.pace_origin = now;

@@ -10,6 +10,7 @@
 #include <netinet/in.h>
 #include <linux/filter.h>
 #include <sys/socket.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -132,8 +133,10 @@ Bus::Bus(std::string url) : url_(std::move(url)) {
 Bus::~Bus() {
   if (print_stats_) {
     // One write, so that the three processes' lines do not interleave on a shared terminal.
+    const std::string received =
+        receiver_ ? " of " + std::to_string(receiver_->datagrams()) + " datagrams received" : std::string();
     const std::string line = std::string("aula-bus: ") + program_invocation_short_name + " handled " +
-                             std::to_string(handled_) + " messages on " + url_ + "\n";
+                             std::to_string(handled_) + " messages" + received + " on " + url_ + "\n";
     std::cerr.write(line.data(), static_cast<std::streamsize>(line.size())).flush();
   }
 }
@@ -178,9 +181,16 @@ int Bus::flush() {
 
 int Bus::getFileno() { return receiver_ ? receiver_->fd() : lcm_->getFileno(); }
 
-void Bus::dispatch(const LcmMessage& message) {
-  lcm_t* lcm = dispatcher_->getUnderlyingLCM();
-  lcm_recv_buf_t buffer{const_cast<uint8_t*>(message.data), message.size, receiver_->receivedUtime(), lcm};
+void Bus::inject(const std::string& channel, const void* data, unsigned int size) {
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  dispatch(LcmMessage{channel.c_str(), static_cast<const uint8_t*>(data), size},
+           int64_t{now.tv_sec} * 1000000 + now.tv_nsec / 1000);
+}
+
+void Bus::dispatch(const LcmMessage& message, int64_t received_utime) {
+  lcm_t* lcm = subscriptions().getUnderlyingLCM();
+  lcm_recv_buf_t buffer{const_cast<uint8_t*>(message.data), message.size, received_utime, lcm};
   // What LCM's udpm provider does with a message: count it into each subscription's queue, then
   // call the handlers.
   if (lcm_try_enqueue_message(lcm, message.channel) != 0) lcm_dispatch_handlers(lcm, &buffer, message.channel);
@@ -195,7 +205,7 @@ int Bus::handle() {
   }
   const auto message = receiver_->next(-1);
   if (!message) return -1;
-  dispatch(*message);
+  dispatch(*message, receiver_->receivedUtime());
   return 0;
 }
 
@@ -207,7 +217,7 @@ int Bus::handleTimeout(int timeout_ms) {
   }
   const auto message = receiver_->next(timeout_ms);
   if (!message) return 0;
-  dispatch(*message);
+  dispatch(*message, receiver_->receivedUtime());
   return 1;
 }
 

@@ -1,6 +1,7 @@
 #include "aula/lcm/log_replay.hpp"
 
 #include <aula/config/config.hpp>
+#include <aula/sim_clock_t.hpp>
 
 #include <cerrno>
 #include <cstring>
@@ -67,6 +68,26 @@ bool replayLog(lcmbus::Bus& bus, const std::string& path, const std::function<bo
     event = log->readNextEvent();
   }
   return false;
+}
+
+std::vector<RecordedMessage> recordedMessagesOfType(const std::string& path, int64_t type_hash) {
+  const auto log = openLog(path);
+  std::vector<RecordedMessage> found;
+  int64_t tick_us = 0;
+  for (const lcm::LogEvent* event = firstEvent(*log, path); event != nullptr; event = log->readNextEvent()) {
+    const auto* bytes = static_cast<const uint8_t*>(event->data);
+    aula::sim_clock_t tick;
+    if (event->channel == kClockChannel && tick.decode(event->data, 0, static_cast<int>(event->datalen)) >= 0) {
+      tick_us = tick.utime;
+    }
+    if (event->datalen < 8) continue;
+    uint64_t hash = 0;
+    for (int i = 0; i < 8; ++i) hash = (hash << 8) | bytes[i];
+    if (static_cast<int64_t>(hash) == type_hash) {
+      found.push_back({tick_us, event->channel, std::vector<uint8_t>(bytes, bytes + event->datalen)});
+    }
+  }
+  return found;
 }
 
 }  // namespace aula::lcmbus

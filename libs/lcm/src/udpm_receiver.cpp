@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
 
 namespace aula::lcmbus {
 namespace {
@@ -27,6 +28,7 @@ constexpr std::size_t kShortHeader = 8;       // magic, sequence number
 constexpr std::size_t kLongHeader = 20;       // magic, sequence, size, offset, fragment no, count
 constexpr std::size_t kMaxChannel = 63;       // LCM_MAX_CHANNEL_NAME_LENGTH
 constexpr uint32_t kMaxMessage = 1u << 28;    // LCM_MAX_MESSAGE_SIZE
+constexpr int kMinReceiveBuffer = 2 * 1024 * 1024;
 
 uint32_t be32(const uint8_t* at) {
   return (uint32_t{at[0]} << 24) | (uint32_t{at[1]} << 16) | (uint32_t{at[2]} << 8) | uint32_t{at[3]};
@@ -157,7 +159,8 @@ std::optional<LcmMessage> LcmDatagramAssembler::addFragment(const uint8_t* datag
   return LcmMessage{completed_.channel.c_str(), completed_.data.data(), static_cast<uint32_t>(completed_.data.size())};
 }
 
-UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& initial_channels) : datagram_(65536) {
+UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& initial_channels) : batch_(kBatch) {
+  for (Datagram& d : batch_) d.bytes.resize(65536);  // the largest UDP datagram
   const std::string where = "LCM bus udpm://" + url.group + ":" + std::to_string(url.port);
   fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd_ < 0) throw BusError(where + ": cannot open a UDP socket: " + std::strerror(errno));
@@ -166,9 +169,13 @@ UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& init
     if (setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes) != 0) {
       throw BusError(where + ": SO_REUSEADDR: " + std::strerror(errno));
     }
-    if (url.recv_buf_size > 0) {
-      // Capped by the kernel at net.core.rmem_max, as for LCM's own socket.
-      setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &url.recv_buf_size, sizeof url.recv_buf_size);
+    // LCM's receive thread drains its socket as datagrams come; this socket is read only when
+    // its process handles messages, so the kernel's queue must hold a burst: at least 2 MB
+    // (a long message's fragments, a referee's second of poses). Capped by the kernel at
+    // net.core.rmem_max, as for LCM's own socket, unless the process may force it (root).
+    const int buffer_bytes = std::max(url.recv_buf_size, kMinReceiveBuffer);
+    if (setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &buffer_bytes, sizeof buffer_bytes) != 0) {
+      setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
     }
     // The filter before the bind: nothing unwanted is ever queued.
     attachFilter(fd_, channelFilter(initial_channels), where);
@@ -210,26 +217,45 @@ std::optional<LcmMessage> UdpmReceiver::next(int timeout_ms) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::milliseconds(std::max(timeout_ms, 0));
   for (;;) {
-    sockaddr_in from{};
-    socklen_t from_size = sizeof from;
-    // Blocking only when told to wait for ever; otherwise poll bounds the wait.
-    const ssize_t size = recvfrom(fd_, datagram_.data(), datagram_.size(), timeout_ms < 0 ? 0 : MSG_DONTWAIT,
-                                  reinterpret_cast<sockaddr*>(&from), &from_size);
-    if (size >= 0) {
-      const uint64_t sender = (uint64_t{ntohl(from.sin_addr.s_addr)} << 16) | ntohs(from.sin_port);
-      if (auto message = assembler_.add(datagram_.data(), static_cast<std::size_t>(size), sender)) {
+    while (next_datagram_ < datagrams_read_) {
+      const Datagram& d = batch_[next_datagram_++];
+      const uint64_t sender = (uint64_t{ntohl(d.from.sin_addr.s_addr)} << 16) | ntohs(d.from.sin_port);
+      if (auto message = assembler_.add(d.bytes.data(), d.size, sender)) {
         received_utime_ = wallUtime();
         return message;
-      }
-      continue;  // a fragment, or something malformed: read on
+      }  // else a fragment, or something malformed: read on
     }
-    if (errno == EINTR) return std::nullopt;
-    if (errno != EAGAIN && errno != EWOULDBLOCK) throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+    // Everything already queued, in one system call; waiting for the first datagram only when
+    // told to wait for ever (otherwise poll bounds the wait).
+    const int read = readBatch(timeout_ms < 0 ? MSG_WAITFORONE : MSG_DONTWAIT);
+    if (read > 0) continue;
+    if (read < 0 && errno == EINTR) return std::nullopt;
+    if (read < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
+      throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+    }
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (timeout_ms == 0 || left <= 0) return std::nullopt;
     pollfd readable{fd_, POLLIN, 0};
     if (poll(&readable, 1, static_cast<int>(left)) <= 0) return std::nullopt;
   }
+}
+
+int UdpmReceiver::readBatch(int flags) {
+  mmsghdr headers[kBatch]{};
+  iovec buffers[kBatch]{};
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    buffers[i] = iovec{batch_[i].bytes.data(), batch_[i].bytes.size()};
+    headers[i].msg_hdr.msg_iov = &buffers[i];
+    headers[i].msg_hdr.msg_iovlen = 1;
+    headers[i].msg_hdr.msg_name = &batch_[i].from;
+    headers[i].msg_hdr.msg_namelen = sizeof batch_[i].from;
+  }
+  const int read = recvmmsg(fd_, headers, kBatch, flags, nullptr);
+  datagrams_read_ = std::max(read, 0);
+  datagrams_ += datagrams_read_;
+  next_datagram_ = 0;
+  for (int i = 0; i < read; ++i) batch_[i].size = headers[i].msg_len;
+  return read;
 }
 
 }  // namespace aula::lcmbus

@@ -121,15 +121,20 @@ class Bus {
   // The same, waiting at most `timeout_ms` (0: only what is already queued): 1 when a message was
   // handed over, 0 when none came in time, -1 on an error.
   int handleTimeout(int timeout_ms);
+  // Hands `data` to this process's own subscriptions on `channel` as if it had come in (nothing
+  // is sent): a simulator driven by recorded commands (aula-sim --commands).
+  void inject(const std::string& channel, const void* data, unsigned int size);
   // Messages handled so far (only the subscribed ones reach the process).
   long long handled() const { return handled_; }
   // The descriptor that becomes readable when a message waits (for select, poll, QSocketNotifier).
+  // On udpm:// one read takes every datagram waiting, so once it fires call handleTimeout(0)
+  // until it returns 0.
   int getFileno();
 
  private:
   lcm::LCM& subscriptions() { return dispatcher_ ? *dispatcher_ : *lcm_; }
   std::vector<uint8_t>& holdSlot(const std::string& channel);
-  void dispatch(const LcmMessage& message);
+  void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
   void receive(const std::string& channel);
 

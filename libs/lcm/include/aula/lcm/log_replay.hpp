@@ -12,6 +12,8 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
+#include <cstdint>
 
 namespace aula::lcmbus {
 
@@ -36,5 +38,16 @@ aula::run_record_t readRunRecord(const std::string& path);
 // no simulator. Returns true when the log ended before `done()` held.
 bool replayLog(lcmbus::Bus& bus, const std::string& path, const std::function<bool()>& done,
                const std::function<void()>& after_each);
+
+// A recorded message, with the sim time of the last SIM_CLOCK tick before it in the log: the
+// tick it answered (in lockstep a component's command answers the tick that ran its period).
+struct RecordedMessage {
+  int64_t tick_us = 0;
+  std::string channel;
+  std::vector<uint8_t> bytes;
+};
+// The log's messages of one LCM type (`type_hash`: its fingerprint, e.g. motors_t::getHash(),
+// which begins every encoding), in order. Throws config::ConfigError as requireLog.
+std::vector<RecordedMessage> recordedMessagesOfType(const std::string& path, int64_t type_hash);
 
 }  // namespace aula::lcmbus

@@ -9,6 +9,8 @@
 // datagram, one wake-up. What it yields is handed to LCM's own dispatch (lcmbus::Bus), so the
 // subscriptions, their decoding and their queues stay LCM's.
 
+#include <netinet/in.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -72,25 +74,41 @@ class UdpmReceiver {
   UdpmReceiver(const UdpmReceiver&) = delete;
   UdpmReceiver& operator=(const UdpmReceiver&) = delete;
 
-  // Readable when a datagram waits (poll, QSocketNotifier).
+  // Readable when a datagram waits in the kernel (poll, QSocketNotifier). Datagrams are read in
+  // batches: once it fires, take messages with next(0) until there is none.
   int fd() const { return fd_; }
   // The kernel socket filter (channelFilter): only these channels' short messages are queued.
   void receiveOnly(const std::set<std::string>& channels);
   // No filter: every channel (a subscription by pattern).
   void receiveAll();
 
-  // The next complete message. `timeout_ms` < 0 waits for one, 0 takes only what is queued, > 0
-  // waits that long at most. Nothing when none came (or a signal interrupted the wait).
+  // The next complete message: first from the batch already read, else from what the kernel
+  // holds (up to kBatch datagrams in one recvmmsg). `timeout_ms` < 0 waits for one, 0 takes only
+  // what is queued, > 0 waits that long at most. Nothing when none came (or a signal interrupted
+  // the wait).
   std::optional<LcmMessage> next(int timeout_ms);
   // Wall time (microseconds since the epoch) at which the last message's last datagram was read:
   // LCM's recv_utime.
   int64_t receivedUtime() const { return received_utime_; }
+  // Datagrams read so far (each short message is one; a long one, one per fragment).
+  long long datagrams() const { return datagrams_; }
 
  private:
+  static constexpr std::size_t kBatch = 16;
+  struct Datagram {
+    std::vector<uint8_t> bytes;
+    sockaddr_in from{};
+    std::size_t size = 0;
+  };
+  int readBatch(int flags);  // recvmmsg into batch_: how many, or -1 with errno
+
   int fd_ = -1;
-  std::vector<uint8_t> datagram_;
+  std::vector<Datagram> batch_;
+  int datagrams_read_ = 0;  // in batch_
+  int next_datagram_ = 0;   // the first not yet taken
   LcmDatagramAssembler assembler_;
   int64_t received_utime_ = 0;
+  long long datagrams_ = 0;
 };
 
 }  // namespace aula::lcmbus
