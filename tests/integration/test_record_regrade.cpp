@@ -6,13 +6,16 @@
 #include <aula/lcm/log_replay.hpp>
 #include <aula/process/child_process.hpp>
 
+#include <aula/pose3d_t.hpp>
 #include <aula/sim_clock_t.hpp>
+#include <aula/lcm/bus.hpp>
 #include <lcm/lcm-cpp.hpp>
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <map>
+#include <cmath>
 #include <random>
 
 using namespace std::chrono_literals;
@@ -93,6 +96,54 @@ TEST(RecordRegrade, VacuumReportIsByteIdentical) {
   EXPECT_EQ(record.world, "vacuum.world");
   EXPECT_NE(std::find(record.settings.begin(), record.settings.end(), "Vacuum.Referee.Duration=60"), record.settings.end());
   expectLcmLogplayerPlays(g.log_path);
+}
+
+// aula-sim --commands: a lone simulator, driven by the motors commands the log recorded (each at
+// the tick it answered), makes the run's motions: every recorded pose again, exactly (the
+// baseline of bench/exercise_overhead.sh).
+TEST(RecordRegrade, ALoneSimulatorDrivenByTheRecordedCommandsRetracesTheRun) {
+  const Graded g = recordAndRegrade("commands", {"vacuum", "--algorithm=reference", "--seed=2", "--Vacuum.Referee.Duration=20"});
+  std::map<int64_t, aula::pose3d_t> recorded;
+  {
+    lcm::LogFile log(g.log_path, "r");
+    for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
+      aula::pose3d_t pose;
+      if (e->channel == "ROOMBA_POSE" && pose.decode(e->data, 0, e->datalen) > 0 && pose.utime <= 20'000'000) {
+        recorded[pose.utime] = pose;
+      }
+    }
+  }
+  ASSERT_GE(recorded.size(), 1001u);
+  const std::string url = aula::testing::privateLcmUrl();
+  auto bus = aula::lcmbus::openBus(url);  // listening before the simulator starts
+  std::map<int64_t, aula::pose3d_t> retraced;
+  struct Collect {
+    std::map<int64_t, aula::pose3d_t>* poses;
+    void on(const lcm::ReceiveBuffer*, const std::string&, const aula::pose3d_t* m) { (*poses)[m->utime] = *m; }
+  } collect{&retraced};
+  bus->subscribe("ROOMBA_POSE", &Collect::on, &collect);
+  const std::string out = g.log_path + ".sim.txt";
+  aula::process::ChildProcess sim({AULA_SIM_PATH, std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", "--rtf=20",
+                                   "--duration=20", "--seed=2", "--lcm-url=" + url, "--commands=" + g.log_path},
+                                  out, out);
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  std::optional<int> code;
+  while (!(code = sim.poll()) && std::chrono::steady_clock::now() < deadline) bus->handleTimeout(20);
+  while (bus->handleTimeout(50) > 0) {
+  }
+  EXPECT_EQ(code.value_or(-1), 0) << readFile(out);
+  int compared = 0, moved_m = 0;
+  for (const auto& [utime, pose] : recorded) {
+    const auto again = retraced.find(utime);
+    ASSERT_NE(again, retraced.end()) << "no pose at " << utime << " us";
+    EXPECT_EQ(again->second.x, pose.x) << utime;
+    EXPECT_EQ(again->second.y, pose.y) << utime;
+    EXPECT_EQ(again->second.yaw, pose.yaw) << utime;
+    ++compared;
+    moved_m = std::max(moved_m, static_cast<int>(std::hypot(pose.x - recorded.begin()->second.x, pose.y - recorded.begin()->second.y)));
+  }
+  EXPECT_EQ(compared, static_cast<int>(recorded.size()));
+  EXPECT_GE(moved_m, 1) << "the recorded robot went somewhere, so the commands mattered";
 }
 
 TEST(RecordRegrade, TeleTaxiReportIsByteIdentical) {
