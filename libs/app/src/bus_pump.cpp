@@ -48,7 +48,7 @@ bool runHeadless(lcmbus::Bus& bus, const std::function<bool()>& done,
     if (ready > 0 && (watched[1].revents & POLLIN) != 0 && stop_signals.stopRequested()) return true;
     // done() before every message: one handled after the end would change the grade (a
     // regraded log stops right there).
-    // Then everything already queued (a tick period's messages come as one burst), one read each.
+    // Then everything already queued (a tick period's messages come as one burst, read together).
     if (ready > 0 && (watched[0].revents & POLLIN) != 0) {
       while (!done() && bus.handleTimeout(0) > 0) {
       }

@@ -10,7 +10,6 @@
 #include <netinet/in.h>
 #include <linux/filter.h>
 #include <sys/socket.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -182,10 +181,7 @@ int Bus::flush() {
 int Bus::getFileno() { return receiver_ ? receiver_->fd() : lcm_->getFileno(); }
 
 void Bus::inject(const std::string& channel, const void* data, unsigned int size) {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  dispatch(LcmMessage{channel.c_str(), static_cast<const uint8_t*>(data), size},
-           int64_t{now.tv_sec} * 1000000 + now.tv_nsec / 1000);
+  dispatch(LcmMessage{channel.c_str(), static_cast<const uint8_t*>(data), size}, wallUtime());
 }
 
 void Bus::dispatch(const LcmMessage& message, int64_t received_utime) {

@@ -43,12 +43,6 @@ long channelLength(const uint8_t* at, std::size_t size) {
   return length == 0 ? -1 : length;
 }
 
-int64_t wallUtime() {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  return int64_t{now.tv_sec} * 1000000 + now.tv_nsec / 1000;
-}
-
 void attachFilter(int fd, const std::vector<SocketFilterInstruction>& program, const std::string& what) {
   static_assert(sizeof(SocketFilterInstruction) == sizeof(sock_filter), "the kernel's sock_filter layout");
   std::vector<sock_filter> kernel_program(program.size());
@@ -64,6 +58,12 @@ void attachFilter(int fd, const std::vector<SocketFilterInstruction>& program, c
 }  // namespace
 
 bool isUdpmUrl(const std::string& url) { return url.rfind(kUdpmScheme, 0) == 0; }
+
+int64_t wallUtime() {
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  return int64_t{now.tv_sec} * 1000000 + now.tv_nsec / 1000;
+}
 
 UdpmUrl parseUdpmUrl(const std::string& url) {
   UdpmUrl parsed;

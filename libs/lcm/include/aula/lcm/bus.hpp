@@ -65,14 +65,14 @@ struct LcmMessage;
 //
 // Every channel stays on the run's one URL (udpm://GROUP:PORT), where every stock LCM tool sees it:
 // messages go out through LCM's own publish. On udpm:// they come in through a UdpmReceiver on the
-// thread that calls handle(), not LCM's receive thread (one recvmsg and one wake-up per message
-// instead of two wake-ups and five system calls), and its socket carries a kernel socket filter
-// (channelFilter) that passes only the channels the process subscribes to: the others are dropped
-// before they are queued. Order is kept: what passes arrives as it was sent, on the one socket.
-// The subscriptions are LCM's own (lcm::LCM::subscribe on an in-process lcm::LCM), and each
-// message is handed to them by LCM's own dispatch (lcm_dispatch_handlers, what LCM's udpm
-// provider calls), so handlers, decoding and queues are LCM's. Other URLs (memq://, file://) are
-// one plain lcm::LCM.
+// thread that calls handle(), not LCM's receive thread (one wake-up and one recvmmsg for every
+// datagram waiting, instead of two wake-ups and five system calls per message). Its socket
+// carries a kernel socket filter (channelFilter) that passes only the channels the process
+// subscribes to: the others are dropped before they are queued. Order is kept: what passes
+// arrives as it was sent, on the one socket. The subscriptions are LCM's own (lcm::LCM::subscribe
+// on an in-process lcm::LCM), and each message is handed to them by LCM's own dispatch
+// (lcm_dispatch_handlers, what LCM's udpm provider calls), so handlers, decoding and queues are
+// LCM's. Other URLs (memq://, file://) are one plain lcm::LCM.
 class Bus {
  public:
   // Opens the bus or throws BusError with the reason and the fix (e.g. no multicast route).

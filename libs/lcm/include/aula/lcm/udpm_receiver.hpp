@@ -5,9 +5,9 @@
 // costs that thread a select and a recvmsg, a write to a notify pipe, and the application a poll,
 // a read of the pipe and two thread wake-ups. In a lockstep run those wake-ups sit on the
 // critical path of every control period. UdpmReceiver reads the same multicast socket (bound and
-// joined as LCM binds and joins it) on the thread that handles the messages: one recvmsg per
-// datagram, one wake-up. What it yields is handed to LCM's own dispatch (lcmbus::Bus), so the
-// subscriptions, their decoding and their queues stay LCM's.
+// joined as LCM binds and joins it) on the thread that handles the messages: every waiting
+// datagram in one recvmmsg, one wake-up. What it yields is handed to LCM's own dispatch
+// (lcmbus::Bus), so the subscriptions, their decoding and their queues stay LCM's.
 
 #include <netinet/in.h>
 
@@ -17,8 +17,6 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <string_view>
-#include <utility>
 #include <vector>
 
 namespace aula::lcmbus {
@@ -30,6 +28,8 @@ struct UdpmUrl {
   int recv_buf_size = 0;  // bytes; 0 = the kernel's default
 };
 bool isUdpmUrl(const std::string& url);
+// Wall time now, in microseconds since the epoch: LCM's recv_utime.
+int64_t wallUtime();
 // Throws config::ConfigError naming the URL and what is wrong with it.
 UdpmUrl parseUdpmUrl(const std::string& url);
 
