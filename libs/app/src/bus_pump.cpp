@@ -49,7 +49,9 @@ bool runHeadless(lcmbus::Bus& bus, const std::function<bool()>& done,
     // done() before every message: one handled after the end would change the grade (a
     // regraded log stops right there).
     // Then everything already queued (a tick period's messages come as one burst, read together).
-    if (ready > 0 && (watched[0].revents & POLLIN) != 0) {
+    // On a timeout too: what does not wake this process (Bus::deferWakeUps) is read at least
+    // every housekeeping period (a re-sent tick whose ack was lost, a clock that went back).
+    if (ready == 0 || (watched[0].revents & POLLIN) != 0) {
       while (!done() && bus.handleTimeout(0) > 0) {
       }
     }

@@ -12,6 +12,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -73,11 +74,12 @@ std::string withFreePort(const std::string& url) {
   return head.substr(0, colon + 1) + std::to_string(freeUdpPort()) + (query == std::string::npos ? "" : url.substr(query));
 }
 
-std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels) {
+std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels, const std::optional<TickGate>& gate) {
   // Offsets from the start of the UDP header, where a UDP socket's filter starts reading.
   constexpr uint32_t kMagicOffset = 8;         // after the 8-byte UDP header
   constexpr uint32_t kChannelOffset = 8 + 8;   // after LCM's short header: magic, sequence number
   constexpr uint32_t kShortMagic = 0x4c433032;  // "LC02"
+  constexpr uint32_t kTypeHashSize = 8;         // before every LCM message's first field
   constexpr uint32_t kAccept = 0xffffffff, kDrop = 0;
   auto op = [](uint16_t code, uint32_t value, uint8_t jt = 0, uint8_t jf = 0) {
     return SocketFilterInstruction{code, jt, jf, value};
@@ -92,20 +94,35 @@ std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& 
     // a mismatch jumps past this channel's block to the next.
     const std::string bytes = channel + '\0';
     std::vector<SocketFilterInstruction> block;
+    std::vector<std::size_t> name_compares;
     for (std::size_t at = 0; at < bytes.size();) {
       const std::size_t width = bytes.size() - at >= 4 ? 4 : bytes.size() - at >= 2 ? 2 : 1;
       uint32_t value = 0;
       for (std::size_t i = 0; i < width; ++i) value = (value << 8) | static_cast<unsigned char>(bytes[at + i]);
       const uint16_t size = width == 4 ? BPF_W : width == 2 ? BPF_H : BPF_B;
       block.push_back(op(BPF_LD | size | BPF_ABS, kChannelOffset + static_cast<uint32_t>(at)));
+      name_compares.push_back(block.size());
       block.push_back(op(BPF_JMP | BPF_JEQ | BPF_K, value));
       at += width;
     }
-    block.push_back(op(BPF_RET | BPF_K, kAccept));
-    if (block.size() > 255) throw BusError("channel name too long for the socket filter: " + channel);
-    for (std::size_t i = 0; i < block.size(); ++i) {
-      if (block[i].code == (BPF_JMP | BPF_JEQ | BPF_K)) block[i].jump_if_false = static_cast<uint8_t>(block.size() - i - 1);
+    if (gate && gate->channel == channel) {
+      // The message's first field, a big-endian int64 (sim_clock_t's utime), compared as two
+      // unsigned words: high above the gate's, or equal and low at or above.
+      const uint32_t high_offset = kChannelOffset + static_cast<uint32_t>(bytes.size()) + kTypeHashSize;
+      const auto from = static_cast<uint64_t>(std::max<int64_t>(gate->from_utime_us, 0));
+      const auto high = static_cast<uint32_t>(from >> 32), low = static_cast<uint32_t>(from);
+      block.push_back(op(BPF_LD | BPF_W | BPF_ABS, high_offset));
+      block.push_back(op(BPF_JMP | BPF_JGT | BPF_K, high, 3, 0));  // -> accept
+      block.push_back(op(BPF_JMP | BPF_JEQ | BPF_K, high, 0, 3));  // -> drop
+      block.push_back(op(BPF_LD | BPF_W | BPF_ABS, high_offset + 4));
+      block.push_back(op(BPF_JMP | BPF_JGE | BPF_K, low, 0, 1));   // -> accept, else drop
+      block.push_back(op(BPF_RET | BPF_K, kAccept));
+      block.push_back(op(BPF_RET | BPF_K, kDrop));
+    } else {
+      block.push_back(op(BPF_RET | BPF_K, kAccept));
     }
+    if (block.size() > 255) throw BusError("channel name too long for the socket filter: " + channel);
+    for (const std::size_t i : name_compares) block[i].jump_if_false = static_cast<uint8_t>(block.size() - i - 1);
     program.insert(program.end(), block.begin(), block.end());
   }
   program.push_back(op(BPF_RET | BPF_K, kDrop));
@@ -220,11 +237,38 @@ int Bus::handleTimeout(int timeout_ms) {
 void Bus::receive(const std::string& channel) {
   if (!receiver_ || receive_all_) return;
   if (isPattern(channel)) {
-    receive_all_ = true;
+    receive_all_ = true;  // a recorder: every channel wakes it, nothing is deferred
     receiver_->receiveAll();
+    receiver_->wakeOnAll();
     return;
   }
-  if (channels_.insert(channel).second) receiver_->receiveOnly(channels_);
+  if (channels_.insert(channel).second) updateFilters();
+}
+
+void Bus::deferWakeUps(const std::string& channel) {
+  if (!receiver_ || receive_all_ || isPattern(channel)) return;
+  channels_.insert(channel);
+  if (deferred_.insert(channel).second) updateFilters();
+}
+
+void Bus::wakeForTicksFrom(int64_t utime_us) {
+  if (utime_us == wake_for_ticks_from_us_) return;
+  wake_for_ticks_from_us_ = utime_us;
+  if (receiver_ && !receive_all_) updateDoorbell();
+}
+
+void Bus::updateFilters() {
+  receiver_->receiveOnly(channels_);
+  updateDoorbell();
+}
+
+void Bus::updateDoorbell() {
+  if (deferred_.empty()) return;
+  std::set<std::string> waking;
+  for (const std::string& channel : channels_) {
+    if (deferred_.count(channel) == 0) waking.insert(channel);
+  }
+  receiver_->wakeOnly(channelFilter(waking, TickGate{kClockChannel, wake_for_ticks_from_us_}));
 }
 
 std::unique_ptr<Bus> openBus(const std::string& url) { return std::make_unique<Bus>(url); }

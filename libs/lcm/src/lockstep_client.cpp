@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <iostream>
 #include <utility>
 
@@ -16,6 +17,7 @@ namespace aula::lcmbus {
 namespace {
 constexpr auto kRegisterResend = std::chrono::milliseconds(100);
 constexpr auto kForeignLogEvery = std::chrono::seconds(10);
+constexpr int64_t kLongestNapUs = 1000000;
 }
 
 LockstepClient::LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us,
@@ -118,6 +120,9 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& chann
 
   if (tick->utime >= next_due_us_) {
     next_due_us_ = (tick->utime / period_us_ + 1) * period_us_;
+    // Ticks before the next due one need not wake this process (when its bus defers anything);
+    // at most kLongestNap of sim time, so that what waits unread stays far below the socket's queue.
+    bus_.wakeForTicksFrom(std::min(next_due_us_, tick->utime + kLongestNapUs));
     if (on_tick_) on_tick_(tick->utime);
     if (registered_ && lockstep_) sendAck(tick->seq, tick->utime);
   }

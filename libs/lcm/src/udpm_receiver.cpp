@@ -159,14 +159,18 @@ std::optional<LcmMessage> LcmDatagramAssembler::addFragment(const uint8_t* datag
   return LcmMessage{completed_.channel.c_str(), completed_.data.data(), static_cast<uint32_t>(completed_.data.size())};
 }
 
-UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& initial_channels) : batch_(kBatch) {
-  for (Datagram& d : batch_) d.bytes.resize(65536);  // the largest UDP datagram
+namespace {
+
+// A socket on the URL's group and port, bound and joined as LCM binds and joins its own
+// (SO_REUSEADDR, so every process of the run binds the port), with `filter` attached before the
+// bind: nothing unwanted is ever queued. Throws BusError.
+int openGroupSocket(const UdpmUrl& url, const std::vector<SocketFilterInstruction>& filter) {
   const std::string where = "LCM bus udpm://" + url.group + ":" + std::to_string(url.port);
-  fd_ = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
-  if (fd_ < 0) throw BusError(where + ": cannot open a UDP socket: " + std::strerror(errno));
+  const int fd = socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) throw BusError(where + ": cannot open a UDP socket: " + std::strerror(errno));
   try {
     const int yes = 1;
-    if (setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes) != 0) {
+    if (setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes) != 0) {
       throw BusError(where + ": SO_REUSEADDR: " + std::strerror(errno));
     }
     // LCM's receive thread drains its socket as datagrams come; this socket is read only when
@@ -174,32 +178,52 @@ UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& init
     // (a long message's fragments, a referee's second of poses). Capped by the kernel at
     // net.core.rmem_max, as for LCM's own socket, unless the process may force it (root).
     const int buffer_bytes = std::max(url.recv_buf_size, kMinReceiveBuffer);
-    if (setsockopt(fd_, SOL_SOCKET, SO_RCVBUFFORCE, &buffer_bytes, sizeof buffer_bytes) != 0) {
-      setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
+    if (setsockopt(fd, SOL_SOCKET, SO_RCVBUFFORCE, &buffer_bytes, sizeof buffer_bytes) != 0) {
+      setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &buffer_bytes, sizeof buffer_bytes);
     }
-    // The filter before the bind: nothing unwanted is ever queued.
-    attachFilter(fd_, channelFilter(initial_channels), where);
+    attachFilter(fd, filter, where);
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_addr.s_addr = htonl(INADDR_ANY);
     address.sin_port = htons(static_cast<uint16_t>(url.port));
-    if (bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+    if (bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
       throw BusError(where + ": cannot bind the port: " + std::strerror(errno));
     }
     ip_mreq membership{};
     inet_pton(AF_INET, url.group.c_str(), &membership.imr_multiaddr);
     membership.imr_interface.s_addr = htonl(INADDR_ANY);
-    if (setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0) {
+    if (setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0) {
       throw BusError(where + ": cannot join the multicast group: " + std::strerror(errno));
     }
   } catch (...) {
-    close(fd_);
+    close(fd);
     throw;
   }
+  return fd;
+}
+
+// LCM's sequence numbers count up per sender and wrap around.
+bool before(uint32_t sequence, uint32_t other) { return static_cast<int32_t>(sequence - other) < 0; }
+
+uint64_t senderOf(const sockaddr_in& from) {
+  return (uint64_t{ntohl(from.sin_addr.s_addr)} << 16) | ntohs(from.sin_port);
+}
+
+// How long a doorbell's datagram is waited for on the data socket before it counts as lost
+// there (its queue overflowed): the two copies are queued microseconds apart.
+constexpr int kDoorbellGraceMs = 50;
+
+}  // namespace
+
+UdpmReceiver::UdpmReceiver(const UdpmUrl& url, const std::set<std::string>& initial_channels)
+    : url_(url), batch_(kBatch) {
+  for (Datagram& d : batch_) d.bytes.resize(65536);  // the largest UDP datagram
+  fd_ = openGroupSocket(url, channelFilter(initial_channels));
 }
 
 UdpmReceiver::~UdpmReceiver() {
   if (fd_ >= 0) close(fd_);
+  wakeOnAll();
 }
 
 void UdpmReceiver::receiveOnly(const std::set<std::string>& channels) {
@@ -213,30 +237,107 @@ void UdpmReceiver::receiveAll() {
   }
 }
 
+void UdpmReceiver::wakeOnly(const std::vector<SocketFilterInstruction>& doorbell_filter) {
+  if (doorbell_fd_ >= 0) {
+    attachFilter(doorbell_fd_, doorbell_filter, "the doorbell");
+  } else {
+    doorbell_fd_ = openGroupSocket(url_, doorbell_filter);
+  }
+}
+
+void UdpmReceiver::wakeOnAll() {
+  if (doorbell_fd_ >= 0) close(doorbell_fd_);
+  doorbell_fd_ = -1;
+  rung_.clear();
+  last_read_.clear();
+}
+
 std::optional<LcmMessage> UdpmReceiver::next(int timeout_ms) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::milliseconds(std::max(timeout_ms, 0));
   for (;;) {
     while (next_datagram_ < datagrams_read_) {
       const Datagram& d = batch_[next_datagram_++];
-      const uint64_t sender = (uint64_t{ntohl(d.from.sin_addr.s_addr)} << 16) | ntohs(d.from.sin_port);
+      const uint64_t sender = senderOf(d.from);
+      if (doorbell_fd_ >= 0 && d.size >= 8) {
+        const uint32_t sequence = be32(d.bytes.data() + 4);
+        last_read_[sender] = sequence;
+        const auto rang = rung_.find(sender);
+        if (rang != rung_.end() && !before(sequence, rang->second)) rung_.erase(rang);
+      }
       if (auto message = assembler_.add(d.bytes.data(), d.size, sender)) {
         received_utime_ = wallUtime();
         return message;
       }  // else a fragment, or something malformed: read on
     }
-    // Everything already queued, in one system call; waiting for the first datagram only when
-    // told to wait for ever (otherwise poll bounds the wait).
-    const int read = readBatch(timeout_ms < 0 ? MSG_WAITFORONE : MSG_DONTWAIT);
-    if (read > 0) continue;
-    if (read < 0 && errno == EINTR) return std::nullopt;
-    if (read < 0 && errno != EAGAIN && errno != EWOULDBLOCK) {
-      throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+    if (doorbell_fd_ >= 0 && doorbell_may_hold_more_) readDoorbell();
+    if (!rung_.empty()) {
+      // The doorbell rang for a datagram the data socket has not given yet: it is on its way.
+      const int read = readBatch(MSG_DONTWAIT);
+      if (read > 0) continue;
+      if (read < 0 && errno == EINTR) return std::nullopt;
+      checkRead(read);
+      pollfd data{fd_, POLLIN, 0};
+      if (poll(&data, 1, kDoorbellGraceMs) == 0) rung_.clear();  // lost on the data socket: go on
+      continue;
     }
+    if (timeout_ms < 0 && doorbell_fd_ < 0) {
+      // Wait for the first datagram and take every one waiting, in one system call.
+      const int read = readBatch(MSG_WAITFORONE);
+      if (read > 0) continue;
+      if (read < 0 && errno == EINTR) return std::nullopt;
+      checkRead(read);
+      continue;
+    }
+    if (timeout_ms == 0 && data_may_hold_more_) {
+      const int read = readBatch(MSG_DONTWAIT);
+      if (read > 0) continue;
+      if (read < 0 && errno == EINTR) return std::nullopt;
+      checkRead(read);
+    }
+    // Nothing more is waiting (as far as the last reads tell): the next look reads again.
+    data_may_hold_more_ = doorbell_may_hold_more_ = true;
+    if (timeout_ms == 0) return std::nullopt;
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    if (timeout_ms == 0 || left <= 0) return std::nullopt;
-    pollfd readable{fd_, POLLIN, 0};
-    if (poll(&readable, 1, static_cast<int>(left)) <= 0) return std::nullopt;
+    if (timeout_ms > 0 && left <= 0) return std::nullopt;
+    pollfd readable{fd(), POLLIN, 0};
+    if (poll(&readable, 1, timeout_ms < 0 ? -1 : static_cast<int>(left)) <= 0) return std::nullopt;
+    if (doorbell_fd_ >= 0) continue;  // the doorbell is read first, then the data up to it
+    const int read = readBatch(MSG_DONTWAIT);
+    if (read < 0 && errno == EINTR) return std::nullopt;
+    checkRead(read);
+  }
+}
+
+void UdpmReceiver::checkRead(int read) {
+  if (read < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
+    throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+  }
+}
+
+void UdpmReceiver::readDoorbell() {
+  // Only each datagram's sender and LCM header (magic, sequence number) matter: the rest of it
+  // is cut off (and dropped by the kernel).
+  uint8_t headers_read[kBatch][8]{};
+  sockaddr_in from[kBatch]{};
+  mmsghdr headers[kBatch]{};
+  iovec buffers[kBatch]{};
+  for (std::size_t i = 0; i < kBatch; ++i) {
+    buffers[i] = iovec{headers_read[i], sizeof headers_read[i]};
+    headers[i].msg_hdr.msg_iov = &buffers[i];
+    headers[i].msg_hdr.msg_iovlen = 1;
+    headers[i].msg_hdr.msg_name = &from[i];
+    headers[i].msg_hdr.msg_namelen = sizeof from[i];
+  }
+  const int read = recvmmsg(doorbell_fd_, headers, kBatch, MSG_DONTWAIT, nullptr);
+  checkRead(read);
+  doorbell_may_hold_more_ = read == static_cast<int>(kBatch);
+  for (int i = 0; i < read; ++i) {
+    if (headers[i].msg_len < 8) continue;
+    const uint64_t sender = senderOf(from[i]);
+    const uint32_t sequence = be32(headers_read[i] + 4);
+    const auto read_already = last_read_.find(sender);
+    if (read_already == last_read_.end() || before(read_already->second, sequence)) rung_[sender] = sequence;
   }
 }
 
@@ -251,6 +352,7 @@ int UdpmReceiver::readBatch(int flags) {
     headers[i].msg_hdr.msg_namelen = sizeof batch_[i].from;
   }
   const int read = recvmmsg(fd_, headers, kBatch, flags, nullptr);
+  data_may_hold_more_ = read == static_cast<int>(kBatch);
   datagrams_read_ = std::max(read, 0);
   datagrams_ += datagrams_read_;
   next_datagram_ = 0;

@@ -20,8 +20,10 @@ RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const worl
   rubric_ = rubricReport(cfg, *names.referee_settings, p + ".Referee.Rubric");
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
   robot_name_ = robot.name;
-  bus.subscribe(world::channelOf(robot, "pose3d"), &RefereeNode::onPoseMessage, this);
-  bus.subscribe(world::channelOf(robot, "bumper"), &RefereeNode::onBumperMessage, this);
+  pose_channel_ = world::channelOf(robot, "pose3d");
+  bumper_channel_ = world::channelOf(robot, "bumper");
+  bus.subscribe(pose_channel_, &RefereeNode::onPoseMessage, this);
+  bus.subscribe(bumper_channel_, &RefereeNode::onBumperMessage, this);
   bus.subscribe(cfg.getString(p + ".Episode.Channel"), &RefereeNode::onEpisodeMessage, this);
   status_ = std::make_unique<StatusSender>(bus, cfg.getString(p + ".RefereeStatus.Channel"), exercise);
   const double period_s = cfg.getDouble(p + ".Referee.Period");
@@ -37,6 +39,11 @@ RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const worl
 }
 
 RefereeNode::~RefereeNode() = default;
+
+void RefereeNode::deferSensorWakeUps(lcmbus::Bus& bus) const {
+  bus.deferWakeUps(pose_channel_);
+  bus.deferWakeUps(bumper_channel_);
+}
 
 void RefereeNode::onPoseMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
   if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded

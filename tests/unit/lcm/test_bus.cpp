@@ -5,6 +5,7 @@
 
 #include <aula/config/config.hpp>
 #include <aula/motors_t.hpp>
+#include <aula/sim_clock_t.hpp>
 
 #include <gtest/gtest.h>
 
@@ -69,24 +70,33 @@ std::string channelOf(const char* payload, ssize_t size) {
   return std::string(payload + 8, strnlen(payload + 8, static_cast<std::size_t>(size - 8)));
 }
 
-TEST(Bus, TheChannelFilterPassesExactlyItsChannels) {
-  const int port = privatePort();
+// A plain socket on this test's group and port with `program` attached: what the kernel lets
+// through it (-1 if it cannot be set up).
+int filteredGroupSocket(const std::vector<aula::lcmbus::SocketFilterInstruction>& program) {
   const int raw = socket(AF_INET, SOCK_DGRAM, 0);
-  ASSERT_GE(raw, 0);
+  if (raw < 0) return -1;
   const int yes = 1;
   setsockopt(raw, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   sockaddr_in address{};
   address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<uint16_t>(port));
-  ASSERT_EQ(bind(raw, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  address.sin_port = htons(static_cast<uint16_t>(privatePort()));
   ip_mreq membership{};
   inet_pton(AF_INET, "239.255.76.67", &membership.imr_multiaddr);
-  ASSERT_EQ(setsockopt(raw, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership), 0);
-  const auto program = aula::lcmbus::channelFilter({"WANTED", "SIM_CLOCK"});
   std::vector<sock_filter> instructions;
   for (const auto& i : program) instructions.push_back(sock_filter{i.code, i.jump_if_true, i.jump_if_false, i.value});
   sock_fprog filter{static_cast<unsigned short>(instructions.size()), instructions.data()};
-  ASSERT_EQ(setsockopt(raw, SOL_SOCKET, SO_ATTACH_FILTER, &filter, sizeof filter), 0) << strerror(errno);
+  if (bind(raw, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+      setsockopt(raw, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0 ||
+      setsockopt(raw, SOL_SOCKET, SO_ATTACH_FILTER, &filter, sizeof filter) != 0) {
+    close(raw);
+    return -1;
+  }
+  return raw;
+}
+
+TEST(Bus, TheChannelFilterPassesExactlyItsChannels) {
+  const int raw = filteredGroupSocket(aula::lcmbus::channelFilter({"WANTED", "SIM_CLOCK"}));
+  ASSERT_GE(raw, 0);
 
   lcm::LCM publisher(privateUrl());
   aula::motors_t command{};
@@ -100,6 +110,40 @@ TEST(Bus, TheChannelFilterPassesExactlyItsChannels) {
   for (ssize_t size; (size = recv(raw, payload, sizeof payload, 0)) > 0;) passed.push_back(channelOf(payload, size));
   close(raw);
   EXPECT_EQ(passed, (std::vector<std::string>{"WANTED", "SIM_CLOCK"}));
+}
+
+TEST(Bus, TheTickGatePassesOnlyTicksFromItsTime) {
+  // A gate past 2^32 us: both halves of the 64-bit utime count.
+  const int64_t gate_us = 5000000000;
+  const int raw = filteredGroupSocket(aula::lcmbus::channelFilter({"OTHER", "SIM_CLOCK"}, aula::lcmbus::TickGate{"SIM_CLOCK", gate_us}));
+  ASSERT_GE(raw, 0);
+
+  lcm::LCM publisher(privateUrl());
+  for (const int64_t utime : {int64_t{1000}, int64_t{1} << 32, gate_us - 1, gate_us, gate_us + 1, int64_t{9000000000},
+                              (int64_t{1} << 33) - 1}) {
+    aula::sim_clock_t tick{};
+    tick.utime = utime;
+    publisher.publish("SIM_CLOCK", &tick);
+  }
+  aula::motors_t command{};
+  publisher.publish("OTHER", &command);
+  std::vector<std::string> passed;
+  char payload[2000];
+  timeval wait{0, 300000};
+  setsockopt(raw, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+  for (ssize_t size; (size = recv(raw, payload, sizeof payload, 0)) > 0;) {
+    const std::string channel = channelOf(payload, size);
+    if (channel != "SIM_CLOCK") {
+      passed.push_back(channel);
+      continue;
+    }
+    aula::sim_clock_t tick{};
+    const int header = 8 + static_cast<int>(channel.size()) + 1;
+    ASSERT_GE(tick.decode(payload + header, 0, static_cast<int>(size) - header), 0);
+    passed.push_back(std::to_string(tick.utime));
+  }
+  close(raw);
+  EXPECT_EQ(passed, (std::vector<std::string>{"5000000000", "5000000001", "9000000000", "8589934591", "OTHER"}));
 }
 
 TEST(Bus, AMalformedUrlIsAConfigError) {

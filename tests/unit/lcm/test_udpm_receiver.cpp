@@ -1,16 +1,22 @@
 // lcmbus::UdpmReceiver and LcmDatagramAssembler: LCM's wire format read on the caller's thread,
-// from a stock lcm::LCM publisher (short messages and fragmented long ones), and Bus::hold.
+// from a stock lcm::LCM publisher (short messages and fragmented long ones), Bus::hold, and the
+// doorbell (Bus::deferWakeUps, Bus::wakeForTicksFrom).
 #include <aula/lcm/bus.hpp>
 #include <aula/lcm/udpm_receiver.hpp>
 
 #include <aula/config/config.hpp>
 #include <aula/motors_t.hpp>
+#include <aula/sim_clock_t.hpp>
+
+#include <poll.h>
 
 #include <gtest/gtest.h>
 
 #include "../../free_udp_port.hpp"
 
+#include <chrono>
 #include <cstring>
+#include <thread>
 #include <string>
 #include <vector>
 
@@ -140,6 +146,70 @@ TEST(UdpmReceiver, HeldPublicationsGoOutOnFlushInOrder) {
   publisher.publish("B", "4", 1);  // after the flush, straight out again
   ASSERT_EQ(subscriber.handleTimeout(1000), 1);
   EXPECT_EQ(collect.seen.back(), "B:4");
+}
+
+bool readableWithin(int fd, int wall_ms) {
+  pollfd readable{fd, POLLIN, 0};
+  return poll(&readable, 1, wall_ms) > 0;
+}
+
+void publishTick(aula::lcmbus::Bus& bus, int64_t utime) {
+  aula::sim_clock_t tick{};
+  tick.utime = utime;
+  bus.publish(aula::lcmbus::kClockChannel, &tick);
+}
+
+struct Log {
+  std::vector<std::string> seen;
+  void raw(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    seen.push_back(channel + ":" + std::string(static_cast<const char*>(buffer->data), buffer->data_size));
+  }
+  void tick(const lcm::ReceiveBuffer*, const std::string& channel, const aula::sim_clock_t* msg) {
+    seen.push_back(channel + ":" + std::to_string(msg->utime));
+  }
+};
+
+TEST(UdpmReceiver, DeferredChannelsWaitInOrderUntilADueTickWakesTheProcess) {
+  aula::lcmbus::Bus simulator(privateUrl());
+  aula::lcmbus::Bus referee(privateUrl());
+  Log log;
+  referee.subscribe("POSE", &Log::raw, &log);
+  referee.subscribe("EPISODE", &Log::raw, &log);
+  referee.subscribe(aula::lcmbus::kClockChannel, &Log::tick, &log);
+  referee.deferWakeUps("POSE");
+  referee.wakeForTicksFrom(2000000);
+
+  simulator.publish("POSE", "1", 1);
+  simulator.publish("POSE", "2", 1);
+  publishTick(simulator, 1000000);
+  EXPECT_FALSE(readableWithin(referee.getFileno(), 300)) << "poses and a tick before 2 s do not wake the referee";
+  EXPECT_TRUE(log.seen.empty());
+  simulator.publish("POSE", "3", 1);
+  publishTick(simulator, 2000000);
+  ASSERT_TRUE(readableWithin(referee.getFileno(), 1000)) << "the due tick wakes it";
+  while (referee.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(log.seen, (std::vector<std::string>{"POSE:1", "POSE:2", "SIM_CLOCK:1000000", "POSE:3", "SIM_CLOCK:2000000"}))
+      << "everything, in the order it was sent";
+  EXPECT_FALSE(readableWithin(referee.getFileno(), 100)) << "nothing left to wake it";
+
+  // A channel that is not deferred wakes it at once, and brings what waited before it.
+  simulator.publish("POSE", "4", 1);
+  simulator.publish("EPISODE", "e", 1);
+  ASSERT_TRUE(readableWithin(referee.getFileno(), 1000));
+  while (referee.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(log.seen.size(), 7u);
+  EXPECT_EQ(log.seen[5], "POSE:4");
+  EXPECT_EQ(log.seen[6], "EPISODE:e");
+
+  // A wait with a timeout reads what is deferred when it times out, as a referee's housekeeping does.
+  simulator.publish("POSE", "5", 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  while (referee.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(log.seen.back(), "POSE:5");
+  EXPECT_EQ(referee.handled(), 8);
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 // `--picture=FILE.png` writes the referee's picture of the run (drawn headless with OpenCV, for
 // the teacher's grading report) at the same moment as the report.
 //
-// Node needs finished(), endedEarly(), abort(reason), poll(), leave(), summary(), report(),
+// Node needs finished(), endedEarly(), abort(reason), poll(), leave(), deferSensorWakeUps(bus), summary(), report(),
 // writePicture(path), setOnFinished(hook);
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
@@ -81,6 +81,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
     return node.endedEarly() || !node.finished() ? 1 : 0;
   }
   if (setup.headless) {
+    node.deferSensorWakeUps(*setup.bus);  // woken at its own ticks, not at every one
     const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);
     node.leave();
     readControl();

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -56,7 +57,14 @@ struct SocketFilterInstruction {
   uint8_t jump_if_false;
   uint32_t value;
 };
-std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels);
+// With a gate, messages on the gate's channel pass only when their first field (an int64 after
+// LCM's type hash: sim_clock_t's utime) is at least `from_utime_us`: ticks before then are dropped.
+struct TickGate {
+  std::string channel;
+  int64_t from_utime_us = 0;
+};
+std::vector<SocketFilterInstruction> channelFilter(const std::set<std::string>& channels,
+                                                   const std::optional<TickGate>& gate = std::nullopt);
 
 class UdpmReceiver;
 struct LcmMessage;
@@ -72,7 +80,9 @@ struct LcmMessage;
 // arrives as it was sent, on the one socket. The subscriptions are LCM's own (lcm::LCM::subscribe
 // on an in-process lcm::LCM), and each message is handed to them by LCM's own dispatch
 // (lcm_dispatch_handlers, what LCM's udpm provider calls), so handlers, decoding and queues are
-// LCM's. Other URLs (memq://, file://) are one plain lcm::LCM.
+// LCM's. A process that defers channels (deferWakeUps) is woken by a second socket on the URL
+// that passes only what is not deferred (docs/architecture.md, "The bus"). Other URLs (memq://,
+// file://) are one plain lcm::LCM.
 class Bus {
  public:
   // Opens the bus or throws BusError with the reason and the fix (e.g. no multicast route).
@@ -124,6 +134,14 @@ class Bus {
   // Hands `data` to this process's own subscriptions on `channel` as if it had come in (nothing
   // is sent): a simulator driven by recorded commands (aula-sim --commands).
   void inject(const std::string& channel, const void* data, unsigned int size);
+  // Messages on `channel` no longer wake this process by themselves: they wait in the kernel, in
+  // order, until something else wakes it, and are then handled first (a referee grades a second
+  // of poses at its own tick, instead of waking at every tick). On udpm:// only; what wakes the
+  // process is then read on a second socket of the URL (the "doorbell", UdpmReceiver::wakeOnly).
+  void deferWakeUps(const std::string& channel);
+  // And clock ticks (kClockChannel) before `utime_us` do not wake it either: a lockstep client
+  // that is not due until then (LockstepClient). Only once some channel is deferred.
+  void wakeForTicksFrom(int64_t utime_us);
   // Messages handled so far (only the subscribed ones reach the process).
   long long handled() const { return handled_; }
   // The descriptor that becomes readable when a message waits (for select, poll, QSocketNotifier).
@@ -137,6 +155,8 @@ class Bus {
   void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
   void receive(const std::string& channel);
+  void updateFilters();   // the receiver's socket filters: channels_, then the doorbell's
+  void updateDoorbell();  // what wakes the process: channels_ but deferred_, ticks from the gate
 
   std::string url_;
   std::unique_ptr<lcm::LCM> lcm_;         // the URL's LCM: publishes (and receives, off udpm://)
@@ -147,6 +167,8 @@ class Bus {
   std::vector<std::pair<std::string, std::vector<uint8_t>>> held_;  // reused: the first held_count_ wait
   std::size_t held_count_ = 0;
   std::set<std::string> channels_;  // let through the filter
+  std::set<std::string> deferred_;  // never wake the process (deferWakeUps)
+  int64_t wake_for_ticks_from_us_ = 0;
   long long handled_ = 0;
   bool print_stats_ = false;  // $AULA_BUS_STATS set: say how many messages were handled, at the end
 };

@@ -21,6 +21,8 @@
 
 namespace aula::lcmbus {
 
+struct SocketFilterInstruction;  // bus.hpp
+
 // A udpm:// URL: udpm://GROUP:PORT?ttl=N&recv_buf_size=BYTES (LCM's defaults for what it omits).
 struct UdpmUrl {
   std::string group = "239.255.76.67";
@@ -74,18 +76,30 @@ class UdpmReceiver {
   UdpmReceiver(const UdpmReceiver&) = delete;
   UdpmReceiver& operator=(const UdpmReceiver&) = delete;
 
-  // Readable when a datagram waits in the kernel (poll, QSocketNotifier). Datagrams are read in
+  // Readable when a message that should wake the process waits (poll, QSocketNotifier): on the
+  // doorbell socket once there is one (wakeOnly), else on the data socket. Datagrams are read in
   // batches: once it fires, take messages with next(0) until there is none.
-  int fd() const { return fd_; }
+  int fd() const { return doorbell_fd_ >= 0 ? doorbell_fd_ : fd_; }
   // The kernel socket filter (channelFilter): only these channels' short messages are queued.
   void receiveOnly(const std::set<std::string>& channels);
   // No filter: every channel (a subscription by pattern).
   void receiveAll();
+  // What wakes the process: a second socket on the same group and port (the doorbell) with this
+  // filter, which must pass a subset of what the data socket passes. The data socket is then
+  // read only when the doorbell rings (or a wait times out): what the doorbell does not pass
+  // waits there, in order, without waking anyone. The doorbell's datagrams are only a signal:
+  // every message is read from the data socket, at least up to each one that rang (matched by
+  // sender and LCM sequence number, so a doorbell that is a microsecond ahead is waited for).
+  void wakeOnly(const std::vector<SocketFilterInstruction>& doorbell_filter);
+  // Every datagram wakes the process again (no doorbell).
+  void wakeOnAll();
 
   // The next complete message: first from the batch already read, else from what the kernel
   // holds (up to kBatch datagrams in one recvmmsg). `timeout_ms` < 0 waits for one, 0 takes only
-  // what is queued, > 0 waits that long at most. Nothing when none came (or a signal interrupted
-  // the wait).
+  // what is queued, > 0 waits that long at most (a wait ends when fd() becomes readable). Nothing
+  // when none came (or a signal interrupted the wait). Calls with 0 until it gives nothing read
+  // each socket once more only when its last read filled a whole batch: the end of a burst costs
+  // no empty read.
   std::optional<LcmMessage> next(int timeout_ms);
   // Wall time (microseconds since the epoch) at which the last message's last datagram was read:
   // LCM's recv_utime.
@@ -101,8 +115,18 @@ class UdpmReceiver {
     std::size_t size = 0;
   };
   int readBatch(int flags);  // recvmmsg into batch_: how many, or -1 with errno
+  void readDoorbell();       // what rang: into rung_
+  void checkRead(int read);  // throws on a receive error other than "nothing waiting"
 
+  UdpmUrl url_;
   int fd_ = -1;
+  int doorbell_fd_ = -1;
+  // Per sender (address and port), the LCM sequence number of the last datagram that rang the
+  // doorbell and has not been read from the data socket yet.
+  std::map<uint64_t, uint32_t> rung_;
+  std::map<uint64_t, uint32_t> last_read_;  // per sender, the last sequence number read from the data socket
+  bool data_may_hold_more_ = true;      // its last read filled the batch (or a pass begins)
+  bool doorbell_may_hold_more_ = true;
   std::vector<Datagram> batch_;
   int datagrams_read_ = 0;  // in batch_
   int next_datagram_ = 0;   // the first not yet taken

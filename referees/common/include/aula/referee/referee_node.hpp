@@ -44,6 +44,9 @@ class RefereeNode {
   std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
   void writePicture(const std::string& png_path) const;                        // --picture
   void poll() { clock_->poll(); }
+  // Headless: the simulator's truth (pose, bumper) no longer wakes this process at every tick; it
+  // is read, in order, when the referee's own tick (or anything else) wakes it (Bus::deferWakeUps).
+  void deferSensorWakeUps(lcmbus::Bus& bus) const;
   void leave() { clock_->leave(); }
   int64_t simTimeUs() const { return clock_->simTimeUs(); }
   int episode() const { return outcome_.generation(); }  // counts hot reloads
@@ -86,6 +89,7 @@ class RefereeNode {
   void announce(int64_t utime);  // the end once to the window, the status to the component
 
   std::string exercise_, robot_name_;
+  std::string pose_channel_, bumper_channel_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   Report rubric_;                          // the report's "rubric": the preset and its numbers
   int64_t episode_from_utime_ = -1;        // truth at or before this sim time is the last episode's
