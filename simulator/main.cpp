@@ -113,10 +113,11 @@ int runSimulator(int argc, char** argv) {
   // --status-fd=N: the launcher's pipe, told why the simulator ended a run early.
   const int status_fd = cl.flag("status-fd") ? static_cast<int>(cl.optionDouble("status-fd", -1)) : -1;
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
-  // listen for one (while the world loads, then up to kListenForOthers in all). A simulator ticks
-  // at least every 100 ms of wall time while it waits for clients or is paused, and faster when it
-  // runs (but for one paced below 0.15x real time): 150 ms hears it, and every run's start pays it.
-  constexpr auto kListenForOthers = std::chrono::milliseconds(150);
+  // ask (SIM_HELLO, sent as the simulator is built) and listen for one (while the world loads,
+  // then up to kListenForOthers in all). A running simulator answers at once with its tick: its
+  // loop handles the bus at every tick, and waits at most 20 ms at a time when it waits for
+  // clients, is paused or paced; it also ticks at least every 100 ms of wall time by itself.
+  constexpr auto kListenForOthers = std::chrono::milliseconds(60);
   const auto listen_until = std::chrono::steady_clock::now() + kListenForOthers;
   sim::Simulator simulator(std::move(spec), options, *bus, key);
   if (cl.flag("commands")) {

@@ -78,8 +78,20 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
     : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key),
       instance_(randomInstance()),
       graded_(key.has_value()) {
-  // The clock channel first: a simulator already running on this bus is heard while the world loads.
+  // The clock channel first, then the question: a simulator already running on this bus answers
+  // while the world loads.
   subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kHelloChannel, &Simulator::onHello, this));
+  aula::sim_clock_t hello;
+  hello.utime = 0;
+  hello.seq = -1;
+  hello.lockstep = options_.lockstep;
+  hello.seed = options_.seed;
+  hello.world = spec_.name;
+  hello.world_sha256 = spec_.sha256;
+  hello.num_clients = 0;
+  hello.instance = instance_;
+  bus_.publish(lcmbus::kHelloChannel, &hello);
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
   context_.bus = &bus_;
   context_.physics = physics_.get();
@@ -140,6 +152,17 @@ std::optional<aula::sim_clock_t> Simulator::otherSimulatorUntil(WallClock::time_
   }
   probing_ = false;
   return first_foreign_;
+}
+
+// Another simulator about to start asks whether one runs here: the current tick answers it (at
+// most every 10 ms of wall time, so that a flood of questions is not a flood of ticks). Our own
+// question comes back to us too.
+void Simulator::onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello) {
+  if (hello->instance == instance_ || probing_) return;
+  const auto now = WallClock::now();
+  if (now - last_hello_answer_ < std::chrono::milliseconds(10)) return;
+  last_hello_answer_ = now;
+  publishClock();
 }
 
 // Our own ticks come back to us (one read each); another instance's are another simulator's, or forged.
@@ -225,7 +248,6 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
 
 void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
                            const aula::lockstep_register_t* msg) {
-  if (probing_) return;  // a client re-sends its registration until listed
   if (msg->leave) {
     if (lockstep_.leave(msg->client)) log("lockstep client '" + msg->client + "' left");
     return;
@@ -239,9 +261,10 @@ void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
     log("lockstep client '" + msg->client + "' joined, period " +
         std::to_string(msg->period_us / 1000.0) + " ms");
     // The newcomer must see (and ack) the current tick before the world moves on; the
-    // re-published tick also tells it that it is listed.
+    // re-published tick also tells it that it is listed. While it listens for another simulator
+    // this one stays silent: its clients learn they are listed from its first tick.
     if (options_.lockstep && started_) lockstep_.tick(seq_, physics_->timeUs(), WallClock::now());
-    publishClock();
+    if (!probing_) publishClock();
   }
 }
 

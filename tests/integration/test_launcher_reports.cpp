@@ -2,8 +2,10 @@
 // leaves a report that says so (and no mark), Ctrl-C is exit 130, a headless run past its
 // wall-clock budget ends with the reason, and a graded run never goes on without a client that
 // stopped acking (the simulator ends it, and the report says which and for how long); outside
-// grading, the simulator waits for a stopped client as long as its process lives.
+// grading, the simulator waits for a stopped client as long as its process lives. A headless
+// run's three processes share one CPU (--cpu), or go where the kernel puts them (--cpu=any).
 #include <aula/process/child_process.hpp>
+#include <aula/process/cpu_affinity.hpp>
 
 #include "test_support.hpp"
 
@@ -11,7 +13,10 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <thread>
+
+#include <sched.h>
 
 namespace fs = std::filesystem;
 using aula::process::ChildProcess;
@@ -68,6 +73,41 @@ std::vector<std::string> slowRun(const std::string& report) {
 }
 
 }  // namespace
+
+// /proc/PID/status's Cpus_allowed_list: "1", "0-1"...
+std::string cpusAllowed(pid_t pid) {
+  std::smatch m;
+  const std::string status = readFile("/proc/" + std::to_string(pid) + "/status");
+  return std::regex_search(status, m, std::regex("Cpus_allowed_list:\\s*(\\S+)")) ? m[1].str() : "?";
+}
+
+TEST(LauncherReports, AHeadlessRunsProcessesShareOneCpu) {
+  const std::vector<int> allowed = aula::process::allowedCpus();
+  ASSERT_FALSE(allowed.empty());
+  const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
+  for (const std::string& choice : {std::to_string(allowed.back()), std::string("any")}) {
+    std::vector<std::string> argv = slowRun(report);
+    argv.push_back("--cpu=" + choice);
+    ChildProcess run(argv, out, out);
+    for (const char* program : {"aula-sim", "vacuum-cleaner", "vacuum-cleaner-referee"}) {
+      const pid_t child = waitForChild(run.pid(), program);
+      ASSERT_GT(child, 0) << program << " never started:\n" << readFile(out);
+      const std::string cpus = cpusAllowed(child);
+      if (choice == "any") {
+        EXPECT_EQ(cpus, cpusAllowed(getpid())) << program << ": --cpu=any leaves the processes where they may go";
+      } else {
+        EXPECT_EQ(cpus, choice) << program << " does not run on the one CPU asked for";
+      }
+    }
+    run.stop();
+  }
+  ChildProcess wrong({kAula, "run", "vacuum", "--headless", "--cpu=" + std::to_string(CPU_SETSIZE + 1)}, out, out);
+  EXPECT_EQ(wrong.wait(30s).value_or(-1), 2) << readFile(out);
+  EXPECT_NE(readFile(out).find("one of the CPUs this process may use (" + aula::process::cpuList(allowed) + ")"),
+            std::string::npos)
+      << readFile(out);
+  fs::remove_all(dir);
+}
 
 TEST(LauncherReports, AStaleReportIsRemovedEvenWhenTheRunNeverStarts) {
   const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";

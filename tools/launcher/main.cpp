@@ -39,6 +39,7 @@
 #include <aula/process/line_pipe.hpp>
 #include <aula/process/guarded_main.hpp>
 #include <aula/process/signal_watcher.hpp>
+#include <aula/process/cpu_affinity.hpp>
 #include <aula/sandbox/sandbox.hpp>
 
 #include <fcntl.h>
@@ -56,7 +57,8 @@ using aula::settings::Exercise;
 constexpr const char* kUsage =
     "usage: aula run EXERCISE [--headless [--sandbox]] [--world=FILE] [--algorithm=NAME] [--seed=N]\n"
     "                [--report=FILE.json] [--picture=FILE.png] [--record=FILE.lcmlog] [--lockstep] [--rtf=X]\n"
-    "                [--duration=SECONDS] [--timeout=WALL_SECONDS] [--lcm-url=URL] [--config=FILE.cfg] [--Key=value ...]\n"
+    "                [--duration=SECONDS] [--timeout=WALL_SECONDS] [--lcm-url=URL] [--cpu=N|any] [--config=FILE.cfg]\n"
+    "                [--Key=value ...]\n"
     "       aula config EXERCISE [--world=FILE] [--config=FILE.cfg] [--markdown] [--Key=value ...]\n"
     "       aula check-world FILE [--map=FILE.png]\n"
     "       aula new EXERCISE DIR\n"
@@ -78,6 +80,8 @@ constexpr const char* kUsage =
     "  --sandbox   run the component (the student's code) in bubblewrap: read-only files, no other\n"
     "              process in sight, IPv4 datagram sockets only (as `aula grade` does; docs/grading.md)\n"
     "  --headless  no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark\n"
+    "  --cpu       the CPU a headless run's processes share (default: the one `aula` starts on; they take\n"
+    "              turns in lockstep, and one CPU spares them cross-CPU wake-ups); any: the kernel places them\n"
     "  --timeout   a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); past it the\n"
     "              run ends, graded so far, and exits 1\n"
     "  --world     any SDF world: all three processes use it (see docs/worlds.md)\n"
@@ -605,6 +609,27 @@ std::unique_ptr<aula::launcher::RunRecorder> startRecording(const Exercise& ex, 
 
 }  // namespace
 
+// A headless run is one thread of control handed from process to process (lockstep): all of them
+// on one CPU, which they inherit from the launcher (aula/process/cpu_affinity.hpp). --cpu=N picks
+// it, --cpu=any leaves them to the kernel (the default with windows).
+void placeRun(const CommandLine& cl) {
+  const std::string choice = cl.flag("cpu") ? cl.option("cpu") : cl.flag("headless") ? "auto" : "any";
+  if (choice == "any") return;
+  const std::vector<int> allowed = aula::process::allowedCpus();
+  if (allowed.empty()) return;
+  int cpu = aula::process::currentCpu(allowed);
+  if (choice != "auto") {
+    char* end = nullptr;
+    const long asked = std::strtol(choice.c_str(), &end, 10);
+    if (choice.empty() || *end != '\0' || std::find(allowed.begin(), allowed.end(), asked) == allowed.end()) {
+      throw ConfigError("--cpu=" + choice + ": one of the CPUs this process may use (" +
+                        aula::process::cpuList(allowed) + "), auto or any");
+    }
+    cpu = static_cast<int>(asked);
+  }
+  aula::process::pinToCpu(cpu);
+}
+
 int main(int argc, char** argv) {
   return aula::process::guardedMain("aula", [&]() -> int {
     auto cl = CommandLine::parse(argc, argv, {});
@@ -613,7 +638,7 @@ int main(int argc, char** argv) {
     }
     if (!cl.positional.empty() && cl.positional[0] == "replay") return replay(argc, argv);
     cl.requireKnown({"headless", "sandbox", "world", "algorithm", "report", "picture", "record", "lockstep", "rtf", "seed",
-                     "duration", "timeout", "lcm-url", "config", "map", "markdown", "help"});
+                     "duration", "timeout", "lcm-url", "cpu", "config", "map", "markdown", "help"});
     if (cl.flag("help")) return usage(std::cout, 0);
     if (cl.positional.size() == 2 && cl.positional[0] == "check-world") return checkWorld(cl);
     if (cl.positional.size() == 2 && cl.positional[0] == "regrade") {
@@ -648,6 +673,7 @@ int main(int argc, char** argv) {
     if (cl.flag("sandbox") && aula::sandbox::bubblewrapPath().empty()) {
       throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
     }
+    placeRun(cl);
     // The referee's output files: a folder that is not there is refused before anything starts.
     for (const char* output : {"report", "picture"}) {
       if (cl.flag(output)) aula::config::requireWritableFolder(cl.option(output), std::string("--") + output + "=" + cl.option(output));

@@ -1,5 +1,7 @@
 #include "aula/process/child_process.hpp"
 
+#include "aula/process/cpu_affinity.hpp"
+
 #include <csignal>
 #include <cstring>
 #include <stdexcept>
@@ -22,7 +24,7 @@ int decode(int status) {
 }  // namespace
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
-                           const std::string& stderr_path, std::vector<int> pass_fds) {
+                           const std::string& stderr_path, std::vector<int> pass_fds, int cpu) {
   if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
   name_ = argv[0];
   // A pipe closed on exec tells the parent whether exec succeeded.
@@ -60,6 +62,7 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     for (size_t i = 0; i < pass_fds.size(); ++i) {
       if (pass_fds[i] >= 0) dup2(pass_fds[i], passedFd(i));
     }
+    if (cpu >= 0) runOnlyOn(cpu);  // a CPU it may not use: it runs where it may
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());
     args.push_back(nullptr);

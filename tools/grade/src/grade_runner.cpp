@@ -1,7 +1,9 @@
 #include "aula/grade/grade_runner.hpp"
 
 #include <aula/process/child_process.hpp>
+#include <aula/process/cpu_affinity.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -79,14 +81,19 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
 // One run under way: `aula run ...` as a child, with the run's wall-time limit.
 class RunInProgress {
  public:
-  explicit RunInProgress(const PlannedRun& run) : run_(run), started_(Clock::now()) {
+  // `cpu` >= 0: the run's processes run on that CPU only (given before the launcher starts, which
+  // keeps it: see aula/process/cpu_affinity.hpp).
+  RunInProgress(const PlannedRun& run, int cpu) : run_(run), started_(Clock::now()), cpu_(cpu) {
     fs::create_directories(fs::path(run.result_path).parent_path());
     // A report or picture from an earlier try must not pass for this one's.
     fs::remove(run.report_path);
     fs::remove(fs::path(run.result_path).replace_extension(".png"));
-    if (run.compile_error.empty()) child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path);
+    if (run.compile_error.empty()) {
+      child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path, std::vector<int>{}, cpu);
+    }
   }
 
+  int cpu() const { return cpu_; }
   // The result once the run is over (and written to its file).
   std::optional<nlohmann::ordered_json> poll() {
     std::optional<int> code;
@@ -109,6 +116,7 @@ class RunInProgress {
  private:
   const PlannedRun& run_;
   Clock::time_point started_;
+  int cpu_;
   std::unique_ptr<process::ChildProcess> child_;
 };
 
@@ -136,7 +144,7 @@ bool upToDate(const PlannedRun& run) {
 }
 
 nlohmann::ordered_json runOne(const PlannedRun& run) {
-  RunInProgress running(run);
+  RunInProgress running(run, -1);  // where the engine (Slurm) placed this task
   for (;;) {
     if (auto result = running.poll()) return *result;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -157,11 +165,25 @@ void runLocal(const Manifest& manifest, int jobs,
       pending.push_back(&run);
     }
   }
+  // Runs at once take different CPUs, as long as there are CPUs enough: each run's processes share
+  // one (they take turns), and two runs on one CPU would leave another idle.
+  const std::vector<int> cpus = process::allowedCpus();
+  std::vector<int> runs_on_cpu(cpus.size(), 0);
+  auto quietestCpu = [&]() -> int {
+    if (cpus.empty()) return -1;
+    const auto at = std::min_element(runs_on_cpu.begin(), runs_on_cpu.end()) - runs_on_cpu.begin();
+    ++runs_on_cpu[at];
+    return cpus[at];
+  };
+  auto release = [&](int cpu) {
+    const auto at = std::find(cpus.begin(), cpus.end(), cpu) - cpus.begin();
+    if (at < static_cast<long>(cpus.size())) --runs_on_cpu[at];
+  };
   std::vector<std::pair<const PlannedRun*, std::unique_ptr<RunInProgress>>> running;
   size_t next = 0;
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
-      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next]));
+      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next], quietestCpu()));
       ++next;
     }
     for (auto it = running.begin(); it != running.end();) {
@@ -173,6 +195,7 @@ void runLocal(const Manifest& manifest, int jobs,
       ++progress.done;
       if (!failureOf(*result).empty()) ++progress.failed;
       on_done(*it->first, *result, progress);
+      release(it->second->cpu());
       it = running.erase(it);
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

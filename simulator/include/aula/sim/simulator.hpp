@@ -86,8 +86,9 @@ class Simulator {
   // This process's instance id (random, 63 bits, never 0): every tick carries it.
   int64_t instance() const { return instance_; }
   // Before the first tick: listens on the clock channel until `until` (wall) for a tick of
-  // another instance, i.e. another simulator already running on this bus, and returns it.
-  // Nothing else is handled meanwhile (a register would make this one tick).
+  // another instance, i.e. another simulator already running on this bus (which answers the
+  // SIM_HELLO this one sent as it was built), and returns it. Meanwhile controls are ignored and
+  // registrations are taken in silence (this one ticks only once it knows it is alone).
   std::optional<aula::sim_clock_t> otherSimulatorUntil(std::chrono::steady_clock::time_point until);
   // Ticks of another instance heard on the clock channel (another simulator, or a forgery).
   long long foreignTicks() const { return foreign_ticks_; }
@@ -106,6 +107,7 @@ class Simulator {
   void onRegister(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* m);
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
+  void onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello);
   void publishClock();
   void resetWorld();
   // The steps of run(). startIfReady, holdWhilePausedOrWaiting and awaitLockstepAcks return true
@@ -145,6 +147,7 @@ class Simulator {
   bool step_pending_ = false;  // STEP while paused
   int64_t instance_ = 0;
   bool probing_ = false;       // otherSimulatorUntil: only the clock is heard
+  std::chrono::steady_clock::time_point last_hello_answer_{};
   std::vector<lcmbus::RecordedMessage> recorded_commands_;  // driveWith
   std::size_t next_recorded_command_ = 0;
   std::optional<aula::sim_clock_t> first_foreign_;

@@ -23,6 +23,9 @@ inline constexpr const char* kClockChannel = "SIM_CLOCK";
 inline constexpr const char* kControlChannel = "SIM_CONTROL";
 inline constexpr const char* kLockstepRegisterChannel = "SIM_LOCKSTEP_REGISTER";
 inline constexpr const char* kLockstepAckChannel = "SIM_LOCKSTEP_ACK";
+// A simulator about to start asks (a sim_clock_t of its own, seq -1, no clients) whether another
+// runs on the URL; a running one answers at once with its current SIM_CLOCK tick.
+inline constexpr const char* kHelloChannel = "SIM_HELLO";
 
 class BusError : public std::runtime_error {
  public:

@@ -17,10 +17,11 @@ class ChildProcess {
   // (empty: inherited; the same path twice: one file with both, in order). `pass_fds[i]` is
   // handed to the child as its descriptor kPassedFd + i (the launcher's private control pipe,
   // the run's key: passedFd(i) is the number to tell the child); nothing else of the parent's is
-  // inherited past exec beyond what lacks FD_CLOEXEC. Throws std::runtime_error when the program
-  // cannot be started.
+  // inherited past exec beyond what lacks FD_CLOEXEC. `cpu` >= 0: the child runs on that CPU only
+  // (cpu_affinity.hpp), set before it starts. Throws std::runtime_error when the program cannot
+  // be started.
   ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",
-               const std::string& stderr_path = "", std::vector<int> pass_fds = {});
+               const std::string& stderr_path = "", std::vector<int> pass_fds = {}, int cpu = -1);
   static constexpr int kPassedFd = 3;
   static constexpr int passedFd(size_t index) { return kPassedFd + static_cast<int>(index); }
   ~ChildProcess();  // stops the child if still running
