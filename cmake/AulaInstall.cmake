@@ -2,6 +2,7 @@
 #   bin/                     every program (aula, aula-sim, the components and referees, tools)
 #   lib/aula/algorithms/     the in-tree templates, built as plugins (--algorithm=student)
 #   lib/aula/libaula_world_sdf.so  the SDF reader, opened on a miss of the parsed-world cache
+#   lib/aula/libaula_sim_view.so   aula-sim --gui's 3D view, opened only with --gui
 #   include/aula/            the student API (plain-data devices, the plugin ABI, the three
 #                            *_algorithm.hpp and what they include), the proxies and the
 #                            generated LCM types
@@ -17,7 +18,7 @@ set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client aula-replay
 install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
         LIBRARY DESTINATION lib/aula/algorithms)
-install(TARGETS aula_world_sdf LIBRARY DESTINATION lib/aula)
+install(TARGETS aula_world_sdf aula_sim_view LIBRARY DESTINATION lib/aula)
 
 # The API a plugin compiles against.
 set(_src ${PROJECT_SOURCE_DIR})

@@ -1,56 +1,52 @@
 #include "sim_view.hpp"
 
-#include <dart/dynamics/BodyNode.hpp>
-#include <dart/dynamics/ShapeNode.hpp>
-#include <dart/dynamics/Skeleton.hpp>
-#include <dart/gui/osg/Viewer.hpp>
-#include <dart/gui/osg/WorldNode.hpp>
+#include <aula/config/config.hpp>
 
-#include <osgGA/TrackballManipulator>
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <string>
 
 namespace aula::sim {
 
-struct SimView::Impl {
-  ::osg::ref_ptr<dart::gui::osg::WorldNode> node;
-  ::osg::ref_ptr<dart::gui::osg::Viewer> viewer;
+// The view's code is a module (sim_view_osg.cpp): its functions, found once it is opened.
+struct SimView::Module {
+  void* (*open)(const dart::simulation::WorldPtr&, const Eigen::Vector3d&, double) = nullptr;
+  bool (*frame)(void*) = nullptr;
+  void (*capture)(void*, const std::string&) = nullptr;
+  void (*close)(void*) = nullptr;
 };
 
+namespace {
+
+template <class Function>
+void find(void* library, const char* name, const std::string& module, Function& function) {
+  function = reinterpret_cast<Function>(dlsym(library, name));
+  if (function == nullptr) throw config::ConfigError(module + " has no " + name);
+}
+
+}  // namespace
+
 SimView::SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m)
-    : impl_(std::make_unique<Impl>()) {
-  // Colours: buildings and furniture light grey, robots orange.
-  for (std::size_t i = 0; i < world->getNumSkeletons(); ++i) {
-    auto skeleton = world->getSkeleton(i);
-    const bool statics = skeleton->getName().rfind("statics", 0) == 0;
-    for (std::size_t b = 0; b < skeleton->getNumBodyNodes(); ++b) {
-      for (auto* node : skeleton->getBodyNode(b)->getShapeNodesWith<dart::dynamics::VisualAspect>()) {
-        node->getVisualAspect()->setColor(statics ? Eigen::Vector3d(0.75, 0.75, 0.78)
-                                                  : Eigen::Vector3d(0.95, 0.55, 0.1));
-      }
-    }
-  }
-  impl_->node = new dart::gui::osg::WorldNode(world);
-  impl_->node->simulate(false);
-  impl_->viewer = new dart::gui::osg::Viewer;
-  impl_->viewer->allowSimulation(false);
-  impl_->viewer->addWorldNode(impl_->node);
-  impl_->viewer->setUpViewInWindow(50, 50, 1024, 768);
-  impl_->viewer->getCameraManipulator()->setHomePosition(
-      ::osg::Vec3d(center_m.x(), center_m.y() - 0.9 * size_m, 0.8 * size_m),
-      ::osg::Vec3d(center_m.x(), center_m.y(), 0.0), ::osg::Vec3d(0, 0, 1));
-  impl_->viewer->setCameraManipulator(impl_->viewer->getCameraManipulator());
-  impl_->viewer->realize();
+    : module_(std::make_unique<Module>()) {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::string module = (self.parent_path().parent_path() / "lib" / "aula" / "libaula_sim_view.so").string();
+  void* library = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);  // kept open: OpenSceneGraph's globals live on
+  if (library == nullptr) throw config::ConfigError(std::string("--gui: cannot load the 3D view: ") + dlerror());
+  find(library, "aula_sim_view_open", module, module_->open);
+  find(library, "aula_sim_view_frame", module, module_->frame);
+  find(library, "aula_sim_view_capture", module, module_->capture);
+  find(library, "aula_sim_view_close", module, module_->close);
+  view_ = module_->open(world, center_m, size_m);
 }
 
-SimView::~SimView() = default;
-
-bool SimView::frame() {
-  if (impl_->viewer->done()) return false;
-  impl_->viewer->frame();
-  return !impl_->viewer->done();
+SimView::~SimView() {
+  if (view_ != nullptr) module_->close(view_);
 }
 
-}  // namespace aula::sim
+bool SimView::frame() { return module_->frame(view_); }
 
-namespace aula::sim {
-void SimView::captureNextFrame(const std::string& png_path) { impl_->viewer->captureScreen(png_path); }
+void SimView::captureNextFrame(const std::string& png_path) { module_->capture(view_, png_path); }
+
 }  // namespace aula::sim

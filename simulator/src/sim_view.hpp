@@ -1,6 +1,8 @@
 #pragma once
 // aula-sim --gui: a 3D view of the running world with DART's OpenSceneGraph viewer, like
-// Gazebo's client. The view only draws; the simulator keeps stepping the world itself.
+// Gazebo's client. The view only draws; the simulator keeps stepping the world itself. Its code
+// is the module lib/aula/libaula_sim_view.so, opened only here: a headless simulator never loads
+// OpenSceneGraph.
 
 #include <dart/simulation/World.hpp>
 
@@ -12,7 +14,8 @@ namespace aula::sim {
 
 class SimView {
  public:
-  // Opens a window looking at `center_m` from a distance fitting `size_m`.
+  // Opens a window looking at `center_m` from a distance fitting `size_m`. Throws
+  // config::ConfigError when the module cannot be loaded.
   SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m);
   ~SimView();
   SimView(const SimView&) = delete;
@@ -24,8 +27,9 @@ class SimView {
   void captureNextFrame(const std::string& png_path);
 
  private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
+  struct Module;
+  std::unique_ptr<Module> module_;
+  void* view_ = nullptr;
 };
 
 }  // namespace aula::sim

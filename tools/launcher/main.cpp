@@ -43,6 +43,7 @@
 #include <aula/sandbox/sandbox.hpp>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sstream>
 #include <unistd.h>
 
@@ -437,7 +438,7 @@ class RunSupervisor {
         if (const auto code = children_[i]->poll()) finished = onExit(i, *code) || finished;
       }
       if (finished) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      awaitEvent(signals);
     }
     stopAll();
     return result_;
@@ -505,6 +506,16 @@ class RunSupervisor {
       std::cerr << "aula: " << why.str() << "\n";
       endRun(why.str());
     }
+  }
+
+  // Sleeps until a child exits or a stop signal comes, or 20 ms pass (the wall budget, the
+  // simulator's status line): the end of a run is seen when it happens.
+  void awaitEvent(const aula::process::SignalWatcher& signals) {
+    std::vector<pollfd> watched{{signals.fd(), POLLIN, 0}};
+    for (const auto& child : children_) {
+      if (child->exitFd() >= 0 && !child->poll()) watched.push_back({child->exitFd(), POLLIN, 0});
+    }
+    ::poll(watched.data(), watched.size(), 20);
   }
 
   void readSimulatorStatus() {

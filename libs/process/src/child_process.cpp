@@ -8,6 +8,8 @@
 #include <thread>
 
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/syscall.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -72,6 +74,8 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     _exit(127);
   }
   close(status_pipe[1]);
+  // Readable once the child exits: waits end at that moment instead of at the next look.
+  exit_fd_ = static_cast<int>(syscall(SYS_pidfd_open, pid_, 0));
   int err = 0;
   const ssize_t n = read(status_pipe[0], &err, sizeof err);
   close(status_pipe[0]);
@@ -79,12 +83,15 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     int status = 0;
     waitpid(pid_, &status, 0);
     pid_ = -1;
+    if (exit_fd_ >= 0) close(exit_fd_);
+    exit_fd_ = -1;
     throw std::runtime_error("cannot start '" + name_ + "': " + std::strerror(err));
   }
 }
 
 ChildProcess::~ChildProcess() {
   if (pid_ > 0 && !exit_code_) stop();
+  if (exit_fd_ >= 0) close(exit_fd_);
 }
 
 std::optional<int> ChildProcess::poll() {
@@ -97,8 +104,14 @@ std::optional<int> ChildProcess::poll() {
 std::optional<int> ChildProcess::wait(std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (!poll()) {
-    if (std::chrono::steady_clock::now() >= deadline) return std::nullopt;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return std::nullopt;
+    if (exit_fd_ >= 0) {
+      pollfd exited{exit_fd_, POLLIN, 0};
+      ::poll(&exited, 1, static_cast<int>(left.count()) + 1);
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));  // a kernel without pidfds (before 5.3)
+    }
   }
   return exit_code_;
 }

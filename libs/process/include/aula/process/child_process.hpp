@@ -31,6 +31,9 @@ class ChildProcess {
   pid_t pid() const { return pid_; }
   const std::string& name() const { return name_; }
 
+  // Readable (poll) once the child has exited (a pidfd; -1 on a kernel without them): a
+  // supervisor sleeps until something happens instead of looking every few milliseconds.
+  int exitFd() const { return exit_fd_; }
   // Non-blocking: the exit code once finished (128 + signal when killed by a signal).
   std::optional<int> poll();
   // Waits up to `timeout`; nullopt if still running.
@@ -40,6 +43,7 @@ class ChildProcess {
 
  private:
   pid_t pid_ = -1;
+  int exit_fd_ = -1;
   std::string name_;
   std::optional<int> exit_code_;
 };
