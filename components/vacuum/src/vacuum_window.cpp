@@ -67,6 +67,7 @@ void VacuumWindow::onTick(int64_t utime) {
     plot_->clear();
     coverage_.reset();
     run_start_utime_ = last_sample_utime_ = -1;
+    poses_before_start_.clear();
     end_said_ = false;
   }
   const auto& p = component_.truePose();
@@ -76,13 +77,33 @@ void VacuumWindow::onTick(int64_t utime) {
   // The percentage counts from the first Run to the end of the referee's episode, on the
   // referee's own grid (free floor reachable from where the robot stands) and the same poses
   // in time, sampled once per sim second for the plot.
-  if (component_.startedUtime() < 0) return;
-  if (run_start_utime_ < 0) {
-    run_start_utime_ = component_.startedUtime();
-    coverage_ = std::make_unique<CoverageGrid>(map_image_, transform_, p.getX(), p.getY());
+  int64_t started_utime = component_.startedUtime();
+  if (started_utime < 0) {
+    // A replay (view-only): the algorithm never runs in this window; the referee's word (once
+    // per sim second) says when the recorded episode started, and the poses seen meanwhile wait.
+    const auto said = component_.refereeStatus().latest();
+    if (said && said->started && said->generation == component_.generation()) {
+      started_utime = said->utime - std::llround(said->elapsed_s * 1e6);
+    }
+  }
+  if (started_utime < 0) {
+    constexpr std::size_t kPosesBeforeStart = 2000;  // 40 s of poses at 50 Hz
+    poses_before_start_.push_back({p.utime(), p.getX(), p.getY()});
+    if (poses_before_start_.size() > kPosesBeforeStart) poses_before_start_.pop_front();
+    return;
   }
   const int64_t episode_us = static_cast<int64_t>(std::llround(component_.runDurationS() * 1e6));
-  if (p.utime() < run_start_utime_ || p.utime() - run_start_utime_ > episode_us) return;
+  auto inEpisode = [&](int64_t utime) { return utime >= run_start_utime_ && utime - run_start_utime_ <= episode_us; };
+  if (run_start_utime_ < 0) {
+    run_start_utime_ = started_utime;
+    const PoseSeen first = poses_before_start_.empty() ? PoseSeen{p.utime(), p.getX(), p.getY()} : poses_before_start_.front();
+    coverage_ = std::make_unique<CoverageGrid>(map_image_, transform_, first.x_m, first.y_m);
+    for (const PoseSeen& seen : poses_before_start_) {
+      if (inEpisode(seen.utime)) coverage_->markDisc(seen.x_m, seen.y_m, component_.robotRadiusM());
+    }
+    poses_before_start_.clear();
+  }
+  if (!inEpisode(p.utime())) return;
   coverage_->markDisc(p.getX(), p.getY(), component_.robotRadiusM());
   if (utime - last_sample_utime_ >= 1'000'000) {
     last_sample_utime_ = utime;

@@ -17,6 +17,7 @@
 #include <QMainWindow>
 #include <QTimer>
 
+#include <deque>
 #include <memory>
 #include <opencv2/core.hpp>
 
@@ -50,6 +51,12 @@ class VacuumWindow : public QMainWindow {
   geometry::MapTransform transform_;
   std::unique_ptr<CoverageGrid> coverage_;  // from the first Run
   int64_t run_start_utime_ = -1, last_sample_utime_ = -1;
+  // A replay's poses before the referee says when the episode started (at most kPosesBeforeStart).
+  struct PoseSeen {
+    int64_t utime;
+    double x_m, y_m;
+  };
+  std::deque<PoseSeen> poses_before_start_;
 };
 
 }  // namespace aula::vacuum

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # aula replay under Xvfb: a recorded vacuum run played back into the component and referee
 # windows at 100x. The referee window grades the replayed stream, and its report must equal the
-# live run's byte for byte (nothing lost on the way); a screenshot of the three windows is
-# taken at the end. Then what is not a recorded run is refused with exit 2.
+# live run's byte for byte (nothing lost on the way), and the component window counts the same
+# cleaning; a screenshot of the three windows is taken at the end. Then what is not a recorded run is refused with exit 2.
 # Usage: test_replay.sh BUILD_DIR
 set -euo pipefail
 build="$1"
@@ -24,6 +24,13 @@ xvfb-run -a -s "-screen 0 1600x1000x24" "$build/bin/aula" replay "$work/run.lcml
 [ -s "$work/replayed.json" ] || fail "the referee window wrote no report"
 cmp "$work/live.json" "$work/replayed.json" || { diff "$work/live.json" "$work/replayed.json"; fail "the replayed grade differs from the live one"; }
 if pgrep -f "$work/run.lcmlog" >/dev/null; then fail "processes left behind"; fi
+# The view-only component window counts the replayed cleaning too (the recorded episode's start,
+# from the referee's word), as the live window would have.
+report=$(sed -n 's/.*"coverage_percent": \([0-9.]*\).*/\1/p' "$work/live.json")
+counted=$(sed -n 's/.*this window counted \([0-9.]*\) %.*/\1/p' "$work/replay.txt")
+[ -n "$counted" ] || fail "the component window did not say what it counted"
+awk -v a="$counted" -v b="$report" 'BEGIN { exit !(a - b < 0.5 && b - a < 0.5 && b > 0.5) }' \
+  || fail "the replayed component window counted $counted %, the referee $report %"
 
 printf 'not a log\n' >"$work/text.lcmlog"
 set +e
@@ -32,4 +39,4 @@ code=$?
 set -e
 [ "$code" = 2 ] || fail "a text file: exit $code, expected 2"
 grep -q "not an LCM log" "$work/refused.txt" || fail "no reason given: $(cat "$work/refused.txt")"
-echo "replay: the replayed referee's report equals the live run's"
+echo "replay: the replayed referee's report equals the live run's; the component window counted $counted % ($report %)"
