@@ -3,7 +3,8 @@
 // wall-clock budget ends with the reason, and a graded run never goes on without a client that
 // stopped acking (the simulator ends it, and the report says which and for how long); outside
 // grading, the simulator waits for a stopped client as long as its process lives. A headless
-// run's three processes share one CPU (--cpu), or go where the kernel puts them (--cpu=any).
+// run's three processes share one CPU (--cpu), or go where the kernel puts them (--cpu=any), as
+// batch tasks.
 #include <aula/process/child_process.hpp>
 #include <aula/process/cpu_affinity.hpp>
 
@@ -92,6 +93,7 @@ TEST(LauncherReports, AHeadlessRunsProcessesShareOneCpu) {
     for (const char* program : {"aula-sim", "vacuum-cleaner", "vacuum-cleaner-referee"}) {
       const pid_t child = waitForChild(run.pid(), program);
       ASSERT_GT(child, 0) << program << " never started:\n" << readFile(out);
+      EXPECT_EQ(sched_getscheduler(child), SCHED_BATCH) << program << ": woken, it would preempt the one that woke it";
       const std::string cpus = cpusAllowed(child);
       if (choice == "any") {
         EXPECT_EQ(cpus, cpusAllowed(getpid())) << program << ": --cpu=any leaves the processes where they may go";

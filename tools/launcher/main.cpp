@@ -398,6 +398,7 @@ struct Supervision {
   std::string exercise, report_path;
   std::string algorithm;        // what the component runs ("student", "libmy_algorithm.so")
   double execute_budget_s = 2;  // Component.ExecuteBudget
+  aula::process::Placement placement;  // the three processes' CPU (runCpu), batch when headless
 };
 
 // Runs the processes until the primary one (the last: referee or client) ends, any fails, or
@@ -474,7 +475,7 @@ class RunSupervisor {
         passed.push_back(aula::sandbox::seccompProgram());
         args = aula::sandbox::wrap(args, seccomp_child_fd);
       }
-      children_.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed));
+      children_.push_back(std::make_unique<aula::process::ChildProcess>(args, "", "", passed, run_.placement));
       if (keyed || sandboxed) close(passed.back());  // the child has its copy
     }
     if (control[0] >= 0) close(control[0]);
@@ -620,25 +621,23 @@ std::unique_ptr<aula::launcher::RunRecorder> startRecording(const Exercise& ex, 
 
 }  // namespace
 
-// A headless run is one thread of control handed from process to process (lockstep): all of them
-// on one CPU, which they inherit from the launcher (aula/process/cpu_affinity.hpp). --cpu=N picks
-// it, --cpu=any leaves them to the kernel (the default with windows).
-void placeRun(const CommandLine& cl) {
+// A headless run is one thread of control handed from process to process (lockstep): its three
+// processes share one CPU, as batch tasks (aula/process/cpu_affinity.hpp). The CPU: --cpu=N, or
+// the one the launcher runs on; -1 (--cpu=any, and runs with windows): wherever the kernel puts
+// them. The launcher itself stays free (its recorder drains the run's log on another CPU).
+int runCpu(const CommandLine& cl) {
   const std::string choice = cl.flag("cpu") ? cl.option("cpu") : cl.flag("headless") ? "auto" : "any";
-  if (choice == "any") return;
+  if (choice == "any") return -1;
   const std::vector<int> allowed = aula::process::allowedCpus();
-  if (allowed.empty()) return;
-  int cpu = aula::process::currentCpu(allowed);
-  if (choice != "auto") {
-    char* end = nullptr;
-    const long asked = std::strtol(choice.c_str(), &end, 10);
-    if (choice.empty() || *end != '\0' || std::find(allowed.begin(), allowed.end(), asked) == allowed.end()) {
-      throw ConfigError("--cpu=" + choice + ": one of the CPUs this process may use (" +
-                        aula::process::cpuList(allowed) + "), auto or any");
-    }
-    cpu = static_cast<int>(asked);
+  if (allowed.empty()) return -1;
+  if (choice == "auto") return aula::process::currentCpu(allowed);
+  char* end = nullptr;
+  const long asked = std::strtol(choice.c_str(), &end, 10);
+  if (choice.empty() || *end != '\0' || std::find(allowed.begin(), allowed.end(), asked) == allowed.end()) {
+    throw ConfigError("--cpu=" + choice + ": one of the CPUs this process may use (" + aula::process::cpuList(allowed) +
+                      "), auto or any");
   }
-  aula::process::pinToCpu(cpu);
+  return static_cast<int>(asked);
 }
 
 int main(int argc, char** argv) {
@@ -684,7 +683,7 @@ int main(int argc, char** argv) {
     if (cl.flag("sandbox") && aula::sandbox::bubblewrapPath().empty()) {
       throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
     }
-    placeRun(cl);
+    const int run_cpu = runCpu(cl);
     // The referee's output files: a folder that is not there is refused before anything starts.
     for (const char* output : {"report", "picture"}) {
       if (cl.flag(output)) aula::config::requireWritableFolder(cl.option(output), std::string("--") + output + "=" + cl.option(output));
@@ -703,6 +702,7 @@ int main(int argc, char** argv) {
     supervision.report_path = cl.option("report");
     supervision.headless = cl.flag("headless");
     supervision.sandbox = cl.flag("sandbox");
+    supervision.placement = {run_cpu, supervision.headless};
     supervision.wall_budget_s = cl.flag("timeout") ? timeout_s : supervision.headless ? defaultWallBudget(*ex, cl, run) : 0;
     supervision.lines = commandLines(*ex, cl, run);
     supervision.has_referee = ex->referee_settings != nullptr;

@@ -26,7 +26,7 @@ int decode(int status) {
 }  // namespace
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
-                           const std::string& stderr_path, std::vector<int> pass_fds, int cpu) {
+                           const std::string& stderr_path, std::vector<int> pass_fds, Placement placement) {
   if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
   name_ = argv[0];
   // A pipe closed on exec tells the parent whether exec succeeded.
@@ -64,7 +64,8 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     for (size_t i = 0; i < pass_fds.size(); ++i) {
       if (pass_fds[i] >= 0) dup2(pass_fds[i], passedFd(i));
     }
-    if (cpu >= 0) runOnlyOn(cpu);  // a CPU it may not use: it runs where it may
+    if (placement.cpu >= 0) runOnlyOn(placement.cpu);  // a CPU it may not use: it runs where it may
+    if (placement.batch) runAsBatch();
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());
     args.push_back(nullptr);

@@ -41,6 +41,11 @@ void pinToCpu(int cpu) {
   if (!runOnlyOn(cpu)) throw std::runtime_error("cannot run on CPU " + std::to_string(cpu) + ": " + std::strerror(errno));
 }
 
+bool runAsBatch() {
+  const sched_param none{};
+  return sched_setscheduler(0, SCHED_BATCH, &none) == 0;
+}
+
 std::string cpuList(const std::vector<int>& cpus) {
   std::string text;
   for (const int cpu : cpus) text += (text.empty() ? "" : ",") + std::to_string(cpu);

@@ -1,4 +1,5 @@
-// aula_process's CPU placement: the CPUs a process may use, and a child started on one of them.
+// aula_process's CPU placement: the CPUs a process may use, a child started on one of them, and
+// batch scheduling inherited by the processes a batch task starts.
 #include <aula/process/child_process.hpp>
 #include <aula/process/cpu_affinity.hpp>
 
@@ -12,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <sched.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -34,12 +37,29 @@ TEST(CpuAffinity, AChildStartedOnACpuRunsThereOnly) {
   const int fd = mkstemp(path);
   ASSERT_GE(fd, 0);
   close(fd);
-  aula::process::ChildProcess child({"/bin/sh", "-c", "grep Cpus_allowed_list /proc/self/status"}, path, path, {}, cpu);
+  aula::process::ChildProcess child({"/bin/sh", "-c", "grep Cpus_allowed_list /proc/self/status"}, path, path, {},
+                                    aula::process::Placement{cpu, false});
   ASSERT_EQ(child.wait(std::chrono::seconds(10)).value_or(-1), 0);
   std::stringstream text;
   text << std::ifstream(path).rdbuf();
   std::remove(path);
   EXPECT_EQ(text.str(), "Cpus_allowed_list:\t" + std::to_string(cpu) + "\n");
+}
+
+TEST(CpuAffinity, ABatchTaskStartsBatchTasks) {
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (!aula::process::runAsBatch()) _exit(2);
+    const pid_t grandchild = fork();
+    if (grandchild == 0) _exit(sched_getscheduler(0) == SCHED_BATCH ? 0 : 1);
+    int status = 0;
+    waitpid(grandchild, &status, 0);
+    _exit(WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : 1);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "the child's child is not a batch task";
 }
 
 TEST(CpuAffinity, ACpuThatDoesNotExistIsRefusedWithItsNumber) {

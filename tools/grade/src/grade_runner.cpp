@@ -89,7 +89,8 @@ class RunInProgress {
     fs::remove(run.report_path);
     fs::remove(fs::path(run.result_path).replace_extension(".png"));
     if (run.compile_error.empty()) {
-      child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path, std::vector<int>{}, cpu);
+      child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path, std::vector<int>{},
+                                                       process::Placement{cpu, false});
     }
   }
 

@@ -11,17 +11,23 @@
 
 namespace aula::process {
 
+// Where and how a child is scheduled (cpu_affinity.hpp), set before it starts.
+struct Placement {
+  int cpu = -1;        // >= 0: on that CPU only (one it may not use: wherever it may)
+  bool batch = false;  // SCHED_BATCH: woken, it does not preempt the one that woke it
+};
+
 class ChildProcess {
  public:
   // argv[0] is the program (a path or a name on PATH). stdout/stderr go to the given files
   // (empty: inherited; the same path twice: one file with both, in order). `pass_fds[i]` is
   // handed to the child as its descriptor kPassedFd + i (the launcher's private control pipe,
   // the run's key: passedFd(i) is the number to tell the child); nothing else of the parent's is
-  // inherited past exec beyond what lacks FD_CLOEXEC. `cpu` >= 0: the child runs on that CPU only
-  // (cpu_affinity.hpp), set before it starts. Throws std::runtime_error when the program cannot
-  // be started.
+  // inherited past exec beyond what lacks FD_CLOEXEC. `placement`: where and how the child is
+  // scheduled. Throws std::runtime_error when the
+  // program cannot be started.
   ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",
-               const std::string& stderr_path = "", std::vector<int> pass_fds = {}, int cpu = -1);
+               const std::string& stderr_path = "", std::vector<int> pass_fds = {}, Placement placement = Placement());
   static constexpr int kPassedFd = 3;
   static constexpr int passedFd(size_t index) { return kPassedFd + static_cast<int>(index); }
   ~ChildProcess();  // stops the child if still running
