@@ -82,15 +82,7 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
   // while the world loads.
   subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
   subscriptions_.push_back(bus_.subscribe(lcmbus::kHelloChannel, &Simulator::onHello, this));
-  aula::sim_clock_t hello;
-  hello.utime = 0;
-  hello.seq = -1;
-  hello.lockstep = options_.lockstep;
-  hello.seed = options_.seed;
-  hello.world = spec_.name;
-  hello.world_sha256 = spec_.sha256;
-  hello.num_clients = 0;
-  hello.instance = instance_;
+  const aula::sim_clock_t hello = tickAt(0);  // before the world is built: seq -1, no clients
   bus_.publish(lcmbus::kHelloChannel, &hello);
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
   context_.bus = &bus_;
@@ -278,9 +270,9 @@ void Simulator::resetWorld() {
   lockstep_.resetSchedule();
 }
 
-void Simulator::publishClock() {
-  aula::sim_clock_t tick;
-  tick.utime = physics_->timeUs();
+aula::sim_clock_t Simulator::tickAt(int64_t utime_us) const {
+  aula::sim_clock_t tick{};  // zeros: the hello is never stamped
+  tick.utime = utime_us;
   // Before the run starts (lockstep, waiting for clients) ticks carry seq -1: they only tell
   // clients they are listed; nobody runs or acks on them.
   tick.seq = started_ ? seq_ : -1;
@@ -294,6 +286,11 @@ void Simulator::publishClock() {
   tick.num_clients = static_cast<int32_t>(tick.clients.size());
   tick.rejected_controls = rejected_controls_;
   tick.instance = instance_;
+  return tick;
+}
+
+void Simulator::publishClock() {
+  aula::sim_clock_t tick = tickAt(physics_->timeUs());
   stamper_.stamp(lcmbus::kClockChannel, tick);
   bus_.publish(lcmbus::kClockChannel, &tick);
 }

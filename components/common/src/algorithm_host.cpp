@@ -1,6 +1,7 @@
 #include "aula/component/algorithm_host.hpp"
 
 #include <aula/component/crash_report.hpp>
+#include <aula/config/paths.hpp>
 
 #include <cxxabi.h>
 
@@ -40,12 +41,7 @@ std::string typeName(const std::type_info& type) {
 }  // namespace
 
 std::string AlgorithmHostBase::studentPluginPath(const std::string& exercise) {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  const fs::path bin = error ? fs::path(".") : self.parent_path();
-  return (bin.parent_path() / "lib" / "aula" / "algorithms" / ("libaula_" + exercise + "_student.so"))
-      .lexically_normal()
-      .string();
+  return (fs::path(config::libDir()) / "algorithms" / ("libaula_" + exercise + "_student.so")).string();
 }
 
 bool AlgorithmHostBase::namesPlugin(const std::string& choice) {

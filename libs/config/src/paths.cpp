@@ -35,6 +35,13 @@ std::string dataDir() {
   return share.lexically_normal().string();
 }
 
+std::string libDir() {
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  const fs::path bin = error ? fs::path(".") : self.parent_path();
+  return (bin.parent_path() / "lib" / "aula").lexically_normal().string();
+}
+
 std::string dataPath(const std::string& relative) {
   if (!relative.empty() && relative.front() == '/') return relative;
   return dataDir() + "/" + relative;

@@ -209,6 +209,16 @@ uint64_t senderOf(const sockaddr_in& from) {
   return (uint64_t{ntohl(from.sin_addr.s_addr)} << 16) | ntohs(from.sin_port);
 }
 
+// recvmmsg's result: how many, 0 when nothing waits, -1 when a signal interrupted it; throws on
+// anything else.
+int checked(int read) {
+  if (read >= 0) return read;
+  if (errno == EINTR) return -1;
+  if (errno == EAGAIN || errno == EWOULDBLOCK) return 0;
+  throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+}
+
+
 // How long a doorbell's datagram is waited for on the data socket before it counts as lost
 // there (its queue overflowed): the two copies are queued microseconds apart.
 constexpr int kDoorbellGraceMs = 50;
@@ -275,25 +285,20 @@ std::optional<LcmMessage> UdpmReceiver::next(int timeout_ms) {
       // The doorbell rang for a datagram the data socket has not given yet: it is on its way.
       const int read = readBatch(MSG_DONTWAIT);
       if (read > 0) continue;
-      if (read < 0 && errno == EINTR) return std::nullopt;
-      checkRead(read);
+      if (read < 0) return std::nullopt;
       pollfd data{fd_, POLLIN, 0};
       if (poll(&data, 1, kDoorbellGraceMs) == 0) rung_.clear();  // lost on the data socket: go on
       continue;
     }
     if (timeout_ms < 0 && doorbell_fd_ < 0) {
       // Wait for the first datagram and take every one waiting, in one system call.
-      const int read = readBatch(MSG_WAITFORONE);
-      if (read > 0) continue;
-      if (read < 0 && errno == EINTR) return std::nullopt;
-      checkRead(read);
+      if (readBatch(MSG_WAITFORONE) < 0) return std::nullopt;
       continue;
     }
     if (timeout_ms == 0 && data_may_hold_more_) {
       const int read = readBatch(MSG_DONTWAIT);
       if (read > 0) continue;
-      if (read < 0 && errno == EINTR) return std::nullopt;
-      checkRead(read);
+      if (read < 0) return std::nullopt;
     }
     // Nothing more is waiting (as far as the last reads tell): the next look reads again.
     data_may_hold_more_ = doorbell_may_hold_more_ = true;
@@ -303,15 +308,7 @@ std::optional<LcmMessage> UdpmReceiver::next(int timeout_ms) {
     pollfd readable{fd(), POLLIN, 0};
     if (poll(&readable, 1, timeout_ms < 0 ? -1 : static_cast<int>(left)) <= 0) return std::nullopt;
     if (doorbell_fd_ >= 0) continue;  // the doorbell is read first, then the data up to it
-    const int read = readBatch(MSG_DONTWAIT);
-    if (read < 0 && errno == EINTR) return std::nullopt;
-    checkRead(read);
-  }
-}
-
-void UdpmReceiver::checkRead(int read) {
-  if (read < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR) {
-    throw BusError(std::string("LCM bus receive: ") + std::strerror(errno));
+    if (readBatch(MSG_DONTWAIT) < 0) return std::nullopt;
   }
 }
 
@@ -329,8 +326,7 @@ void UdpmReceiver::readDoorbell() {
     headers[i].msg_hdr.msg_name = &from[i];
     headers[i].msg_hdr.msg_namelen = sizeof from[i];
   }
-  const int read = recvmmsg(doorbell_fd_, headers, kBatch, MSG_DONTWAIT, nullptr);
-  checkRead(read);
+  const int read = checked(recvmmsg(doorbell_fd_, headers, kBatch, MSG_DONTWAIT, nullptr));
   doorbell_may_hold_more_ = read == static_cast<int>(kBatch);
   for (int i = 0; i < read; ++i) {
     if (headers[i].msg_len < 8) continue;
@@ -351,7 +347,7 @@ int UdpmReceiver::readBatch(int flags) {
     headers[i].msg_hdr.msg_name = &batch_[i].from;
     headers[i].msg_hdr.msg_namelen = sizeof batch_[i].from;
   }
-  const int read = recvmmsg(fd_, headers, kBatch, flags, nullptr);
+  const int read = checked(recvmmsg(fd_, headers, kBatch, flags, nullptr));
   data_may_hold_more_ = read == static_cast<int>(kBatch);
   datagrams_read_ = std::max(read, 0);
   datagrams_ += datagrams_read_;

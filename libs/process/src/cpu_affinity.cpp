@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <cstring>
-#include <stdexcept>
 
 namespace aula::process {
 
@@ -35,10 +33,6 @@ bool runOnlyOn(int cpu) {
   CPU_ZERO(&mask);
   CPU_SET(cpu, &mask);
   return sched_setaffinity(0, sizeof mask, &mask) == 0;
-}
-
-void pinToCpu(int cpu) {
-  if (!runOnlyOn(cpu)) throw std::runtime_error("cannot run on CPU " + std::to_string(cpu) + ": " + std::strerror(errno));
 }
 
 bool runAsBatch() {

@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <filesystem>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -131,9 +130,7 @@ std::vector<std::string> modelSearchPath(const std::string& world_path) {
 
 void parseSdfWorld(const std::string& path, const std::vector<std::string>& folders, WorldSpec& spec,
                    std::vector<std::string>& inputs) {
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  const std::string module = (self.parent_path().parent_path() / "lib" / "aula" / "libaula_world_sdf.so").string();
+  const std::string module = config::libDir() + "/libaula_world_sdf.so";
   void* library = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);  // kept: sdformat's globals live on
   if (library == nullptr) throw WorldError(path + ": cannot load Aula's SDF reader: " + dlerror());
   auto parse = reinterpret_cast<decltype(&aula_world_parse_sdf)>(dlsym(library, "aula_world_parse_sdf"));

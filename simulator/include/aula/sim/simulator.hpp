@@ -108,6 +108,7 @@ class Simulator {
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
   void onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello);
+  aula::sim_clock_t tickAt(int64_t utime_us) const;  // the clock message at `utime_us`, unsigned
   void publishClock();
   void resetWorld();
   // The steps of run(). startIfReady, holdWhilePausedOrWaiting and awaitLockstepAcks return true

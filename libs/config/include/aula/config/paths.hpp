@@ -9,6 +9,9 @@ namespace aula::config {
 
 // The data folder (worlds/, config/); throws ConfigError naming what it tried.
 std::string dataDir();
+// Aula's own modules and plugins: <folder of the executable>/../lib/aula (a build tree has one
+// too). Never throws: without /proc/self/exe, relative to the current folder.
+std::string libDir();
 // A data file: absolute as given, else relative to the data folder.
 std::string dataPath(const std::string& relative);
 // A world named on a command line or in a .cfg: an existing path as given (made absolute),

@@ -114,9 +114,8 @@ class UdpmReceiver {
     sockaddr_in from{};
     std::size_t size = 0;
   };
-  int readBatch(int flags);  // recvmmsg into batch_: how many, or -1 with errno
+  int readBatch(int flags);  // recvmmsg into batch_: how many, 0 if none, -1 if a signal came; throws on errors
   void readDoorbell();       // what rang: into rung_
-  void checkRead(int read);  // throws on a receive error other than "nothing waiting"
 
   UdpmUrl url_;
   int fd_ = -1;

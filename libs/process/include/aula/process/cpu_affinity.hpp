@@ -15,10 +15,9 @@ namespace aula::process {
 std::vector<int> allowedCpus();
 // The CPU this process runs on now, when it is one of `allowed` (not empty); else the first of them.
 int currentCpu(const std::vector<int>& allowed);
-// Pins the calling process, and every process it starts from now on, to `cpu`. Throws
-// std::runtime_error naming the CPU and why.
-void pinToCpu(int cpu);
-// The same without throwing (in a child between fork and exec): false with errno set.
+// The calling process, and every process it starts from now on, runs on `cpu` only. False, with
+// errno, when it may not (a CPU that does not exist or is not in its mask); safe between fork
+// and exec.
 bool runOnlyOn(int cpu);
 // The calling process, and every process it starts from now on, as a batch task (SCHED_BATCH,
 // which any user may choose): a process woken by one of them no longer preempts it. On one CPU a
