@@ -35,6 +35,9 @@ function(aula_add_algorithm)
 
   add_library(${ARG_NAME} MODULE ${ARG_SOURCES} "${_entry}")
   target_link_libraries(${ARG_NAME} PRIVATE ${_api})
+  # A plugin that calls nothing of libc's directly still names it (Debian's policy for every
+  # shared object, lintian's library-not-linked-against-libc).
+  target_link_options(${ARG_NAME} PRIVATE "LINKER:--push-state,--no-as-needed,-lc,--pop-state")
   # lib<name>.so, like any shared library; hidden by default (see above).
   set_target_properties(${ARG_NAME} PROPERTIES
     PREFIX "lib" SUFFIX ".so"

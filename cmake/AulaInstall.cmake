@@ -8,6 +8,8 @@
 #                            generated LCM types
 #   lib/cmake/Aula/          find_package(Aula): Aula::<exercise>_api and aula_add_algorithm
 #   share/aula/              worlds (with models and generators), configs, student templates
+#   share/doc/aula/          the user's documentation (`aula --help` names it: config::docDir),
+#                            the copyright file (Apache-2.0) and the changelogs
 # Nothing in a binary names the source or build tree: programs find share/aula next to their
 # own bin/ (config::dataDir), and maps are drawn into the user's cache.
 include(GNUInstallDirs)
@@ -80,12 +82,33 @@ foreach(_exercise teletaxi vacuum autopark)
           DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise})
 endforeach()
 
+# The user's documentation, where `aula --help` and the docs' links point (config::docDir), and
+# what Debian asks of every package: a machine-readable copyright and a gzipped changelog.
+install(FILES ${_src}/README.md ${_src}/CHANGELOG.md ${_src}/docs/grading.md ${_src}/docs/worlds.md
+        ${_src}/docs/architecture.md ${_src}/docs/adding-an-exercise.md ${_src}/docs/copyright
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/aula)
+install(DIRECTORY ${_src}/docs/exercises DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/aula)
+set(_aula_changelog_date "Tue, 24 Nov 2026 00:00:00 +0000")  # fixed: the package builds reproducibly
+file(WRITE ${PROJECT_BINARY_DIR}/changelog.Debian
+  "aula (${PROJECT_VERSION}) unstable; urgency=medium\n\n"
+  "  * Release ${PROJECT_VERSION}: see /usr/share/doc/aula/CHANGELOG.md.\n\n"
+  " -- Aula developers <aula@example.org>  ${_aula_changelog_date}\n")
+execute_process(COMMAND gzip -9nf ${PROJECT_BINARY_DIR}/changelog.Debian)
+install(FILES ${PROJECT_BINARY_DIR}/changelog.Debian.gz DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/aula)
+
 # cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps; a student's
 # plugin build needs a compiler, CMake and the headers the API includes.
 set(CPACK_PACKAGE_NAME aula)
 set(CPACK_PACKAGE_VENDOR "Aula")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Robotics teaching environment: TeleTaxi, Vacuum cleaner and Autopark exercises")
-set(CPACK_PACKAGE_CONTACT "Aula developers <aula@localhost>")
+set(CPACK_PACKAGE_CONTACT "Aula developers <aula@example.org>")
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "Aula recreates three exercises of the JdeRobot Robotics-Academy: global navigation with
+ Gradient Path Planning (TeleTaxi), coverage of a house without localization (Vacuum
+ cleaner) and parallel parking with three lasers (Autopark). Each has a DART simulator
+ world, an academic component with a Qt5 window around the student's algorithm, a
+ reference solution and an automatic referee; `aula grade` grades a class in a sandbox.")
+# Installed programs and modules carry no debug information (Debian's policy; lintian).
+set(CPACK_STRIP_FILES ON)
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)

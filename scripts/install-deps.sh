@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
-# Installs every build, test and run dependency of Aula with apt (Debian 12).
+# Installs Aula's dependencies with apt (Debian 12), by set, so each command installs only its own:
+#   scripts/install-deps.sh build   to build and run Aula (what `./aula run` and `./aula build` need)
+#   scripts/install-deps.sh test    the above, plus what the tests drive: Xvfb, Chromium, lintian,
+#                                   the python-lcm wheel, and a single-node Slurm (the Slurm tests)
+#   scripts/install-deps.sh slurm   the above's Slurm part alone: to grade with --engine=slurm
+#   scripts/install-deps.sh all     every set (the default)
 # Idempotent: quiet and fast when everything is already there.
 set -euo pipefail
 
-packages=(
-  build-essential cmake ninja-build pkg-config git
+build_packages=(
+  build-essential cmake ninja-build pkg-config git ccache dpkg-dev
   libdart-all-dev libdart-collision-bullet-dev libdart-utils-dev libdart-gui-osg-dev
-  libdart-external-lodepng-dev libdart-external-imgui-dev libgl1-mesa-dri
+  libdart-external-lodepng-dev libdart-external-imgui-dev
   libsdformat-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libompl-dev
@@ -14,16 +19,23 @@ packages=(
   libopencv-dev
   libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth xdotool
-  iproute2 procps python3 python3-pip bc
-  dpkg-dev bubblewrap libseccomp-dev ccache
-  nlohmann-json3-dev libssl-dev
-  slurmctld slurmd slurm-client munge
-  chromium
+  nlohmann-json3-dev libssl-dev libseccomp-dev
+  # to run: the sandbox, a run's private network, the generators
+  libgl1-mesa-dri bubblewrap iproute2 procps python3
 )
+test_packages=(xvfb xauth xdotool bc python3-pip chromium lintian)
+slurm_packages=(slurmctld slurmd slurm-client munge)
+
+set_name="${1:-all}"
+case "$set_name" in
+  build) wanted=("${build_packages[@]}") ;;
+  slurm) wanted=("${slurm_packages[@]}") ;;
+  test|all) wanted=("${build_packages[@]}" "${test_packages[@]}" "${slurm_packages[@]}") ;;
+  *) echo "usage: scripts/install-deps.sh [build|test|slurm|all]" >&2; exit 2 ;;
+esac
 
 missing=()
-for p in "${packages[@]}"; do
+for p in "${wanted[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
     missing+=("$p")
   fi
@@ -32,7 +44,7 @@ done
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 if [ ${#missing[@]} -gt 0 ]; then
-  echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}"
+  echo "install-deps ($set_name): installing ${#missing[@]} package(s): ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -qq
   $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
@@ -40,10 +52,12 @@ fi
 
 # python-lcm, the independent LCM client of tests/integration/test_stock_lcm_client.sh: Debian
 # packages LCM's C, C++ and Java parts but not its Python module; PyPI has LCM's own wheel. It goes
-# to the python3 on PATH, the one the test runs.
-if ! python3 -c 'import lcm' 2>/dev/null; then
-  echo "install-deps: installing python-lcm (PyPI: lcm==1.5.0)"
-  python3 -m pip install --quiet 'lcm==1.5.0' 2>/dev/null ||
-    python3 -m pip install --quiet --break-system-packages 'lcm==1.5.0'
+# to the python3 on PATH, the one the test runs. Tests only.
+if [ "$set_name" = test ] || [ "$set_name" = all ]; then
+  if ! python3 -c 'import lcm' 2>/dev/null; then
+    echo "install-deps: installing python-lcm (PyPI: lcm==1.5.0)"
+    python3 -m pip install --quiet 'lcm==1.5.0' 2>/dev/null ||
+      python3 -m pip install --quiet --break-system-packages 'lcm==1.5.0'
+  fi
 fi
-echo "install-deps: done"
+echo "install-deps ($set_name): done"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # cpack -G DEB gives aula_<version>_amd64.deb, with Depends from dpkg-shlibdeps, listing the
-# programs, the student API headers, the worlds and the CMake package.
+# programs, the student API headers, the worlds, the CMake package and the documentation that
+# `aula --help` names; lintian finds no error in it.
 # Usage: test_package.sh BUILD_DIR
 set -euo pipefail
 build="$1"
@@ -21,4 +22,18 @@ for lib in libdart libsdformat liblcm libqt5widgets libopencv-core; do
   grep -q "$lib" <<<"$depends" || { echo "Depends lacks $lib (dpkg-shlibdeps): $depends"; exit 1; }
 done
 grep -q "cmake" <<<"$depends" || { echo "Depends lacks what a plugin build needs: $depends"; exit 1; }
+# The docs `aula --help` points to are in the package, at the path it names.
+docs="$("$build/bin/aula" --help | sed -n 's/^docs: \([^ ]*\) .*/\1/p')"
+[ "$(basename "$docs")" = aula ] && [ "$(basename "$(dirname "$docs")")" = doc ] || { echo "aula --help names no doc folder: $docs"; exit 1; }
+for doc in grading.md worlds.md exercises/vacuum.md exercises/teletaxi.md exercises/autopark.md copyright changelog.Debian.gz; do
+  grep -q " ./usr/share/doc/aula/$doc\$" <<<"$contents" || { echo "missing from $deb: /usr/share/doc/aula/$doc (aula --help names it)"; exit 1; }
+done
+# Debian's own checks: no error (warnings are listed, not fatal).
+if command -v lintian >/dev/null; then
+  lintian --no-tag-display-limit "$deb" >"$work/lintian.txt" 2>&1 || true
+  if grep -q "^E: " "$work/lintian.txt"; then echo "lintian errors:"; grep "^E: " "$work/lintian.txt"; exit 1; fi
+  echo "lintian: $(grep -c "^W: " "$work/lintian.txt" || true) warning(s), no error"
+else
+  echo "lintian is not installed (scripts/install-deps.sh test installs it)"; exit 1
+fi
 echo "ok: $(basename "$deb")"; echo "Depends: $depends"

@@ -2,8 +2,13 @@
 
 #include <aula/config/config.hpp>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <stdexcept>
 
 #include <unistd.h>
 
@@ -40,6 +45,13 @@ std::string libDir() {
   const fs::path self = fs::read_symlink("/proc/self/exe", error);
   const fs::path bin = error ? fs::path(".") : self.parent_path();
   return (bin.parent_path() / "lib" / "aula").lexically_normal().string();
+}
+
+std::string docDir() {
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  const fs::path bin = error ? fs::path(".") : self.parent_path();
+  return (bin.parent_path() / "share" / "doc" / "aula").lexically_normal().string();
 }
 
 std::string dataPath(const std::string& relative) {
@@ -80,6 +92,22 @@ void requireWritableFolder(const std::string& file_path, const std::string& what
   if (fs::is_directory(fs::path(file_path))) throw ConfigError(what + ": '" + file_path + "' is a folder, not a file");
   if (!fs::is_directory(folder)) throw ConfigError(what + ": the folder '" + folder.string() + "' does not exist");
   if (access(folder.c_str(), W_OK | X_OK) != 0) throw ConfigError(what + ": the folder '" + folder.string() + "' is not writable");
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  auto fail = [&](const std::string& step, int error) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error(path + ": cannot " + step + " " + what + ": " + std::strerror(error));
+  };
+  {
+    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
+    if (!out) fail("write", errno);
+    out << content;
+    out.flush();
+    if (!out) fail("write", errno != 0 ? errno : EIO);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("move into place", errno);
 }
 
 }  // namespace aula::config

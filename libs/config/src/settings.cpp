@@ -80,7 +80,8 @@ const Preset* SettingSpec::preset(const std::string& name) const {
 
 SettingsTable& SettingsTable::add(SettingSpec spec) {
   if (find(spec.key) != nullptr) throw std::logic_error("setting '" + spec.key + "' declared twice in " + owner_);
-  if (!isFamily(spec.key)) check(spec, spec.key, spec.default_value, "default of " + owner_);
+  // An empty default is no default: a command's option read only when given (aula/cli).
+  if (!isFamily(spec.key) && !spec.default_value.empty()) check(spec, spec.key, spec.default_value, "default of " + owner_);
   specs_.push_back(std::move(spec));
   return *this;
 }

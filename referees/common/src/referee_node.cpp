@@ -1,5 +1,7 @@
 #include "aula/referee/referee_node.hpp"
 
+#include <aula/version.hpp>
+
 #include <aula/referee/rubric.hpp>
 #include <aula/referee/run_picture.hpp>
 #include <aula/settings/tables.hpp>
@@ -82,6 +84,7 @@ void RefereeNode::abort(const std::string& reason) {
 Report RefereeNode::report() const {
   Report out;
   out.set("exercise", exercise_);
+  out.set("aula_version", kVersion);
   out.set("mark", mark());
   out.set("sim_time_s", gradedTimeS());
   out.set("seed", static_cast<long long>(clock_->lastTick().seed));

@@ -1,5 +1,7 @@
 #include "aula/referee/report.hpp"
 
+#include <aula/config/paths.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -100,21 +102,6 @@ std::string Report::json(int indent) const {
 
 std::string Report::toJson() const { return json(0) + "\n"; }
 
-void Report::writeAtomically(const std::string& path) const { writeFileAtomically(path, toJson(), "report"); }
-
-void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what) {
-  const std::string tmp = path + ".tmp." + std::to_string(getpid());
-  {
-    std::ofstream out(tmp, std::ios::trunc | std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot write " + what);
-    out << content;
-    out.flush();
-    if (!out) throw std::runtime_error(path + ": cannot write " + what);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error(path + ": cannot move " + what + " into place");
-  }
-}
+void Report::writeAtomically(const std::string& path) const { config::writeFileAtomically(path, toJson(), "report"); }
 
 }  // namespace aula::referee

@@ -1,5 +1,7 @@
 #include "aula/referee/run_picture.hpp"
 
+#include <aula/config/paths.hpp>
+
 #include <aula/referee/report.hpp>
 
 #include <aula/image/png.hpp>
@@ -204,7 +206,7 @@ cv::Mat RunPicture::compose(const std::string& title, const std::vector<std::str
 void writePngAtomically(const cv::Mat& image, const std::string& path) {
   if (image.empty()) throw std::runtime_error(path + ": cannot encode an empty picture");
   const std::vector<uint8_t> png = image::encodePng(image);
-  writeFileAtomically(path, std::string(png.begin(), png.end()), "picture");
+  config::writeFileAtomically(path, std::string(png.begin(), png.end()), "picture");
 }
 
 }  // namespace aula::referee

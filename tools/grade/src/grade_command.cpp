@@ -18,12 +18,6 @@ namespace aula::grade {
 namespace fs = std::filesystem;
 using config::ConfigError;
 
-const char* const kGradeUsage =
-    "       aula grade EXERCISE SUBMISSION... [--worlds=W1,W2] [--seeds=1-5] [--jobs=N] [--out=DIR]\n"
-    "                  [--engine=local|slurm] [--wall-limit=SECONDS] [--record] [--Key=value ...]\n"
-    "       aula grade --collect DIR\n"
-    "       aula grade-task MANIFEST INDEX\n";
-
 namespace {
 
 void printGrades(const std::vector<StudentGrade>& grades, const std::string& out_dir) {
@@ -109,8 +103,9 @@ void runOnSlurm(const Manifest& manifest, const std::string& manifest_path, cons
   }
 }
 
-int grade(const config::CommandLine& cl, const std::string& bin_dir) {
-  const GradeRequest request = parseRequest(cl);
+}  // namespace
+
+int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
   fs::create_directories(request.out_dir);
   const std::string prefix = fs::path(bin_dir).parent_path().string();
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
@@ -134,46 +129,33 @@ int grade(const config::CommandLine& cl, const std::string& bin_dir) {
   return 0;
 }
 
-}  // namespace
+int gradeTask(const std::string& manifest_path, const std::string& text) {
+  const Manifest manifest = Manifest::load(manifest_path);
+  size_t used = 0;
+  int index = -1;
+  try {
+    index = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || index < 0 || index >= static_cast<int>(manifest.runs.size())) {
+    throw ConfigError("aula grade-task: INDEX '" + text + "' is not a run of " + manifest_path + " (0-" +
+                      std::to_string(manifest.runs.size() - 1) + ")");
+  }
+  const auto result = runOne(manifest.runs[index]);
+  const std::string failure = failureOf(result);
+  std::cout << manifest.runs[index].student << " " << manifest.runs[index].world_name << " seed "
+            << manifest.runs[index].seed << ": " << result.value("mark", 0.0)
+            << (failure.empty() ? "" : "  FAILED: " + failure) << "\n";
+  return 0;  // a failed run is a result, not a failed task
+}
 
-int gradeCommand(const config::CommandLine& cl, const std::string& bin_dir) {
-  if (cl.positional.at(0) == "grade-task") {
-    cl.requireKnown({});
-    if (cl.positional.size() != 3) throw ConfigError("usage: aula grade-task MANIFEST INDEX");
-    const Manifest manifest = Manifest::load(cl.positional[1]);
-    const std::string& text = cl.positional[2];
-    size_t used = 0;
-    int index = -1;
-    try {
-      index = std::stoi(text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != text.size() || index < 0 || index >= static_cast<int>(manifest.runs.size())) {
-      throw ConfigError("aula grade-task: INDEX '" + text + "' is not a run of " + cl.positional[1] + " (0-" +
-                        std::to_string(manifest.runs.size() - 1) + ")");
-    }
-    const auto result = runOne(manifest.runs[index]);
-    const std::string failure = failureOf(result);
-    std::cout << manifest.runs[index].student << " " << manifest.runs[index].world_name << " seed "
-              << manifest.runs[index].seed << ": " << result.value("mark", 0.0)
-              << (failure.empty() ? "" : "  FAILED: " + failure) << "\n";
-    return 0;  // a failed run is a result, not a failed task
+int collectGrades(const std::string& dir) {
+  if (dir.empty() || !fs::is_directory(fs::path(dir) / "runs")) {
+    throw ConfigError("aula grade --collect=" + dir + ": no runs/ folder there (the --out of aula grade)");
   }
-  if (cl.flag("collect")) {
-    cl.requireKnown({"collect"});
-    // --collect=DIR or --collect DIR
-    const std::string dir = !cl.option("collect").empty() ? cl.option("collect")
-                            : cl.positional.size() == 2  ? cl.positional[1]
-                                                         : "";
-    if (dir.empty() || !fs::is_directory(fs::path(dir) / "runs")) {
-      throw ConfigError("aula grade --collect=" + dir + ": no runs/ folder there (the --out of aula grade)");
-    }
-    printGrades(collect(dir), dir);
-    return 0;
-  }
-  cl.requireKnown({"worlds", "seeds", "jobs", "out", "engine", "wall-limit", "record"});
-  return grade(cl, bin_dir);
+  printGrades(collect(dir), dir);
+  return 0;
 }
 
 }  // namespace aula::grade

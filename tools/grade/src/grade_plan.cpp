@@ -24,39 +24,6 @@ using config::ConfigError;
 
 namespace {
 
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    if (!item.empty()) items.push_back(item);
-  }
-  return items;
-}
-
-long long parseInteger(const std::string& text, const std::string& what) {
-  size_t used = 0;
-  long long value = 0;
-  try {
-    value = std::stoll(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) throw ConfigError(what + ": '" + text + "' is not a whole number");
-  return value;
-}
-
-// The exercise's own world: its .cfg's (or the declared default) <Section>.World.
-std::string defaultWorld(const settings::Exercise& ex) {
-  const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
-  std::vector<const config::SettingsTable*> siblings;
-  for (const auto* t : ex.tables()) {
-    if (t != ex.component_settings) siblings.push_back(t);
-  }
-  const config::Config cfg = ex.component_settings->resolve(file, siblings);
-  const std::string key = ex.section + ".World";
-  return config::resolveWorldPath(cfg.getString(key), cfg.origin(key) + ": " + key);
-}
 
 // The compiler's first error lines, for the student's row, with the files named as in the
 // student's folder ("MyAlgorithm.cpp:2:15: error: ...").
@@ -96,69 +63,6 @@ std::string writeBuildProject(const Submission& s, const std::string& exercise, 
 }
 
 }  // namespace
-
-std::vector<long long> parseSeeds(const std::string& text) {
-  std::vector<long long> seeds;
-  for (const std::string& item : splitList(text)) {
-    const auto dash = item.find('-', 1);
-    long long from = 0, to = 0;
-    if (dash == std::string::npos) {
-      from = to = parseInteger(item, "--seeds");
-    } else {
-      from = parseInteger(item.substr(0, dash), "--seeds");
-      to = parseInteger(item.substr(dash + 1), "--seeds");
-    }
-    if (from > to) throw ConfigError("--seeds: '" + item + "' counts down (write " + std::to_string(to) + "-" + std::to_string(from) + ")");
-    if (to - from > 10000) throw ConfigError("--seeds: '" + item + "' is more than 10000 seeds");
-    for (long long seed = from; seed <= to; ++seed) {
-      if (std::find(seeds.begin(), seeds.end(), seed) == seeds.end()) seeds.push_back(seed);
-    }
-  }
-  if (seeds.empty()) throw ConfigError("--seeds=" + text + ": no seed (e.g. --seeds=1-5 or --seeds=1,4,9)");
-  return seeds;
-}
-
-GradeRequest parseRequest(const config::CommandLine& cl) {
-  GradeRequest r;
-  if (cl.positional.size() < 3) {
-    throw ConfigError("aula grade: name the exercise and at least one submission folder (aula grade vacuum alice/ bob/)");
-  }
-  r.exercise = cl.positional[1];
-  const settings::Exercise* ex = settings::exerciseNamed(r.exercise);
-  if (ex == nullptr || ex->referee_settings == nullptr) {
-    throw ConfigError("aula grade: '" + r.exercise + "' is not an exercise with a referee (teletaxi, vacuum, autopark)");
-  }
-  std::set<std::string> students;
-  for (size_t i = 2; i < cl.positional.size(); ++i) {
-    const fs::path folder = fs::absolute(cl.positional[i]).lexically_normal();
-    const std::string student = (folder.has_filename() ? folder : folder.parent_path()).filename().string();
-    if (!fs::is_directory(folder)) throw ConfigError("aula grade: submission " + cl.positional[i] + ": not a folder");
-    if (!fs::is_regular_file(folder / "MyAlgorithm.cpp")) {
-      throw ConfigError("aula grade: submission " + cl.positional[i] + ": no MyAlgorithm.cpp in it");
-    }
-    if (!students.insert(student).second) {
-      throw ConfigError("aula grade: two submissions are named '" + student + "' (a student is named after the folder)");
-    }
-    r.submissions.push_back(folder.string());
-  }
-  if (cl.flag("worlds")) {
-    for (const std::string& w : splitList(cl.option("worlds"))) r.worlds.push_back(config::resolveWorldPath(w, "--worlds"));
-  } else {
-    r.worlds.push_back(defaultWorld(*ex));
-  }
-  r.seeds = parseSeeds(cl.option("seeds", "1"));
-  const double jobs = cl.optionDouble("jobs", static_cast<double>(std::max(1u, std::thread::hardware_concurrency())));
-  if (jobs < 1 || jobs != static_cast<int>(jobs)) throw ConfigError("--jobs=" + cl.option("jobs") + ": a whole number >= 1");
-  r.jobs = static_cast<int>(jobs);
-  r.wall_limit_s = cl.optionDouble("wall-limit", 600);
-  if (!(r.wall_limit_s > 0)) throw ConfigError("--wall-limit=" + cl.option("wall-limit") + ": seconds > 0");
-  r.engine = cl.option("engine", "local");
-  if (r.engine != "local" && r.engine != "slurm") throw ConfigError("--engine=" + r.engine + ": local or slurm");
-  r.out_dir = fs::absolute(cl.option("out", "grading")).lexically_normal().string();
-  r.overrides = cl.overrides;
-  r.record = cl.flag("record");
-  return r;
-}
 
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix) {
   struct Compiling {
@@ -300,18 +204,10 @@ Manifest Manifest::fromJson(const nlohmann::json& json) {
   return m;
 }
 
-void writeFileAtomically(const std::string& path, const std::string& text) {
+void Manifest::save(const std::string& path) const {
   fs::create_directories(fs::path(path).parent_path());
-  const std::string temp = path + ".tmp" + std::to_string(::getpid());
-  {
-    std::ofstream out(temp);
-    out << text;
-    if (!out) throw ConfigError("aula grade: cannot write " + temp);
-  }
-  fs::rename(temp, path);
+  config::writeFileAtomically(path, toJson().dump(2) + "\n", "the grading manifest");
 }
-
-void Manifest::save(const std::string& path) const { writeFileAtomically(path, toJson().dump(2) + "\n"); }
 
 Manifest Manifest::load(const std::string& path) {
   std::ifstream in(path);

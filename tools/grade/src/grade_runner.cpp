@@ -1,5 +1,6 @@
 #include "aula/grade/grade_runner.hpp"
 
+#include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/cpu_affinity.hpp>
 
@@ -110,7 +111,8 @@ class RunInProgress {
     }
     const double wall_s = std::chrono::duration<double>(Clock::now() - started_).count();
     auto result = resultOf(run_, code, timed_out, wall_s);
-    writeFileAtomically(run_.result_path, result.dump(2) + "\n");
+    std::filesystem::create_directories(std::filesystem::path(run_.result_path).parent_path());
+    config::writeFileAtomically(run_.result_path, result.dump(2) + "\n", "the run's result");
     return result;
   }
 

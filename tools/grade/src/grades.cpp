@@ -1,5 +1,8 @@
 #include "aula/grade/grades.hpp"
 
+#include <aula/version.hpp>
+
+#include <aula/config/paths.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/report_html.hpp>
@@ -71,65 +74,77 @@ std::vector<nlohmann::json> readResults(const std::string& out_dir) {
   return results;
 }
 
+namespace {
+
+// One student's runs, as they are read.
+struct Runs {
+  std::vector<double> marks;
+  std::map<std::string, std::vector<double>> by_world;
+  std::map<std::string, std::vector<double>> by_measure;
+  std::map<std::string, int> failures;
+  std::vector<std::string> failure_order;
+  int failed = 0;
+  int tampered = 0;
+};
+
+// Adds result `r` to its student's runs; new worlds and measures (as the reports name them, first
+// seen first) join the lists.
+void addRun(const nlohmann::json& r, Runs& runs, std::set<std::string>& worlds, std::vector<std::string>& measures) {
+  const double mark = r.value("mark", 0.0);
+  const std::string world = worldStem(r.value("world", "?"));
+  worlds.insert(world);
+  runs.marks.push_back(mark);
+  runs.by_world[world].push_back(mark);
+  if (r.contains("measures") && r["measures"].is_array()) {
+    for (const auto& name : r["measures"]) {
+      if (!name.is_string()) continue;
+      const std::string measure = name.get<std::string>();
+      if (std::find(measures.begin(), measures.end(), measure) == measures.end()) measures.push_back(measure);
+      if (r.contains(measure) && r[measure].is_number()) runs.by_measure[measure].push_back(r[measure].get<double>());
+    }
+  }
+  if (!tamperingOf(r).empty()) ++runs.tampered;
+  const std::string failure = failureOf(r);
+  if (failure.empty()) return;
+  ++runs.failed;
+  if (runs.failures[failure]++ == 0) runs.failure_order.push_back(failure);
+}
+
+StudentGrade gradeOf(const std::string& student, Runs& runs, const std::set<std::string>& worlds,
+                     const std::vector<std::string>& measures) {
+  StudentGrade g;
+  g.student = student;
+  g.median = median(runs.marks);
+  g.min = *std::min_element(runs.marks.begin(), runs.marks.end());
+  g.max = *std::max_element(runs.marks.begin(), runs.marks.end());
+  for (const std::string& world : worlds) {
+    const auto it = runs.by_world.find(world);
+    g.world_medians.emplace_back(world, it == runs.by_world.end() ? 0.0 : median(it->second));
+  }
+  for (const std::string& measure : measures) {
+    const auto it = runs.by_measure.find(measure);
+    g.measure_medians.emplace_back(measure, it == runs.by_measure.end() ? std::nan("") : median(it->second));
+  }
+  g.runs = static_cast<int>(runs.marks.size());
+  g.runs_failed = runs.failed;
+  g.runs_tampered = runs.tampered;
+  std::sort(runs.failure_order.begin(), runs.failure_order.end());
+  for (const std::string& failure : runs.failure_order) {
+    const int count = runs.failures[failure];
+    g.failures += (g.failures.empty() ? "" : "; ") + failure + (count > 1 ? " (x" + std::to_string(count) + ")" : "");
+  }
+  return g;
+}
+
+}  // namespace
+
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results) {
-  struct Runs {
-    std::vector<double> marks;
-    std::map<std::string, std::vector<double>> by_world;
-    std::map<std::string, std::vector<double>> by_measure;
-    std::map<std::string, int> failures;
-    std::vector<std::string> failure_order;
-    int failed = 0;
-    int tampered = 0;
-  };
   std::map<std::string, Runs> students;
   std::set<std::string> worlds;
-  std::vector<std::string> measures;  // as the reports name them, first seen first
-  for (const auto& r : results) {
-    Runs& runs = students[r.value("student", "?")];
-    const double mark = r.value("mark", 0.0);
-    const std::string world = worldStem(r.value("world", "?"));
-    worlds.insert(world);
-    runs.marks.push_back(mark);
-    runs.by_world[world].push_back(mark);
-    if (r.contains("measures") && r["measures"].is_array()) {
-      for (const auto& name : r["measures"]) {
-        if (!name.is_string()) continue;
-        const std::string measure = name.get<std::string>();
-        if (std::find(measures.begin(), measures.end(), measure) == measures.end()) measures.push_back(measure);
-        if (r.contains(measure) && r[measure].is_number()) runs.by_measure[measure].push_back(r[measure].get<double>());
-      }
-    }
-    if (!tamperingOf(r).empty()) ++runs.tampered;
-    const std::string failure = failureOf(r);
-    if (failure.empty()) continue;
-    ++runs.failed;
-    if (runs.failures[failure]++ == 0) runs.failure_order.push_back(failure);
-  }
+  std::vector<std::string> measures;
+  for (const auto& r : results) addRun(r, students[r.value("student", "?")], worlds, measures);
   std::vector<StudentGrade> grades;
-  for (auto& [student, runs] : students) {
-    StudentGrade g;
-    g.student = student;
-    g.median = median(runs.marks);
-    g.min = *std::min_element(runs.marks.begin(), runs.marks.end());
-    g.max = *std::max_element(runs.marks.begin(), runs.marks.end());
-    for (const std::string& world : worlds) {
-      const auto it = runs.by_world.find(world);
-      g.world_medians.emplace_back(world, it == runs.by_world.end() ? 0.0 : median(it->second));
-    }
-    for (const std::string& measure : measures) {
-      const auto it = runs.by_measure.find(measure);
-      g.measure_medians.emplace_back(measure, it == runs.by_measure.end() ? std::nan("") : median(it->second));
-    }
-    g.runs = static_cast<int>(runs.marks.size());
-    g.runs_failed = runs.failed;
-    g.runs_tampered = runs.tampered;
-    std::sort(runs.failure_order.begin(), runs.failure_order.end());
-    for (const std::string& failure : runs.failure_order) {
-      const int count = runs.failures[failure];
-      g.failures += (g.failures.empty() ? "" : "; ") + failure + (count > 1 ? " (x" + std::to_string(count) + ")" : "");
-    }
-    grades.push_back(g);
-  }
+  for (auto& [student, runs] : students) grades.push_back(gradeOf(student, runs, worlds, measures));
   return grades;
 }
 
@@ -139,12 +154,12 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
     for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
-  csv += ",runs,runs_failed,runs_tampered,failures\n";
+  csv += ",runs,runs_failed,runs_tampered,failures,aula_version\n";
   for (const StudentGrade& g : grades) {
     csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
     for (const auto& [measure, value] : g.measure_medians) csv += "," + number(value);
-    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "\n";
+    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "," + kVersion + "\n";
   }
   return csv;
 }
@@ -152,8 +167,8 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
 std::vector<StudentGrade> collect(const std::string& out_dir) {
   const auto results = readResults(out_dir);
   const auto grades = gradeStudents(results);
-  writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades));
-  writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results));
+  config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
+  config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results), "the class report");
   return grades;
 }
 

@@ -12,6 +12,9 @@ std::string dataDir();
 // Aula's own modules and plugins: <folder of the executable>/../lib/aula (a build tree has one
 // too). Never throws: without /proc/self/exe, relative to the current folder.
 std::string libDir();
+// The user's documentation (grading.md, worlds.md, exercises/): <folder of the executable>/../share/doc/aula
+// (installed by the .deb; a build tree links it to the source's docs/). Never throws.
+std::string docDir();
 // A data file: absolute as given, else relative to the data folder.
 std::string dataPath(const std::string& relative);
 // A world named on a command line or in a .cfg: an existing path as given (made absolute),
@@ -24,5 +27,9 @@ std::string cacheDir();
 // and be writable, checked before a run starts so a typo does not cost the whole run. Throws
 // ConfigError naming the path and the folder.
 void requireWritableFolder(const std::string& file_path, const std::string& what);
+// Writes `content` to `path` whole or not at all (a temporary file beside it, renamed into place), so
+// a reader never sees half a file. Throws std::runtime_error naming the path, `what` ("report")
+// and the system's reason ("No space left on device").
+void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what);
 
 }  // namespace aula::config

@@ -26,7 +26,9 @@ struct Exercise {
   // What the exercise needs of its robot's plugins: "TYPE" or "TYPE:NAME" (`aula check-world`).
   std::vector<std::string> required_plugins;
   std::string summary;  // one line for `aula --help`: what the student does
-
+  // The referee's key for the episode's length in sim time (`aula run --duration`, the wall
+  // budget): "Vacuum.Referee.Duration"; "" for an exercise with no referee.
+  std::string episode_key;
 
   std::vector<const config::SettingsTable*> tables() const;
 };

@@ -40,8 +40,5 @@ class Report {
 // Fixed, locale-independent number formatting used in reports ("12.345678").
 std::string formatNumber(double value);
 
-// Writes `content` to `path` through a temporary file and a rename (a reader never sees half a
-// file). Throws std::runtime_error "<path>: cannot write <what>".
-void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what);
 
 }  // namespace aula::referee

@@ -1,19 +1,18 @@
 #pragma once
-// The `aula grade` family, behind the launcher:
-//   aula grade EXERCISE SUBMISSION... [--worlds=W1,W2] [--seeds=1-5] [--jobs=N] [--out=DIR]
-//              [--engine=local|slurm] [--wall-limit=SECONDS] [--Key=value ...]
-//   aula grade --collect DIR          grades.csv from the results in DIR (after a Slurm job)
-//   aula grade-task MANIFEST INDEX    one run of a manifest (what each Slurm array task runs)
+// What `aula grade` and `aula grade-task` do (their declarations are tools/aula/commands/):
+//   a class: every submission compiled, every run planned, run locally or as a Slurm array, collected;
+//   --collect DIR: grades.csv and report.html from the results in DIR (after a Slurm job);
+//   grade-task MANIFEST INDEX: one run of a manifest (what each Slurm array task runs).
 
-#include <aula/config/config.hpp>
+#include <aula/grade/grade_plan.hpp>
 
 #include <string>
 
 namespace aula::grade {
 
-extern const char* const kGradeUsage;
-
 // `bin_dir`: where this Aula's programs are (the runs' `aula`, the plugins' CMake package).
-int gradeCommand(const config::CommandLine& cl, const std::string& bin_dir);
+int gradeClass(const GradeRequest& request, const std::string& bin_dir);
+int collectGrades(const std::string& out_dir);
+int gradeTask(const std::string& manifest_path, const std::string& index);
 
 }  // namespace aula::grade

@@ -27,8 +27,23 @@ struct GradeRequest {
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
 
-// Throws config::ConfigError (exit 2) naming the option that is wrong.
-GradeRequest parseRequest(const config::CommandLine& cl);
+// What `aula grade` was given, as its declared options typed them (tools/aula/commands/grade.cpp).
+struct GradeOptions {
+  std::string exercise;
+  std::vector<std::string> submissions;  // as given
+  std::string worlds;                    // "W1,W2"; "" for the exercise's own
+  std::string seeds = "1";
+  long long jobs = 0;                    // 0: one per CPU
+  std::string out_dir = "grading";
+  std::string engine = "local";
+  double wall_limit_s = 600;
+  bool record = false;
+  std::vector<std::pair<std::string, std::string>> overrides;
+};
+
+// Checks the exercise, the submissions and the worlds; throws config::ConfigError (exit 2) naming
+// the option or folder that is wrong.
+GradeRequest parseRequest(const GradeOptions& options);
 // "1-5", "1,3,9", "2-3,7" -> the seeds, in order, without repeats.
 std::vector<long long> parseSeeds(const std::string& text);
 
@@ -68,9 +83,6 @@ struct Manifest {
   static Manifest load(const std::string& path);  // throws ConfigError naming the file
 };
 
-// Writes `text` to `path` through a temporary file and a rename: a reader (a resumed batch,
-// --collect while Slurm tasks write) never sees half a file. Throws ConfigError naming the path.
-void writeFileAtomically(const std::string& path, const std::string& text);
 
 // Every submission x world x seed, each on its own LCM port.
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir);

@@ -23,7 +23,7 @@
 #include <string>
 #include <thread>
 
-namespace aula::launcher {
+namespace aula::supervision {
 
 // What the log says of its run: the exercise, the world (name, path, SHA-256), the seed and
 // every setting the referee grades with (`referee_settings`, as the launcher resolved them).
@@ -63,4 +63,4 @@ class RunRecorder {
   bool write_failed_ = false;
 };
 
-}  // namespace aula::launcher
+}  // namespace aula::supervision

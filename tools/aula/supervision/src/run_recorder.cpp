@@ -1,4 +1,4 @@
-#include "run_recorder.hpp"
+#include "aula/supervision/run_recorder.hpp"
 
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
@@ -16,7 +16,7 @@
 
 #include <unistd.h>
 
-namespace aula::launcher {
+namespace aula::supervision {
 namespace {
 
 namespace fs = std::filesystem;
@@ -134,4 +134,4 @@ void RunRecorder::stop() {
             << " KiB); grade it again with `aula regrade " << path_ << "`\n";
 }
 
-}  // namespace aula::launcher
+}  // namespace aula::supervision

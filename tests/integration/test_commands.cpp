@@ -1,0 +1,117 @@
+// The `aula` front door as a user meets it: every command's --help from its declaration, an
+// undeclared option refused naming the command and the nearest option, `aula` alone, --version,
+// check-world's exit status, and --duration honoured by `aula run` for every exercise.
+#include "test_support.hpp"
+
+#include <aula/version.hpp>
+
+#include <regex>
+#include <set>
+
+namespace {
+using namespace std::chrono_literals;
+using aula::testing::jsonNumber;
+using aula::testing::Outcome;
+using aula::testing::readFile;
+using aula::testing::runToEnd;
+
+const std::string kBin = AULA_BIN_DIR;
+const std::string kWorlds = std::string(AULA_SOURCE_DIR) + "/worlds/";
+
+// The commands `aula --help` lists (its table), in order.
+std::vector<std::string> commands() {
+  const Outcome help = runToEnd({kBin + "/aula", "--help"}, 10s);
+  EXPECT_EQ(help.code.value_or(-1), 0) << help.output;
+  std::vector<std::string> names;
+  const std::string list = help.output.substr(0, help.output.find("usage of each:"));
+  const std::regex line("\n  ([a-z][a-z-]*)  ");
+  for (auto it = std::sregex_iterator(list.begin(), list.end(), line); it != std::sregex_iterator(); ++it) {
+    names.push_back((*it)[1]);
+  }
+  return names;
+}
+
+// The options a command's --help lists ("--world=FILE" -> "world").
+std::vector<std::string> optionsOf(const std::string& help) {
+  std::vector<std::string> names;
+  const std::regex line("\n  --([a-z][a-z-]*)");
+  for (auto it = std::sregex_iterator(help.begin(), help.end(), line); it != std::sregex_iterator(); ++it) {
+    if ((*it)[1] != "help") names.push_back((*it)[1]);
+  }
+  return names;
+}
+
+TEST(Commands, EveryCommandOfTheTableHasItsHelp) {
+  const auto names = commands();
+  for (const char* expected : {"run", "config", "check-world", "new", "grade", "grade-task", "regrade", "replay"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+  }
+  for (const std::string& name : names) {
+    const Outcome out = runToEnd({kBin + "/aula", name, "--help"}, 10s);
+    EXPECT_EQ(out.code.value_or(-1), 0) << name << "\n" << out.output;
+    EXPECT_NE(out.output.find("usage: aula " + name), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("  --help"), std::string::npos) << out.output;
+  }
+  // The run's own options, each with its help line.
+  const auto run = optionsOf(runToEnd({kBin + "/aula", "run", "--help"}, 10s).output);
+  for (const char* option : {"headless", "world", "algorithm", "seed", "report", "duration", "timeout", "cpu", "record"}) {
+    EXPECT_NE(std::find(run.begin(), run.end(), option), run.end()) << option;
+  }
+}
+
+TEST(Commands, AnOptionACommandDoesNotDeclareIsRefusedWithTheNearest) {
+  for (const std::string& name : commands()) {
+    const auto options = optionsOf(runToEnd({kBin + "/aula", name, "--help"}, 10s).output);
+    // A misspelling of its first option (one letter doubled), or a foreign option when it has none.
+    const std::string wrong = options.empty() ? "headless" : options.front() + options.front().back();
+    const Outcome out = runToEnd({kBin + "/aula", name, "x", "y", "--" + wrong}, 10s);
+    EXPECT_EQ(out.code.value_or(-1), 2) << name << "\n" << out.output;
+    EXPECT_NE(out.output.find("aula " + name + ": unknown option '--" + wrong + "'"), std::string::npos) << out.output;
+    if (!options.empty()) {
+      EXPECT_NE(out.output.find("did you mean '--" + options.front() + "'?"), std::string::npos) << out.output;
+    }
+  }
+  // What the old shared option list let through.
+  const Outcome world = runToEnd({kBin + "/aula", "check-world", kWorlds + "vacuum.world", "--headless"}, 10s);
+  EXPECT_EQ(world.code.value_or(-1), 2) << world.output;
+}
+
+TEST(Commands, AulaAloneListsTheCommands) {
+  const Outcome out = runToEnd({kBin + "/aula"}, 10s);
+  EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+  EXPECT_NE(out.output.find("commands:"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("  check-world  "), std::string::npos) << out.output;
+  const Outcome typo = runToEnd({kBin + "/aula", "rnu"}, 10s);
+  EXPECT_EQ(typo.code.value_or(-1), 2) << typo.output;
+  EXPECT_NE(typo.output.find("unknown command 'rnu' (did you mean 'run'?)"), std::string::npos) << typo.output;
+}
+
+TEST(Commands, VersionIsPrintedAndNamedInReports) {
+  const Outcome out = runToEnd({kBin + "/aula", "--version"}, 10s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_EQ(out.output, std::string("aula ") + aula::kVersion + "\n");
+}
+
+TEST(Commands, CheckWorldExitsNonZeroWhenTheExerciseCannotRun) {
+  const Outcome suits = runToEnd({kBin + "/aula", "check-world", kWorlds + "vacuum.world", "--exercise=vacuum"}, 20s);
+  EXPECT_EQ(suits.code.value_or(-1), 0) << suits.output;
+  const Outcome not_a_city = runToEnd({kBin + "/aula", "check-world", kWorlds + "vacuum.world", "--exercise=teletaxi"}, 20s);
+  EXPECT_EQ(not_a_city.code.value_or(-1), 1) << not_a_city.output;
+  EXPECT_NE(not_a_city.output.find("teletaxi: cannot run"), std::string::npos) << not_a_city.output;
+}
+
+// --duration is the referee's episode length: each exercise's run ends there, in sim time.
+TEST(Commands, RunHonoursDurationForEveryExercise) {
+  const std::string dir = aula::testing::privateDir();
+  for (const std::string exercise : {"vacuum", "teletaxi", "autopark"}) {
+    const std::string report = dir + "/" + exercise + ".json";
+    const Outcome out = runToEnd({kBin + "/aula", "run", exercise, "--headless", "--duration=4", "--algorithm=student",
+                                  "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                 120s);
+    const std::string json = readFile(report);
+    EXPECT_NEAR(jsonNumber(json, "sim_time_s"), 4.0, 0.05) << exercise << "\n" << out.output << json;
+    EXPECT_NE(json.find(std::string("\"aula_version\": \"") + aula::kVersion + "\""), std::string::npos) << json;
+  }
+}
+
+}  // namespace

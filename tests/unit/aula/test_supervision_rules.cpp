@@ -1,0 +1,94 @@
+// The supervised run's rules on plain data: budgets, CPU choice, what each exit means, and the
+// report written for a referee that cannot write one.
+#include <aula/config/config.hpp>
+#include <aula/process/exit_codes.hpp>
+#include <aula/supervision/rules.hpp>
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+
+namespace {
+using namespace aula::supervision;
+
+TEST(SupervisionRules, TheWallBudgetIsTheEpisodeAtRealTimeHalfAgainPlusAMinute) {
+  EXPECT_DOUBLE_EQ(defaultWallBudget(900, 0), 60 + 1350);
+  EXPECT_DOUBLE_EQ(defaultWallBudget(900, 4), 60 + 1350);   // faster than real time: the same budget
+  EXPECT_DOUBLE_EQ(defaultWallBudget(100, 0.5), 60 + 300);  // slower: more
+}
+
+TEST(SupervisionRules, CpuChoice) {
+  EXPECT_EQ(chooseCpu("auto", {0, 1}, 1), 1);
+  EXPECT_EQ(chooseCpu("any", {0, 1}, 1), -1);
+  EXPECT_EQ(chooseCpu("0", {0, 1}, 1), 0);
+  EXPECT_EQ(chooseCpu("auto", {}, -1), -1);
+  try {
+    chooseCpu("7", {0, 1}, 1);
+    FAIL() << "a CPU not allowed was taken";
+  } catch (const aula::config::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("--cpu=7: one of the CPUs this process may use (0,1)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SupervisionRules, ExitCodesInWords) {
+  EXPECT_EQ(signalName(128 + SIGSEGV), "SIGSEGV");
+  EXPECT_EQ(signalName(1), "exit code 1");
+  EXPECT_EQ(componentFault(128 + SIGSEGV, 2), "component crashed (SIGSEGV)");
+  EXPECT_EQ(componentFault(aula::process::kExitAlgorithmHung, 2), "execute() did not return within 2 s");
+  EXPECT_EQ(componentFault(0, 2), "");
+}
+
+ExitEvent exitOf(Role role, int code) {
+  ExitEvent e;
+  e.role = role;
+  e.code = code;
+  return e;
+}
+
+TEST(SupervisionRules, ACrashedComponentIsTheRefereesToGrade) {
+  const ExitVerdict v = onExit(exitOf(Role::Component, 128 + SIGSEGV), 2, "vacuum-cleaner");
+  EXPECT_EQ(v.tell_referee, "component crashed (SIGSEGV)");
+  EXPECT_FALSE(v.run_over);  // the referee grades what there is and ends the run
+  EXPECT_EQ(v.result.value_or(-1), 1);
+  // Once the referee knows, the component's exit is not a failure of its own.
+  ExitEvent told = exitOf(Role::Component, 128 + SIGSEGV);
+  told.referee_told = true;
+  EXPECT_TRUE(onExit(told, 2, "vacuum-cleaner").message.empty());
+}
+
+TEST(SupervisionRules, ADeadRefereeLeavesAReportWithNoMark) {
+  const ExitVerdict v = onExit(exitOf(Role::Referee, 128 + SIGKILL), 2, "vacuum-cleaner-referee");
+  EXPECT_EQ(v.aborted_report, "vacuum-cleaner-referee died (SIGKILL)");
+  EXPECT_TRUE(v.run_over);
+  const auto report = abortedReport("vacuum", "reference", v.aborted_report);
+  EXPECT_EQ(report["finished"], false);
+  EXPECT_EQ(report["aborted"], "vacuum-cleaner-referee died (SIGKILL)");
+  EXPECT_FALSE(report.contains("mark"));
+}
+
+TEST(SupervisionRules, UsageErrorsAreExitTwoAndTheRunIsDiscarded) {
+  const ExitVerdict v = onExit(exitOf(Role::Component, aula::process::kExitUsage), 2, "vacuum-cleaner");
+  EXPECT_TRUE(v.discard);
+  EXPECT_TRUE(v.run_over);
+  EXPECT_EQ(v.result.value_or(-1), 2);
+}
+
+TEST(SupervisionRules, AClosedWindowEndsTheRunCleanly) {
+  ExitEvent closed = exitOf(Role::Component, 0);
+  closed.headless = false;
+  const ExitVerdict v = onExit(closed, 2, "teletaxi");
+  EXPECT_TRUE(v.run_over);
+  EXPECT_FALSE(v.result.has_value());
+}
+
+TEST(SupervisionRules, TheRefereesEndIsTheRunsEnd) {
+  ExitEvent done = exitOf(Role::Referee, 0);
+  done.last_child = true;
+  EXPECT_TRUE(onExit(done, 2, "r").run_over);
+  EXPECT_EQ(onExit(exitOf(Role::Referee, aula::process::kExitFailed), 2, "r").result.value_or(-1), 1);
+  ExitEvent ended = exitOf(Role::Simulator, 1);
+  ended.simulator_ended_run = true;
+  EXPECT_FALSE(onExit(ended, 2, "aula-sim").run_over);  // the referee grades and ends the run
+}
+
+}  // namespace

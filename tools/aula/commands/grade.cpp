@@ -1,0 +1,61 @@
+// aula grade EXERCISE SUBMISSION...: a class graded headless, every submission x world x seed
+// (locally or as a Slurm array); aula grade --collect DIR after a Slurm job (tools/grade).
+#include "commands.hpp"
+#include "run_settings.hpp"
+
+#include <aula/grade/grade_command.hpp>
+
+namespace aula::commands {
+namespace {
+
+int gradeSubmissions(const cli::Arguments& args) {
+  if (args.given("collect")) {
+    if (!args.positional().empty()) throw config::ConfigError("aula grade --collect=DIR takes no other argument");
+    return grade::collectGrades(args.text("collect"));
+  }
+  if (args.positional().size() < 2) {
+    throw config::ConfigError("aula grade: name the exercise and at least one submission folder (aula grade vacuum alice/ bob/)");
+  }
+  grade::GradeOptions options;
+  options.exercise = args.positional(0);
+  options.submissions.assign(args.positional().begin() + 1, args.positional().end());
+  options.worlds = args.text("worlds");
+  options.seeds = args.text("seeds");
+  options.jobs = args.given("jobs") ? args.integer("jobs") : 0;
+  options.out_dir = args.text("out");
+  options.engine = args.text("engine");
+  options.wall_limit_s = args.real("wall-limit");
+  options.record = args.flag("record");
+  options.overrides = args.settings();
+  return grade::gradeClass(grade::parseRequest(options), binDir());
+}
+
+}  // namespace
+
+cli::Command grade() {
+  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp) x world x seed, headless");
+  c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark", false, true},
+                   {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
+  c.takes_settings = true;
+  c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own)"))
+      .text("seeds", "1", "the seeds: 1-5, 1,4,9 or 2-3,7")
+      .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
+      .text("out", "grading", "the folder of grades.csv, report.html, runs/ and build/ (run again to resume)")
+      .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")
+      .real("wall-limit", 600, "s", 0, 1e7, "each run's wall-clock limit (the sim-time limit is the referee's)", true)
+      .flag("record", false, "keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)")
+      .add(cli::valueOption("collect", "DIR", "only collect: grades.csv and report.html from DIR's runs (after a Slurm job)"));
+  c.details = "out: DIR/grades.csv (median, min, max per student; failures with reasons), DIR/report.html, DIR/runs/\n"
+              "see docs/grading.md\n";
+  c.run = gradeSubmissions;
+  return c;
+}
+
+cli::Command gradeTask() {
+  cli::Command c("grade-task", "one run of a grading manifest (what each Slurm array task of `aula grade` runs)");
+  c.positionals = {{"MANIFEST", "DIR/manifest.json of `aula grade`"}, {"INDEX", "the run's index in it"}};
+  c.run = [](const cli::Arguments& args) { return grade::gradeTask(args.positional(0), args.positional(1)); };
+  return c;
+}
+
+}  // namespace aula::commands

@@ -1,0 +1,206 @@
+// aula run EXERCISE: the simulator, the component and the referee (like the original's three
+// terminals), supervised until the run ends (aula/supervision).
+#include "commands.hpp"
+#include "run_settings.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/lcm/bus.hpp>
+#include <aula/process/cpu_affinity.hpp>
+#include <aula/sandbox/sandbox.hpp>
+#include <aula/supervision/rules.hpp>
+#include <aula/supervision/run_recorder.hpp>
+#include <aula/supervision/supervisor.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace aula::commands {
+namespace {
+using cli::Arguments;
+using config::Config;
+using config::ConfigError;
+using settings::Exercise;
+
+bool noDisplay() {
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
+}
+
+// What a run's options stand for in the processes' settings.
+Config overridesOf(const Exercise& ex, const Arguments& args, bool headless) {
+  Config overrides = settingsOf(args);
+  if (args.given("algorithm")) overrides.set(ex.section + ".Algorithm", args.text("algorithm"), "command line --algorithm");
+  if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
+  if (args.given("world")) overrides.set(ex.section + ".World", args.text("world"), "command line --world");
+  if (args.given("seed")) overrides.set("Simulator.Seed", args.text("seed"), "command line --seed");
+  if (args.given("duration") && !ex.episode_key.empty()) {
+    overrides.set(ex.episode_key, args.text("duration"), "command line --duration");
+  }
+  return overrides;
+}
+
+// The simulator's command line: lockstep and as fast as possible when headless.
+std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings& run, size_t clients, bool headless,
+                                       const std::string& lcm_url) {
+  std::vector<std::string> sim = {binDir() + "/aula-sim", run.world};
+  if (args.flag("lockstep") || headless) {
+    sim.push_back("--lockstep");
+    sim.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
+  }
+  // Headless runs go as fast as possible unless --rtf says otherwise; --rtf counts in every mode.
+  if (args.given("rtf")) sim.push_back("--rtf=" + args.text("rtf"));
+  else if (headless) sim.push_back("--rtf=0");
+  if (!lcm_url.empty()) sim.push_back("--lcm-url=" + lcm_url);
+  return sim;
+}
+
+// The three command lines of a run: each process gets the .cfg, the world and only its own keys.
+std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arguments& args, const RunSettings& run,
+                                                   bool headless, const std::string& lcm_url) {
+  std::vector<std::vector<std::string>> lines = {
+      simulatorLine(args, run, ex.referee_settings == nullptr ? 1 : 2, headless, lcm_url)};
+  const std::vector<std::string> programs = {ex.component, ex.referee};
+  for (size_t i = 0; i < ex.tables().size(); ++i) {
+    std::vector<std::string> line = {binDir() + "/" + programs[i], "--config=" + run.cfg_path,
+                                     "--" + ex.section + ".World=" + run.world};
+    if (headless) line.push_back("--headless");
+    if (!lcm_url.empty()) line.push_back("--lcm-url=" + lcm_url);
+    lines.push_back(line);
+  }
+  for (const std::string& key : run.overrides.keys()) {
+    if (key == ex.section + ".World") continue;
+    const std::string arg = "--" + key + "=" + run.overrides.getString(key);
+    if (settings::simulator().declares(key)) lines[0].push_back(arg);
+    for (size_t i = 0; i < ex.tables().size(); ++i) {
+      if (ex.tables()[i]->declares(key)) lines[i + 1].push_back(arg);
+    }
+  }
+  if (ex.referee_settings == nullptr && args.given("duration")) lines[1].push_back("--duration=" + args.text("duration"));
+  for (const char* output : {"report", "picture"}) {
+    if (ex.referee_settings != nullptr && args.given(output)) lines[2].push_back(std::string("--") + output + "=" + args.text(output));
+  }
+  return lines;
+}
+
+// The referee's output files: a folder that is not there is refused before anything starts, and
+// a report from an earlier run must never pass for this one's, whatever happens next.
+void prepareOutputs(const Arguments& args) {
+  for (const char* output : {"report", "picture"}) {
+    if (args.given(output)) config::requireWritableFolder(args.text(output), args.spelled(output));
+  }
+  for (const char* output : {"report", "picture"}) {
+    if (args.given(output)) std::filesystem::remove(args.text(output));
+  }
+}
+
+void checkOptions(const Exercise& ex, const Arguments& args, bool headless) {
+  if (args.flag("sandbox") && !headless) {
+    throw ConfigError("--sandbox runs the student's component headless, in bubblewrap: add --headless");
+  }
+  if (args.flag("sandbox") && sandbox::bubblewrapPath().empty()) {
+    throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
+  }
+  for (const char* option : {"record", "report", "picture"}) {
+    if (args.given(option) && ex.referee_settings == nullptr) {
+      throw ConfigError(std::string("--") + option + ": '" + ex.name + "' has no referee");
+    }
+  }
+}
+
+// A headless run is one thread of control handed from process to process (lockstep): its three
+// processes share one CPU, as batch tasks (aula/process/cpu_affinity.hpp): --cpu=N, or the one
+// the launcher runs on; any (and runs with windows): wherever the kernel puts them.
+process::Placement placementOf(const Arguments& args, bool headless) {
+  const std::string choice = args.given("cpu") ? args.text("cpu") : headless ? "auto" : "any";
+  const std::vector<int> allowed = process::allowedCpus();
+  const int current = allowed.empty() ? -1 : process::currentCpu(allowed);
+  return {supervision::chooseCpu(choice, allowed, current), headless};
+}
+
+supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args, const RunSettings& run, bool headless,
+                                       const std::string& lcm_url) {
+  supervision::Supervision s;
+  s.exercise = ex.name;
+  s.report_path = args.text("report");
+  s.headless = headless;
+  s.sandbox = args.flag("sandbox");
+  s.placement = placementOf(args, headless);
+  const double episode_s = ex.episode_key.empty() ? 0 : run.referee().getDouble(ex.episode_key);
+  s.wall_budget_s = args.given("timeout")                        ? args.real("timeout")
+                    : headless && ex.referee_settings != nullptr ? supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0)
+                                                                 : 0;
+  s.lines = commandLines(ex, args, run, headless, lcm_url);
+  s.has_referee = ex.referee_settings != nullptr;
+  if (s.has_referee) {
+    s.algorithm = run.component().getString(ex.section + ".Algorithm");
+    s.execute_budget_s = run.component().getDouble("Component.ExecuteBudget");
+  }
+  return s;
+}
+
+// --record: the logger listens and the log holds the run's record before the simulator starts.
+std::unique_ptr<supervision::RunRecorder> startRecording(const Exercise& ex, const std::string& path,
+                                                         const RunSettings& run, const std::string& lcm_url) {
+  supervision::RunRecorder::checkPath(path);
+  const auto record = supervision::runRecord(ex, run.world, run.effective.front().second.getInt64("Simulator.Seed"), run.referee());
+  config::CommandLine url;  // the run's --lcm-url wins over the referee's Aula.LcmUrl, as in every process
+  if (!lcm_url.empty()) url.options["lcm-url"] = lcm_url;
+  return std::make_unique<supervision::RunRecorder>(path, lcmbus::resolveUrl(url, run.referee()), record);
+}
+
+int runExercise(const Arguments& args) {
+  const Exercise& ex = exerciseArgument(args.positional(0), "run");
+  bool headless = args.flag("headless");
+  if (!headless && noDisplay()) {
+    std::cerr << "aula: no display (DISPLAY is not set): running headless; the mark is printed at the end\n";
+    headless = true;
+  }
+  checkOptions(ex, args, headless);
+  prepareOutputs(args);
+  // Port 0 (`aula grade`'s runs): a port the OS hands out, now, for all three processes.
+  const std::string lcm_url = args.given("lcm-url") ? lcmbus::withFreePort(args.text("lcm-url")) : "";
+  const std::string cfg = args.given("config") ? args.text("config") : config::dataPath(ex.config_file);
+  const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless));
+  const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url);
+  std::unique_ptr<supervision::RunRecorder> recorder;
+  if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url);
+  const int code = supervision::supervise(supervision);
+  if (recorder) recorder->stop();
+  return code;
+}
+
+cli::Command declare() {
+  cli::Command c("run", "start an exercise: the simulator, the component (your algorithm) and the referee");
+  c.positionals = {{"EXERCISE", "teletaxi, vacuum, autopark or demo"}};
+  c.takes_settings = true;
+  c.options.flag("headless", false, "no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark")
+      .flag("sandbox", false, "run the component (the student's code) in bubblewrap, as `aula grade` does (docs/grading.md)")
+      .add(cli::valueOption("world", "FILE", "any SDF world, for all three processes (docs/worlds.md)"))
+      .add(cli::valueOption("algorithm", "NAME", "reference, student, a built-in's name, or your plugin PATH.so"))
+      .add(cli::numberOption("seed", config::SettingType::Int, "", 0, 9.2e18, "the run's seed (default: Simulator.Seed)"))
+      .add(cli::valueOption("report", "FILE.json", "the referee's JSON report, written at the end (atomically)"))
+      .add(cli::valueOption("picture", "FILE.png", "the referee's PNG picture of the run, written at the end"))
+      .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
+      .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
+      .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,
+                             "real-time factor (0: as fast as possible; default 1 with windows, 0 headless)"))
+      .add(cli::numberOption("duration", config::SettingType::Double, "s", 0, 1e6,
+                             "the episode's length in simulated seconds (the referee's Duration or Timeout)", true))
+      .add(cli::numberOption("timeout", config::SettingType::Double, "s", 0, 1e7,
+                             "a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); "
+                             "past it the run ends, graded so far, exit 1", true))
+      .add(cli::valueOption("lcm-url", "URL", "the run's bus (udpm://GROUP:PORT?ttl=0); port 0: a free one from the OS"))
+      .add(cli::valueOption("cpu", "N|auto|any", "the CPU a headless run's processes share (default: auto, the one `aula` starts on)"))
+      .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"));
+  c.run = runExercise;
+  return c;
+}
+
+}  // namespace
+
+cli::Command run() { return declare(); }
+
+}  // namespace aula::commands

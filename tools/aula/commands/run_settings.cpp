@@ -1,0 +1,99 @@
+#include "run_settings.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/world/occupancy_map.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace aula::commands {
+using config::Config;
+using config::ConfigError;
+using config::SettingsTable;
+
+namespace {
+
+// Points the component will drive to must be free floor of the world's map: refused here, before
+// any process starts, with the reason (the component checks what needs its planner).
+void checkPointsOnTheMap(const settings::Exercise& ex, const Config& component, const std::string& world_path) {
+  std::optional<world::OccupancyMap> map;
+  for (const auto& spec : ex.component_settings->specs()) {
+    if (!spec.free_point) continue;
+    if (!map) {
+      const auto world = world::loadWorld(world_path);
+      const auto z_band = component.getDoubleList(ex.section + ".Map.ZBand");
+      map = world::occupancyMapOf(world, {component.getDouble(ex.section + ".Map.Resolution"), z_band[0], z_band[1]});
+    }
+    const auto xy = component.getDoubleList(spec.key);
+    if (const auto problem = world::pointProblem(*map, xy[0], xy[1])) {
+      throw ConfigError(component.origin(spec.key) + ": " + spec.key + " = " + component.getString(spec.key) + ": " + *problem);
+    }
+  }
+}
+
+// Every override must be some process's key; the "did you mean" comes from all of them.
+void requireDeclared(const settings::Exercise& ex, const Config& overrides, const std::vector<const SettingsTable*>& tables) {
+  for (const std::string& key : overrides.keys()) {
+    bool declared = false;
+    for (const auto* t : tables) declared = declared || t->declares(key);
+    if (declared) continue;
+    std::string suggestion;
+    for (const auto* t : tables) {
+      if (suggestion.empty()) suggestion = t->suggest(key);
+    }
+    throw ConfigError(overrides.origin(key) + ": unknown key '" + key + "'" +
+                      (suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)") + "; `aula config " + ex.name +
+                      "` lists the settings");
+  }
+}
+
+}  // namespace
+
+RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const Config& overrides) {
+  RunSettings run;
+  run.cfg_path = cfg_path;
+  run.overrides = overrides;
+  const Config file = Config::fromFile(run.cfg_path);
+  std::vector<const SettingsTable*> tables = {&settings::simulator()};
+  for (const auto* t : ex.tables()) tables.push_back(t);
+  requireDeclared(ex, run.overrides, tables);
+  for (const auto* t : tables) {
+    // The simulator reads config/simulator.cfg (aula-sim does the same), the clients the exercise's.
+    Config mine = t == tables.front() ? Config::fromFile(config::dataPath("config/simulator.cfg")) : file;
+    for (const std::string& key : run.overrides.keys()) {
+      if (t->declares(key)) mine.set(key, run.overrides.getString(key), run.overrides.origin(key));
+    }
+    std::vector<const SettingsTable*> siblings;
+    for (const auto* other : ex.tables()) {
+      if (other != t) siblings.push_back(other);
+    }
+    run.effective.emplace_back(t, t->resolve(mine, siblings));
+  }
+  // The world, from the component's settings (the .cfg or --world): resolved once for all.
+  const std::string world_key = ex.section + ".World";
+  run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
+  checkPointsOnTheMap(ex, run.component(), run.world);
+  return run;
+}
+
+Config settingsOf(const cli::Arguments& args) {
+  Config overrides;
+  for (const auto& [key, value] : args.settings()) overrides.set(key, value, "command line --" + key);
+  return overrides;
+}
+
+const settings::Exercise& exerciseArgument(const std::string& name, const std::string& command) {
+  if (const settings::Exercise* ex = settings::exerciseNamed(name)) return *ex;
+  std::string names;
+  for (const auto& ex : settings::exercises()) names += (names.empty() ? "" : ", ") + ex.name;
+  throw ConfigError("aula " + command + ": unknown exercise '" + name + "' (one of: " + names + ")");
+}
+
+std::string binDir() {
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  return error ? std::string(".") : self.parent_path().string();
+}
+
+}  // namespace aula::commands

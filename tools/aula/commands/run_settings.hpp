@@ -1,0 +1,39 @@
+#pragma once
+// The settings of one run, shared by `aula run` and `aula config`: the exercise's .cfg, the
+// --Key=value overrides and what the command's own options set, resolved for each process
+// against its own table; the world resolved once for all three.
+
+#include <aula/cli/command.hpp>
+#include <aula/config/config.hpp>
+#include <aula/settings/tables.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace aula::commands {
+
+struct RunSettings {
+  std::string cfg_path;
+  config::Config overrides;  // checked: each key is declared by at least one process of the run
+  std::string world;         // absolute path, handed to every process
+  std::vector<std::pair<const config::SettingsTable*, config::Config>> effective;  // simulator first
+
+  const config::Config& component() const { return effective.at(1).second; }
+  const config::Config& referee() const { return effective.back().second; }
+};
+
+// `overrides`: the --Key=value settings, plus what the command's options stand for (its caller
+// sets "Vacuum.Algorithm" for --algorithm, with the origin "command line --algorithm").
+RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const config::Config& overrides);
+
+// The command line's --Section.Key=value settings as a Config with their origins.
+config::Config settingsOf(const cli::Arguments& args);
+
+// The exercise named by a command's EXERCISE argument; a usage error listing them otherwise.
+const settings::Exercise& exerciseArgument(const std::string& name, const std::string& command);
+
+// The folder of the running `aula` (its sibling programs, its install prefix's parent).
+std::string binDir();
+
+}  // namespace aula::commands

@@ -1,0 +1,59 @@
+#pragma once
+// The rules of a supervised run, as plain functions: how long a headless run may take, which
+// CPU its processes share, what a process's exit code means, and the report written for a
+// referee that cannot write its own.
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace aula::supervision {
+
+// A headless run's wall-clock budget when --timeout does not say: the episode's sim length at
+// real time (or slower, at an --rtf below 1), half again, plus a minute for start-up. 0 rtf: as
+// fast as possible (budgeted at real time). A run past it is stuck.
+double defaultWallBudget(double episode_sim_s, double rtf);
+
+// The CPU a headless run's processes share: "auto" (the one the launcher runs on), "any" (-1:
+// wherever the kernel puts them) or a CPU number among `allowed`; `current` is the launcher's.
+// Throws config::ConfigError naming the allowed CPUs.
+int chooseCpu(const std::string& choice, const std::vector<int>& allowed, int current);
+
+// "SIGSEGV" for a death by signal (exit code 128 + N), else "exit code N".
+std::string signalName(int code);
+// "component crashed (SIGSEGV)", "execute() did not return within 2 s", or "" when the
+// component's exit is not the student's doing.
+std::string componentFault(int code, double execute_budget_s);
+
+// The three processes of a run, by their place in Supervision::lines.
+enum class Role { Simulator = 0, Component = 1, Referee = 2 };
+
+// What the supervisor knows when a child exits.
+struct ExitEvent {
+  Role role = Role::Simulator;
+  int code = 0;
+  bool has_referee = true;
+  bool headless = true;
+  bool referee_told = false;     // the referee was already told why the run ends
+  bool simulator_ended_run = false;  // the simulator said why it ended a graded run
+  bool last_child = false;
+};
+
+// What it does about it.
+struct ExitVerdict {
+  bool run_over = false;
+  std::optional<int> result;      // the launcher's exit code, when this exit sets it
+  std::string tell_referee;       // a fault to hand the referee (it grades what there is)
+  std::string aborted_report;     // the referee died: write a report with this reason, no mark
+  bool discard = false;           // the run never started: the referee gives no mark
+  std::string message;            // one line for the terminal ("" for none)
+};
+
+ExitVerdict onExit(const ExitEvent& event, double execute_budget_s, const std::string& program);
+
+// The report of a run whose referee cannot write one: no mark, and why.
+nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why);
+
+}  // namespace aula::supervision

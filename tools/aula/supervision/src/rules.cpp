@@ -1,0 +1,92 @@
+#include "aula/supervision/rules.hpp"
+
+#include <aula/config/config.hpp>
+#include <aula/process/cpu_affinity.hpp>
+#include <aula/process/exit_codes.hpp>
+#include <aula/version.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+namespace aula::supervision {
+
+double defaultWallBudget(double episode_sim_s, double rtf) {
+  return 60.0 + 1.5 * episode_sim_s / (rtf > 0 ? std::min(rtf, 1.0) : 1.0);
+}
+
+int chooseCpu(const std::string& choice, const std::vector<int>& allowed, int current) {
+  if (choice == "any" || allowed.empty()) return -1;
+  if (choice == "auto") return current;
+  char* end = nullptr;
+  const long asked = std::strtol(choice.c_str(), &end, 10);
+  if (choice.empty() || *end != '\0' || std::find(allowed.begin(), allowed.end(), asked) == allowed.end()) {
+    throw config::ConfigError("--cpu=" + choice + ": one of the CPUs this process may use (" +
+                              process::cpuList(allowed) + "), auto or any");
+  }
+  return static_cast<int>(asked);
+}
+
+std::string signalName(int code) {
+  if (code <= 128) return "exit code " + std::to_string(code);
+  const char* name = sigabbrev_np(code - 128);
+  return std::string("SIG") + (name != nullptr ? name : std::to_string(code - 128));
+}
+
+std::string componentFault(int code, double execute_budget_s) {
+  if (code == process::kExitAlgorithmHung) {
+    std::ostringstream text;
+    text << "execute() did not return within " << execute_budget_s << " s";
+    return text.str();
+  }
+  if (code > 128) return "component crashed (" + signalName(code) + ")";
+  return "";
+}
+
+ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::string& program) {
+  ExitVerdict v;
+  const bool component = e.role == Role::Component, referee = e.role == Role::Referee;
+  if (e.role == Role::Simulator && e.simulator_ended_run) return v;  // the referee grades and ends the run
+  if (e.has_referee && referee && e.code > 128) {
+    v.aborted_report = program + " died (" + signalName(e.code) + ")";
+    v.message = v.aborted_report + ": the run has no mark";
+    v.result = 1;
+    v.run_over = true;
+    return v;
+  }
+  v.discard = e.has_referee && !referee && e.code == process::kExitUsage;
+  if (e.has_referee && component && e.code == 0 && !e.headless) {
+    v.message = "the component's window was closed: stopping the run";
+    v.run_over = true;
+    return v;
+  }
+  const std::string fault = e.has_referee && component ? componentFault(e.code, execute_budget_s) : "";
+  if (!fault.empty() && !e.referee_told) {
+    v.tell_referee = fault;
+    v.result = 1;
+    return v;  // the referee grades what there is and ends the run
+  }
+  const bool faulted_component = e.referee_told && component;
+  if (e.has_referee && referee && e.code == process::kExitFailed) {
+    v.message = "the run ended before its end: the referee's report says why";
+    v.result = 1;
+  } else if (e.code != 0 && !faulted_component) {
+    v.message = program + " exited with code " + std::to_string(e.code);
+    v.result = e.code == process::kExitUsage ? process::kExitUsage : 1;
+  }
+  v.run_over = (e.code != 0 && !faulted_component) || e.last_child || e.role == Role::Simulator;
+  return v;
+}
+
+nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why) {
+  nlohmann::ordered_json report;
+  report["exercise"] = exercise;
+  report["aula_version"] = kVersion;
+  report["finished"] = false;
+  report["algorithm"] = algorithm;
+  report["aborted"] = why;
+  return report;
+}
+
+}  // namespace aula::supervision

@@ -1,0 +1,217 @@
+#include "aula/supervision/supervisor.hpp"
+
+#include <aula/auth/run_key.hpp>
+#include <aula/config/paths.hpp>
+#include <aula/process/child_process.hpp>
+#include <aula/process/line_pipe.hpp>
+#include <aula/process/signal_watcher.hpp>
+#include <aula/sandbox/sandbox.hpp>
+#include <aula/supervision/rules.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <unistd.h>
+
+namespace aula::supervision {
+namespace {
+
+std::string programName(const std::string& path) {
+  const auto slash = path.rfind('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+void writeAbortedReport(const Supervision& run, const std::string& why) {
+  if (run.report_path.empty()) return;
+  config::writeFileAtomically(run.report_path, abortedReport(run.exercise, run.algorithm, why).dump(2) + "\n", "report");
+}
+
+// One supervised run: its children, the private lines to them, and what has happened so far.
+class RunSupervisor {
+ public:
+  explicit RunSupervisor(const Supervision& run) : run_(run) {}
+
+  int supervise() {
+    process::SignalWatcher signals;  // before the children start: they unblock for themselves
+    start();
+    for (;;) {
+      if (signals.stopRequested()) {
+        std::cerr << "aula: stopping (" << (signals.signal() == SIGINT ? "SIGINT" : "SIGTERM") << ")\n";
+        result_ = 128 + signals.signal();
+        break;
+      }
+      checkWallBudget();
+      // The referee had its chance to grade and say why: now everything stops.
+      if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
+      readSimulatorStatus();
+      bool finished = false;
+      for (size_t i = 0; i < children_.size(); ++i) {
+        if (const auto code = children_[i]->poll()) finished = onExit(i, *code) || finished;
+      }
+      if (finished) break;
+      awaitEvent(signals);
+    }
+    stopAll();
+    return result_;
+  }
+
+ private:
+  // The command line of child `i`, with its private lines passed as inherited descriptors.
+  struct Launch {
+    std::vector<std::string> args;
+    std::vector<int> passed;
+    bool close_last = false;  // the last passed descriptor is ours to close once the child has it
+  };
+
+  Launch launchOf(size_t i, int status_write, int control_read, const std::optional<auth::Key>& key) const {
+    const bool referee = run_.has_referee && i == 2;
+    const bool keyed = key && (i == 0 || referee);
+    Launch launch{run_.lines[i], {}, false};
+    auto pass = [&](const std::string& option, int fd) {
+      launch.args.push_back("--" + option + "=" + std::to_string(process::ChildProcess::passedFd(launch.passed.size())));
+      launch.passed.push_back(fd);
+    };
+    if (i == 0 && status_write >= 0) pass("status-fd", status_write);  // why the simulator ended a graded run
+    if (referee) pass("control-fd", control_read);
+    if (keyed) pass("key-fd", auth::keyPipe(*key));
+    const bool sandboxed = run_.sandbox && run_.has_referee && i == 1;
+    if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
+      const int seccomp_child_fd = process::ChildProcess::passedFd(launch.passed.size());
+      launch.passed.push_back(sandbox::seccompProgram());
+      launch.args = sandbox::wrap(launch.args, seccomp_child_fd);
+    }
+    launch.close_last = keyed || sandboxed;
+    return launch;
+  }
+
+  // Starts the simulator, the component (sandboxed if asked) and the referee, each with its
+  // private lines: the simulator's status pipe, the referee's control pipe, a graded run's key.
+  void start() {
+    int control[2] = {-1, -1}, status[2] = {-1, -1};
+    if (run_.has_referee && (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0)) {
+      throw std::runtime_error("pipe2 failed");
+    }
+    // A graded run's key, for the simulator and the referee only (never the component, which runs
+    // the student's code): each reads it from a pipe of its own, not from its command line.
+    const std::optional<auth::Key> key =
+        run_.headless && run_.has_referee ? std::optional<auth::Key>(auth::randomKey()) : std::nullopt;
+    for (size_t i = 0; i < run_.lines.size(); ++i) {
+      const Launch launch = launchOf(i, status[1], control[0], key);
+      children_.push_back(std::make_unique<process::ChildProcess>(launch.args, "", "", launch.passed, run_.placement));
+      if (launch.close_last) close(launch.passed.back());  // the child has its copy
+    }
+    if (control[0] >= 0) close(control[0]);
+    if (status[1] >= 0) close(status[1]);
+    control_fd_ = control[1];
+    simulator_status_ = std::make_unique<process::LinePipe>(status[0]);
+  }
+
+  void tellReferee(const std::string& why) {
+    const std::string line = "abort " + why + "\n";
+    (void)!write(control_fd_, line.data(), line.size());
+    told_referee_ = true;
+    abort_reason_ = why;
+    result_ = 1;
+  }
+
+  // The referee is told why the run ends and has a few seconds to grade what there is.
+  void endRun(const std::string& why) {
+    if (run_.has_referee && !told_referee_) tellReferee(why);
+    ending_since_ = std::chrono::steady_clock::now();
+    result_ = 1;
+  }
+
+  void checkWallBudget() {
+    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    if (run_.wall_budget_s > 0 && wall_s > run_.wall_budget_s && !ending_since_) {
+      std::ostringstream why;
+      why << "the run's wall-clock budget of " << run_.wall_budget_s << " s ran out (--timeout)";
+      std::cerr << "aula: " << why.str() << "\n";
+      endRun(why.str());
+    }
+  }
+
+  // Sleeps until a child exits or a stop signal comes, or 20 ms pass (the wall budget, the
+  // simulator's status line): the end of a run is seen when it happens.
+  void awaitEvent(const process::SignalWatcher& signals) {
+    std::vector<pollfd> watched{{signals.fd(), POLLIN, 0}};
+    for (const auto& child : children_) {
+      if (child->exitFd() >= 0 && !child->poll()) watched.push_back({child->exitFd(), POLLIN, 0});
+    }
+    ::poll(watched.data(), watched.size(), 20);
+  }
+
+  void readSimulatorStatus() {
+    for (const std::string& line : simulator_status_->lines()) {
+      if (line.rfind("ended ", 0) != 0 || simulator_ended_run_) continue;
+      simulator_ended_run_ = true;
+      std::cerr << "aula: the simulator ended the run: " << line.substr(6) << "\n";
+      endRun(line.substr(6));
+    }
+  }
+
+  // Child `i` exited with `code`: the rules decide (rules.hpp), this carries it out.
+  bool onExit(size_t i, int code) {
+    if (i == 0) readSimulatorStatus();  // its last words were written before it exited
+    if (run_.has_referee && i == 2) referee_exited_ = true;
+    ExitEvent event;
+    event.role = static_cast<Role>(i);
+    event.code = code;
+    event.has_referee = run_.has_referee;
+    event.headless = run_.headless;
+    event.referee_told = told_referee_;
+    event.simulator_ended_run = simulator_ended_run_;
+    event.last_child = i + 1 == children_.size();
+    const std::string name = programName(children_[i]->name());
+    const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);
+    if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
+    if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";
+    if (!verdict.aborted_report.empty()) writeAbortedReport(run_, verdict.aborted_report);
+    if (!verdict.tell_referee.empty()) {
+      std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: "
+                << verdict.tell_referee << "\n";
+      tellReferee(verdict.tell_referee);
+    }
+    if (verdict.result) result_ = *verdict.result;
+    return verdict.run_over;
+  }
+
+  // The clients first (they send their last commands and leave lockstep), the simulator last.
+  void stopAll() {
+    if (control_fd_ >= 0) close(control_fd_);
+    for (auto c = children_.rbegin(); c != children_.rend(); ++c) {
+      const int code = (*c)->stop();
+      if (code != 0 && code != 128 + SIGTERM && code != 128 + SIGINT && result_ == 0 && (*c)->name() != run_.lines[0][0]) {
+        std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
+      }
+    }
+    if (told_referee_ && !referee_exited_) {
+      // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
+      std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
+      writeAbortedReport(run_, abort_reason_ + "; the referee did not answer");
+    }
+  }
+
+  const Supervision& run_;
+  const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  std::vector<std::unique_ptr<process::ChildProcess>> children_;
+  int control_fd_ = -1;  // the referee's control pipe, our end
+  std::unique_ptr<process::LinePipe> simulator_status_;
+  int result_ = 0;
+  bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
+  std::string abort_reason_;
+  std::optional<std::chrono::steady_clock::time_point> ending_since_;
+};
+
+}  // namespace
+
+int supervise(const Supervision& run) { return RunSupervisor(run).supervise(); }
+
+}  // namespace aula::supervision

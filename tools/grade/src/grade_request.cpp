@@ -1,0 +1,108 @@
+#include "aula/grade/grade_plan.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/settings/tables.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+#include <sstream>
+#include <thread>
+
+// What a teacher asks of `aula grade`, checked: the exercise, the submissions, the worlds, the seeds.
+namespace aula::grade {
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (!item.empty()) items.push_back(item);
+  }
+  return items;
+}
+
+long long parseInteger(const std::string& text, const std::string& what) {
+  size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) throw ConfigError(what + ": '" + text + "' is not a whole number");
+  return value;
+}
+
+// The exercise's own world: its .cfg's (or the declared default) <Section>.World.
+std::string defaultWorld(const settings::Exercise& ex) {
+  const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
+  std::vector<const config::SettingsTable*> siblings;
+  for (const auto* t : ex.tables()) {
+    if (t != ex.component_settings) siblings.push_back(t);
+  }
+  const config::Config cfg = ex.component_settings->resolve(file, siblings);
+  const std::string key = ex.section + ".World";
+  return config::resolveWorldPath(cfg.getString(key), cfg.origin(key) + ": " + key);
+}
+
+}  // namespace
+
+std::vector<long long> parseSeeds(const std::string& text) {
+  std::vector<long long> seeds;
+  for (const std::string& item : splitList(text)) {
+    const auto dash = item.find('-', 1);
+    long long from = 0, to = 0;
+    if (dash == std::string::npos) {
+      from = to = parseInteger(item, "--seeds");
+    } else {
+      from = parseInteger(item.substr(0, dash), "--seeds");
+      to = parseInteger(item.substr(dash + 1), "--seeds");
+    }
+    if (from > to) throw ConfigError("--seeds: '" + item + "' counts down (write " + std::to_string(to) + "-" + std::to_string(from) + ")");
+    if (to - from > 10000) throw ConfigError("--seeds: '" + item + "' is more than 10000 seeds");
+    for (long long seed = from; seed <= to; ++seed) {
+      if (std::find(seeds.begin(), seeds.end(), seed) == seeds.end()) seeds.push_back(seed);
+    }
+  }
+  if (seeds.empty()) throw ConfigError("--seeds=" + text + ": no seed (e.g. --seeds=1-5 or --seeds=1,4,9)");
+  return seeds;
+}
+
+GradeRequest parseRequest(const GradeOptions& options) {
+  GradeRequest r;
+  r.exercise = options.exercise;
+  const settings::Exercise* ex = settings::exerciseNamed(r.exercise);
+  if (ex == nullptr || ex->referee_settings == nullptr) {
+    throw ConfigError("aula grade: '" + r.exercise + "' is not an exercise with a referee (teletaxi, vacuum, autopark)");
+  }
+  std::set<std::string> students;
+  for (const std::string& given : options.submissions) {
+    const fs::path folder = fs::absolute(given).lexically_normal();
+    const std::string student = (folder.has_filename() ? folder : folder.parent_path()).filename().string();
+    if (!fs::is_directory(folder)) throw ConfigError("aula grade: submission " + given + ": not a folder");
+    if (!fs::is_regular_file(folder / "MyAlgorithm.cpp")) {
+      throw ConfigError("aula grade: submission " + given + ": no MyAlgorithm.cpp in it");
+    }
+    if (!students.insert(student).second) {
+      throw ConfigError("aula grade: two submissions are named '" + student + "' (a student is named after the folder)");
+    }
+    r.submissions.push_back(folder.string());
+  }
+  for (const std::string& w : splitList(options.worlds)) r.worlds.push_back(config::resolveWorldPath(w, "--worlds"));
+  if (r.worlds.empty()) r.worlds.push_back(defaultWorld(*ex));
+  r.seeds = parseSeeds(options.seeds);
+  r.jobs = options.jobs > 0 ? static_cast<int>(options.jobs) : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  r.wall_limit_s = options.wall_limit_s;
+  r.engine = options.engine;
+  r.out_dir = fs::absolute(options.out_dir).lexically_normal().string();
+  r.overrides = options.overrides;
+  r.record = options.record;
+  return r;
+}
+
+}  // namespace aula::grade
