@@ -218,9 +218,10 @@ TEST(Sandbox, AStudentsPluginCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSock
   const std::string dir = std::string(AULA_BIN_DIR) + "/escape-target-" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
   ::setenv("AULA_TEST_ESCAPE_DIR", dir.c_str(), 1);  // inherited by the launcher and its children
-  // What each try gives in the sandbox: the read-only filesystem, the process namespace, seccomp.
+  // What each try gives in the sandbox: a filesystem of only the run's own inputs (the folder is
+  // not even there), the process namespace, seccomp.
   const std::vector<std::pair<std::string, std::string>> tries = {
-      {"write a file outside", "Read-only file system"},
+      {"write a file outside", "No such file or directory"},
       {"see the simulator or the referee in /proc", "No such process"},
       {"open a TCP socket", "Permission denied"},
       {"open a Unix socket", "Permission denied"},

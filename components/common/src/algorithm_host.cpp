@@ -8,8 +8,11 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <typeinfo>
+
+#include <sys/resource.h>
 
 namespace aula::component {
 namespace fs = std::filesystem;
@@ -22,6 +25,14 @@ std::string typeName(const std::type_info& type);
 std::string faultOf(const char* what, const std::function<void()>& call) {
   try {
     call();
+  } catch (const std::bad_alloc& e) {
+    // In a sandboxed run the memory limit (RLIMIT_DATA, Component.Sandbox.Memory) is why.
+    rlimit limit{};
+    if (::getrlimit(RLIMIT_DATA, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+      return "the algorithm used more than " + std::to_string(limit.rlim_cur >> 20) + " MB of memory (" + what +
+             " threw std::bad_alloc)";
+    }
+    return std::string(what) + " threw std::bad_alloc: " + e.what();
   } catch (const std::exception& e) {
     return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
   } catch (...) {

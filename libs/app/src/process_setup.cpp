@@ -30,7 +30,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   std::vector<std::string> takes_value = {"config", "lcm-url"};
   std::vector<std::string> known = {"config", "lcm-url", "headless", "help", "control-fd"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
-  if (exercise != nullptr && exercise->referee == program) known.insert(known.end(), {"replay", "key-fd"});
+  if (exercise != nullptr && exercise->referee == program) known.insert(known.end(), {"replay", "key-fd", "isolation"});
   if (exercise != nullptr && exercise->component == program) known.push_back("view-only");  // aula replay
   ProcessSetup setup;
   setup.program = program;

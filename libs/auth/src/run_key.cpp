@@ -11,6 +11,7 @@
 
 #include <fcntl.h>
 #include <sys/random.h>
+#include <sys/prctl.h>
 #include <unistd.h>
 
 namespace aula::auth {
@@ -41,6 +42,9 @@ int keyPipe(const Key& key) {
 }
 
 Key readKey(int fd, const std::string& what) {
+  // A process that holds the run's key is not dumpable: no other process of its user (a component
+  // run without the sandbox) may read its memory through /proc/PID/mem or ptrace.
+  ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
   Key key{};
   size_t got = 0;
   for (;;) {

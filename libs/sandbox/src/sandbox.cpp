@@ -39,17 +39,50 @@ int seccompProgram() {
   return fd;
 }
 
-std::vector<std::string> wrap(const std::vector<std::string>& argv, int seccomp_child_fd,
-                              const std::vector<std::string>& writable) {
-  // /tmp stays visible (read-only): the world, the settings or the plugin may be there. The
-  // private temporary folder is a fresh /var/tmp (a directory bwrap cannot create under the
-  // read-only root must already exist).
-  std::vector<std::string> out = {bubblewrapPath(), "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
-                                  "--tmpfs", "/var/tmp", "--setenv", "TMPDIR", "/var/tmp", "--unshare-pid",
-                                  "--unshare-ipc", "--unshare-uts", "--die-with-parent", "--new-session"};
-  for (const std::string& dir : writable) {
-    out.insert(out.end(), {"--bind", dir, dir});
+namespace {
+
+// The system's programs and libraries: /usr, and the top-level folders Debian links into it
+// (/lib -> usr/lib) as the same links; the few files of /etc a program's start reads.
+void systemBinds(std::vector<std::string>& out) {
+  out.insert(out.end(), {"--ro-bind", "/usr", "/usr"});
+  for (const char* top : {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
+    std::error_code error;
+    const auto status = std::filesystem::symlink_status(top, error);
+    if (error || !std::filesystem::exists(status)) continue;
+    if (std::filesystem::is_symlink(status)) {
+      out.insert(out.end(), {"--symlink", std::filesystem::read_symlink(top).string(), top});
+    } else {
+      out.insert(out.end(), {"--ro-bind", top, top});
+    }
   }
+  for (const char* file : {"/etc/ld.so.cache", "/etc/localtime", "/etc/alternatives", "/etc/passwd", "/etc/group"}) {
+    if (std::filesystem::exists(file)) out.insert(out.end(), {"--ro-bind", file, file});
+  }
+}
+
+std::vector<std::string> limitsPrefix(const Limits& limits) {
+  return {"prlimit", "--data=" + std::to_string(limits.memory_bytes),
+          "--nproc=" + std::to_string(limits.processes + kOwnThreads), "--fsize=" + std::to_string(limits.file_bytes),
+          "--"};
+}
+
+}  // namespace
+
+std::vector<std::string> wrap(const std::vector<std::string>& argv, int seccomp_child_fd, const Confinement& confinement) {
+  std::vector<std::string> out = limitsPrefix(confinement.limits);
+  out.insert(out.end(), {bubblewrapPath(), "--unshare-user", "--uid", "65534", "--gid", "65534", "--disable-userns",
+                         "--cap-drop", "ALL", "--unshare-pid", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try",
+                         "--die-with-parent", "--new-session"});
+  systemBinds(out);
+  out.insert(out.end(), {"--dev", "/dev", "--proc", "/proc", "--size", std::to_string(confinement.limits.file_bytes),
+                         "--tmpfs", kPrivateTmp, "--dir", kPrivateCache, "--setenv", "TMPDIR", kPrivateTmp, "--setenv",
+                         "HOME", kPrivateTmp, "--setenv", "XDG_CACHE_HOME", kPrivateCache});
+  for (const std::string& path : confinement.read_only) out.insert(out.end(), {"--ro-bind", path, path});
+  for (const auto& [host, inside] : confinement.read_only_at) out.insert(out.end(), {"--ro-bind", host, inside});
+  for (const std::string& folder : confinement.folders) out.insert(out.end(), {"--dir", folder});
+  for (const auto& [name, value] : confinement.environment) out.insert(out.end(), {"--setenv", name, value});
+  // The folders made for the binds above are bwrap's own: read-only too (only /var/tmp is writable).
+  out.insert(out.end(), {"--remount-ro", "/"});
   out.insert(out.end(), {"--seccomp", std::to_string(seccomp_child_fd), "--"});
   out.insert(out.end(), argv.begin(), argv.end());
   return out;

@@ -44,6 +44,12 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
   t.flag(section + ".Autostart", false, "start the algorithm at once (set by `aula run --headless`)");
   t.real("Component.ExecuteBudget", 2.0, "s", 0, 86400,
          "wall time one call of the student's execute() may take before the run is ended (0: no limit, for a debugger)");
+  t.real("Component.Sandbox.Memory", 2048, "MB", 64, 1e7,
+         "memory the student's code may use in a sandboxed (graded) run; past it the run ends with that reason");
+  t.integer("Component.Sandbox.Processes", 64, "", 0, 4096,
+            "processes the student's code may start in a sandboxed run; past it the run ends with that reason");
+  t.real("Component.Sandbox.FileSize", 64, "MB", 1, 1e7,
+         "the largest file the student's code may write in a sandboxed run, and its private temporary folder's size");
 }
 
 SettingsTable makeSimulator() {

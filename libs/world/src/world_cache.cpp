@@ -14,7 +14,7 @@ namespace {
 
 constexpr const char* kHeader = "aula-world-cache-v1";
 
-std::string entryPath(const std::string& key) { return config::cacheDir() + "/worlds/" + key + ".txt"; }
+std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 
 // Strings on one tab-separated line: backslash, tab and newline escaped.
 std::string escape(const std::string& text) {
@@ -142,6 +142,19 @@ std::string worldCacheKey(const std::string& path, const std::vector<std::string
   std::string key = std::string(kHeader) + "\n" + std::filesystem::absolute(path).string() + "\n";
   for (const auto& folder : model_folders) key += folder + "\n";
   return sha256Hex(key);
+}
+
+std::string entryName(const std::string& key) { return "worlds/" + key + ".txt"; }
+
+std::vector<std::string> cachedInputs(const std::string& key) {
+  std::ifstream in(entryPath(key));
+  std::vector<std::string> inputs;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> f = fields(line);
+    if (f.size() == 3 && f[0] == "input") inputs.push_back(f[2]);
+  }
+  return inputs;
 }
 
 std::optional<WorldSpec> readCachedWorld(const std::string& key) {

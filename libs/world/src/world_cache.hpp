@@ -16,6 +16,10 @@ namespace aula::world {
 std::string worldCacheKey(const std::string& path, const std::vector<std::string>& model_folders);
 // The cached spec, or nothing (no entry, an unreadable or stale one: then parse the world).
 std::optional<WorldSpec> readCachedWorld(const std::string& key);
+// The files entry `key` lists as its inputs (empty when there is no such entry).
+std::vector<std::string> cachedInputs(const std::string& key);
+// The entry's path relative to the cache folder.
+std::string entryName(const std::string& key);
 // Writes the entry (aside, then renamed, so a parallel process never reads half of it). `inputs`
 // are the files the spec was read from. A cache that cannot be written only costs the next parse.
 void writeCachedWorld(const std::string& key, const WorldSpec& spec, const std::vector<std::string>& inputs);

@@ -154,6 +154,12 @@ WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& mod
   return spec;
 }
 
+WorldFiles worldFilesOf(const std::string& path) {
+  loadWorld(path);
+  const std::string key = worldCacheKey(path, modelSearchPath(path));
+  return {cachedInputs(key), entryName(key)};
+}
+
 const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name) {
   if (const RobotSpec* robot = world.findRobot(name)) return *robot;
   std::string names;

@@ -7,6 +7,7 @@
 #include <aula/lcm/bus.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/sandbox/sandbox.hpp>
+#include <aula/supervision/confinement.hpp>
 #include <aula/supervision/rules.hpp>
 #include <aula/supervision/run_recorder.hpp>
 #include <aula/supervision/supervisor.hpp>
@@ -59,7 +60,7 @@ std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings&
 
 // The three command lines of a run: each process gets the .cfg, the world and only its own keys.
 std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arguments& args, const RunSettings& run,
-                                                   bool headless, const std::string& lcm_url) {
+                                                   bool headless, const std::string& lcm_url, const std::string& isolation) {
   std::vector<std::vector<std::string>> lines = {
       simulatorLine(args, run, ex.referee_settings == nullptr ? 1 : 2, headless, lcm_url)};
   const std::vector<std::string> programs = {ex.component, ex.referee};
@@ -82,6 +83,7 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arg
   for (const char* output : {"report", "picture"}) {
     if (ex.referee_settings != nullptr && args.given(output)) lines[2].push_back(std::string("--") + output + "=" + args.text(output));
   }
+  if (ex.referee_settings != nullptr && !isolation.empty()) lines[2].push_back("--isolation=" + isolation);
   return lines;
 }
 
@@ -120,8 +122,20 @@ process::Placement placementOf(const Arguments& args, bool headless) {
   return {supervision::chooseCpu(choice, allowed, current), headless};
 }
 
+// What the sandboxed component may see and use: exactly its own inputs, within the run's limits.
+sandbox::Confinement confinementOf(const Exercise& ex, const RunSettings& run) {
+  const config::Config& component = run.component();
+  sandbox::Limits limits;
+  limits.memory_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.Memory") * (1 << 20));
+  limits.processes = component.getInt("Component.Sandbox.Processes");
+  limits.file_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.FileSize") * (1 << 20));
+  const auto files = supervision::componentFiles(binDir() + "/" + ex.component, run.cfg_path, run.world,
+                                                 component.getString(ex.section + ".Algorithm"));
+  return supervision::componentConfinement(files, limits);
+}
+
 supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args, const RunSettings& run, bool headless,
-                                       const std::string& lcm_url) {
+                                       const std::string& lcm_url, const std::string& isolation) {
   supervision::Supervision s;
   s.exercise = ex.name;
   s.report_path = args.text("report");
@@ -132,7 +146,8 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
   s.wall_budget_s = args.given("timeout")                        ? args.real("timeout")
                     : headless && ex.referee_settings != nullptr ? supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0)
                                                                  : 0;
-  s.lines = commandLines(ex, args, run, headless, lcm_url);
+  s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
+  if (s.sandbox) s.confinement = confinementOf(ex, run);
   s.has_referee = ex.referee_settings != nullptr;
   if (s.has_referee) {
     s.algorithm = run.component().getString(ex.section + ".Algorithm");
@@ -151,6 +166,16 @@ std::unique_ptr<supervision::RunRecorder> startRecording(const Exercise& ex, con
   return std::make_unique<supervision::RunRecorder>(path, lcmbus::resolveUrl(url, run.referee()), record);
 }
 
+// A sandboxed run's own network (before this process has any thread): "full" isolation; where
+// the system allows no namespace, the host's network and "partial", said once.
+std::string isolate() {
+  const std::string why_not = sandbox::enterPrivateNetwork();
+  if (why_not.empty()) return "full";
+  std::cerr << "aula: no private network for this run (" << why_not
+            << "): the sandbox shares the host's network; the report says \"isolation\": \"partial\"\n";
+  return "partial";
+}
+
 int runExercise(const Arguments& args) {
   const Exercise& ex = exerciseArgument(args.positional(0), "run");
   bool headless = args.flag("headless");
@@ -159,12 +184,13 @@ int runExercise(const Arguments& args) {
     headless = true;
   }
   checkOptions(ex, args, headless);
+  const std::string isolation = args.flag("sandbox") ? isolate() : "";
   prepareOutputs(args);
   // Port 0 (`aula grade`'s runs): a port the OS hands out, now, for all three processes.
   const std::string lcm_url = args.given("lcm-url") ? lcmbus::withFreePort(args.text("lcm-url")) : "";
   const std::string cfg = args.given("config") ? args.text("config") : config::dataPath(ex.config_file);
   const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless));
-  const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url);
+  const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation);
   std::unique_ptr<supervision::RunRecorder> recorder;
   if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url);
   const int code = supervision::supervise(supervision);

@@ -4,6 +4,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/line_pipe.hpp>
+#include <aula/process/process_tree.hpp>
 #include <aula/process/signal_watcher.hpp>
 #include <aula/sandbox/sandbox.hpp>
 #include <aula/supervision/rules.hpp>
@@ -48,6 +49,7 @@ class RunSupervisor {
         break;
       }
       checkWallBudget();
+      checkProcesses();
       // The referee had its chance to grade and say why: now everything stops.
       if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
       readSimulatorStatus();
@@ -85,7 +87,7 @@ class RunSupervisor {
     if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
       const int seccomp_child_fd = process::ChildProcess::passedFd(launch.passed.size());
       launch.passed.push_back(sandbox::seccompProgram());
-      launch.args = sandbox::wrap(launch.args, seccomp_child_fd);
+      launch.args = sandbox::wrap(launch.args, seccomp_child_fd, run_.confinement);
     }
     launch.close_last = keyed || sandboxed;
     return launch;
@@ -136,6 +138,23 @@ class RunSupervisor {
       std::cerr << "aula: " << why.str() << "\n";
       endRun(why.str());
     }
+  }
+
+  // A sandboxed component's processes (bubblewrap's two aside), looked at every 100 ms: past the
+  // limit the run ends with that reason and the component is stopped at once (its whole process
+  // namespace dies with it).
+  void checkProcesses() {
+    if (!run_.sandbox || children_.size() < 2 || told_referee_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - processes_checked_ < std::chrono::milliseconds(100)) return;
+    processes_checked_ = now;
+    const int limit = run_.confinement.limits.processes;
+    const int started = static_cast<int>(process::descendantsOf(children_[1]->pid()).size()) - 2;
+    if (started <= limit) return;
+    const std::string why = "the algorithm started more than " + std::to_string(limit) + " processes";
+    std::cerr << "aula: " << why << ": stopping it\n";
+    tellReferee(why);
+    children_[1]->stop(std::chrono::milliseconds(200));
   }
 
   // Sleeps until a child exits or a stop signal comes, or 20 ms pass (the wall budget, the
@@ -208,6 +227,7 @@ class RunSupervisor {
   bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
   std::string abort_reason_;
   std::optional<std::chrono::steady_clock::time_point> ending_since_;
+  std::chrono::steady_clock::time_point processes_checked_;
 };
 
 }  // namespace

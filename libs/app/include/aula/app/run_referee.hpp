@@ -68,7 +68,14 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
       return;
     }
     std::cout << node.summary() << std::flush;
-    if (!report_path.empty()) node.report().writeAtomically(report_path);
+    if (!report_path.empty()) {
+      // How the run was confined, as the launcher said (--isolation): a run without the sandbox says so.
+      const std::string isolation = setup.command_line.option("isolation", "none");
+      auto report = node.report();
+      report.set("sandboxed", isolation != "none");
+      report.set("isolation", isolation);
+      report.writeAtomically(report_path);
+    }
     if (!picture_path.empty()) node.writePicture(picture_path);
   };
   if (setup.command_line.flag("replay")) {

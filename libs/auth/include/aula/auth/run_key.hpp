@@ -33,8 +33,9 @@ Key randomKey();
 // A pipe's read end (close-on-exec) that holds `key` and then end-of-file: hand it to one child
 // (ChildProcess's passed descriptors). Throws std::runtime_error.
 int keyPipe(const Key& key);
-// Reads exactly one key from `fd` and closes it. Throws std::runtime_error naming `what` when the
-// descriptor is not open or holds anything but 32 bytes.
+// Reads exactly one key from `fd` and closes it; from then on the process is not dumpable (its
+// memory unreadable to other processes of its user). Throws std::runtime_error naming `what` when
+// the descriptor is not open or holds anything but 32 bytes.
 Key readKey(int fd, const std::string& what);
 
 // HMAC-SHA256 under one key, prepared once: a tag costs about 0.5 us instead of the 2.5 us of

@@ -95,6 +95,16 @@ std::vector<std::string> modelSearchPath(const std::string& world_path);
 // states <physics><max_step_size>.
 WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path = {});
 
+// What a process that loads the world at `path` reads: the world file and every model file it
+// includes (`inputs`, as the parsed-world cache lists them) and that cache's entry for it
+// (`cache_entry`, relative to the cache folder: "worlds/<key>.txt"). Loads the world first, so
+// the entry exists. A sandbox binds exactly these (aula_supervision). Throws WorldError.
+struct WorldFiles {
+  std::vector<std::string> inputs;
+  std::string cache_entry;
+};
+WorldFiles worldFilesOf(const std::string& path);
+
 // SHA-256 in lowercase hex, of bytes and of a file's content (WorldError if unreadable).
 std::string sha256Hex(const std::string& bytes);
 std::string sha256OfFile(const std::string& path);

@@ -7,6 +7,7 @@
 // are plain functions in rules.hpp, unit-tested.
 
 #include <aula/process/child_process.hpp>
+#include <aula/sandbox/sandbox.hpp>
 
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@ struct Supervision {
   bool has_referee = false;
   bool headless = false;
   bool sandbox = false;      // --sandbox: the component (the student's code) runs in aula_sandbox
+  sandbox::Confinement confinement;  // what it sees there (componentConfinement)
   double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
   std::string exercise, report_path;
   std::string algorithm;               // what the component runs ("student", "libmy_algorithm.so")

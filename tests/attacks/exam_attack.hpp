@@ -1,0 +1,115 @@
+// A student's vacuum algorithm that attacks its exam from inside execute(), once, and says on
+// stderr what each try gave ("exam: <try>: done" / "exam: <try>: refused (<why>)"); then it
+// stays still. Which attack: AULA_EXAM_ATTACK, defined by the submission's MyAlgorithm.cpp that
+// includes this file (tests/attacks/test_exam.cpp writes one folder per attack):
+// - "read": read each file named in $AULA_EXAM_READ (colon-separated: a classmate's
+//   MyAlgorithm.cpp, the out folder's grades, a teacher's world, /home);
+// - "udp": send a datagram to 127.0.0.1 and to LCM's group on $AULA_EXAM_PORT, where a listener
+//   outside the run waits;
+// - "memory": allocate and touch 3 GB;
+// - "fork": start processes until refused, and keep trying;
+// - "privilege": what a root sandbox once allowed (issue 28): unmount /proc, remount / read-write,
+//   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE.
+#include <aula/vacuum/vacuum_algorithm.hpp>
+
+#include <arpa/inet.h>
+#include <sched.h>
+#include <sys/mount.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace exam {
+
+inline void say(const std::string& what, bool done, int error = 0) {
+  if (done) std::fprintf(stderr, "exam: %s: done\n", what.c_str());
+  else std::fprintf(stderr, "exam: %s: refused (%s)\n", what.c_str(), std::strerror(error));
+}
+
+inline void readFiles() {
+  std::stringstream names(std::getenv("AULA_EXAM_READ") != nullptr ? std::getenv("AULA_EXAM_READ") : "");
+  std::string path;
+  while (std::getline(names, path, ':')) {
+    errno = 0;
+    std::ifstream in(path);
+    std::string first;
+    const bool opened = static_cast<bool>(in);
+    say("read " + path, opened, errno != 0 ? errno : ENOENT);
+  }
+}
+
+inline void sendDatagrams() {
+  const char* port = std::getenv("AULA_EXAM_PORT");
+  for (const char* address : {"127.0.0.1", "239.255.76.67"}) {
+    const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in to{};
+    to.sin_family = AF_INET;
+    to.sin_port = htons(static_cast<uint16_t>(std::atoi(port != nullptr ? port : "9")));
+    ::inet_pton(AF_INET, address, &to.sin_addr);
+    const char secret[] = "a classmate's MyAlgorithm.cpp";
+    const bool sent = fd >= 0 && ::sendto(fd, secret, sizeof secret, 0, reinterpret_cast<sockaddr*>(&to), sizeof to) > 0;
+    say(std::string("send to ") + address, sent, errno);
+    if (fd >= 0) ::close(fd);
+  }
+}
+
+inline void useMemory() {
+  const size_t size = 3ull << 30;
+  std::unique_ptr<char[]> block(new char[size]);
+  std::memset(block.get(), 1, size);
+  say("use 3 GB", block[size - 1] == 1);
+}
+
+inline void forkForever() {
+  for (;;) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      ::pause();
+      ::_exit(0);
+    }
+  }
+}
+
+inline void tryPrivileges() {
+  say("unmount /proc", ::umount2("/proc", MNT_DETACH) == 0, errno);
+  say("remount / read-write", ::mount(nullptr, "/", nullptr, MS_REMOUNT | MS_BIND, nullptr) == 0, errno);
+  say("make a user namespace", ::unshare(CLONE_NEWUSER) == 0, errno);
+  const char* target = std::getenv("AULA_EXAM_WRITE");
+  errno = 0;
+  std::ofstream out(target != nullptr ? target : "/nonexistent");
+  say("write " + std::string(target != nullptr ? target : ""), static_cast<bool>(out), errno != 0 ? errno : ENOENT);
+}
+
+class ExamAttack : public aula::vacuum::VacuumAlgorithm {
+ public:
+  void execute(aula::vacuum::VacuumApi& api) override {
+    api.motors.sendV(0.0);
+    api.motors.sendW(0.0);
+    if (done_) return;
+    done_ = true;
+    const std::string attack = AULA_EXAM_ATTACK;
+    if (attack == "read") readFiles();
+    if (attack == "udp") sendDatagrams();
+    if (attack == "memory") useMemory();
+    if (attack == "fork") forkForever();
+    if (attack == "privilege") tryPrivileges();
+  }
+
+ private:
+  bool done_ = false;
+};
+
+}  // namespace exam
+
+namespace aula::vacuum {
+std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t) { return std::make_unique<exam::ExamAttack>(); }
+}  // namespace aula::vacuum

@@ -1,0 +1,185 @@
+// An exam under `aula grade` (issue 28): a class of a quiet student and four attackers, each a
+// submission folder whose MyAlgorithm.cpp attacks from inside execute() (exam_attack.hpp). Every
+// attacker's own row says what it earned and why; the quiet student's row is what she gets when
+// graded alone. The same attacks without the sandbox succeed, which shows the test can fail.
+#include "test_support.hpp"
+
+#include <aula/process/child_process.hpp>
+
+#include <gtest/gtest.h>
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace {
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using aula::testing::readFile;
+
+const std::string kAula = std::string(AULA_BIN_DIR) + "/aula";
+constexpr const char* kShortRun = "--Vacuum.Referee.Duration=20";
+
+// A UDP listener outside every run, on 0.0.0.0:port and in LCM's multicast group.
+class Listener {
+ public:
+  Listener() {
+    fd_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_NONBLOCK, 0);
+    const int yes = 1;
+    ::setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    sockaddr_in any{};
+    any.sin_family = AF_INET;
+    any.sin_addr.s_addr = htonl(INADDR_ANY);
+    EXPECT_EQ(::bind(fd_, reinterpret_cast<sockaddr*>(&any), sizeof any), 0);
+    socklen_t length = sizeof any;
+    ::getsockname(fd_, reinterpret_cast<sockaddr*>(&any), &length);
+    port_ = ntohs(any.sin_port);
+    ip_mreq group{};
+    ::inet_pton(AF_INET, "239.255.76.67", &group.imr_multiaddr);
+    group.imr_interface.s_addr = htonl(INADDR_LOOPBACK);
+    ::setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &group, sizeof group);
+  }
+  ~Listener() { ::close(fd_); }
+  int port() const { return port_; }
+  int received() const {
+    char buffer[2048];
+    int count = 0;
+    while (::recv(fd_, buffer, sizeof buffer, 0) > 0) ++count;
+    return count;
+  }
+
+ private:
+  int fd_ = -1;
+  int port_ = 0;
+};
+
+std::map<std::string, std::map<std::string, std::string>> gradesOf(const std::string& csv_path) {
+  std::ifstream in(csv_path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream head(line);
+  for (std::string field; std::getline(head, field, ',');) header.push_back(field);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    // Failures are the last fields but one: split the first columns, keep the rest whole.
+    std::stringstream row(line);
+    std::string student;
+    std::getline(row, student, ',');
+    rows[student]["line"] = line;
+    for (size_t i = 1; i < header.size() && row.good(); ++i) std::getline(row, rows[student][header[i]], ',');
+  }
+  return rows;
+}
+
+void writeSubmission(const fs::path& folder, const std::string& attack) {
+  fs::create_directories(folder);
+  std::ofstream(folder / "MyAlgorithm.cpp") << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n#include \""
+                                            << AULA_SOURCE_DIR << "/tests/attacks/exam_attack.hpp\"\n";
+}
+
+int grade(const std::vector<std::string>& folders, const fs::path& out, const std::string& log) {
+  std::vector<std::string> argv = {kAula, "grade", "vacuum"};
+  argv.insert(argv.end(), folders.begin(), folders.end());
+  argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun});
+  aula::process::ChildProcess child(argv, log, log);
+  return child.wait(300s).value_or(-1);
+}
+
+TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
+  const fs::path dir = aula::testing::privateDir();
+  writeSubmission(dir / "class" / "quiet", "none");
+  for (const char* attack : {"read", "udp", "memory", "fork", "privilege"}) writeSubmission(dir / "class" / attack, attack);
+  fs::create_directories(dir / "teacher");
+  fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
+  const std::string targets = (dir / "class" / "quiet" / "MyAlgorithm.cpp").string() + ":" +
+                              (dir / "out" / "manifest.json").string() + ":" + (dir / "teacher" / "held_out.world").string() +
+                              ":/home";
+  ::setenv("AULA_EXAM_READ", targets.c_str(), 1);
+  ::setenv("AULA_EXAM_WRITE", (dir / "out" / "grades.csv").c_str(), 1);
+  Listener listener;
+  ::setenv("AULA_EXAM_PORT", std::to_string(listener.port()).c_str(), 1);
+
+  // The quiet student alone: what her row must stay.
+  ASSERT_EQ(grade({(dir / "class" / "quiet").string()}, dir / "alone", (dir / "alone.log").string()), 0)
+      << readFile((dir / "alone.log").string());
+  const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
+
+  std::vector<std::string> folders;
+  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege"}) {
+    folders.push_back((dir / "class" / name).string());
+  }
+  ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string()), 0) << readFile((dir / "class.log").string());
+  const auto rows = gradesOf((dir / "out" / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 6u) << readFile((dir / "out" / "grades.csv").string());
+  const std::string privilege_log = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.log").string());
+  for (const std::string& attempt : {std::string("unmount /proc"), std::string("remount / read-write"),
+                                     std::string("make a user namespace"), "write " + (dir / "out" / "grades.csv").string()}) {
+    EXPECT_NE(privilege_log.find("exam: " + attempt + ": refused"), std::string::npos) << attempt << "\n" << privilege_log;
+  }
+  EXPECT_EQ(rows.at("privilege").at("runs_failed"), "0") << rows.at("privilege").at("line");
+  EXPECT_EQ(rows.at("quiet").at("line"), alone.at("quiet").at("line"));
+
+  const std::string read_log = readFile((dir / "out" / "runs" / "read" / "vacuum-seed1.log").string());
+  for (const std::string& target : {(dir / "class" / "quiet" / "MyAlgorithm.cpp").string(),
+                                    (dir / "out" / "manifest.json").string(), (dir / "teacher" / "held_out.world").string(),
+                                    std::string("/home")}) {
+    EXPECT_NE(read_log.find("exam: read " + target + ": refused"), std::string::npos) << target << "\n" << read_log;
+  }
+  EXPECT_EQ(rows.at("read").at("runs_failed"), "0") << rows.at("read").at("line");
+  EXPECT_EQ(listener.received(), 0) << "a datagram left a graded run";
+  const std::string udp_log = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.log").string());
+  EXPECT_NE(udp_log.find("exam: send to 127.0.0.1"), std::string::npos) << udp_log;
+  EXPECT_NE(rows.at("memory").at("line").find("the algorithm used more than 2048 MB of memory"), std::string::npos)
+      << rows.at("memory").at("line");
+  EXPECT_NE(rows.at("fork").at("line").find("the algorithm started more than 64 processes"), std::string::npos)
+      << rows.at("fork").at("line");
+
+  // Without the sandbox the same reads and datagrams get through: the test can fail.
+  for (const std::string attack : {"read", "udp"}) {
+    const std::string log = (dir / ("open-" + attack + ".log")).string();
+    aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", std::string("--algorithm=") +
+                                     (attack == "read" ? AULA_EXAM_READ_PLUGIN : AULA_EXAM_UDP_PLUGIN),
+                                     kShortRun, "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                    log, log);
+    EXPECT_EQ(run.wait(120s).value_or(-1), 0) << readFile(log);
+  }
+  const std::string open_log = readFile((dir / "open-read.log").string());
+  EXPECT_NE(open_log.find("exam: read " + (dir / "teacher" / "held_out.world").string() + ": done"), std::string::npos)
+      << open_log;
+  EXPECT_GT(listener.received(), 0) << "without the sandbox the datagrams should have arrived";
+  ::unsetenv("AULA_EXAM_READ");
+  ::unsetenv("AULA_EXAM_WRITE");
+  ::unsetenv("AULA_EXAM_PORT");
+  fs::remove_all(dir);
+}
+
+// Two sandboxed runs at once on the same LCM port: each its own network, so both grade as alone.
+TEST(Exam, TwoSandboxedRunsOnOnePortGradeAsAlone) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string url = "--lcm-url=udpm://239.255.76.67:" + std::to_string(aula::testing::freeUdpPort()) + "?ttl=0";
+  std::vector<std::unique_ptr<aula::process::ChildProcess>> runs;
+  for (int i = 0; i < 2; ++i) {
+    const std::string log = dir + "/run" + std::to_string(i) + ".log";
+    runs.push_back(std::make_unique<aula::process::ChildProcess>(
+        std::vector<std::string>{kAula, "run", "vacuum", "--headless", "--sandbox", "--algorithm=reference", "--seed=4",
+                                 kShortRun, url, "--cpu=any", "--report=" + dir + "/run" + std::to_string(i) + ".json"},
+        log, log));
+  }
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_EQ(runs[i]->wait(120s).value_or(-1), 0) << readFile(dir + "/run" + std::to_string(i) + ".log");
+  }
+  const std::string first = readFile(dir + "/run0.json"), second = readFile(dir + "/run1.json");
+  EXPECT_NE(first.find("\"finished\": true"), std::string::npos) << first;
+  EXPECT_NE(first.find("\"isolation\": \"full\""), std::string::npos) << first;
+  EXPECT_EQ(first, second);
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,44 @@
+#include "aula/supervision/confinement.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <filesystem>
+
+namespace aula::supervision {
+namespace fs = std::filesystem;
+
+sandbox::Confinement componentConfinement(const ComponentFiles& files, const sandbox::Limits& limits) {
+  sandbox::Confinement c;
+  c.limits = limits;
+  c.read_only = {files.program, files.lib_dir, files.cfg};
+  c.read_only.insert(c.read_only.end(), files.world_inputs.begin(), files.world_inputs.end());
+  if (!files.algorithm.empty()) c.read_only.push_back(files.algorithm);
+  // config::dataDir() looks for <data>/worlds: there, empty, beside whatever of it is bound.
+  c.folders = {files.data_dir + "/worlds"};
+  if (!files.world_cache_entry.empty()) {
+    c.read_only_at.emplace_back(files.world_cache_entry, std::string(sandbox::kPrivateCache) + "/aula/" + files.world_cache_name);
+  }
+  return c;
+}
+
+ComponentFiles componentFiles(const std::string& program, const std::string& cfg, const std::string& world,
+                              const std::string& algorithm) {
+  ComponentFiles files;
+  files.program = program;
+  files.lib_dir = config::libDir();
+  files.data_dir = config::dataDir();
+  files.cfg = fs::absolute(cfg).lexically_normal().string();
+  const world::WorldFiles world_files = world::worldFilesOf(world);
+  files.world_inputs = world_files.inputs;
+  const std::string entry = config::cacheDir() + "/" + world_files.cache_entry;
+  if (fs::is_regular_file(entry)) {
+    files.world_cache_entry = entry;
+    files.world_cache_name = world_files.cache_entry;
+  }
+  const bool is_path = algorithm.find('/') != std::string::npos || fs::path(algorithm).has_extension();
+  if (is_path) files.algorithm = fs::absolute(algorithm).lexically_normal().string();
+  return files;
+}
+
+}  // namespace aula::supervision
