@@ -29,19 +29,6 @@
 namespace aula::autopark {
 namespace {
 
-// The nearest echo straight ahead of a laser within a band `half_width_m` either side of its
-// axis (the car's width), metres; the laser's max range when nothing is there.
-double clearanceAhead(const component::LaserData& scan, double half_width_m) {
-  double nearest = scan.maxRange;
-  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
-    const double r = scan.values_m[i], a = scan.angle(i);
-    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;
-    const double ahead = r * std::cos(a), aside = r * std::sin(a);
-    if (ahead > 0 && std::abs(aside) <= half_width_m) nearest = std::min(nearest, ahead);
-  }
-  return nearest;
-}
-
 class ReactiveParker : public AutoparkAlgorithm {
  public:
   void execute(AutoparkApi& api) override {
@@ -56,9 +43,14 @@ class ReactiveParker : public AutoparkAlgorithm {
     double v = 0, w = 0;
     switch (mode_) {
       case Mode::Turn:
-        turnRound(api, yaw, v, w);
+        if (turn_.step(api, yaw, v, w)) mode_ = Mode::Search;
         break;
       case Mode::Search: {
+        if (search_->exhausted()) {
+          api.status = "no free slot on the street";
+          mode_ = Mode::Declined;
+          break;
+        }
         const StreetSearch::Step step = search_->search(api, x, y, yaw);
         if (step.slot) {
           planFor(api, *step.slot);
@@ -119,8 +111,6 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
   static constexpr double kArcRadiusM = 5.0;       // the search's steering limit
   static constexpr double kCruiseMps = 2.0, kReverseMps = 1.5, kManoeuvreMps = 0.8;
-  static constexpr double kTurnMps = 0.8, kTurnRadps = 0.6;
-  static constexpr double kTurnClearanceM = 0.8;   // a three-point turn's leg ends this close to something
 
   void start(const AutoparkApi& api, double yaw) {
     car_ = {api.car_length_m, api.car_width_m, api.turn_centre_x_m, api.min_turn_radius_m};
@@ -129,27 +119,7 @@ class ReactiveParker : public AutoparkAlgorithm {
     settings.turn_radius_m = std::max(kArcRadiusM, api.min_turn_radius_m);
     search_.emplace(api, settings);
     // Facing the other way (the parked cars on its left): turn round first.
-    if (std::abs(geometry::wrapAngle(yaw)) > M_PI / 2) mode_ = Mode::Turn;
-  }
-
-  // Round to face +x: on the spot, or legs of a three-point turn (forward steering one way, back
-  // steering the other, both turning the car the same way) for a car-like car.
-  void turnRound(const AutoparkApi& api, double yaw, double& v, double& w) {
-    const double heading_error = geometry::wrapAngle(-yaw);  // to turn, towards 0
-    if (std::abs(heading_error) < (api.min_turn_radius_m > 0 ? 0.3 : 0.05)) {
-      mode_ = Mode::Search;  // the lane keeping straightens what is left
-      return;
-    }
-    const double turn_sign = heading_error > 0 ? 1.0 : -1.0;  // the shorter way round
-    if (api.min_turn_radius_m <= 0) {
-      w = turn_sign * kTurnRadps;
-      return;
-    }
-    const double half_width = api.car_width_m / 2 + 0.2;
-    if (turn_forward_ && clearanceAhead(api.laser1.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = false;
-    if (!turn_forward_ && clearanceAhead(api.laser2.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = true;
-    v = turn_forward_ ? kTurnMps : -kTurnMps;
-    w = turn_sign * kTurnMps / api.min_turn_radius_m;  // forward: steer to the turn; back: the other way
+    if (TurnRound::needed(yaw)) mode_ = Mode::Turn;
   }
 
   void planFor(AutoparkApi& api, const Slot& slot) {
@@ -210,7 +180,7 @@ class ReactiveParker : public AutoparkAlgorithm {
   TwoArcPlan plan_;
   Mode mode_ = Mode::Search, logged_mode_ = Mode::Parked;
   double t_ = 0;
-  bool turn_forward_ = true;
+  TurnRound turn_;
   int centre_moves_ = 0;
 };
 
