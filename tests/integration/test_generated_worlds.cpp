@@ -87,3 +87,14 @@ TEST(GeneratedWorlds, ThePlannerParksBetweenAVanAndASmallCarFromAReversedStartNo
   EXPECT_NEAR(jsonNumber(json, "slot_length_m"), 5.6, 1e-9) << json;
   EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
 }
+
+// The car that turns in place in a 1.3 L slot, too short for the reactive reference's two arcs:
+// it parks with several moves, forward and back within the slot, touching nothing.
+TEST(GeneratedWorlds, TheReactiveParkerParksTheCarThatTurnsInPlaceInAOnePointThreeLengthSlotWithSeveralMoves) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_autopark", {"--slot-length", "5.2", "--curb-offset", "0.5", "--kinematics", "diff"});
+  const std::string json = runOn(dir, "autopark", world, {"--algorithm=reactive"});
+  EXPECT_NE(json.find("\"case\": \"parked\""), std::string::npos) << json;
+  EXPECT_EQ(jsonNumber(json, "collisions"), 0.0) << json;
+  EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
+}
