@@ -127,7 +127,7 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagMaxRad = 0.6, kZigzagMinRad = 0.1, kZigzagStepRad = 0.05;
   static constexpr double kZigzagEndMarginM = 0.2;   // the body's ends from the slot's measured ends
   static constexpr double kZigzagCurbMarginM = 0.1;  // its lowest corner above the curb face
-  static constexpr double kZigzagMinTravelM = 0.3;   // the shortest useful move
+  static constexpr double kZigzagMinTravelM = 0.4;   // the shortest useful move
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
