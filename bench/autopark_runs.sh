@@ -6,10 +6,12 @@
 #   bench/autopark_runs.sh [BUILD_DIR] [SEEDS] [ALGORITHM] [WORLDS]
 #   e.g. bench/autopark_runs.sh build "$(seq -s' ' 1 20)" planner "autopark_ackermann_1.3L"
 # WORLDS = "generated": streets the shipped ones are not, written by worlds/tools/make_autopark.py
-# into a temporary folder: slots of 1.25, 1.4, 1.6 and 2.25 car lengths x curb offsets of 0, 0.5
-# and 1.0 m, and a reversed start (facing -x), each with both cars (turning in place, car-like).
-# One row per street and car: runs parked with no contact, declined (with the algorithm's
-# reason), collided, and anything else (not parked, no reason).
+# into a temporary folder: slots of 1.25, 1.3, 1.4, 1.6 and 2 car lengths x curb offsets of 0, 0.5
+# and 1 m x a forward and a reversed start (facing away from the slot), each with both cars
+# (turning in place, car-like). One row per slot, start and car, over the three curb offsets and
+# the seeds: runs parked with no contact, declined (with the algorithm's reason), collided, any
+# other end (not parked, no reason), and runs whose car left the street (the referee's
+# "left_street"); the worst cell (curb offset) of the row.
 set -euo pipefail
 build="${1:-build}"
 seeds="${2:-$(seq -s' ' 1 20)}"
@@ -22,37 +24,42 @@ number() { grep "\"$1\"" "$2" | head -1 | sed 's/.*: \(-\?[0-9.]*\).*/\1/'; }
 
 if [ "$worlds" = "generated" ]; then
   make="$(dirname "$0")/../worlds/tools/make_autopark.py"
-  echo "| street | car | parked, no contact | declined | collided | other | reason given |"
-  echo "|---|---|---|---|---|---|---|"
-  cells=()
-  for slot in 5.0 5.6 6.4 9.0; do
-    for curb in 0 0.5 1.0; do cells+=("$slot:$curb:-7,2.5,0"); done
-  done
-  cells+=("9.0:0:-7,2.5,3.14159")
-  for cell in "${cells[@]}"; do
-    IFS=: read -r slot curb start <<<"$cell"
-    for car in diff ackermann; do
-      world="$out/street.world"
-      python3 "$make" --out "$world" --slot-length "$slot" --curb-offset "$curb" --kinematics "$car" --start="$start" >/dev/null
-      parked=0 declined=0 collided=0 other=0 reason=""
-      for seed in $seeds; do
-        report="$out/r.json" log="$out/r.log"
-        "$build/bin/aula" run autopark --headless --algorithm="$algorithm" --seed="$seed" --world="$world" \
-          --report="$report" --lcm-url="udpm://239.255.76.67:$port?ttl=0" >"$log" 2>&1 || true
-        if [ "$(number collisions "$report")" != "0" ]; then
-          collided=$((collided + 1)); cp "$log" "/tmp/autopark-collided-$slot-$curb-$car-$seed.log"
-        elif grep -q '"parked": true' "$report"; then
-          parked=$((parked + 1))
-        elif grep -q "DECLINED" "$log"; then
-          declined=$((declined + 1)); reason="$(grep -h 'DECLINED' "$log" | head -1 | sed 's/.* deg: //')"
-        else
-          other=$((other + 1)); cp "$log" "/tmp/autopark-other-$slot-$curb-$car-$seed.log"
-        fi
+  echo "| slot | start | car | parked, no contact | declined | collided | other | left the street | worst curb offset | reason given |"
+  echo "|---|---|---|---|---|---|---|---|---|---|"
+  for k in 1.25 1.3 1.4 1.6 2; do
+    slot=$(echo "$k * 4" | bc -l | xargs printf '%.2f')
+    for start in forward reversed; do
+      for car in diff ackermann; do
+        parked=0 declined=0 collided=0 other=0 left=0 total=0 reason="" worst="" worst_parked=999
+        for curb in 0 0.5 1; do
+          world="$out/street.world"
+          flags=(--out "$world" --slot-length "$slot" --curb-offset "$curb" --kinematics "$car")
+          [ "$start" = reversed ] && flags+=(--reversed)
+          python3 "$make" "${flags[@]}" >/dev/null
+          cell_parked=0
+          for seed in $seeds; do
+            report="$out/r.json" log="$out/r.log"
+            rm -f "$report"
+            nice -n 10 "$build/bin/aula" run autopark --headless --algorithm="$algorithm" --seed="$seed" --world="$world" \
+              --report="$report" --lcm-url="udpm://239.255.76.67:$port?ttl=0" >"$log" 2>&1 || true
+            total=$((total + 1))
+            tag="$algorithm-$k-$start-$car-$curb-$seed"
+            grep -q '"left_street": true' "$report" && left=$((left + 1)) && cp "$log" "/tmp/autopark-left-$tag.log"
+            if [ "$(number collisions "$report")" != "0" ]; then
+              collided=$((collided + 1)); cp "$log" "/tmp/autopark-collided-$tag.log"
+            elif grep -q '"parked": true' "$report"; then
+              parked=$((parked + 1)); cell_parked=$((cell_parked + 1))
+            elif grep -qE "DECLINED|FAILED" "$log"; then
+              declined=$((declined + 1)); reason="$(grep -hE 'DECLINED|FAILED' "$log" | head -1 | sed 's/.* deg: //')"
+            else
+              other=$((other + 1)); cp "$log" "/tmp/autopark-other-$tag.log"
+            fi
+          done
+          [ "$cell_parked" -lt "$worst_parked" ] && worst_parked=$cell_parked && worst="+$curb m: $cell_parked/$(wc -w <<<"$seeds")"
+        done
+        printf '| %s m (%s L) | %s | %s | %d/%d | %d | %d | %d | %d | %s | %s |\n' "$slot" "$k" "$start" "$car" "$parked" "$total" \
+          "$declined" "$collided" "$other" "$left" "$worst" "$reason"
       done
-      total=$(wc -w <<<"$seeds")
-      name="slot $slot m ($(echo "$slot / 4" | bc -l | xargs printf '%.2f') L), curb +$curb m"
-      [ "$start" != "-7,2.5,0" ] && name="$name, reversed start"
-      printf '| %s | %s | %d/%d | %d | %d | %d | %s |\n' "$name" "$car" "$parked" "$total" "$declined" "$collided" "$other" "$reason"
     done
   done
   rm -rf "$out"

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -34,8 +35,20 @@ std::string reportOnly(const std::string& run) { return run.substr(0, run.find("
 
 void expectParkedWell(const std::string& run) {
   EXPECT_NE(run.find("\"parked\": true"), std::string::npos) << run;
+  EXPECT_NE(run.find("\"case\": \"parked\""), std::string::npos) << run;
+  EXPECT_NE(run.find("\"left_street\": false"), std::string::npos) << run;
   EXPECT_GE(jsonNumber(run, "mark"), 9.0) << run;
   EXPECT_EQ(jsonNumber(run, "collisions"), 0.0) << run;
+}
+
+// A run from (-7, 2.5) facing -x, the parked cars on the car's left: it must turn round first,
+// then park well.
+std::string parksFromAReversedStart(const std::string& algorithm, int seed, const std::string& world) {
+  const std::string run = runAutopark(algorithm + "_reversed", {"--algorithm=" + algorithm, "--seed=" + std::to_string(seed),
+                                                                "--world=" + world, "--Simulator.StartPose.car=-7,2.5,3.14159"});
+  EXPECT_NE(run.find("TURN at x -7.00 y 2.50 yaw 180.0 deg"), std::string::npos) << run;
+  expectParkedWell(run);
+  return run;
 }
 
 }  // namespace
@@ -89,9 +102,28 @@ TEST(AutoparkRun, ReactiveDeclinesASlotTooShortForItsArcsAndSaysWhy) {
 TEST(AutoparkRun, ReactiveTurnsRoundFromAReversedStartAndParks) {
   for (const char* world : {"worlds/autopark.world", "worlds/autopark_ackermann.world"}) {
     SCOPED_TRACE(world);
-    const std::string run = runAutopark("reversed", {"--algorithm=reactive", "--seed=11", std::string("--world=") + world,
-                                                     "--Simulator.StartPose.car=-7,2.5,3.14159"});
-    EXPECT_NE(run.find("TURN at x -7.00 y 2.50 yaw 180.0 deg"), std::string::npos) << run;
-    expectParkedWell(run);
+    parksFromAReversedStart("reactive", 11, world);
   }
 }
+
+// The planner from a reversed start: it turns round before searching (on the spot, or a
+// three-point turn), parks without a contact, and every plan keeps the car's body on the street
+// (the shipped streets: x -25 to 35 between the curb faces y -4.25 and 5), as its log says.
+TEST(AutoparkRun, PlannerTurnsRoundFromAReversedStartParksAndItsPlanNeverLeavesTheStreet) {
+  for (const char* world : {"worlds/autopark.world", "worlds/autopark_ackermann_1.3L.world"}) {
+    SCOPED_TRACE(world);
+    const std::string run = parksFromAReversedStart("planner", 12, world);
+    int plans = 0;
+    for (size_t at = run.find("body within x "); at != std::string::npos; at = run.find("body within x ", at + 1)) {
+      double x0, x1, y0, y1;
+      ASSERT_EQ(std::sscanf(run.c_str() + at, "body within x %lf to %lf, y %lf to %lf", &x0, &x1, &y0, &y1), 4) << run;
+      EXPECT_GE(x0, -25.0);
+      EXPECT_LE(x1, 35.0);
+      EXPECT_GE(y0, -4.25);
+      EXPECT_LE(y1, 5.0);
+      ++plans;
+    }
+    EXPECT_GE(plans, 1) << run;
+  }
+}
+

@@ -70,3 +70,31 @@ TEST(GeneratedWorlds, TheReactiveParkerParksInAnotherSlotFromAnotherStart) {
   EXPECT_EQ(jsonNumber(json, "collisions"), 0.0) << json;
   EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
 }
+
+// A street the shipped ones are not: a van behind the slot, a small car ahead of it, the curb
+// 0.5 m further out, a free 8 m curb beyond the last car (longer than the slot, and not it) and
+// the car facing away from the slot. The planner turns round and parks in the slot, touching
+// nothing; the referee takes the slot between the van and the small car.
+TEST(GeneratedWorlds, ThePlannerParksBetweenAVanAndASmallCarFromAReversedStartNotAtTheFreeCurb) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_autopark", {"--slot-length", "5.6", "--curb-offset", "0.5", "--kinematics", "ackermann",
+                                                            "--reversed", "--rear-neighbour", "van", "--front-neighbour", "small",
+                                                            "--free-curb", "8"});
+  const std::string json = runOn(dir, "autopark", world, {"--algorithm=planner"});
+  EXPECT_NE(json.find("\"case\": \"parked\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"left_street\": false"), std::string::npos) << json;
+  EXPECT_EQ(jsonNumber(json, "collisions"), 0.0) << json;
+  EXPECT_NEAR(jsonNumber(json, "slot_length_m"), 5.6, 1e-9) << json;
+  EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
+}
+
+// The car that turns in place in a 1.3 L slot, too short for the reactive reference's two arcs:
+// it parks with several moves, forward and back within the slot, touching nothing.
+TEST(GeneratedWorlds, TheReactiveParkerParksTheCarThatTurnsInPlaceInAOnePointThreeLengthSlotWithSeveralMoves) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = generate(dir, "make_autopark", {"--slot-length", "5.2", "--curb-offset", "0.5", "--kinematics", "diff"});
+  const std::string json = runOn(dir, "autopark", world, {"--algorithm=reactive"});
+  EXPECT_NE(json.find("\"case\": \"parked\""), std::string::npos) << json;
+  EXPECT_EQ(jsonNumber(json, "collisions"), 0.0) << json;
+  EXPECT_GE(jsonNumber(json, "mark"), 9.0) << json;
+}

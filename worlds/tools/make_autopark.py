@@ -32,6 +32,16 @@ Usage:
     --kinematics K    "diff" (default, turns in place) or "ackermann" (car-like)
     --start X,Y,YAW   the car's start pose (default -7,2.5,0; yaw in rad, 0 = facing +x); its
                       4 x 2 m body must not touch a curb or a parked car
+    --reversed        the start faces -x (yaw pi): the parked cars on the car's left, the slot
+                      behind it
+    --rear-neighbour K, --front-neighbour K
+                      the parked cars either side of the slot: "car" (default, 4.5 x 1.8 m),
+                      "van" (5.5 x 2.0 m) or "small" (3.6 x 1.6 m); each keeps the cars' 0.35 m
+                      from the curb, the slot stays --slot-length, and the cars beyond move
+                      with the neighbour's length
+    --free-curb M     a free curb M metres long beyond the last parked car before the east end
+                      wall (default: the road's own end, 3.75 m at least); a car parked there
+                      is not in the slot
   The names the referee relies on stay: parked_car_<i> (static includes), the collision
   curb_parking_side, the car model "car". A comment in the world lists the parameters used, as
   name=value (an XML comment cannot hold "--").
@@ -55,7 +65,10 @@ PARKED_AFTER_OFFSETS = [0.0, 7.5, 15.0]  # the default street: cars at 14, 21.5,
 PARKED_HALF_LENGTH = 2.25
 PARKED_HALF_WIDTH = 0.9
 PARKED_Y = -3.0
+# The neighbours a slot can have, (length, width, height) m; each stands 0.35 m off the curb as a car does.
+NEIGHBOURS = {"car": (4.5, 1.8, 1.5), "van": (5.5, 2.0, 2.2), "small": (3.6, 1.6, 1.4)}
 CURB_FACE_Y = -4.25   # parking-side curb face (its box: 1 m deep, 0.2 m high)
+CURB_CLEARANCE_M = PARKED_Y - PARKED_HALF_WIDTH - CURB_FACE_Y  # 0.35: a parked car's side to the curb face
 FAR_CURB_FACE_Y = 5.0
 ROAD_WEST, ROAD_EAST = -25.0, 35.0  # the default road; a street never gets shorter
 WIDEST_OTHER_GAP_M = 3.0  # between the parked cars after the slot (7.5 - 4.5)
@@ -88,34 +101,69 @@ def car_model(kinematics, start=DEFAULT_START):
     return "    " + model.replace("\n", "\n  ") + "\n"
 
 
-def parked_xs(slot_m, slot_x):
-    if slot_x == SLOT_START_X:
+def parked_xs(slot_m, slot_x, rear="car", front="car"):
+    """The parked cars' centres along x; the neighbours either side of the slot may be longer or
+    shorter than a car, and the cars beyond them move by the difference."""
+    rear_extra = NEIGHBOURS[rear][0] / 2 - PARKED_HALF_LENGTH
+    front_extra = NEIGHBOURS[front][0] / 2 - PARKED_HALF_LENGTH
+    if slot_x == SLOT_START_X and rear == "car":
         before = list(PARKED_BEFORE)
     else:
-        before = [slot_x + (x - SLOT_START_X) for x in PARKED_BEFORE]
+        before = [slot_x + (x - SLOT_START_X) - 2 * rear_extra for x in PARKED_BEFORE]
+        before[-1] += rear_extra  # the neighbour itself: its front bumper stays at slot_x
     after_first = slot_x + slot_m + PARKED_HALF_LENGTH
-    return before + [after_first + d for d in PARKED_AFTER_OFFSETS]
+    after = [after_first + d + 2 * front_extra for d in PARKED_AFTER_OFFSETS]
+    after[0] -= front_extra
+    return before + after
 
 
-def road_extent(parked, start):
-    """The road's x range: the default one, grown to keep every car and the start on it."""
+def parked_kinds(rear="car", front="car"):
+    """The kind of each car of parked_xs(), in the same order."""
+    kinds = ["car"] * (len(PARKED_BEFORE) + len(PARKED_AFTER_OFFSETS))
+    kinds[len(PARKED_BEFORE) - 1] = rear
+    kinds[len(PARKED_BEFORE)] = front
+    return kinds
+
+
+def parked_y(kind, curb_offset):
+    """A parked car's centre y: its side CURB_CLEARANCE_M off the curb face."""
+    return CURB_FACE_Y - curb_offset + CURB_CLEARANCE_M + NEIGHBOURS[kind][1] / 2
+
+
+def road_extent(parked, start, free_curb=None):
+    """The road's x range: the default one, grown to keep every car and the start on it; with
+    free_curb, the east end that far beyond the last car."""
     west = min(ROAD_WEST, min(parked) - PARKED_HALF_LENGTH - 2.75)
     east = max(ROAD_EAST, max(parked) + PARKED_HALF_LENGTH + 3.75)
+    if free_curb is not None:
+        east = max(parked) + PARKED_HALF_LENGTH + free_curb
     if start is not None:
         length, width = car_size()
         xs = [p[0] for p in corners(start[0], 0.0, start[2], length, width)]
         west = min(west, min(xs) - 3.0)
         east = max(east, max(xs) + 3.0)
-    return float(math.floor(west)), float(math.ceil(east))
+    return float(math.floor(west)), float(east if free_curb is not None else math.ceil(east))
+
+
+def parked_model(name, kind, x, y):
+    """A parked car: the shared model for a car, an inline static box for a van or a small car."""
+    if kind == "car":
+        return include("parked_car", name, x, y, "0")
+    length, width, height = NEIGHBOURS[kind]
+    return ([f'    <model name="{name}">', "      <static>true</static>",
+             f"      <pose>{num(x)} {num(y)} 0 0 0 0</pose>", '      <link name="body">']
+            + box("body", 0, 0, height / 2, length, width, height) + ['      </link>', '    </model>'])
 
 
 def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start=DEFAULT_START,
-          parameters=None):
-    parked = parked_xs(slot_m, slot_x)
-    west, east = road_extent(parked, start)
+          parameters=None, rear="car", front="car", free_curb=None):
+    parked = parked_xs(slot_m, slot_x, rear, front)
+    kinds = parked_kinds(rear, front)
+    west, east = road_extent(parked, start, free_curb)
     car_y = PARKED_Y - curb_offset
     curb_face = CURB_FACE_Y - curb_offset
     ideal_x = slot_x + slot_m / 2.0
+    ideal_y = (parked_y(rear, curb_offset) + parked_y(front, curb_offset)) / 2  # as the referee takes it
     sx, sy, syaw = start
     facing = "facing +x" if syaw == 0 else f"with yaw {num(syaw)} rad"
     out = ['<?xml version="1.0"?>',
@@ -124,8 +172,13 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
            f" y = {num(curb_face)} (parking",
            f"     side) and y = +5; parked cars (4.5 x 1.8 m) centred at y = {num(car_y)} leave a {slot_m:.2f} m slot",
            f"     ({slot_m / CAR_LENGTH_M:.2f} car lengths) between x = {slot_x:.2f} and {slot_x + slot_m:.2f};"
-           f" ideal parked pose ({ideal_x:.2f}, {num(car_y)}), yaw 0.",
+           f" ideal parked pose ({ideal_x:.2f}, {num(ideal_y)}), yaw 0.",
            f"     The car starts at ({num(sx)}, {num(sy)}) {facing}; kinematics \"{kinematics}\". -->"]
+    if rear != "car" or front != "car":
+        out.append(f"<!-- neighbours: a {rear} behind the slot, a {front} ahead of it"
+                   f" ({', '.join(f'{k} {num(v[0])} x {num(v[1])} m' for k, v in NEIGHBOURS.items())}) -->")
+    if free_curb is not None:
+        out.append(f"<!-- a free curb of {num(free_curb)} m beyond the last parked car (not the slot) -->")
     if parameters is not None:
         out.append(f"<!-- parameters: {parameters} -->")
     out += world_open("autopark") + [physics("0.005")] + static_model_open("street", "curbs")
@@ -137,10 +190,10 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
     out += street_box("end_wall_west", west - 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out += street_box("end_wall_east", east + 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out += ['      </link>', '    </model>']
-    for i, x in enumerate(parked):
+    for i, (x, kind) in enumerate(zip(parked, kinds)):
         if x + PARKED_HALF_LENGTH > east or x - PARKED_HALF_LENGTH < west:
             continue  # beyond an end wall (never, the road grows)
-        out += include("parked_car", f"parked_car_{i}", x, car_y, "0")
+        out += parked_model(f"parked_car_{i}", kind, x, parked_y(kind, curb_offset))
     out.append(car_model(kinematics, start).rstrip("\n"))
     out += ['  </world>', '</sdf>', '']
     return "\n".join(out)
@@ -158,7 +211,8 @@ def write_shipped():
 
 # ---- command line -------------------------------------------------------------------------
 
-VALUE_OPTIONS = ("--out", "--slot-length", "--slot-x", "--curb-offset", "--kinematics", "--start")
+VALUE_OPTIONS = ("--out", "--slot-length", "--slot-x", "--curb-offset", "--kinematics", "--start", "--rear-neighbour",
+                 "--front-neighbour", "--free-curb")
 
 
 def parse_args(argv):
@@ -168,8 +222,18 @@ def parse_args(argv):
     p.add_argument("--slot-x", type=finite, default=SLOT_START_X)
     p.add_argument("--curb-offset", type=finite, default=0.0)
     p.add_argument("--kinematics", choices=("diff", "ackermann"), default="diff")
-    p.add_argument("--start", type=parse_pose, default=DEFAULT_START)
+    p.add_argument("--start", type=parse_pose, default=None)
+    p.add_argument("--reversed", action="store_true")
+    p.add_argument("--rear-neighbour", choices=tuple(NEIGHBOURS), default="car")
+    p.add_argument("--front-neighbour", choices=tuple(NEIGHBOURS), default="car")
+    p.add_argument("--free-curb", type=finite, default=None)
     a = p.parse_args(join_negative_values(argv, VALUE_OPTIONS))
+    if a.reversed and a.start is not None:
+        raise UsageError("--reversed and --start: give the start's yaw in --start instead")
+    if a.start is None:
+        a.start = (DEFAULT_START[0], DEFAULT_START[1], math.pi if a.reversed else DEFAULT_START[2])
+    if a.free_curb is not None:
+        check_range("free-curb", a.free_curb, 0.0, 1000.0, "m")
     if not a.slot_length > WIDEST_OTHER_GAP_M:
         raise UsageError(f"--slot-length must be > {WIDEST_OTHER_GAP_M:g} m (the widest gap between the other"
                          f" parked cars; the referee takes the widest gap as the slot), got {a.slot_length:g}")
@@ -191,8 +255,10 @@ def check_start(a):
     if min(ys) <= curb_face or max(ys) >= FAR_CURB_FACE_Y:
         raise UsageError(f"--start: the car ({length:g} x {width:g} m) at ({x:g}, {y:g}, yaw {yaw:g}) is not on the"
                          f" road between the curbs (y {curb_face:g} .. {FAR_CURB_FACE_Y:g})")
-    for i, px in enumerate(parked_xs(a.slot_length, a.slot_x)):
-        parked = corners(px, PARKED_Y - a.curb_offset, 0.0, 2 * PARKED_HALF_LENGTH, 2 * PARKED_HALF_WIDTH)
+    kinds = parked_kinds(a.rear_neighbour, a.front_neighbour)
+    for i, px in enumerate(parked_xs(a.slot_length, a.slot_x, a.rear_neighbour, a.front_neighbour)):
+        length, width, _ = NEIGHBOURS[kinds[i]]
+        parked = corners(px, parked_y(kinds[i], a.curb_offset), 0.0, length, width)
         if boxes_overlap(car, parked):
             raise UsageError(f"--start: the car at ({x:g}, {y:g}, yaw {yaw:g}) overlaps parked_car_{i} at x = {px:g}")
 
@@ -208,10 +274,13 @@ def main(argv):
     x, y, yaw = a.start
     # (an XML comment cannot hold "--": name=value for each option)
     parameters = (f"slot-length={num(a.slot_length)} slot-x={num(a.slot_x)} curb-offset={num(a.curb_offset)}"
-                  f" kinematics={a.kinematics} start={num(x)},{num(y)},{num(yaw)}")
+                  f" kinematics={a.kinematics} start={num(x)},{num(y)},{num(yaw)}"
+                  f" rear-neighbour={a.rear_neighbour} front-neighbour={a.front_neighbour}"
+                  + ("" if a.free_curb is None else f" free-curb={num(a.free_curb)}"))
     title = "autopark" if a.out == "-" else os.path.splitext(os.path.basename(a.out))[0]
     title = re.sub(r"-{2,}", "-", title)  # it goes in an XML comment
-    text = world(a.slot_length, a.kinematics, title, a.slot_x, a.curb_offset, a.start, parameters)
+    text = world(a.slot_length, a.kinematics, title, a.slot_x, a.curb_offset, a.start, parameters, a.rear_neighbour,
+                 a.front_neighbour, a.free_curb)
     return write_output(PROG, a.out, text, f"slot {a.slot_length:.2f} m at x = {a.slot_x:.2f},"
                                            f" curb offset {a.curb_offset:g} m, {a.kinematics}")
 

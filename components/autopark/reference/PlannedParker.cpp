@@ -1,4 +1,5 @@
 // Autopark reference solution, planned (Autopark.Algorithm = planner):
+//   TURN     a start facing the wrong way: turn round first (TurnRound, as the reactive reference).
 //   SEARCH   drive down the street (StreetSearch) while every laser echo goes into an occupancy
 //            grid of the street, 0.05 m cells; the SlotDetector finds the free slot.
 //   SURVEY   drive on until the car ahead of the slot is well in view, then stop.
@@ -7,6 +8,10 @@
 //   TRACK    PathTracker drives the path, forward and reverse moves split at the cusps. A car that
 //            drifts off the path stops and plans again from where it is.
 //   PARKED   stop.
+//   FAILED   stop and say why (the API's status and the log): no slot on the whole street, no plan
+//            after the replans, or the car outside the street the lasers mapped. It never drives
+//            on blind: the planning grid is only what the lasers mapped, and a plan that would
+//            leave it is refused.
 // The car model comes from the world through the API: its turning radius and the point it turns
 // about (rear axle for a car-like car, centre for one that turns in place).
 #include <aula/geometry/angles.hpp>
@@ -37,10 +42,17 @@ class PlannedParker : public AutoparkAlgorithm {
     }
     const Pose2D pose{api.pose3d.getX(), api.pose3d.getY(), api.pose3d.getYaw()};
     if (!search_) start(api, pose);
-    if (mode_ == Mode::Search || mode_ == Mode::Survey) mapScans(api, pose);
+    if (mode_ == Mode::Turn || mode_ == Mode::Search || mode_ == Mode::Survey) mapScans(api, pose);
     double v = 0, w = 0;
     switch (mode_) {
+      case Mode::Turn:
+        if (turn_.step(api, pose.yaw_rad, v, w)) mode_ = Mode::Search;
+        break;
       case Mode::Search: {
+        if (search_->exhausted()) {
+          fail(api, "no free slot of %.1f m or more on the street", search_->detector().minLengthM());
+          break;
+        }
         const StreetSearch::Step step = search_->search(api, pose.x_m, pose.y_m, pose.yaw_rad);
         v = step.v_mps;
         w = step.w_radps;
@@ -71,6 +83,10 @@ class PlannedParker : public AutoparkAlgorithm {
         plan(api, pose);
         break;
       case Mode::Track: {
+        if (!mapped_.contains(footprint(pose, car_, -kOffStreetToleranceM))) {
+          fail(api, "off the mapped street at x %.2f y %.2f", pose.x_m, pose.y_m);
+          break;
+        }
         const PathTracker::Command command = tracker_->update(pose);
         v = command.v_mps;
         w = command.w_radps;
@@ -92,8 +108,9 @@ class PlannedParker : public AutoparkAlgorithm {
         break;
     }
     if (mode_ != logged_mode_) {
-      std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg\n", t_, name(mode_), pose.x_m, pose.y_m,
-                   geometry::headingDeg(pose.yaw_rad));
+      std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), pose.x_m, pose.y_m,
+                   geometry::headingDeg(pose.yaw_rad), mode_ == Mode::Failed ? ": " : "",
+                   mode_ == Mode::Failed ? api.status.c_str() : "");
       logged_mode_ = mode_;
     }
     api.motors.sendV(v);
@@ -101,9 +118,9 @@ class PlannedParker : public AutoparkAlgorithm {
   }
 
  private:
-  enum class Mode { Search, Survey, Plan, Track, Settle, Parked, Failed };
+  enum class Mode { Turn, Search, Survey, Plan, Track, Settle, Parked, Failed };
   static const char* name(Mode m) {
-    static const char* const names[] = {"SEARCH", "SURVEY", "PLAN", "TRACK", "SETTLE", "PARKED", "FAILED"};
+    static const char* const names[] = {"TURN", "SEARCH", "SURVEY", "PLAN", "TRACK", "SETTLE", "PARKED", "FAILED"};
     return names[static_cast<int>(m)];
   }
   static constexpr double kSlotMarginM = 0.6;     // shortest slot: the car plus this
@@ -116,6 +133,16 @@ class PlannedParker : public AutoparkAlgorithm {
   static constexpr int kMaxReplans = 3;
   static constexpr double kGridResolutionM = 0.025;
   static constexpr double kGridHalfLengthM = 70, kGridHalfWidthM = 15;
+  static constexpr double kOffStreetToleranceM = 0.5;  // tracking: the body this far outside the mapped street stops the car
+
+  // Stop for good and say why (printf-style).
+  template <class... Args>
+  void fail(AutoparkApi& api, const char* format, Args... args) {
+    char why[200];
+    std::snprintf(why, sizeof why, format, args...);
+    api.status = why;
+    mode_ = Mode::Failed;
+  }
 
   void start(const AutoparkApi& api, const Pose2D& pose) {
     car_.length_m = api.car_length_m;
@@ -130,23 +157,39 @@ class PlannedParker : public AutoparkAlgorithm {
     const auto cells = [](double m) { return static_cast<int>(std::lround(2 * m / kGridResolutionM)); };
     map_ = OccupancyGrid(pose.x_m - kGridHalfLengthM, pose.y_m - kGridHalfWidthM, kGridResolutionM,
                          cells(kGridHalfLengthM), cells(kGridHalfWidthM));
+    mapped_ = {pose.x_m, pose.x_m, pose.y_m, pose.y_m};
+    // Facing the other way (the parked cars on its left): turn round first.
+    if (TurnRound::needed(pose.yaw_rad)) mode_ = Mode::Turn;
   }
 
-  // Every echo of the three lasers marks its cell.
+  // Every echo of the three lasers marks its cell, and the street mapped so far grows to hold it
+  // (and the car: where it drove is street too).
   void mapScans(const AutoparkApi& api, const Pose2D& pose) {
     const std::pair<const LaserMount*, const component::Laser*> lasers[] = {
         {&api.mount1, &api.laser1}, {&api.mount2, &api.laser2}, {&api.mount3, &api.laser3}};
     for (const auto& [mount, laser] : lasers) {
-      forEachEcho(pose.x_m, pose.y_m, pose.yaw_rad, *mount, laser->getLaserData(),
-                  [this](double x_m, double y_m) { map_.markOccupied(x_m, y_m); });
+      forEachEcho(pose.x_m, pose.y_m, pose.yaw_rad, *mount, laser->getLaserData(), [this](double x_m, double y_m) {
+        map_.markOccupied(x_m, y_m);
+        grow(x_m, y_m);
+      });
     }
+    for (const auto& corner : footprint(pose, car_, 0.0).corners()) grow(corner.x(), corner.y());
+  }
+  void grow(double x_m, double y_m) {
+    mapped_.min_x_m = std::min(mapped_.min_x_m, x_m);
+    mapped_.max_x_m = std::max(mapped_.max_x_m, x_m);
+    mapped_.min_y_m = std::min(mapped_.min_y_m, y_m);
+    mapped_.max_y_m = std::max(mapped_.max_y_m, y_m);
   }
 
-  // The planning grid: the street around the slot, cut from the map. Above the lane, where the
-  // lasers may not have reached, the grid ends a few metres out (outside counts as occupied).
+  // The planning grid: the street around the slot, cut from the map, and never beyond what the
+  // lasers mapped. Above the lane, where the lasers may not have reached, the grid ends a few
+  // metres out (outside counts as occupied).
   OccupancyGrid planningGrid(const Pose2D& pose) const {
-    const double x0 = std::min(pose.x_m, slot_.rear_x_m) - 12, x1 = std::max(pose.x_m, slot_.front_x_m) + 12;
-    const double y0 = slot_.curb_y_m - 0.5, y1 = std::max(pose.y_m, search_->laneY()) + car_.width_m / 2 + 3.0;
+    const double x0 = std::max(mapped_.min_x_m, std::min(pose.x_m, slot_.rear_x_m) - 12);
+    const double x1 = std::min(mapped_.max_x_m, std::max(pose.x_m, slot_.front_x_m) + 12);
+    const double y0 = slot_.curb_y_m - 0.5;
+    const double y1 = std::min(mapped_.max_y_m, std::max(pose.y_m, search_->laneY()) + car_.width_m / 2 + 3.0);
     const double res = map_.resolution_m();
     OccupancyGrid grid(x0, y0, res, static_cast<int>(std::ceil((x1 - x0) / res)), static_cast<int>(std::ceil((y1 - y0) / res)));
     for (int row = 0; row < grid.height(); ++row) {
@@ -160,7 +203,7 @@ class PlannedParker : public AutoparkAlgorithm {
     return grid;
   }
 
-  void plan(const AutoparkApi& api, const Pose2D& pose) {
+  void plan(AutoparkApi& api, const Pose2D& pose) {
     const Pose2D goal{slot_.centreXM(), slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2, 0.0};
     ParkingPlanner::Options options;
     options.seed = seed_ + static_cast<unsigned>(attempts_);
@@ -174,14 +217,42 @@ class PlannedParker : public AutoparkAlgorithm {
       options.slot_clearance_step_m = 0.02;
       options.escape_max_expansions = 60000;
     }
-    const PlannedPath path = ParkingPlanner(car_, options).plan(planningGrid(pose), pose, goal);
+    const OccupancyGrid grid = planningGrid(pose);
+    PlannedPath path = ParkingPlanner(car_, options).plan(grid, pose, goal);
     ++attempts_;
-    std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s\n",
+    if (path.solved) {
+      // The grid holds only the mapped street; a plan that leaves it anyway is refused.
+      const std::string leaves = pathLeavesStreet(path, car_, {grid.minX_m(), grid.maxX_m(), grid.minY_m(), grid.maxY_m()});
+      if (!leaves.empty()) {
+        path.solved = false;
+        path.message = "refused: " + leaves;
+      }
+    }
+    // Where the car's body would go, so a log shows the plan stays on the street.
+    char within[120] = "";
+    if (!path.poses.empty()) {
+      MappedStreet body{grid.maxX_m(), grid.minX_m(), grid.maxY_m(), grid.minY_m()};
+      for (const Pose2D& p : path.poses) {
+        for (const auto& corner : footprint(p, car_, 0.0).corners()) {
+          body.min_x_m = std::min(body.min_x_m, corner.x());
+          body.max_x_m = std::max(body.max_x_m, corner.x());
+          body.min_y_m = std::min(body.min_y_m, corner.y());
+          body.max_y_m = std::max(body.max_y_m, corner.y());
+        }
+      }
+      std::snprintf(within, sizeof within, ", body within x %.2f to %.2f, y %.2f to %.2f", body.min_x_m, body.max_x_m,
+                    body.min_y_m, body.max_y_m);
+    }
+    std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s%s\n",
                  path.solved ? "path" : "no path", goal.x_m, goal.y_m, path.planning_time_s * 1e3, path.cusps,
-                 path.length_m, path.message.empty() ? "" : ": ", path.message.c_str());
+                 path.length_m, within, path.message.empty() ? "" : ": ", path.message.c_str());
     if (!path.solved) {
-      mode_ = attempts_ < kMaxReplans + 1 ? Mode::Settle : Mode::Failed;
       still_s_ = 0;
+      if (attempts_ < kMaxReplans + 1) {
+        mode_ = Mode::Settle;
+      } else {
+        fail(api, "no path into the %.1f m slot after %d plans: %s", slot_.lengthM(), attempts_, path.message.c_str());
+      }
       return;
     }
     path_ = path;
@@ -192,7 +263,9 @@ class PlannedParker : public AutoparkAlgorithm {
   unsigned seed_;
   CarGeometry car_;
   std::optional<StreetSearch> search_;
+  TurnRound turn_;
   OccupancyGrid map_;
+  MappedStreet mapped_;
   Slot slot_;
   int direction_ = 1;
   PlannedPath path_;

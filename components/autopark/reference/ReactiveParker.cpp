@@ -8,7 +8,14 @@
 //   (a slot)  plan for what the lasers measured (planTwoArcPark: the slot's length, the parked
 //             cars' line, the curb): two equal arcs of the point the car turns about, swept
 //             against the parked cars and the curb for every end point in the slot; none clear:
-//   DECLINED  stop and say why ("slot too short for a reactive park: 5.0 m, need 5.9 m").
+//   (too short for the arcs, a car that turns in place) a multi-move park, as parking assistants
+//             do: APPROACH to the slot's centre, then
+//   ZIGZAG    turn in place to -a, drive forward (down and ahead), turn to +a, reverse (down and
+//             back), ... each move within the slot's measured ends, each turn high enough above
+//             the curb for the body's corners, the angle a smaller as the car gets lower; on the
+//             slot's line, turn straight and CENTRE.
+//   DECLINED  stop and say why ("slot too short for a reactive park: 5.0 m, need 5.9 m"; for the
+//             car that turns in place, shorter than the multi-move park needs).
 //   APPROACH  drive along the lane to where the arcs start.
 //   ARC1      reverse steering right (the rear swings towards the curb) until the remaining
 //             lateral offset is what the second arc removes: R (1 - cos yaw);
@@ -29,19 +36,6 @@
 namespace aula::autopark {
 namespace {
 
-// The nearest echo straight ahead of a laser within a band `half_width_m` either side of its
-// axis (the car's width), metres; the laser's max range when nothing is there.
-double clearanceAhead(const component::LaserData& scan, double half_width_m) {
-  double nearest = scan.maxRange;
-  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
-    const double r = scan.values_m[i], a = scan.angle(i);
-    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;
-    const double ahead = r * std::cos(a), aside = r * std::sin(a);
-    if (ahead > 0 && std::abs(aside) <= half_width_m) nearest = std::min(nearest, ahead);
-  }
-  return nearest;
-}
-
 class ReactiveParker : public AutoparkAlgorithm {
  public:
   void execute(AutoparkApi& api) override {
@@ -56,9 +50,14 @@ class ReactiveParker : public AutoparkAlgorithm {
     double v = 0, w = 0;
     switch (mode_) {
       case Mode::Turn:
-        turnRound(api, yaw, v, w);
+        if (turn_.step(api, yaw, v, w)) mode_ = Mode::Search;
         break;
       case Mode::Search: {
+        if (search_->exhausted()) {
+          api.status = "no free slot on the street";
+          mode_ = Mode::Declined;
+          break;
+        }
         const StreetSearch::Step step = search_->search(api, x, y, yaw);
         if (step.slot) {
           planFor(api, *step.slot);
@@ -71,7 +70,8 @@ class ReactiveParker : public AutoparkAlgorithm {
       case Mode::Approach: {
         const double to_go = plan_.start_x_m - x;
         if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(geometry::wrapAngle(yaw)) < 0.05) {
-          mode_ = Mode::Arc1;
+          mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
+          if (zigzag_) zig_angle_ = zigzagAngle(api, y);
           break;
         }
         v = std::clamp(0.8 * to_go, -kReverseMps, kCruiseMps);
@@ -93,6 +93,9 @@ class ReactiveParker : public AutoparkAlgorithm {
         if (yaw <= 0.0 || rangeAhead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
         break;
       }
+      case Mode::Zigzag:
+        zigzag(api, x, y, yaw, v, w);
+        break;
       case Mode::Centre:
         centre(api, x, y, yaw, v, w);
         break;
@@ -112,15 +115,22 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
 
  private:
-  enum class Mode { Turn, Search, Approach, Arc1, Arc2, Centre, Parked, Declined, Failed };
+  enum class Mode { Turn, Search, Approach, Arc1, Arc2, Zigzag, Centre, Parked, Declined, Failed };
   static const char* name(Mode m) {
-    static const char* const names[] = {"TURN", "SEARCH", "APPROACH", "ARC1", "ARC2", "CENTRE", "PARKED", "DECLINED", "FAILED"};
+    static const char* const names[] = {"TURN",   "SEARCH", "APPROACH", "ARC1",     "ARC2",
+                                        "ZIGZAG", "CENTRE", "PARKED",   "DECLINED", "FAILED"};
     return names[static_cast<int>(m)];
   }
   static constexpr double kArcRadiusM = 5.0;       // the search's steering limit
   static constexpr double kCruiseMps = 2.0, kReverseMps = 1.5, kManoeuvreMps = 0.8;
-  static constexpr double kTurnMps = 0.8, kTurnRadps = 0.6;
-  static constexpr double kTurnClearanceM = 0.8;   // a three-point turn's leg ends this close to something
+  // The multi-move park of a car that turns in place.
+  static constexpr double kZigzagMaxRad = 0.6, kZigzagMinRad = 0.1, kZigzagStepRad = 0.05;
+  static constexpr double kZigzagEndMarginM = 0.2;   // the body's ends from the slot's measured ends
+  static constexpr double kZigzagCurbMarginM = 0.1;  // its lowest corner above the curb face
+  static constexpr double kZigzagMinTravelM = 0.4;   // the shortest useful move
+  static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
+  static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
+  static constexpr int kZigzagMaxMoves = 40;
 
   void start(const AutoparkApi& api, double yaw) {
     car_ = {api.car_length_m, api.car_width_m, api.turn_centre_x_m, api.min_turn_radius_m};
@@ -129,33 +139,34 @@ class ReactiveParker : public AutoparkAlgorithm {
     settings.turn_radius_m = std::max(kArcRadiusM, api.min_turn_radius_m);
     search_.emplace(api, settings);
     // Facing the other way (the parked cars on its left): turn round first.
-    if (std::abs(geometry::wrapAngle(yaw)) > M_PI / 2) mode_ = Mode::Turn;
-  }
-
-  // Round to face +x: on the spot, or legs of a three-point turn (forward steering one way, back
-  // steering the other, both turning the car the same way) for a car-like car.
-  void turnRound(const AutoparkApi& api, double yaw, double& v, double& w) {
-    const double heading_error = geometry::wrapAngle(-yaw);  // to turn, towards 0
-    if (std::abs(heading_error) < (api.min_turn_radius_m > 0 ? 0.3 : 0.05)) {
-      mode_ = Mode::Search;  // the lane keeping straightens what is left
-      return;
-    }
-    const double turn_sign = heading_error > 0 ? 1.0 : -1.0;  // the shorter way round
-    if (api.min_turn_radius_m <= 0) {
-      w = turn_sign * kTurnRadps;
-      return;
-    }
-    const double half_width = api.car_width_m / 2 + 0.2;
-    if (turn_forward_ && clearanceAhead(api.laser1.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = false;
-    if (!turn_forward_ && clearanceAhead(api.laser2.getLaserData(), half_width) < kTurnClearanceM) turn_forward_ = true;
-    v = turn_forward_ ? kTurnMps : -kTurnMps;
-    w = turn_sign * kTurnMps / api.min_turn_radius_m;  // forward: steer to the turn; back: the other way
+    if (TurnRound::needed(yaw)) mode_ = Mode::Turn;
   }
 
   void planFor(AutoparkApi& api, const Slot& slot) {
     slot_ = slot;
     search_->holdLane(search_->laneYFor(slot.edge_y_m));
     plan_ = planTwoArcPark(slot, search_->laneY(), car_);
+    if (!plan_.feasible && api.min_turn_radius_m <= 0) {
+      // It turns in place: forward and back within the slot instead, if the slot holds the body
+      // turned by the smallest angle with a margin at both ends.
+      const double need = 2 * (halfExtentX(api, kZigzagMinRad) + kZigzagEndMarginM) + kZigzagMinTravelM;
+      char line[160];
+      if (slot.lengthM() < need) {
+        std::snprintf(line, sizeof line, "slot too short for a multi-move park: %.1f m, need %.1f m", slot.lengthM(), need);
+        api.status = line;
+        mode_ = Mode::Declined;
+        return;
+      }
+      zigzag_ = true;
+      plan_.feasible = true;
+      plan_.radius_m = kArcRadiusM;  // the centring's steering limit
+      plan_.start_x_m = slot.centreXM();
+      plan_.goal_y_m = slot.curb_y_m + kCurbClearanceM + api.car_width_m / 2;
+      std::snprintf(line, sizeof line, "slot %.1f m: a multi-move park, forward and back within it", slot.lengthM());
+      api.status = line;
+      mode_ = Mode::Approach;
+      return;
+    }
     if (!plan_.feasible) {
       api.status = plan_.why;
       mode_ = Mode::Declined;
@@ -187,6 +198,61 @@ class ReactiveParker : public AutoparkAlgorithm {
     if (std::abs(yaw_error) < 0.03) w = 0;
   }
 
+  // Half the body's extent along the street, and how far its lowest corner is below its centre,
+  // turned by a (either way).
+  static double halfExtentX(const AutoparkApi& api, double a) {
+    return api.car_length_m / 2 * std::cos(a) + api.car_width_m / 2 * std::abs(std::sin(a));
+  }
+  static double lowestCornerBelow(const AutoparkApi& api, double a) {
+    return api.car_length_m / 2 * std::abs(std::sin(a)) + api.car_width_m / 2 * std::cos(a);
+  }
+  // The steepest angle (of kZigzagMaxRad, in kZigzagStepRad steps down to kZigzagMinRad) that the
+  // car may turn to at height y and still turn back at its next stop; 0 when none.
+  double zigzagAngle(const AutoparkApi& api, double y) const {
+    for (double a = kZigzagMaxRad; a >= kZigzagMinRad - 1e-9; a -= kZigzagStepRad) {
+      const double travel = slot_.lengthM() - 2 * (halfExtentX(api, a) + kZigzagEndMarginM);
+      if (travel >= kZigzagMinTravelM && y - lowestCornerBelow(api, a) >= slot_.curb_y_m + kZigzagCurbMarginM + 0.02) return a;
+    }
+    return 0.0;
+  }
+
+  // One period of the multi-move park (Mode::Zigzag): turning in place to the next move's angle,
+  // or driving it (forward at -a goes down and ahead, reverse at +a down and back) until the body
+  // is at the slot's end, or at the lowest height from which it can still turn back.
+  void zigzag(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
+    const bool low_enough = y - plan_.goal_y_m < kZigzagDoneM;
+    if (zig_turning_) {
+      if (low_enough) zig_angle_ = 0;
+      const double target = zig_forward_ ? -zig_angle_ : zig_angle_;
+      const double error = geometry::wrapAngle(target - yaw);
+      if (std::abs(error) > 0.01) {
+        w = std::clamp(2.0 * error, -kZigzagTurnRadps, kZigzagTurnRadps);
+        return;
+      }
+      if (low_enough) {
+        mode_ = Mode::Centre;
+        return;
+      }
+      zig_turning_ = false;
+      return;
+    }
+    const double a = zig_angle_;
+    const double reach = halfExtentX(api, a) + kZigzagEndMarginM;
+    const double lowest_y = slot_.curb_y_m + kZigzagCurbMarginM + lowestCornerBelow(api, a);
+    const bool at_end = zig_forward_ ? x >= slot_.front_x_m - reach : x <= slot_.rear_x_m + reach;
+    const double ahead = zig_forward_ ? rangeAhead(api.laser1.getLaserData(), 0.35) : rangeAhead(api.laser2.getLaserData(), 0.35);
+    if (at_end || y <= std::max(lowest_y, plan_.goal_y_m) || low_enough || ahead < 0.15) {
+      ++zig_moves_;
+      zig_forward_ = !zig_forward_;
+      zig_turning_ = true;
+      zig_angle_ = zig_moves_ > kZigzagMaxMoves ? 0.0 : zigzagAngle(api, y);
+      if (zig_angle_ <= 0 && !low_enough) finish(api, x, y, yaw);  // no lower move left: say where it stands
+      return;
+    }
+    v = zig_forward_ ? kZigzagMps : -kZigzagMps;
+    w = std::clamp(2.0 * geometry::wrapAngle((zig_forward_ ? -a : a) - yaw), -0.3, 0.3);
+  }
+
   // PARKED only in the slot and parallel to it; anything else is said as it is.
   void finish(AutoparkApi& api, double x, double y, double yaw) {
     const double half = api.car_length_m / 2;
@@ -210,7 +276,10 @@ class ReactiveParker : public AutoparkAlgorithm {
   TwoArcPlan plan_;
   Mode mode_ = Mode::Search, logged_mode_ = Mode::Parked;
   double t_ = 0;
-  bool turn_forward_ = true;
+  TurnRound turn_;
+  bool zigzag_ = false, zig_turning_ = true, zig_forward_ = true;
+  double zig_angle_ = kZigzagMaxRad;
+  int zig_moves_ = 0;
   int centre_moves_ = 0;
 };
 

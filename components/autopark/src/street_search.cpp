@@ -16,6 +16,36 @@ double rangeAhead(const component::LaserData& scan, double half_width_rad) {
   return m;
 }
 
+double clearanceAhead(const component::LaserData& scan, double half_width_m) {
+  double nearest = scan.maxRange;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    const double r = scan.values_m[i], a = scan.angle(i);
+    if (!(r > scan.minRange) || r >= scan.maxRange - 0.05) continue;
+    const double ahead = r * std::cos(a), aside = r * std::sin(a);
+    if (ahead > 0 && std::abs(aside) <= half_width_m) nearest = std::min(nearest, ahead);
+  }
+  return nearest;
+}
+
+bool TurnRound::needed(double yaw_rad) { return std::abs(geometry::wrapAngle(yaw_rad)) > M_PI / 2; }
+
+bool TurnRound::step(const AutoparkApi& api, double yaw_rad, double& v_mps, double& w_radps) {
+  v_mps = w_radps = 0;
+  const double heading_error = geometry::wrapAngle(-yaw_rad);  // to turn, towards 0
+  if (std::abs(heading_error) < (api.min_turn_radius_m > 0 ? 0.3 : 0.05)) return true;
+  const double turn_sign = heading_error > 0 ? 1.0 : -1.0;  // the shorter way round
+  if (api.min_turn_radius_m <= 0) {
+    w_radps = turn_sign * kTurnRadps;
+    return false;
+  }
+  const double half_width = api.car_width_m / 2 + 0.2;
+  if (forward_ && clearanceAhead(api.laser1.getLaserData(), half_width) < kClearanceM) forward_ = false;
+  if (!forward_ && clearanceAhead(api.laser2.getLaserData(), half_width) < kClearanceM) forward_ = true;
+  v_mps = forward_ ? kTurnMps : -kTurnMps;
+  w_radps = turn_sign * kTurnMps / api.min_turn_radius_m;  // forward: steer to the turn; back: the other way
+  return false;
+}
+
 StreetSearch::StreetSearch(const AutoparkApi& api, Settings settings)
     : settings_(settings), detector_(settings.min_slot_length_m), car_width_m_(api.car_width_m),
       lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
@@ -31,8 +61,14 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   Step step;
   step.slot = detector_.slot(x_m);
   if (step.slot) return step;
-  if (direction_ > 0 && rangeAhead(api.laser1.getLaserData(), 0.3) < settings_.street_end_m) direction_ = -1;
-  if (direction_ < 0 && rangeAhead(api.laser2.getLaserData(), 0.3) < settings_.street_end_m) direction_ = 1;
+  if (direction_ > 0 && rangeAhead(api.laser1.getLaserData(), 0.3) < settings_.street_end_m) {
+    direction_ = -1;
+    ++reversals_;
+  }
+  if (direction_ < 0 && rangeAhead(api.laser2.getLaserData(), 0.3) < settings_.street_end_m) {
+    direction_ = 1;
+    ++reversals_;
+  }
   step.v_mps = direction_ > 0 ? settings_.cruise_mps : -settings_.reverse_mps;
   if (!lane_held_) {
     if (auto edge = detector_.edgeY()) lane_y_m_ = laneYFor(*edge);

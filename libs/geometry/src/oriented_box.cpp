@@ -7,13 +7,17 @@ namespace {
 
 using Corners = std::array<Eigen::Vector2d, 4>;
 
-// True when some edge normal of a or b separates their projections.
-bool separated(const Corners& a, const Corners& b) {
+// The least overlap of the projections of a and b on the edge normals of either (unit length),
+// m: negative when some normal separates them.
+double leastOverlap(const Corners& a, const Corners& b) {
+  double least = std::numeric_limits<double>::infinity();
   for (const Corners* p : {&a, &b}) {
     for (int i = 0; i < 4; ++i) {
       const Eigen::Vector2d& u = (*p)[i];
       const Eigen::Vector2d& v = (*p)[(i + 1) % 4];
-      const double nx = -(v.y() - u.y()), ny = v.x() - u.x();
+      const double length = std::hypot(v.x() - u.x(), v.y() - u.y());
+      if (!(length > 0)) continue;  // a degenerate edge has no normal
+      const double nx = -(v.y() - u.y()) / length, ny = (v.x() - u.x()) / length;
       double amin = std::numeric_limits<double>::infinity(), amax = -amin, bmin = amin, bmax = -amin;
       for (const auto& q : a) {
         const double d = nx * q.x() + ny * q.y();
@@ -25,11 +29,15 @@ bool separated(const Corners& a, const Corners& b) {
         bmin = std::min(bmin, d);
         bmax = std::max(bmax, d);
       }
-      if (amax < bmin || bmax < amin) return true;
+      least = std::min(least, std::min(amax, bmax) - std::max(amin, bmin));
+      if (least < 0) return least;
     }
   }
-  return false;
+  return least;
 }
+
+// True when some edge normal of a or b separates their projections.
+bool separated(const Corners& a, const Corners& b) { return leastOverlap(a, b) < 0; }
 
 double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const double dx = b.x() - a.x(), dy = b.y() - a.y();
@@ -42,6 +50,10 @@ double pointSegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, 
 }  // namespace
 
 bool overlap(const OrientedBox& a, const OrientedBox& b) { return !separated(a.corners(), b.corners()); }
+
+double penetration(const OrientedBox& a, const OrientedBox& b) {
+  return std::max(0.0, leastOverlap(a.corners(), b.corners()));
+}
 
 double distance(const OrientedBox& a, const OrientedBox& b) {
   const Corners ca = a.corners(), cb = b.corners();

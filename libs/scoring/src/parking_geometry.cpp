@@ -30,12 +30,17 @@ ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::s
       parked.push_back(OrientedBox{{s.pose.translation().x(), s.pose.translation().y(), yaw}, s.shape.box_size_m.x(), s.shape.box_size_m.y()});
     } else if (s.name.find("curb_parking_side") != std::string::npos) {
       scene.curb_y_m = s.pose.translation().y() + s.shape.box_size_m.y() / 2;
+      scene.street_west_x_m = s.pose.translation().x() - s.shape.box_size_m.x() / 2;
+      scene.street_east_x_m = s.pose.translation().x() + s.shape.box_size_m.x() / 2;
       have_curb = true;
+    } else if (s.name.find("curb_far_side") != std::string::npos) {
+      scene.far_curb_y_m = s.pose.translation().y() - s.shape.box_size_m.y() / 2;
     }
   }
   if (!have_curb) throw world::WorldError(where + ": no collision named curb_parking_side (the parking-side curb)");
   if (parked.size() < 2) throw world::WorldError(where + ": needs at least two static models named parked_car*");
   std::sort(parked.begin(), parked.end(), [](const OrientedBox& a, const OrientedBox& b) { return a.centre.x_m < b.centre.x_m; });
+  scene.parked_cars = parked;
   double widest = -1;
   for (size_t i = 0; i + 1 < parked.size(); ++i) {
     const double gap = (parked[i + 1].centre.x_m - parked[i + 1].length_m / 2) - (parked[i].centre.x_m + parked[i].length_m / 2);
@@ -73,6 +78,25 @@ ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m
   m.inside_slot = x_m > slot_from && x_m < slot_to && std::abs(y_m - scene.ideal_y_m) < lane_half_width &&
                   std::abs(m.yaw_error_deg) < 45.0;
   return m;
+}
+
+double contactDepthM(const ParkingScene& scene, double x_m, double y_m, double yaw_rad) {
+  const OrientedBox car{{x_m, y_m, yaw_rad}, scene.car_length_m, scene.car_width_m};
+  double deepest = 0;
+  for (const auto& parked : scene.parked_cars) deepest = std::max(deepest, geometry::penetration(car, parked));
+  for (const auto& p : car.corners()) {
+    deepest = std::max({deepest, scene.curb_y_m - p.y(), p.y() - scene.far_curb_y_m});
+  }
+  return deepest;
+}
+
+bool offStreet(const ParkingScene& scene, double x_m, double y_m) {
+  return x_m < scene.street_west_x_m || x_m > scene.street_east_x_m || y_m < scene.curb_y_m || y_m > scene.far_curb_y_m;
+}
+
+bool parkedElsewhere(const ParkingScene& scene, const ParkingMeasures& m, double y_m) {
+  const double lane_half_width = std::max(scene.rear_car.width_m, scene.front_car.width_m) / 2;
+  return !m.inside_slot && std::abs(y_m - scene.ideal_y_m) < lane_half_width && std::abs(m.yaw_error_deg) < 45.0;
 }
 
 }  // namespace aula::autopark

@@ -191,11 +191,25 @@ SettingsTable makeAutoparkReferee() {
           "GapRule absolute: gaps to the front and rear cars: half marks from [0], full marks in [[1], [2])");
   t.reals("Autopark.Referee.CurbBands", "0.75, 1.5", 2, "m", 0, 100,
           "nearest corner to the curb: full marks within [0], half within [1]");
+  t.choice("Autopark.Referee.Scale", "parked", {"parked", "thesis"},
+           "parked: the four terms grade a car parked in the slot; a run that does not park there gets NotParkedMark; "
+           "contacts cost ContactCost shares of the mark. thesis: each term wherever the car stopped, any contact loses "
+           "the collision quarter");
+  t.real("Autopark.Referee.NotParkedMark", 1.0, "", 0, 10,
+         "Scale parked: the mark of a run that does not park in the slot (stayed still, drove off, gave up, parked "
+         "elsewhere), less its contacts' cost");
+  t.reals("Autopark.Referee.ContactCost", "0.1, 0.1, 0.05", 3, "", 0, 10,
+          "Scale parked: the share of the mark each contact costs [0], plus [1] per second in contact, plus [2] per cm "
+          "it went into what it touched (at most the whole mark)");
   t.presets("Autopark.Referee.Rubric", "default",
             {"Autopark.Referee.FullMarkTime", "Autopark.Referee.GapRule", "Autopark.Referee.SlotGapFractions",
-             "Autopark.Referee.GapBands", "Autopark.Referee.CurbBands"},
-            {{"default", "gaps relative to the slot: a centred car gets full marks in any slot of 1.2 L or more", {}},
-             {"original", "the thesis's scale: gaps of [1.5, 3.5) m to each car", {{"Autopark.Referee.GapRule", "absolute"}}}},
+             "Autopark.Referee.GapBands", "Autopark.Referee.CurbBands", "Autopark.Referee.Scale",
+             "Autopark.Referee.NotParkedMark", "Autopark.Referee.ContactCost"},
+            {{"default", "gaps relative to the slot: a centred car gets full marks in any slot of 1.2 L or more; not "
+                         "parked is worth NotParkedMark; a contact costs a share of the mark",
+              {}},
+             {"original", "the thesis's scale: gaps of [1.5, 3.5) m to each car; any contact loses a quarter",
+              {{"Autopark.Referee.GapRule", "absolute"}, {"Autopark.Referee.Scale", "thesis"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");
   return t;
 }

@@ -123,10 +123,10 @@ cv::Mat parkingPicture(const cv::Mat& street, const geometry::MapTransform& view
     std::snprintf(title, sizeof title, "Autopark: mark %.2f / 10, PARKED in %.1f s", run.scores.mark, run.park_time_s);
   } else {
     std::snprintf(title, sizeof title, "Autopark: mark %.2f / 10, %s after %.1f s", run.scores.mark,
-                  run.finished ? "NOT parked" : "not finished", run.park_time_s);
+                  run.finished ? caseText(run.parking_case).c_str() : "not finished", run.park_time_s);
   }
-  std::snprintf(terms, sizeof terms, "= 0.025 x (angle %.0f + time %.0f + distances %.1f + collisions %.0f)",
-                run.scores.angle, run.scores.time, run.scores.distance, run.scores.collision);
+  std::snprintf(terms, sizeof terms, "= %s",
+                markFormula(run.scores, run.parking_case, run.contact_cost, run.settings).c_str());
   const ParkingMeasures& m = run.measures;
   std::snprintf(line, sizeof line, "gaps: front %.2f m, rear %.2f m, curb %.2f m%s; yaw error %.1f deg; %lld collisions",
                 m.front_gap_m, m.rear_gap_m, m.curb_gap_m, m.inside_slot ? "" : " (not in the slot)", m.yaw_error_deg,

@@ -40,6 +40,12 @@ ParkingRefereeSettings parkingRefereeSettings(const config::Config& cfg) {
   s.gap_full_to_m = gaps[2];
   s.curb_full_m = curb[0];
   s.curb_half_m = curb[1];
+  s.thesis_scale = cfg.getString("Autopark.Referee.Scale") == "thesis";
+  s.not_parked_mark = cfg.getDouble("Autopark.Referee.NotParkedMark");
+  const auto cost = cfg.getDoubleList("Autopark.Referee.ContactCost");
+  s.contact_share = cost[0];
+  s.contact_share_per_s = cost[1];
+  s.contact_share_per_cm = cost[2];
   return s;
 }
 
@@ -72,9 +78,58 @@ double curbScore(double gap_m, const ParkingRefereeSettings& s) {
   return gap_m <= s.curb_full_m ? 100.0 : gap_m < s.curb_half_m ? 50.0 : 0.0;
 }
 
-ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
+const char* caseName(ParkingCase c) {
+  switch (c) {
+    case ParkingCase::Parked: return "parked";
+    case ParkingCase::ParkedElsewhere: return "parked_elsewhere";
+    case ParkingCase::DroveOff: return "drove_off";
+    case ParkingCase::StayedStill: return "stayed_still";
+    case ParkingCase::GaveUp: break;
+  }
+  return "gave_up";
+}
+
+std::string caseText(ParkingCase c) {
+  switch (c) {
+    case ParkingCase::Parked: return "parked";
+    case ParkingCase::ParkedElsewhere: return "NOT parked: stopped at the curb outside the slot";
+    case ParkingCase::DroveOff: return "NOT parked: drove off the street";
+    case ParkingCase::StayedStill: return "NOT parked: stayed where it started";
+    case ParkingCase::GaveUp: break;
+  }
+  return "NOT parked: gave up or stopped elsewhere";
+}
+
+double contactCost(const ParkingContacts& c, const ParkingRefereeSettings& s) {
+  const double cost = c.count * s.contact_share + c.duration_s * s.contact_share_per_s + 100 * c.depth_m * s.contact_share_per_cm;
+  return std::clamp(cost, 0.0, 1.0);
+}
+
+std::string markFormula(const ParkingScores& s, ParkingCase c, double contact_cost, const ParkingRefereeSettings& settings) {
+  char text[256];
+  if (settings.thesis_scale) {
+    std::snprintf(text, sizeof text, "0.025 x (angle %.0f + time %.0f + distances %.1f + collisions %.0f)", s.angle, s.time,
+                  s.distance, s.collision);
+  } else if (c != ParkingCase::Parked) {
+    std::snprintf(text, sizeof text, "not parked %.2f x (1 - contacts %.2f)", settings.not_parked_mark, contact_cost);
+  } else {
+    std::snprintf(text, sizeof text, "0.025 x (angle %.0f + time %.0f + distances %.1f + 100) x (1 - contacts %.2f)", s.angle,
+                  s.time, s.distance, contact_cost);
+  }
+  return text;
+}
+
+ParkingScores scoreParking(const ParkingMeasures& m, ParkingCase c, double park_time_s, const ParkingContacts& contacts,
                            const ParkingRefereeSettings& s) {
   ParkingScores out;
+  const bool parked = c == ParkingCase::Parked;
+  const double keep = s.thesis_scale ? 1.0 : 1.0 - contactCost(contacts, s);
+  if (!s.thesis_scale && !parked) {
+    // Not parked is not parked, wherever the car ended: the terms grade nothing.
+    out.collision = 100.0 * keep;
+    out.mark = s.not_parked_mark * keep;
+    return out;
+  }
   // Angle and distances grade where the car is in the slot; outside it there is nothing to grade.
   if (m.inside_slot) {
     out.angle = angleScore(m.yaw_error_deg);
@@ -82,14 +137,20 @@ ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_ti
         (gapScore(m.front_gap_m, m.ideal_gap_m, s) + gapScore(m.rear_gap_m, m.ideal_gap_m, s) + curbScore(m.curb_gap_m, s)) / 3.0;
   }
   if (parked) out.time = park_time_s < s.full_time_s ? 100.0 : 100.0 * s.full_time_s / park_time_s;
-  out.collision = collisions == 0 ? 100.0 : 0.0;
-  out.mark = 0.025 * (out.angle + out.time + out.distance + out.collision);
+  if (s.thesis_scale) {
+    out.collision = contacts.count == 0 ? 100.0 : 0.0;
+    out.mark = 0.025 * (out.angle + out.time + out.distance + out.collision);
+  } else {
+    out.collision = 100.0 * keep;
+    out.mark = 0.025 * (out.angle + out.time + out.distance + 100.0) * keep;
+  }
   return out;
 }
 
 void ParkingReferee::start(int64_t utime) {
   if (start_utime_) return;  // the first Run starts the clock; a pause does not reset it
   start_utime_ = utime;
+  if (have_pose_) start_xy_ = {x_, y_};
 }
 
 void ParkingReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_rad) {
@@ -105,21 +166,32 @@ void ParkingReferee::onPose(int64_t utime, double x_m, double y_m, double yaw_ra
   x_ = x_m;
   y_ = y_m;
   yaw_ = yaw_rad;
-  if (!finished_) {
-    measures_ = measureParking(scene_, x_, y_, yaw_);
-    trail_.add(x_, y_);
-  }
+  if (finished_) return;
+  measures_ = measureParking(scene_, x_, y_, yaw_);
+  trail_.add(x_, y_);
+  if (!started()) return;
+  if (!start_xy_) start_xy_ = {x_, y_};
+  if (std::hypot(x_ - start_xy_->first, y_ - start_xy_->second) > kMovedM) moved_ = true;
+  if (offStreet(scene_, x_, y_)) left_street_ = true;
+  if (in_contact_) contact_depth_m_ = std::max(contact_depth_m_, contactDepthM(scene_, x_, y_, yaw_));
 }
 
 void ParkingReferee::onContact(int64_t utime, bool pressed) {
   const bool counting = started() && !finished_;
   if (pressed && !in_contact_) {
-    if (counting) ++collisions_;
+    if (counting) ++contacts_.count;
     contact_since_utime_ = utime;
+    contact_depth_m_ = have_pose_ ? contactDepthM(scene_, x_, y_, yaw_) : 0.0;
   } else if (!pressed && in_contact_ && counting) {
-    contact_us_ += utime - std::max(contact_since_utime_, *start_utime_);
+    endContact(utime);
   }
   in_contact_ = pressed;
+}
+
+void ParkingReferee::endContact(int64_t utime) {
+  contact_us_ += utime - std::max(contact_since_utime_, *start_utime_);
+  contacts_.depth_m += contact_depth_m_;
+  deepest_m_ = std::max(deepest_m_, contact_depth_m_);
 }
 
 void ParkingReferee::onTick(int64_t utime) {
@@ -138,7 +210,7 @@ void ParkingReferee::onTick(int64_t utime) {
     finished_ = true;
     end_utime_ = utime;
   }
-  if (finished_ && in_contact_) contact_us_ += utime - std::max(contact_since_utime_, *start_utime_);
+  if (finished_ && in_contact_) endContact(utime);
 }
 
 double ParkingReferee::elapsedS() const {
@@ -152,8 +224,23 @@ double ParkingReferee::contactS() const {
   return us / 1e6;
 }
 
+ParkingContacts ParkingReferee::contacts() const {
+  ParkingContacts out = contacts_;
+  out.duration_s = contactS();
+  if (in_contact_ && started() && !finished_) out.depth_m += contact_depth_m_;
+  return out;
+}
+
+ParkingCase ParkingReferee::parkingCase() const {
+  if (parked_) return ParkingCase::Parked;
+  if (left_street_) return ParkingCase::DroveOff;
+  if (!moved_) return ParkingCase::StayedStill;
+  if (parkedElsewhere(scene_, measures_, y_) && speed_mps_ < settings_.still_speed_mps) return ParkingCase::ParkedElsewhere;
+  return ParkingCase::GaveUp;
+}
+
 ParkingScores ParkingReferee::scores() const {
-  return scoreParking(measures_, parked_, elapsedS(), collisions_, settings_);
+  return scoreParking(measures_, parkingCase(), elapsedS(), contacts(), settings_);
 }
 
 }  // namespace aula::autopark

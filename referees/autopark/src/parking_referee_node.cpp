@@ -57,6 +57,9 @@ void ParkingRefereeNode::addGrading(referee::Report& out) const {
   const ParkingScores s = r.scores();
   const ParkingMeasures& m = r.measures();
   out.set("parked", r.parked());
+  // Which case it was: parked, parked_elsewhere, drove_off, stayed_still, gave_up.
+  out.set("case", std::string(caseName(r.parkingCase())));
+  out.set("left_street", r.leftStreet());
   out.set("park_time_s", r.elapsedS());
   out.set("front_gap_m", m.front_gap_m);
   out.set("rear_gap_m", m.rear_gap_m);
@@ -67,6 +70,8 @@ void ParkingRefereeNode::addGrading(referee::Report& out) const {
   out.set("ideal_gap_m", m.ideal_gap_m);
   out.set("collisions", r.collisions());
   out.set("contact_time_s", r.contactS());
+  out.set("deepest_contact_m", r.deepestContactM());
+  out.set("contact_cost", contactCost(r.contacts(), r.settings()));
   out.set("final_pose", std::vector<double>{r.x(), r.y(), r.yawRad()});
   out.set("ideal_pose", std::vector<double>{r.scene().ideal_x_m, r.scene().ideal_y_m, r.scene().ideal_yaw_rad});
   out.set("score_angle", s.angle);
@@ -79,15 +84,19 @@ std::string ParkingRefereeNode::gradeSummary() const {
   const ParkingReferee& r = *referee_;
   const ParkingScores s = r.scores();
   const ParkingMeasures& m = r.measures();
-  char text[768];
+  const ParkingRefereeSettings& settings = r.settings();
+  const ParkingCase parking_case = r.parkingCase();
+  char text[1024];
   std::snprintf(text, sizeof text,
-                "Autopark mark: %.2f / 10 = 0.025 x (angle %.0f + time %.0f + distances %.1f + collisions %.0f)\n"
+                "Autopark mark: %.2f / 10 = %s\n"
                 "  %s after %.1f s sim; %.2f m from the ideal pose, yaw error %.1f deg\n"
-                "  gaps: front %.2f m, rear %.2f m (a centred car: %.2f m), curb %.2f m; collisions %lld (%.1f s in contact)\n"
+                "  gaps: front %.2f m, rear %.2f m (a centred car: %.2f m), curb %.2f m; collisions %lld (%.1f s in contact, "
+                "%.1f mm deep)\n"
                 "  rubric %s: %s\n",
-                s.mark, s.angle, s.time, s.distance, s.collision, r.parked() ? "parked" : "NOT parked", r.elapsedS(),
-                m.position_error_m, m.yaw_error_deg, m.front_gap_m, m.rear_gap_m, m.ideal_gap_m, m.curb_gap_m, r.collisions(),
-                r.contactS(), r.settings().rubric.c_str(), gapRuleText(r.settings()).c_str());
+                s.mark, markFormula(s, parking_case, contactCost(r.contacts(), settings), settings).c_str(),
+                caseText(parking_case).c_str(), r.elapsedS(), m.position_error_m, m.yaw_error_deg,
+                m.front_gap_m, m.rear_gap_m, m.ideal_gap_m, m.curb_gap_m, r.collisions(), r.contactS(),
+                1e3 * r.deepestContactM(), settings.rubric.c_str(), gapRuleText(settings).c_str());
   return text;
 }
 
@@ -102,6 +111,8 @@ cv::Mat ParkingRefereeNode::picture(const std::vector<std::string>& notes) const
   run.parked = r.parked();
   run.park_time_s = r.elapsedS();
   run.collisions = r.collisions();
+  run.parking_case = r.parkingCase();
+  run.contact_cost = contactCost(r.contacts(), r.settings());
   run.have_pose = r.hasPose();
   run.x_m = r.x();
   run.y_m = r.y();

@@ -157,6 +157,21 @@ TEST(ParkingPlanner, SolvesTheTightestSlotOverSeveralSeeds) {
   }
 }
 
+TEST(ParkingPlanner, APathIsRefusedWhereTheBodyLeavesTheMappedStreet) {
+  const CarGeometry car;
+  const MappedStreet street{-20, 30, -4.25, 5};
+  PlannedPath path;
+  path.poses = {{0, 2.5, 0}, {10, 2.5, 0}, {27.9, 2.5, 0}};  // the front bumper at 29.9
+  EXPECT_EQ(pathLeavesStreet(path, car, street), "");
+  path.poses.push_back({28.1, 2.5, 0});  // ... at 30.1
+  EXPECT_EQ(pathLeavesStreet(path, car, street),
+            "leaves the mapped street at x 28.10 y 2.50 (mapped x -20.00 to 30.00, y -4.25 to 5.00)");
+  path.poses = {{0, 4.2, 0}};  // the left side at 5.2: over the far curb
+  EXPECT_NE(pathLeavesStreet(path, car, street), "");
+  path.poses = {{0, 2.5, M_PI / 2}};  // across the street, inside it
+  EXPECT_EQ(pathLeavesStreet(path, car, street), "");
+}
+
 TEST(ParkingPlanner, BlockedSlotFailsWithinTheTimeLimit) {
   const StreetScenario street = makeParallelParkingStreet(3.5);  // shorter than the car
   const OccupancyGrid grid = street.makeGrid(0.05);

@@ -68,6 +68,16 @@ TEST(OrientedBox, DistanceBetweenBoxesByHand) {
   EXPECT_NEAR(distance(a, OrientedBox{{3.2, 2.2, M_PI / 4}, 2, 2}), 2.4 / std::sqrt(2.0) - 1, 1e-12);
 }
 
+TEST(OrientedBox, PenetrationIsTheLeastMoveThatSeparates) {
+  const OrientedBox a{{0, 0, 0}, 4, 2};
+  EXPECT_NEAR(penetration(a, OrientedBox{{3.9, 0, 0}, 4, 2}), 0.1, 1e-12);  // a 0.1 m strip
+  EXPECT_NEAR(penetration(a, OrientedBox{{0, 1.5, 0}, 4, 2}), 0.5, 1e-12);  // across, the shorter way
+  EXPECT_EQ(penetration(a, OrientedBox{{4, 0, 0}, 4, 2}), 0.0);             // touching
+  EXPECT_EQ(penetration(a, OrientedBox{{5, 0, 0}, 4, 2}), 0.0);
+  // A diamond's corner at x = 3.3 - sqrt 2 reaches 2 - (3.3 - sqrt 2) into a.
+  EXPECT_NEAR(penetration(a, OrientedBox{{3.3, 0, M_PI / 4}, 2, 2}), 2 - (3.3 - std::sqrt(2.0)), 1e-12);
+}
+
 TEST(OrientedBox, RasterisesCellCentresInsideAndClipsToTheGrid) {
   MapTransform grid;  // 4 x 4 cells of 1 m over x [0, 4], y [0, 4]
   grid.resolution_m = 1;

@@ -85,31 +85,33 @@ TEST(ParkingGeometry, SceneFromTheWorlds) {
 
 TEST(ParkingScores, BandsAndMark) {
   ParkingRefereeSettings s;
+  const ParkingContacts none, one{1, 0.0, 0.0};
   ParkingMeasures m = measureParking(handScene(), 7.25, -3, 0);
-  ParkingScores best = scoreParking(m, true, 60, 0, s);
+  ParkingScores best = scoreParking(m, ParkingCase::Parked, 60, none, s);
   EXPECT_DOUBLE_EQ(best.mark, 10.0);
   // Slow: T = 100 * 170 / t.
-  EXPECT_DOUBLE_EQ(scoreParking(m, true, 340, 0, s).time, 50.0);
-  // A collision costs C.
-  EXPECT_DOUBLE_EQ(scoreParking(m, true, 60, 1, s).mark, 7.5);
+  EXPECT_DOUBLE_EQ(scoreParking(m, ParkingCase::Parked, 340, none, s).time, 50.0);
   // Not parked: no time score.
-  EXPECT_DOUBLE_EQ(scoreParking(m, false, 300, 0, s).time, 0.0);
+  EXPECT_DOUBLE_EQ(scoreParking(m, ParkingCase::GaveUp, 300, none, s).time, 0.0);
   // 20 degrees either way: angle 50.
-  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, 20 * kDeg), true, 60, 0, s).angle, 50.0);
-  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, -20 * kDeg), true, 60, 0, s).angle, 50.0);
+  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, 20 * kDeg), ParkingCase::Parked, 60, none, s).angle, 50.0);
+  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, -20 * kDeg), ParkingCase::Parked, 60, none, s).angle, 50.0);
   // The slot rule (the default): a centred car's gaps are 2.5 m here. 1.3 m from the rear car
   // (52 % of 2.5: full) and 3.7 m from the front one: D = 100.
   m = measureParking(handScene(), 6.05, -3, 0);
   EXPECT_NEAR(m.rear_gap_m, 1.3, 1e-9);
   EXPECT_NEAR(m.ideal_gap_m, 2.5, 1e-9);
-  EXPECT_NEAR(scoreParking(m, true, 60, 0, s).distance, 100.0, 1e-9);
+  EXPECT_NEAR(scoreParking(m, ParkingCase::Parked, 60, none, s).distance, 100.0, 1e-9);
   // 1.0 m (40 %: half) and 0.5 m (20 %: nothing) from the rear car.
   EXPECT_DOUBLE_EQ(gapScore(1.0, 2.5, s), 50.0);
   EXPECT_DOUBLE_EQ(gapScore(0.5, 2.5, s), 0.0);
   EXPECT_DOUBLE_EQ(gapScore(0.1, -0.2, s), 0.0);  // a slot shorter than the car
   // The original's absolute bands: 1.3 m is 50, 3.7 m is 0: D = (0 + 50 + 100) / 3.
   s.gaps_relative_to_slot = false;
-  EXPECT_NEAR(scoreParking(m, true, 60, 0, s).distance, 50.0, 1e-9);
+  EXPECT_NEAR(scoreParking(m, ParkingCase::Parked, 60, none, s).distance, 50.0, 1e-9);
+  // The thesis's scale: a collision costs C, whatever it was.
+  s.thesis_scale = true;
+  EXPECT_DOUBLE_EQ(scoreParking(measureParking(handScene(), 7.25, -3, 0), ParkingCase::Parked, 60, one, s).mark, 7.5);
 }
 
 TEST(ParkingReferee, ParkedAfterStandingStillThreeSecondsClockStopsWhenItStopped) {
@@ -159,8 +161,12 @@ TEST(ParkingReferee, ContactsCountedWithTheirDurationAndTimeout) {
   EXPECT_EQ(r.collisions(), 2);
   EXPECT_NEAR(r.contactS(), 0.7, 1e-9);
   EXPECT_NEAR(r.elapsedS(), 10.0, 1e-9);
-  EXPECT_DOUBLE_EQ(r.scores().collision, 0.0);
   EXPECT_DOUBLE_EQ(r.scores().time, 0.0);
+  // Driving along the lane all the while, on the street: it gave up. Two contacts, 0.7 s, no depth
+  // (the hand-made scene has no obstacle there): 0.2 + 0.07 of the not-parked mark.
+  EXPECT_EQ(r.parkingCase(), ParkingCase::GaveUp);
+  EXPECT_NEAR(r.scores().mark, 1.0 * (1 - 0.27), 1e-9);
+  EXPECT_NEAR(r.scores().collision, 73.0, 1e-9);
 }
 
 TEST(ParkingReferee, TurningOnTheSpotIsNotStandingStill) {

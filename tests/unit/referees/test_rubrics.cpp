@@ -50,7 +50,7 @@ double parkingMark(const std::string& preset, double slot_m, double offset_m = 0
   const auto settings = aula::autopark::parkingRefereeSettings(effective("autopark-referee", "Autopark.Referee.Rubric", preset));
   const auto scene = street(slot_m);
   const auto m = aula::autopark::measureParking(scene, scene.ideal_x_m + offset_m, -3, 0);
-  return aula::autopark::scoreParking(m, true, 60, 0, settings).mark;
+  return aula::autopark::scoreParking(m, aula::autopark::ParkingCase::Parked, 60, {}, settings).mark;
 }
 
 }  // namespace
@@ -143,4 +143,116 @@ TEST(Rubric, AValueEqualToThePresetsIsNotAnOverrideWhateverItsSpelling) {
                                "Autopark.Referee.FullMarkTime = 170.0\nAutopark.Referee.GapBands = 1, 1.50, 3.5\n");
   EXPECT_EQ(aula::referee::rubricReport(cfg, table, "Autopark.Referee.Rubric").raw("overridden"), "");
   EXPECT_EQ(aula::referee::rubricReport(cfg, table, "Autopark.Referee.Rubric").raw("Autopark.Referee.GapRule"), "\"absolute\"");
+}
+
+namespace {
+
+using aula::autopark::ParkingCase;
+using aula::autopark::ParkingReferee;
+
+// A whole street by hand, as worlds/tools/make_autopark.py writes them: parked cars at x = -20 ..
+// 0.5, the 9 m slot, cars at 14, 24 and 31.5 (a 5.5 m gap between the first two), and a free curb
+// from 33.75 to the road's end at 45.
+aula::autopark::ParkingScene wholeStreet() {
+  aula::autopark::ParkingScene s = street(9.0);
+  for (double x : {-20.0, -13.5, -7.0, 0.5, 14.0, 24.0, 31.5}) s.parked_cars.push_back({{x, -3, 0}, 4.5, 1.8});
+  s.street_west_x_m = -25;
+  s.street_east_x_m = 45;
+  s.far_curb_y_m = 5;
+  return s;
+}
+
+struct Pose {
+  double x_m, y_m, yaw_rad;
+};
+
+// A run graded by the shipped preset: Run at 0, then the car moves from pose to pose (1 s each,
+// a pose every 0.1 s), then stands at the last one until the referee ends the run.
+// `contact`: [from, to) seconds of contact.
+ParkingReferee gradedRun(const std::string& preset, const std::vector<Pose>& poses, std::pair<double, double> contact = {-1, -1}) {
+  ParkingReferee r(wholeStreet(), aula::autopark::parkingRefereeSettings(effective("autopark-referee", "Autopark.Referee.Rubric", preset)));
+  r.start(0);
+  const int64_t step = 100'000;
+  auto at = [&](int64_t t) {
+    const double s = t / 1e6;
+    const size_t i = std::min(static_cast<size_t>(s), poses.size() - 1), j = std::min(i + 1, poses.size() - 1);
+    const double f = std::min(1.0, s - static_cast<double>(i));
+    return Pose{poses[i].x_m + f * (poses[j].x_m - poses[i].x_m), poses[i].y_m + f * (poses[j].y_m - poses[i].y_m),
+                poses[i].yaw_rad + f * (poses[j].yaw_rad - poses[i].yaw_rad)};
+  };
+  for (int64_t t = 0; !r.finished(); t += step) {
+    const Pose p = at(t);
+    r.onPose(t, p.x_m, p.y_m, p.yaw_rad);
+    if (std::abs(t / 1e6 - contact.first) < 1e-9) r.onContact(t, true);
+    if (std::abs(t / 1e6 - contact.second) < 1e-9) r.onContact(t, false);
+    r.onTick(t);
+  }
+  return r;
+}
+
+const Pose kStart{-7, 2.5, 0};
+
+}  // namespace
+
+TEST(AutoparkRubric, IdleDroveOffAndGaveUpAreTheSameSmallMark) {
+  const ParkingReferee idle = gradedRun("default", {kStart});
+  std::vector<Pose> off = {kStart};
+  for (double x = -5; x <= 60; x += 2) off.push_back({x, 2.5, 0});  // 2 m/s past the road's end
+  const ParkingReferee drove_off = gradedRun("default", off);
+  const ParkingReferee gave_up = gradedRun("default", {kStart, {-5, 2.5, 0}, {-3, 2.5, 0}, {-1, 2.5, 0}});
+  EXPECT_EQ(idle.parkingCase(), ParkingCase::StayedStill);
+  EXPECT_EQ(drove_off.parkingCase(), ParkingCase::DroveOff);
+  EXPECT_EQ(gave_up.parkingCase(), ParkingCase::GaveUp);
+  for (const ParkingReferee* r : {&idle, &drove_off, &gave_up}) {
+    EXPECT_FALSE(r->parked());
+    EXPECT_DOUBLE_EQ(r->scores().mark, 1.0) << aula::autopark::caseName(r->parkingCase());
+  }
+  EXPECT_TRUE(drove_off.leftStreet());
+  EXPECT_FALSE(gave_up.leftStreet());
+  // The thesis's scale, kept as it was: not parked is 2.5 for the collision quarter alone.
+  EXPECT_DOUBLE_EQ(gradedRun("original", {kStart}).scores().mark, 2.5);
+  EXPECT_DOUBLE_EQ(gradedRun("original", off).scores().mark, 2.5);
+}
+
+TEST(AutoparkRubric, OneShortTouchWhileParkingScoresAboveNotParkingAndBelowAClean10) {
+  // Along the lane past the slot, then back into it (touching the rear car for 0.3 s), centred.
+  const std::vector<Pose> park = {kStart, {0, 2.5, 0}, {6, 2.5, 0}, {11, 1.5, 0}, {9, -1, 0.4}, {7.25, -3, 0}};
+  const ParkingReferee clean = gradedRun("default", park);
+  const ParkingReferee touched = gradedRun("default", park, {4.5, 4.8});
+  ASSERT_TRUE(clean.parked());
+  ASSERT_TRUE(touched.parked());
+  EXPECT_DOUBLE_EQ(clean.scores().mark, 10.0);
+  EXPECT_EQ(touched.collisions(), 1);
+  EXPECT_NEAR(touched.contactS(), 0.3, 1e-9);
+  // 0.1 for the contact, 0.03 for its 0.3 s; no depth (the hand-made pose touches nothing).
+  EXPECT_NEAR(touched.scores().mark, 10.0 * (1 - 0.13), 1e-9);
+  EXPECT_GT(touched.scores().mark, gradedRun("default", {kStart}).scores().mark);
+  // The same touch under the thesis's scale costs the collision quarter.
+  EXPECT_DOUBLE_EQ(gradedRun("original", park, {4.5, 4.8}).scores().mark, 7.5);
+}
+
+TEST(AutoparkRubric, AContactCostsMoreTheLongerAndDeeperItIs) {
+  const auto settings = aula::autopark::parkingRefereeSettings(effective("autopark-referee", "Autopark.Referee.Rubric", "default"));
+  const double brief = aula::autopark::contactCost({1, 0.2, 0.001}, settings);
+  EXPECT_LT(brief, aula::autopark::contactCost({1, 2.0, 0.001}, settings));
+  EXPECT_LT(brief, aula::autopark::contactCost({1, 0.2, 0.02}, settings));
+  EXPECT_DOUBLE_EQ(aula::autopark::contactCost({5, 30, 0.1}, settings), 1.0);  // never more than the mark
+  // Depth is how far the footprint went into what it touched: 3 cm into the rear car's end.
+  const auto scene = wholeStreet();
+  EXPECT_NEAR(aula::autopark::contactDepthM(scene, 2.75 + 2 - 0.03, -3, 0), 0.03, 1e-9);
+  EXPECT_DOUBLE_EQ(aula::autopark::contactDepthM(scene, 7.25, -3, 0), 0.0);
+}
+
+TEST(AutoparkRubric, ParkedInTheWrongPlaceIsNotParked) {
+  // Reversed into the free curb beyond the last car, and into the 5.5 m gap between the cars at 14
+  // and 24: still, parallel, at the curb, not in the slot.
+  const ParkingReferee free_curb = gradedRun("default", {kStart, {10, 2.5, 0}, {30, 2.5, 0}, {40, 2.5, 0}, {38, -3, 0}});
+  EXPECT_FALSE(free_curb.parked());
+  EXPECT_EQ(free_curb.parkingCase(), ParkingCase::ParkedElsewhere);
+  EXPECT_DOUBLE_EQ(free_curb.scores().mark, 1.0);
+  EXPECT_EQ(std::string(aula::autopark::caseName(free_curb.parkingCase())), "parked_elsewhere");
+  const ParkingReferee other_gap = gradedRun("default", {kStart, {10, 2.5, 0}, {22, 2.5, 0}, {19, -3, 0}});
+  EXPECT_FALSE(other_gap.parked());
+  EXPECT_EQ(other_gap.parkingCase(), ParkingCase::ParkedElsewhere);
+  EXPECT_DOUBLE_EQ(other_gap.scores().mark, 1.0);
 }

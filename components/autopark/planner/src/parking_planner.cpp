@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <memory>
 #include <queue>
@@ -482,6 +483,24 @@ PlannedPath ParkingPlanner::plan(const OccupancyGrid& grid, const Pose2D& start_
   out.solved = true;
   out.planning_time_s = elapsed();
   return out;
+}
+
+bool MappedStreet::contains(const geometry::OrientedBox& box) const {
+  for (const auto& p : box.corners()) {
+    if (p.x() < min_x_m || p.x() > max_x_m || p.y() < min_y_m || p.y() > max_y_m) return false;
+  }
+  return true;
+}
+
+std::string pathLeavesStreet(const PlannedPath& path, const CarGeometry& car, const MappedStreet& street) {
+  for (const Pose2D& p : path.poses) {
+    if (street.contains(footprint(p, car, 0.0))) continue;
+    char why[200];
+    std::snprintf(why, sizeof why, "leaves the mapped street at x %.2f y %.2f (mapped x %.2f to %.2f, y %.2f to %.2f)", p.x_m,
+                  p.y_m, street.min_x_m, street.max_x_m, street.min_y_m, street.max_y_m);
+    return why;
+  }
+  return "";
 }
 
 }  // namespace aula::autopark

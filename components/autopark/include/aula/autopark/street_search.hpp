@@ -12,6 +12,25 @@ namespace aula::autopark {
 
 // The minimum range of a laser over the beams within +-half_width_rad of straight out.
 double rangeAhead(const component::LaserData& scan, double half_width_rad);
+// The nearest echo straight ahead of a laser within a band `half_width_m` either side of its
+// axis (the car's width), metres; the laser's max range when nothing is there.
+double clearanceAhead(const component::LaserData& scan, double half_width_m);
+
+// A start facing the wrong way (the parked cars on the car's left): turn round to face +x before
+// searching, on the spot for a car that turns in place, or in the legs of a three-point turn for a
+// car-like one (forward steering one way, back steering the other, each leg until something is
+// near ahead or behind).
+class TurnRound {
+ public:
+  static bool needed(double yaw_rad);  // facing more than 90 degrees away from +x
+  // One period: the command, and true once facing +x (the lane keeping straightens what is left).
+  bool step(const AutoparkApi& api, double yaw_rad, double& v_mps, double& w_radps);
+
+ private:
+  static constexpr double kTurnMps = 0.8, kTurnRadps = 0.6;
+  static constexpr double kClearanceM = 0.8;  // a leg ends this close to something
+  bool forward_ = true;
+};
 
 class StreetSearch {
  public:
@@ -32,6 +51,9 @@ class StreetSearch {
     std::optional<Slot> slot;
   };
   Step search(const AutoparkApi& api, double x_m, double y_m, double yaw_rad);
+  // The search has driven the whole street both ways (turned back at both ends) and seen no slot:
+  // driving on would only repeat it.
+  bool exhausted() const { return reversals_ >= 2; }
   // Steering that brings the car to the lane line, for a given speed (either sign).
   double keepLane(double v_mps, double y_m, double yaw_rad) const;
   // Fix the lane line (once a manoeuvre has been planned from it).
@@ -48,6 +70,7 @@ class StreetSearch {
   double lane_y_m_;
   bool lane_held_ = false;
   int direction_ = 1;
+  int reversals_ = 0;  // turns back at a street's end
 };
 
 }  // namespace aula::autopark

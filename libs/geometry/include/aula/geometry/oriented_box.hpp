@@ -58,6 +58,10 @@ bool overlap(const OrientedBox& a, const OrientedBox& b);
 // Minimum distance between the two boxes; 0 when they overlap.
 double distance(const OrientedBox& a, const OrientedBox& b);
 
+// How deep the boxes overlap: the least distance one must move to separate them (along an edge
+// normal); 0 when they do not overlap.
+double penetration(const OrientedBox& a, const OrientedBox& b);
+
 // Calls mark_cell(col, row) for every cell of `grid` whose centre lies in the box (cells off the
 // grid are skipped).
 template <class MarkCell>

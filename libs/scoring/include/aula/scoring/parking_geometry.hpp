@@ -7,7 +7,9 @@
 #include <aula/geometry/oriented_box.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace aula::autopark {
 
@@ -18,6 +20,12 @@ struct ParkingScene {
   double curb_y_m = 0;  // the parking-side curb face (the curb is at y < curb_y_m)
   double ideal_x_m = 0, ideal_y_m = 0, ideal_yaw_rad = 0;
   double car_length_m = 4, car_width_m = 2;
+  // The whole street, for contacts and for a car that leaves it: every parked car, the road's
+  // ends (the parking-side curb's length) and the far curb's face (+inf when the world has none).
+  std::vector<geometry::OrientedBox> parked_cars;
+  double street_west_x_m = -std::numeric_limits<double>::infinity();
+  double street_east_x_m = std::numeric_limits<double>::infinity();
+  double far_curb_y_m = std::numeric_limits<double>::infinity();
   double slotLengthM() const;  // free gap between the two parked cars
   double idealGapM() const;    // to each parked car from a car centred in the slot: (slot - car length) / 2
 
@@ -37,5 +45,14 @@ struct ParkingMeasures {
 };
 
 ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m, double yaw_rad);
+
+// How far the car's footprint goes into the street's obstacles (any parked car, the curb), m; 0
+// when it touches nothing. Physics keeps it to millimetres; pushing harder goes deeper.
+double contactDepthM(const ParkingScene& scene, double x_m, double y_m, double yaw_rad);
+// The car's centre is off the mapped street: beyond the road's ends or over a curb.
+bool offStreet(const ParkingScene& scene, double x_m, double y_m);
+// Standing at the parking-side curb, parallel to it, in the parked cars' line, but not in the slot:
+// the free curb at the street's end, or another gap.
+bool parkedElsewhere(const ParkingScene& scene, const ParkingMeasures& m, double y_m);
 
 }  // namespace aula::autopark

@@ -25,6 +25,8 @@ struct ParkingRunSummary {
   bool finished = false, parked = false;
   double park_time_s = 0;
   long long collisions = 0;
+  ParkingCase parking_case = ParkingCase::GaveUp;
+  double contact_cost = 0;  // the share of the mark the contacts cost (scale parked)
   bool have_pose = false;
   double x_m = 0, y_m = 0, yaw_rad = 0;
   std::vector<referee::PicturePoint> trail;

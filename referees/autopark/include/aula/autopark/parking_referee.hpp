@@ -4,8 +4,10 @@
 // ticks). No LCM or Qt here, so it is unit-testable.
 //
 // The clock starts at Run and stops when the car is parked: stationary inside the slot for
-// still_hold_s. A run that has not parked timeout_s after Run ends "not parked".
-// Mark = 0.025 * (A + T + D + C), each 0-100 (the original's formula, its bugs fixed):
+// still_hold_s. A run that has not parked timeout_s after Run ends "not parked", and the report
+// says which case it was (ParkingCase): stayed still, drove off the street, parked elsewhere (the
+// free curb at the street's end, another gap), or gave up (anything else).
+// Terms, each 0-100 (the original's formula, its bugs fixed):
 //   A  orientation to the curb: 100 within +-15 deg, 50 within +-45, else 0 (symmetric bands)
 //   T  100 when parked in under full_time_s, else 100 * full_time_s / t; 0 if not parked
 //   D  mean of front gap, rear gap and curb scores; curb distance <= curb_full 100, < curb_half 50.
@@ -16,7 +18,12 @@
 //          in a slot of any length;
 //        absolute (the original): 100 in [gap_full_from, gap_full_to) m, 50 in [gap_half_from,
 //          gap_full_from)
-//   C  100 without a collision, else 0
+//   C  100 without a contact, else 0 (scale thesis); 100 x (1 - the contacts' cost) (scale parked)
+// Mark, by the rubric's scale:
+//   parked (default): parked in the slot, 0.025 * (A + T + D + 100) x (1 - cost); not parked,
+//     not_parked_mark x (1 - cost), whatever the case. cost = min(1, sum over contacts of
+//     contact_share + share_per_s x its duration + share_per_cm x its depth).
+//   thesis (the original): 0.025 * (A + T + D + C), A and D wherever the car stopped in the slot.
 
 #include <aula/config/config.hpp>
 #include <aula/referee/run_picture.hpp>
@@ -25,6 +32,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace aula::autopark {
 
@@ -38,7 +46,24 @@ struct ParkingRefereeSettings {
   double slot_gap_half_fraction = 0.25, slot_gap_full_fraction = 0.5;
   double gap_half_from_m = 1.0, gap_full_from_m = 1.5, gap_full_to_m = 3.5;
   double curb_full_m = 0.75, curb_half_m = 1.5;
+  bool thesis_scale = false;  // Scale thesis; false: parked
+  double not_parked_mark = 1.0;
+  double contact_share = 0.1, contact_share_per_s = 0.1, contact_share_per_cm = 0.05;
 };
+
+// How a run ended, for the mark and the report.
+enum class ParkingCase { Parked, ParkedElsewhere, DroveOff, StayedStill, GaveUp };
+const char* caseName(ParkingCase c);  // "parked", "parked_elsewhere", "drove_off", "stayed_still", "gave_up"
+std::string caseText(ParkingCase c);  // "parked", "NOT parked: drove off the street", ...
+
+// Every contact since Run: how many, how long in all, and the sum of each one's deepest depth.
+struct ParkingContacts {
+  long long count = 0;
+  double duration_s = 0;
+  double depth_m = 0;
+};
+// The share of the mark they cost (scale parked), 0-1.
+double contactCost(const ParkingContacts& c, const ParkingRefereeSettings& s);
 
 // The referee's settings from its effective configuration; bands out of order are a ConfigError
 // naming where the values came from.
@@ -49,8 +74,11 @@ struct ParkingScores {
   double mark = 0;  // 0-10
 };
 
-ParkingScores scoreParking(const ParkingMeasures& m, bool parked, double park_time_s, long long collisions,
+ParkingScores scoreParking(const ParkingMeasures& m, ParkingCase c, double park_time_s, const ParkingContacts& contacts,
                            const ParkingRefereeSettings& s);
+// The mark's formula with its numbers: "0.025 x (angle 100 + time 100 + distances 100.0 + 100) x
+// (1 - contacts 0.12)", "not parked 1.00 x (1 - contacts 0.00)", or the thesis's.
+std::string markFormula(const ParkingScores& s, ParkingCase c, double contact_cost, const ParkingRefereeSettings& settings);
 // The D terms: 100, 50 or 0 for one gap to a parked car (`ideal_gap_m`: the slot's g*), and for
 // the curb distance.
 double gapScore(double gap_m, double ideal_gap_m, const ParkingRefereeSettings& s);
@@ -76,8 +104,12 @@ class ParkingReferee {
   const ParkingRefereeSettings& settings() const { return settings_; }
   const ParkingMeasures& measures() const { return measures_; }
   double elapsedS() const;  // sim seconds since Run, frozen when parked or at the timeout
-  long long collisions() const { return collisions_; }
+  long long collisions() const { return contacts_.count; }
   double contactS() const;  // total time in contact since Run
+  ParkingContacts contacts() const;  // so far, the contact under way included
+  double deepestContactM() const { return deepest_m_; }
+  ParkingCase parkingCase() const;  // provisional until finished
+  bool leftStreet() const { return left_street_; }
   double x() const { return x_; }
   double y() const { return y_; }
   double yawRad() const { return yaw_; }
@@ -87,6 +119,9 @@ class ParkingReferee {
   const referee::Trail& trail() const { return trail_; }
 
  private:
+  static constexpr double kMovedM = 0.5;  // further than this from where it was at Run: it moved
+  void endContact(int64_t utime);
+
   ParkingScene scene_;
   ParkingRefereeSettings settings_;
   ParkingMeasures measures_;
@@ -95,9 +130,13 @@ class ParkingReferee {
   int64_t last_pose_utime_ = 0, now_utime_ = 0;
   double x_ = 0, y_ = 0, yaw_ = 0, speed_mps_ = 0;
   std::optional<int64_t> still_since_utime_;
-  long long collisions_ = 0;
+  ParkingContacts contacts_;  // duration_s and depth_m of the finished contacts
   bool in_contact_ = false;
   int64_t contact_since_utime_ = 0, contact_us_ = 0;
+  double contact_depth_m_ = 0;  // the deepest of the contact under way
+  double deepest_m_ = 0;        // of all contacts
+  bool left_street_ = false, moved_ = false;
+  std::optional<std::pair<double, double>> start_xy_;  // where the car was at Run
   referee::Trail trail_{0.1};  // a point per 10 cm: 300 s at 3 m/s keeps 9000
 };
 

@@ -52,6 +52,15 @@ struct ParkingPlannerOptions {
   bool quiet = true;                // lower OMPL's log level to warnings (process-wide)
 };
 
+// The part of the street the lasers have mapped (axis-aligned, the street along x).
+struct MappedStreet {
+  double min_x_m = 0, max_x_m = 0, min_y_m = 0, max_y_m = 0;
+  bool contains(const geometry::OrientedBox& box) const;
+};
+// Why `path` leaves `street` ("leaves the mapped street at x 31.20 y 2.10 (mapped x -20.00 to
+// 30.00, y -4.30 to 5.00)": its first pose whose footprint is not inside it), or "" when it stays in.
+std::string pathLeavesStreet(const PlannedPath& path, const CarGeometry& car, const MappedStreet& street);
+
 class ParkingPlanner {
  public:
   using Options = ParkingPlannerOptions;
