@@ -1,11 +1,14 @@
 #include "parking_referee_node.hpp"
 
 #include <aula/geometry/angles.hpp>
+#include <aula/geometry/oriented_box.hpp>
 #include <aula/autopark/parking_picture.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace aula::autopark {
 
@@ -32,13 +35,30 @@ void ParkingRefereeNode::onClockTick(int64_t utime) {
 
 namespace {
 
-// What a contact touched, as far as the referee can tell: the nearest of the two parked cars
-// and the curb (the bumper says only that the car touches something).
-std::string touched(const ParkingMeasures& m) {
-  const std::pair<double, const char*> nearest =
-      std::min({std::make_pair(m.front_gap_m, "the car in front"), std::make_pair(m.rear_gap_m, "the car behind"),
-                std::make_pair(m.curb_gap_m, "the curb")});
-  return nearest.first < 0.3 ? nearest.second : "something away from the slot";
+// What the car at (x, y, yaw) touches, as far as the referee can tell (the bumper says only that
+// it touches something): the nearest static model of the world, named as the scene knows it.
+std::string touched(const world::WorldSpec& world, const ParkingScene& scene, double x_m, double y_m, double yaw_rad) {
+  const geometry::OrientedBox car{{x_m, y_m, yaw_rad}, scene.car_length_m, scene.car_width_m};
+  double nearest_m = std::numeric_limits<double>::infinity();
+  std::string name = "nothing the referee knows of";
+  for (const world::StaticObject& object : world.statics) {
+    const Eigen::Vector3d at = object.pose.translation();
+    if (at.z() + object.shape.halfHeight() < 0.01) continue;  // the ground
+    const bool box = object.shape.kind == world::ShapeKind::Box;
+    const double yaw = std::atan2(object.pose.rotation()(1, 0), object.pose.rotation()(0, 0));
+    const geometry::OrientedBox footprint{{at.x(), at.y(), yaw}, box ? object.shape.box_size_m.x() : 2 * object.shape.radius_m,
+                                          box ? object.shape.box_size_m.y() : 2 * object.shape.radius_m};
+    const double d = geometry::distance(car, footprint);
+    if (d >= nearest_m) continue;
+    nearest_m = d;
+    name = object.name.substr(0, object.name.find("::"));
+    if (object.name.find("curb_parking_side") != std::string::npos) name = "the curb";
+    for (const auto& [parked, what] : {std::make_pair(&scene.rear_car, "the car behind the slot"),
+                                       std::make_pair(&scene.front_car, "the car in front of the slot")}) {
+      if (std::hypot(parked->centre.x_m - at.x(), parked->centre.y_m - at.y()) < 0.05) name = what;
+    }
+  }
+  return name;
 }
 
 }  // namespace
@@ -54,7 +74,7 @@ void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
   }
   if (referee_->collisions() > before) {
     char text[128];
-    std::snprintf(text, sizeof text, "collision %lld: touching %s", referee_->collisions(), touched(referee_->measures()).c_str());
+    std::snprintf(text, sizeof text, "collision %lld: touching %s", referee_->collisions(), touched(world_, scene_, referee_->x(), referee_->y(), referee_->yawRad()).c_str());
     trace().addEvent(utime, "contact", text, before == 0 ? "the collision term's 2.5 points are lost" : "already lost: no more points off");
     if (before == 0) trace().events().back().points = -2.5;
     open_contact_ = static_cast<long>(trace().events().size()) - 1;
@@ -101,7 +121,9 @@ void ParkingRefereeNode::traceEnd(int64_t utime) {
   end.t_s = r.elapsedS();
   auto term = [&](const char* kind, const std::string& what, double score) {
     std::snprintf(effect, sizeof effect, "%.3g of %s points", 0.025 * score, kind);
-    trace().addEvent(utime, "measure", what, effect).points = 0.025 * score;
+    referee::TraceEvent& e = trace().addEvent(utime, "measure", what, effect);
+    e.points = 0.025 * score;
+    e.t_s = r.elapsedS();  // graded where the car stopped
   };
   std::snprintf(text, sizeof text, "angle to the curb %.1f deg", m.yaw_error_deg);
   term("2.5", text, s.angle);
@@ -233,7 +255,7 @@ void ParkingRefereeNode::addTrace(referee::Report& out) const {
   std::snprintf(time, sizeof time, "%s in %.1f s (full under %.4g s)", r.parked() ? "parked" : "not parked", r.elapsedS(),
                 r.settings().full_time_s);
   std::snprintf(gaps, sizeof gaps, "front %.2f m, rear %.2f m, curb %.2f m", m.front_gap_m, m.rear_gap_m, m.curb_gap_m);
-  std::snprintf(contacts, sizeof contacts, "%lld collisions (%.1f s in contact)", r.collisions(), r.contactS());
+  std::snprintf(contacts, sizeof contacts, "%lld collision(s), %.1f s in contact", r.collisions(), r.contactS());
   out.setJson("breakdown", referee::breakdownJson({{"angle", angle, 0.025 * s.angle, 2.5},
                                                    {"time", time, 0.025 * s.time, 2.5},
                                                    {"distances", gaps, 0.025 * s.distance, 2.5},

@@ -384,9 +384,11 @@ const AulaPlayer = (() => {
   async function openRun(id, container) {
     if (container.dataset.built) return container.player;
     container.dataset.built = 'yes';
+    const started = performance.now();
     const block = document.getElementById(id);
     const data = await inflate(block.textContent.trim());
     container.player = new Player(container, data);
+    container.dataset.openMs = Math.round(performance.now() - started);  // decoded and drawn
     return container.player;
   }
   // `#t=SECONDS`: the player paused there.
@@ -394,6 +396,8 @@ const AulaPlayer = (() => {
     const m = /t=([0-9.]+)/.exec(location.hash);
     return m ? Number(m[1]) : null;
   }
+  // When the page had loaded, for the bench (docs/performance.md).
+  window.addEventListener('load', () => { document.body.dataset.loadedMs = Math.round(performance.now()); });
   return {openRun, hashTime, errors};
 })();
 )JS";
