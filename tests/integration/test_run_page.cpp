@@ -134,9 +134,15 @@ const nlohmann::json& eventOf(const nlohmann::json& trace, const std::vector<std
   return none;
 }
 
-void expectPlayerAtEvent(const GradedRun& run, const std::vector<std::string>& kinds) {
+// `from_files`: the page as `aula run --report-html` makes it (writeRunPage, from the referee's
+// files), else as `aula grade` does (from the run's result).
+void expectPlayerAtEvent(const GradedRun& run, const std::vector<std::string>& kinds, bool from_files = false) {
   const std::string page_path = run.stem + ".html";
-  std::ofstream(page_path) << aula::grade::runPageHtml(aula::grade::runFilesOf(run.result));
+  if (from_files) {
+    aula::grade::writeRunPage(page_path, run.stem + ".report.json", run.stem + ".trace.json", run.stem + ".png");
+  } else {
+    std::ofstream(page_path) << aula::grade::runPageHtml(aula::grade::runFilesOf(run.result));
+  }
   const nlohmann::json& event = eventOf(run.trace, kinds);
   const double t_s = event["t_s"].get<double>();
   const Page page = loadInChromium("file://" + page_path + "#t=" + urlTime(t_s));
@@ -171,7 +177,7 @@ TEST(RunPage, TeleTaxiPlayerInChromium) {
 TEST(RunPage, AutoparkPlayerInChromium) {
   const GradedRun run = makeRun("carol", {"autopark", "--algorithm=reactive", "--Simulator.StartPose.car=-7,-1.5,0"});
   ASSERT_GE(run.result["collisions"].get<long>(), 1) << "the seek goes to a contact";
-  expectPlayerAtEvent(run, {"contact", "parked", "end"});
+  expectPlayerAtEvent(run, {"contact", "parked", "end"}, true);
 }
 
 // The class page: it loads as it is (no player built, no data decoded), then `#run=ID&t=` opens

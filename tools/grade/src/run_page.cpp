@@ -1,5 +1,8 @@
 #include "aula/grade/run_page.hpp"
 
+#include <aula/config/config.hpp>
+#include <aula/grade/grade_plan.hpp>
+
 #include <QByteArray>
 
 #include <filesystem>
@@ -465,6 +468,21 @@ std::string runPageHtml(const RunFiles& run) {
   }
   html << "</body></html>\n";
   return html.str();
+}
+
+void writeRunPage(const std::string& html_path, const std::string& report_path, const std::string& trace_path,
+                  const std::string& picture_path) {
+  RunFiles run;
+  try {
+    run.report = nlohmann::json::parse(readBytes(report_path));
+  } catch (const nlohmann::json::exception& e) {
+    throw config::ConfigError(report_path + ": not a referee's report (" + e.what() + ")");
+  }
+  run.title = fs::path(run.report.value("world", std::string("?"))).stem().string() + " seed " +
+              std::to_string(run.report.value("seed", 0LL));
+  if (!trace_path.empty()) run.trace_json = readBytes(trace_path);
+  if (!picture_path.empty()) run.picture_png = readBytes(picture_path);
+  writeFileAtomically(html_path, runPageHtml(run));
 }
 
 }  // namespace aula::grade

@@ -32,6 +32,11 @@ RunFiles runFilesOf(const nlohmann::json& result);
 
 // The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`).
 std::string runPageHtml(const RunFiles& run);
+// `aula run --report-html=FILE.html`: the page of a single run from the referee's files (the trace
+// and the picture may be "" or missing: the page then has no player, or no still picture).
+// Throws config::ConfigError naming a report that cannot be read, or a page that cannot be written.
+void writeRunPage(const std::string& html_path, const std::string& report_path, const std::string& trace_path,
+                  const std::string& picture_path);
 
 // For a page of many runs (report.html): the player's style and script, once per page, and one
 // run's data block, its id `id`. playerScript() defines openRun(id, container): the run's player
