@@ -1,5 +1,5 @@
 // autopark-referee [--config=config/autopark.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]
-//                  [--picture=FILE.png] [--screenshot=FILE.png]
+//                  [--picture=FILE.png] [--trace=FILE.json] [--screenshot=FILE.png]
 // Grades an Autopark run on simulated time from the true geometry. Headless, it prints the mark
 // and writes the report when the car has parked (or at the timeout), then exits.
 #include "src/parking_referee_node.hpp"
@@ -10,10 +10,12 @@
 namespace {
 constexpr const char* kUsage =
     "usage: autopark-referee [--config=config/autopark.cfg] [--headless] [--report=FILE.json] [--lcm-url=URL]\n"
-    "                 [--picture=FILE.png] [--screenshot=FILE.png]\n"
+    "                 [--picture=FILE.png] [--trace=FILE.json] [--screenshot=FILE.png]\n"
     "Grades an Autopark run on simulated time from the true geometry. Headless, it prints the mark\n"
     "and writes the report when the car has parked (or at the timeout), then exits.\n"
-    "  --picture  at the end, a PNG of the street with the slot, the car's final pose, its trail, the gaps and the mark\n";
+    "  --picture  at the end, a PNG of the street with the slot, the car's final pose, its trail, the gaps and the mark\n"
+    "  --trace    at the end, the run as the referee graded it (poses at 10 Hz, its state, its events), for the\n"
+    "             player of `aula grade`'s page\n";
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -1,5 +1,5 @@
 // vacuum-cleaner-referee [--config=config/vacuumCleaner.cfg] [--headless] [--report=FILE.json]
-//                        [--picture=FILE.png] [--lcm-url=URL] [--screenshot=FILE.png]
+//                        [--picture=FILE.png] [--trace=FILE.json] [--lcm-url=URL] [--screenshot=FILE.png]
 // Measures the floor the roomba cleans in 900 s of simulated time and gives the mark.
 #include "src/coverage_referee_node.hpp"
 #include "src/coverage_referee_window.hpp"
@@ -9,9 +9,11 @@
 namespace {
 constexpr const char* kUsage =
     "usage: vacuum-cleaner-referee [--config=config/vacuumCleaner.cfg] [--headless] [--report=FILE.json]\n"
-    "                       [--picture=FILE.png] [--lcm-url=URL] [--screenshot=FILE.png]\n"
+    "                       [--picture=FILE.png] [--trace=FILE.json] [--lcm-url=URL] [--screenshot=FILE.png]\n"
     "Measures the floor the roomba cleans in 900 s of simulated time and gives the mark.\n"
-    "  --picture  at the end, a PNG of the house with the cleaned floor, the robot and the mark\n";
+    "  --picture  at the end, a PNG of the house with the cleaned floor, the robot and the mark\n"
+    "  --trace    at the end, the run as the referee graded it (poses at 10 Hz, its state, its events), for the\n"
+    "             player of `aula grade`'s page\n";
 }  // namespace
 
 int main(int argc, char** argv) {

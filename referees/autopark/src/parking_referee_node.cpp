@@ -1,10 +1,14 @@
 #include "parking_referee_node.hpp"
 
 #include <aula/geometry/angles.hpp>
+#include <aula/geometry/oriented_box.hpp>
 #include <aula/autopark/parking_picture.hpp>
 #include <aula/world/occupancy_map.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace aula::autopark {
 
@@ -17,10 +21,63 @@ ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& c
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
 }
 
+void ParkingRefereeNode::onTruePose(const aula::pose3d_t& msg) {
+  const bool graded = referee_->started() && !referee_->finished();
+  referee_->onPose(msg.utime, msg.x, msg.y, msg.yaw);
+  if (graded) trace().onPose(msg.utime, msg.x, msg.y, msg.yaw);
+}
+
+void ParkingRefereeNode::onClockTick(int64_t utime) {
+  const bool was_finished = referee_->finished();
+  referee_->onTick(utime);
+  if (referee_->finished() && !was_finished) traceEnd(utime);
+}
+
+namespace {
+
+// What the car at (x, y, yaw) touches, as far as the referee can tell (the bumper says only that
+// it touches something): the nearest static model of the world, named as the scene knows it.
+std::string touched(const world::WorldSpec& world, const ParkingScene& scene, double x_m, double y_m, double yaw_rad) {
+  const geometry::OrientedBox car{{x_m, y_m, yaw_rad}, scene.car_length_m, scene.car_width_m};
+  double nearest_m = std::numeric_limits<double>::infinity();
+  std::string name = "nothing the referee knows of";
+  for (const world::StaticObject& object : world.statics) {
+    const Eigen::Vector3d at = object.pose.translation();
+    if (at.z() + object.shape.halfHeight() < 0.01) continue;  // the ground
+    const bool box = object.shape.kind == world::ShapeKind::Box;
+    const double yaw = std::atan2(object.pose.rotation()(1, 0), object.pose.rotation()(0, 0));
+    const geometry::OrientedBox footprint{{at.x(), at.y(), yaw}, box ? object.shape.box_size_m.x() : 2 * object.shape.radius_m,
+                                          box ? object.shape.box_size_m.y() : 2 * object.shape.radius_m};
+    const double d = geometry::distance(car, footprint);
+    if (d >= nearest_m) continue;
+    nearest_m = d;
+    name = object.name.substr(0, object.name.find("::"));
+    if (object.name.find("curb_parking_side") != std::string::npos) name = "the curb";
+    for (const auto& [parked, what] : {std::make_pair(&scene.rear_car, "the car behind the slot"),
+                                       std::make_pair(&scene.front_car, "the car in front of the slot")}) {
+      if (std::hypot(parked->centre.x_m - at.x(), parked->centre.y_m - at.y()) < 0.05) name = what;
+    }
+  }
+  return name;
+}
+
+}  // namespace
+
 void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
   const long long before = referee_->collisions();
+  const bool counting = referee_->started() && !referee_->finished();
   referee_->onContact(utime, pressed);
+  if (!pressed && open_contact_ >= 0 && counting) {
+    referee::TraceEvent& e = trace().events()[open_contact_];
+    e.duration_s = std::max(0.0, trace().timeS(utime) - e.t_s);
+    open_contact_ = -1;
+  }
   if (referee_->collisions() > before) {
+    char text[128];
+    std::snprintf(text, sizeof text, "collision %lld: touching %s", referee_->collisions(), touched(world_, scene_, referee_->x(), referee_->y(), referee_->yawRad()).c_str());
+    trace().addEvent(utime, "contact", text, before == 0 ? "the collision term's 2.5 points are lost" : "already lost: no more points off");
+    if (before == 0) trace().events().back().points = -2.5;
+    open_contact_ = static_cast<long>(trace().events().size()) - 1;
     // Say where, so a student can see which part of the manoeuvre touched something.
     std::fprintf(stderr, "autopark-referee [%.2f s]: collision %lld, car at x %.2f y %.2f yaw %.1f deg\n",
                  referee_->elapsedS(), referee_->collisions(), referee_->x(), referee_->y(),
@@ -31,10 +88,55 @@ void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
 void ParkingRefereeNode::startNewEpisode(int64_t) {
   // Hot reload: the car is back at its start; the clock starts again at the next Run.
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
+  trace().clear();
+  open_contact_ = -1;
 }
 
 void ParkingRefereeNode::onEpisode(const aula::episode_t& msg) {
+  const bool was_started = referee_->started();
   if (msg.started_utime >= 0) referee_->start(msg.started_utime);
+  if (referee_->started() && !was_started) {
+    trace().start(msg.started_utime);
+    if (referee_->hasPose()) trace().onPose(msg.started_utime, referee_->x(), referee_->y(), referee_->yawRad());
+    trace().addEvent(msg.started_utime, "start", "Run: the clock starts", "");
+  }
+}
+
+void ParkingRefereeNode::traceEnd(int64_t utime) {
+  const ParkingReferee& r = *referee_;
+  const ParkingScores s = r.scores();
+  const ParkingMeasures& m = r.measures();
+  if (open_contact_ >= 0) {
+    // Still touching at the end: it lasted until now (ParkingReferee counted it so).
+    referee::TraceEvent& e = trace().events()[open_contact_];
+    e.duration_s = std::max(0.0, trace().timeS(utime) - e.t_s);
+    open_contact_ = -1;
+  }
+  char text[160], effect[96];
+  std::snprintf(text, sizeof text, "%s after %.1f s", r.parked() ? "parked" : "time's up, not parked", r.elapsedS());
+  std::snprintf(effect, sizeof effect, "time: %.1f of 2.5 points", 0.025 * s.time);
+  // At the moment the clock stopped (the car at rest in the slot), not when the referee was sure.
+  referee::TraceEvent& end = trace().addEvent(utime, r.parked() ? "parked" : "end", text, effect);
+  end.points = 0.025 * s.time;
+  end.t_s = r.elapsedS();
+  auto term = [&](const char* kind, const std::string& what, double score) {
+    std::snprintf(effect, sizeof effect, "%.3g of %s points", 0.025 * score, kind);
+    referee::TraceEvent& e = trace().addEvent(utime, "measure", what, effect);
+    e.points = 0.025 * score;
+    e.t_s = r.elapsedS();  // graded where the car stopped
+  };
+  std::snprintf(text, sizeof text, "angle to the curb %.1f deg", m.yaw_error_deg);
+  term("2.5", text, s.angle);
+  if (m.inside_slot) {
+    std::snprintf(text, sizeof text, "gaps: front %.2f m (%.0f), rear %.2f m (%.0f), curb %.2f m (%.0f) of 100 each; a centred car: %.2f m",
+                  m.front_gap_m, gapScore(m.front_gap_m, m.ideal_gap_m, r.settings()), m.rear_gap_m,
+                  gapScore(m.rear_gap_m, m.ideal_gap_m, r.settings()), m.curb_gap_m, curbScore(m.curb_gap_m, r.settings()),
+                  m.ideal_gap_m);
+  } else {
+    std::snprintf(text, sizeof text, "not inside the slot: no gap is graded");
+  }
+  term("2.5", text, s.distance);
+  trace().stop();
 }
 
 referee::EpisodeStatus ParkingRefereeNode::status() const {
@@ -123,6 +225,52 @@ cv::Mat ParkingRefereeNode::picture(const std::vector<std::string>& notes) const
   // Everything a car can touch, kerbs included (the ground plane is not drawn).
   const cv::Mat street = world::rasterizeOccupancy(world_, view, 0.01, 100.0);
   return parkingPicture(street, view, run);
+}
+
+void ParkingRefereeNode::addTrace(referee::Report& out) const {
+  const ParkingReferee& r = *referee_;
+  out.set("robot", referee::traceBox(scene_.car_length_m, scene_.car_width_m));
+  ParkingRunSummary run;  // what the picture's view frames: the slot, the car and its drive
+  run.scene = scene_;
+  run.have_pose = r.hasPose();
+  run.x_m = r.x();
+  run.y_m = r.y();
+  run.yaw_rad = r.yawRad();
+  run.trail = r.trail().points();
+  const geometry::MapTransform view = parkingView(run);
+  out.set("map", referee::traceMap(world::rasterizeOccupancy(world_, view, 0.01, 100.0), view));
+  auto box = [](const geometry::OrientedBox& b) {
+    return std::vector<double>{b.centre.x_m, b.centre.y_m, b.centre.yaw_rad, b.length_m, b.width_m};
+  };
+  const ParkingMeasures& m = r.measures();
+  referee::Report state;
+  state.set("rear_car", box(scene_.rear_car));
+  state.set("front_car", box(scene_.front_car));
+  state.set("curb_y_m", scene_.curb_y_m);
+  state.set("ideal_pose", std::vector<double>{scene_.ideal_x_m, scene_.ideal_y_m, scene_.ideal_yaw_rad});
+  state.set("slot_length_m", scene_.slotLengthM());
+  state.set("parked", r.parked());
+  state.set("inside_slot", m.inside_slot);
+  state.set("gaps_m", std::vector<double>{m.front_gap_m, m.rear_gap_m, m.curb_gap_m});
+  state.set("gap_scores", std::vector<double>{gapScore(m.front_gap_m, m.ideal_gap_m, r.settings()),
+                                             gapScore(m.rear_gap_m, m.ideal_gap_m, r.settings()),
+                                             curbScore(m.curb_gap_m, r.settings())});
+  state.set("ideal_gap_m", m.ideal_gap_m);
+  state.set("yaw_error_deg", m.yaw_error_deg);
+  state.set("collisions", r.collisions());
+  state.set("contact_time_s", r.contactS());
+  out.set("state", state);
+  const ParkingScores s = r.scores();
+  char angle[64], time[64], gaps[96], contacts[64];
+  std::snprintf(angle, sizeof angle, "%.1f deg to the curb", m.yaw_error_deg);
+  std::snprintf(time, sizeof time, "%s in %.1f s (full under %.4g s)", r.parked() ? "parked" : "not parked", r.elapsedS(),
+                r.settings().full_time_s);
+  std::snprintf(gaps, sizeof gaps, "front %.2f m, rear %.2f m, curb %.2f m", m.front_gap_m, m.rear_gap_m, m.curb_gap_m);
+  std::snprintf(contacts, sizeof contacts, "%lld collision(s), %.1f s in contact", r.collisions(), r.contactS());
+  out.setJson("breakdown", referee::breakdownJson({{"angle", angle, 0.025 * s.angle, 2.5},
+                                                   {"time", time, 0.025 * s.time, 2.5},
+                                                   {"distances", gaps, 0.025 * s.distance, 2.5},
+                                                   {"collisions", contacts, 0.025 * s.collision, 2.5}}));
 }
 
 }  // namespace aula::autopark

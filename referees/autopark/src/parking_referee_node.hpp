@@ -24,11 +24,11 @@ class ParkingRefereeNode : public referee::RefereeNode {
 
  private:
   bool gradedToEnd() const override { return referee_->finished(); }
-  void onTruePose(const aula::pose3d_t& msg) override { referee_->onPose(msg.utime, msg.x, msg.y, msg.yaw); }
+  void onTruePose(const aula::pose3d_t& msg) override;
   void onContact(int64_t utime, bool pressed) override;
   void startNewEpisode(int64_t utime) override;
   void onEpisode(const aula::episode_t& msg) override;
-  void onClockTick(int64_t utime) override { referee_->onTick(utime); }
+  void onClockTick(int64_t utime) override;
   double mark() const override { return referee_->scores().mark; }
   void addGrading(referee::Report& report) const override;
   std::vector<std::string> measures() const override {
@@ -36,11 +36,14 @@ class ParkingRefereeNode : public referee::RefereeNode {
   }
   std::string gradeSummary() const override;
   cv::Mat picture(const std::vector<std::string>& notes) const override;
+  void addTrace(referee::Report& trace) const override;
+  void traceEnd(int64_t utime);  // the end, and the points each final measure earned
 
   ParkingScene scene_;
   ParkingRefereeSettings settings_;
   std::unique_ptr<ParkingReferee> referee_;
-  world::WorldSpec world_;  // the street, drawn into the picture only when one is asked for
+  world::WorldSpec world_;  // the street, drawn into the picture (and the trace) only when one is asked for
+  long open_contact_ = -1;  // the trace's event of the contact under way
 };
 
 }  // namespace aula::autopark

@@ -1,5 +1,6 @@
 #include "aula/referee/referee_node.hpp"
 
+#include <aula/config/paths.hpp>
 #include <aula/version.hpp>
 
 #include <aula/referee/rubric.hpp>
@@ -61,12 +62,17 @@ void RefereeNode::onBumperMessage(const lcm::ReceiveBuffer*, const std::string& 
 
 void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
   if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
+  const bool had_fault = !outcome_.fault().empty();
   if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
     startNewEpisode(msg->utime);
   }
   onEpisode(*msg);
+  if (!had_fault && !outcome_.fault().empty()) {
+    trace_.addEvent(msg->utime, "fault", "the student's algorithm failed: " + outcome_.fault(),
+                    "grading stops here: the mark is what was earned so far");
+  }
   announce(msg->utime);
 }
 
@@ -76,6 +82,10 @@ void RefereeNode::announce(int64_t utime) {
 }
 
 void RefereeNode::abort(const std::string& reason) {
+  if (outcome_.aborted().empty()) {
+    trace_.addEvent(simTimeUs(), "aborted", "the run was aborted: " + reason,
+                    "grading stops here: the mark is what was earned so far");
+  }
   outcome_.abort(reason);
   outcome_.announceOnce(finished(), on_finished_);
   status_->send(simTimeUs(), status());
@@ -101,5 +111,32 @@ Report RefereeNode::report() const {
 void RefereeNode::writePicture(const std::string& png_path) const {
   writePngAtomically(picture(outcome_.pictureNotes(world_file_, static_cast<long long>(clock_->lastTick().seed))), png_path);
 }
+
+std::string RefereeNode::traceJson() const {
+  Report out;
+  out.set("trace", 1LL);
+  out.set("exercise", exercise_);
+  out.set("world", world_file_);
+  out.set("seed", static_cast<long long>(clock_->lastTick().seed));
+  out.set("algorithm", outcome_.algorithm());
+  out.set("mark", mark());
+  out.set("sim_time_s", gradedTimeS());
+  addTrace(out);
+  RunTrace whole = trace_;
+  // What the gate refused or lost, known at the end: flagged at the end.
+  const int64_t end_utime = clock_->simTimeUs();
+  for (const auto& [channel, count] : outcome_.truth().tampering()) {
+    whole.addEvent(end_utime, "tampering", std::to_string(count) + " forged or refused messages on " + channel,
+                   "not graded: the mark is the true behaviour's; the run is flagged").placed = false;
+  }
+  for (const auto& [channel, count] : outcome_.truth().gaps()) {
+    whole.addEvent(end_utime, "lost", std::to_string(count) + " messages lost on " + channel,
+                   "the referee graded without them").placed = false;
+  }
+  whole.addTo(out);
+  return out.toJson();
+}
+
+void RefereeNode::writeTrace(const std::string& json_path) const { config::writeFileAtomically(json_path, traceJson(), "trace"); }
 
 }  // namespace aula::referee

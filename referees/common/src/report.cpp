@@ -10,9 +10,8 @@
 #include <unistd.h>
 
 namespace aula::referee {
-namespace {
 
-std::string quote(const std::string& s) {
+std::string jsonString(const std::string& s) {
   std::string out = "\"";
   for (char c : s) {
     switch (c) {
@@ -32,8 +31,6 @@ std::string quote(const std::string& s) {
   }
   return out + "\"";
 }
-
-}  // namespace
 
 std::string formatNumber(double value) {
   if (!std::isfinite(value)) return "null";  // JSON has no NaN/inf
@@ -59,7 +56,7 @@ void Report::put(const std::string& key, std::string json) {
 void Report::set(const std::string& key, double value) { put(key, formatNumber(value)); }
 void Report::set(const std::string& key, long long value) { put(key, std::to_string(value)); }
 void Report::set(const std::string& key, bool value) { put(key, value ? "true" : "false"); }
-void Report::set(const std::string& key, const std::string& value) { put(key, quote(value)); }
+void Report::set(const std::string& key, const std::string& value) { put(key, jsonString(value)); }
 void Report::set(const std::string& key, const std::vector<double>& values) {
   std::string json = "[";
   for (size_t i = 0; i < values.size(); ++i) json += (i ? ", " : "") + formatNumber(values[i]);
@@ -68,7 +65,7 @@ void Report::set(const std::string& key, const std::vector<double>& values) {
 
 void Report::set(const std::string& key, const std::vector<std::string>& values) {
   std::string json = "[";
-  for (size_t i = 0; i < values.size(); ++i) json += (i ? ", " : "") + quote(values[i]);
+  for (size_t i = 0; i < values.size(); ++i) json += (i ? ", " : "") + jsonString(values[i]);
   put(key, json + "]");
 }
 
@@ -76,7 +73,7 @@ void Report::set(const std::string& key, const Report& object) { put(key, object
 
 void Report::set(const std::string& key, const std::map<std::string, long long>& counts) {
   std::string json = "{";
-  for (const auto& [name, count] : counts) json += (json.size() > 1 ? ", " : "") + quote(name) + ": " + std::to_string(count);
+  for (const auto& [name, count] : counts) json += (json.size() > 1 ? ", " : "") + jsonString(name) + ": " + std::to_string(count);
   put(key, json + "}");
 }
 
@@ -94,7 +91,7 @@ std::string Report::json(int indent) const {
     // A nested object's lines move right with it.
     std::string value = fields_[i].second;
     for (size_t at = value.find('\n'); at != std::string::npos; at = value.find('\n', at + 1)) value.insert(at + 1, margin);
-    out += margin + "  " + quote(fields_[i].first) + ": " + value;
+    out += margin + "  " + jsonString(fields_[i].first) + ": " + value;
     out += i + 1 < fields_.size() ? ",\n" : "\n";
   }
   return out + margin + "}";

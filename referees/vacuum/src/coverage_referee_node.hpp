@@ -4,6 +4,7 @@
 
 #include <aula/config/config.hpp>
 #include <aula/referee/referee_node.hpp>
+#include <aula/vacuum/cleaned_cells_trace.hpp>
 #include <aula/vacuum/coverage_referee.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -39,13 +40,16 @@ class CoverageRefereeNode : public referee::RefereeNode {
   std::vector<std::string> measures() const override { return {"coverage_percent"}; }
   std::string gradeSummary() const override;
   cv::Mat picture(const std::vector<std::string>& notes) const override;
+  void addTrace(referee::Report& trace) const override;
+  // The trace's events of one graded pose or bump: stuck, the mark's thresholds, the end.
+  void traceProgress(int64_t utime, double stuck_before_s);
 
   std::unique_ptr<CoverageReferee> newReferee(int64_t origin_utime) const;
   void start(int64_t utime);
 
   struct TimedPoint {
     int64_t utime;
-    double x_m, y_m;
+    double x_m, y_m, yaw_rad;
   };
   bool started_ = false;
   std::optional<TimedPoint> waiting_pose_;  // the last pose before the episode started
@@ -53,6 +57,8 @@ class CoverageRefereeNode : public referee::RefereeNode {
   CoverageSettings settings_;
   double start_x_m_ = 0, start_y_m_ = 0;
   std::unique_ptr<CoverageReferee> referee_;
+  std::unique_ptr<CleanedCellsTrace> cells_;  // the trace's cleaned floor, on referee_'s grid
+  int thresholds_passed_ = 0;                 // of the half and the full mark's coverage
   world::OccupancyMap map_;
   std::function<void(double, double, double)> on_pose_;
   long long pose_messages_ = 0;

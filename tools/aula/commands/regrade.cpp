@@ -9,9 +9,10 @@ namespace aula::commands {
 cli::Command regrade() {
   cli::Command c("regrade", "grade a run recorded with `aula run --record` again, from the log alone (no simulator)");
   c.positionals = {{"FILE.lcmlog", "the recorded run"}};
-  c.options.add(cli::valueOption("report", "FILE.json", "the referee's JSON report"));
+  c.options.add(cli::valueOption("report", "FILE.json", "the referee's JSON report"))
+      .add(cli::valueOption("trace", "FILE.json", "the referee's trace of the run (the same bytes as the live run's)"));
   c.run = [](const cli::Arguments& args) {
-    return supervision::regrade(args.positional(0), args.text("report"), binDir());
+    return supervision::regrade(args.positional(0), args.text("report"), binDir(), args.text("trace"));
   };
   return c;
 }

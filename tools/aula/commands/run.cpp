@@ -4,6 +4,7 @@
 #include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/grade/run_page.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/sandbox/sandbox.hpp>
@@ -23,6 +24,16 @@ using cli::Arguments;
 using config::Config;
 using config::ConfigError;
 using settings::Exercise;
+
+// Where the referee writes `output` (report, picture, trace): as given, or beside --report-html,
+// which is made of them ("" when neither asks for it).
+std::string outputPath(const Arguments& args, const std::string& output) {
+  if (args.given(output)) return args.text(output);
+  if (!args.given("report-html") || output == "report-html") return "";
+  const std::string page = args.text("report-html");
+  const std::string stem = page.substr(0, page.rfind('.') == std::string::npos ? page.size() : page.rfind('.'));
+  return stem + (output == "report" ? ".report.json" : output == "trace" ? ".trace.json" : ".png");
+}
 
 bool noDisplay() {
   const char* display = std::getenv("DISPLAY");
@@ -80,8 +91,9 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arg
     }
   }
   if (ex.referee_settings == nullptr && args.given("duration")) lines[1].push_back("--duration=" + args.text("duration"));
-  for (const char* output : {"report", "picture"}) {
-    if (ex.referee_settings != nullptr && args.given(output)) lines[2].push_back(std::string("--") + output + "=" + args.text(output));
+  for (const char* output : {"report", "picture", "trace"}) {
+    const std::string path = outputPath(args, output);
+    if (ex.referee_settings != nullptr && !path.empty()) lines[2].push_back(std::string("--") + output + "=" + path);
   }
   if (ex.referee_settings != nullptr && !isolation.empty()) lines[2].push_back("--isolation=" + isolation);
   return lines;
@@ -90,12 +102,25 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arg
 // The referee's output files: a folder that is not there is refused before anything starts, and
 // a report from an earlier run must never pass for this one's, whatever happens next.
 void prepareOutputs(const Arguments& args) {
-  for (const char* output : {"report", "picture"}) {
+  for (const char* output : {"report", "picture", "trace", "report-html"}) {
     if (args.given(output)) config::requireWritableFolder(args.text(output), args.spelled(output));
   }
-  for (const char* output : {"report", "picture"}) {
-    if (args.given(output)) std::filesystem::remove(args.text(output));
+  for (const char* output : {"report", "picture", "trace", "report-html"}) {
+    if (!outputPath(args, output).empty()) std::filesystem::remove(outputPath(args, output));
   }
+}
+
+// After the run: --report-html, the run's page (player, events, the mark's breakdown) from the
+// referee's files.
+void writePage(const Arguments& args) {
+  if (!args.given("report-html")) return;
+  if (!std::filesystem::exists(outputPath(args, "report"))) {
+    std::cerr << "aula: no report, so no page (" << args.spelled("report-html") << ")\n";
+    return;
+  }
+  grade::writeRunPage(args.text("report-html"), outputPath(args, "report"), outputPath(args, "trace"),
+                      outputPath(args, "picture"));
+  std::cout << "the run's page: " << args.text("report-html") << "\n";
 }
 
 void checkOptions(const Exercise& ex, const Arguments& args, bool headless) {
@@ -105,7 +130,7 @@ void checkOptions(const Exercise& ex, const Arguments& args, bool headless) {
   if (args.flag("sandbox") && sandbox::bubblewrapPath().empty()) {
     throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
   }
-  for (const char* option : {"record", "report", "picture"}) {
+  for (const char* option : {"record", "report", "picture", "trace", "report-html"}) {
     if (args.given(option) && ex.referee_settings == nullptr) {
       throw ConfigError(std::string("--") + option + ": '" + ex.name + "' has no referee");
     }
@@ -138,7 +163,7 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
                                        const std::string& lcm_url, const std::string& isolation) {
   supervision::Supervision s;
   s.exercise = ex.name;
-  s.report_path = args.text("report");
+  s.report_path = outputPath(args, "report");
   s.headless = headless;
   s.sandbox = args.flag("sandbox");
   s.placement = placementOf(args, headless);
@@ -195,6 +220,7 @@ int runExercise(const Arguments& args) {
   if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url);
   const int code = supervision::supervise(supervision);
   if (recorder) recorder->stop();
+  writePage(args);
   return code;
 }
 
@@ -209,6 +235,8 @@ cli::Command declare() {
       .add(cli::numberOption("seed", config::SettingType::Int, "", 0, 9.2e18, "the run's seed (default: Simulator.Seed)"))
       .add(cli::valueOption("report", "FILE.json", "the referee's JSON report, written at the end (atomically)"))
       .add(cli::valueOption("picture", "FILE.png", "the referee's PNG picture of the run, written at the end"))
+      .add(cli::valueOption("trace", "FILE.json", "the referee's trace: poses at 10 Hz, the exercise's state, every event and its points"))
+      .add(cli::valueOption("report-html", "FILE.html", "the run's own page: a player in the browser, its events and the mark's breakdown"))
       .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
       .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
       .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,

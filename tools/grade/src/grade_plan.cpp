@@ -143,7 +143,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
           // --sandbox: the student's code in bubblewrap (docs/grading.md, "What a student's code can do").
           r.argv = {bin_dir + "/aula", "run", request.exercise, "--headless", "--sandbox", "--algorithm=" + s.plugin,
                     "--world=" + world_path, "--seed=" + std::to_string(seed), "--report=" + r.report_path,
-                    "--picture=" + stem.string() + ".png",
+                    "--picture=" + stem.string() + ".png", "--trace=" + stem.string() + ".trace.json",
                     // Port 0: the launcher takes one the OS hands out, where and when the run starts.
                     "--lcm-url=udpm://239.255.76.67:0?ttl=0"};
           if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");

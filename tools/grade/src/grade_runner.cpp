@@ -89,6 +89,7 @@ class RunInProgress {
     // A report or picture from an earlier try must not pass for this one's.
     fs::remove(run.report_path);
     fs::remove(fs::path(run.result_path).replace_extension(".png"));
+    fs::remove(fs::path(run.result_path).replace_extension(".trace.json"));
     if (run.compile_error.empty()) {
       child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path, std::vector<int>{},
                                                        process::Placement{cpu, false});

@@ -6,6 +6,7 @@
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/report_html.hpp>
+#include <aula/grade/run_page.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ std::vector<nlohmann::json> readResults(const std::string& out_dir) {
     for (const auto& entry : fs::recursive_directory_iterator(runs)) {
       const std::string name = entry.path().filename().string();
       const bool result = entry.is_regular_file() && entry.path().extension() == ".json" &&
-                          name.find(".report.json") == std::string::npos;
+                          name.find(".report.json") == std::string::npos && name.find(".trace.json") == std::string::npos;
       if (result) files.push_back(entry.path());
     }
   }
@@ -169,6 +170,13 @@ std::vector<StudentGrade> collect(const std::string& out_dir) {
   const auto grades = gradeStudents(results);
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
   config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results), "the class report");
+  // A page per run, beside its result, for the teacher to hand to that student alone.
+  for (const auto& r : results) {
+    if (!r.contains("log") || !r["log"].is_string()) continue;
+    fs::path page = r["log"].get<std::string>();
+    page.replace_extension(".html");
+    config::writeFileAtomically(page.string(), runPageHtml(runFilesOf(r)), "the run's page");
+  }
   return grades;
 }
 

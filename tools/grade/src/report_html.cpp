@@ -1,6 +1,7 @@
 #include "aula/grade/report_html.hpp"
 
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/run_page.hpp>
 
 #include <QByteArray>
 
@@ -17,20 +18,6 @@ namespace aula::grade {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string number(double value) {
   if (!std::isfinite(value)) return "";  // no run measured it
@@ -63,24 +50,10 @@ std::string presetsOf(const std::vector<nlohmann::json>& results) {
   return out;
 }
 
-// The referee's picture of a run, inlined; "" when there is none.
-std::string pictureUri(const nlohmann::json& result) {
-  if (!result.contains("log")) return "";
-  fs::path png = result["log"].get<std::string>();
-  png.replace_extension(".png");
-  std::ifstream in(png, std::ios::binary);
-  if (!in) return "";
-  std::stringstream bytes;
-  bytes << in.rdbuf();
-  const std::string data = bytes.str();
-  return "data:image/png;base64," +
-         QByteArray(data.data(), static_cast<int>(data.size())).toBase64().toStdString();
-}
-
-// The class's median marks in ten bins of one mark, as an SVG bar chart.
-std::string histogramSvg(const std::vector<StudentGrade>& grades) {
+// Marks in ten bins of one mark, as an SVG bar chart labelled `what`.
+std::string histogramSvg(const std::vector<double>& marks, const std::string& what) {
   std::array<int, 10> bins{};
-  for (const auto& g : grades) bins[static_cast<size_t>(std::clamp(static_cast<int>(g.median), 0, 9))]++;
+  for (double mark : marks) bins[static_cast<size_t>(std::clamp(static_cast<int>(mark), 0, 9))]++;
   int top = 1;
   for (int n : bins) top = std::max(top, n);
   const int w = 440, h = 180, bar = 40, base = 150;
@@ -95,7 +68,7 @@ std::string histogramSvg(const std::vector<StudentGrade>& grades) {
     svg << "<text x='" << x + 17 << "' y='" << base + 16 << "' text-anchor='middle'>" << i << "-" << i + 1 << "</text>";
   }
   svg << "<line x1='16' y1='" << base << "' x2='" << w - 16 << "' y2='" << base << "' stroke='#333'/>"
-      << "<text x='" << w / 2 << "' y='" << h - 2 << "' text-anchor='middle'>median mark</text></svg>";
+      << "<text x='" << w / 2 << "' y='" << h - 2 << "' text-anchor='middle'>" << escapeHtml(what) << "</text></svg>";
   return svg.str();
 }
 
@@ -112,6 +85,12 @@ td.why { color: #b71c1c; max-width: 520px; }
 .run img { width: 100%; image-rendering: auto; }
 .run .failed { color: #b71c1c; }
 h2 { border-bottom: 1px solid #ddd; padding-bottom: 4px; }
+.worlds { display: flex; flex-wrap: wrap; gap: 16px; }
+.filter { margin: 8px 0; }
+.run button { margin: 4px 0; }
+.run.open { width: 100%; }
+.run .watch { margin-top: 6px; }
+tr.flagged td.name { color: #b71c1c; }
 )";
 
 // Click a header to sort by it (numbers as numbers); again to reverse.
@@ -127,66 +106,166 @@ document.querySelectorAll('table.sortable th').forEach((th, column) => {
     rows.forEach(r => body.appendChild(r));
   });
 });
+// Filter the students: by name, and the flagged ones only.
+function filterStudents() {
+  const text = document.getElementById('filter-text').value.toLowerCase();
+  const flagged = document.getElementById('filter-flagged').checked;
+  document.querySelectorAll('table.students tbody tr').forEach(r => {
+    const show = r.dataset.student.toLowerCase().includes(text) && (!flagged || r.classList.contains('flagged'));
+    r.style.display = show ? '' : 'none';
+  });
+  document.querySelectorAll('section.student').forEach(s => {
+    const show = s.dataset.student.toLowerCase().includes(text) && (!flagged || s.dataset.flagged === 'yes');
+    s.style.display = show ? '' : 'none';
+  });
+}
+document.getElementById('filter-text').addEventListener('input', filterStudents);
+document.getElementById('filter-flagged').addEventListener('change', filterStudents);
+// A run's player, built when it is opened (its data is decoded then, not at load).
+function watch(id) {
+  const card = document.getElementById('card-' + id);
+  card.classList.add('open');
+  return AulaPlayer.openRun('data-' + id, card.querySelector('.watch'));
+}
+document.querySelectorAll('button.open-run').forEach(b => b.addEventListener('click', () => watch(b.dataset.run)));
+// #run=ID&t=SECONDS: that run's player, paused there.
+{
+  const m = /run=([^&]+)/.exec(location.hash);
+  if (m) watch(decodeURIComponent(m[1])).then(p => { const t = AulaPlayer.hashTime(); if (t !== null) p.seek(t); });
+}
 )";
+
+// A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
+std::string runId(const nlohmann::json& r) {
+  return r.value("student", std::string("?")) + "/" + fs::path(r.value("world", std::string("?"))).stem().string() + "-seed" +
+         std::to_string(r.value("seed", 0LL));
+}
+
+bool flagged(const nlohmann::json& r) { return !failureOf(r).empty() || !tamperingOf(r).empty(); }
+
+}  // namespace
+
+namespace {
+
+// The page's head and its first paragraph: how many students, runs, failures and forgeries.
+void writeHead(std::ostringstream& html, const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {
+  std::string exercise;  // from any referee's report (a run that never started has none)
+  int failed = 0;
+  int tampered = 0;
+  for (const auto& r : results) {
+    if (exercise.empty()) exercise = r.value("exercise", "");
+    failed += failureOf(r).empty() ? 0 : 1;
+    tampered += tamperingOf(r).empty() ? 0 : 1;
+  }
+  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>" << noNetworkPolicy() << "<title>Aula grades: "
+       << escapeHtml(exercise) << "</title><style>" << kStyle << playerStyle() << "</style></head><body>\n"
+       << "<h1>Aula grades: " << escapeHtml(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
+       << " runs, " << failed << " failed"
+       << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages the referee refused)" : "")
+       << ". The mark of a student is the median over every world and seed"
+       << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escapeHtml(presetsOf(results)))
+       << ". Beside it, the median of each raw measure. Open a run to watch it and see where its points went.</p>\n";
+}
+
+// The overview: the class's medians, then each world's marks over all its runs.
+void writeOverview(std::ostringstream& html, const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {
+  std::vector<double> medians;
+  for (const auto& g : grades) medians.push_back(g.median);
+  std::map<std::string, std::vector<double>> by_world;
+  for (const auto& r : results) by_world[fs::path(r.value("world", std::string("?"))).stem().string()].push_back(r.value("mark", 0.0));
+  html << "<h2>Overview</h2>\n<div class='worlds'><div><b>the class</b><br>" << histogramSvg(medians, "median mark of a student")
+       << "</div>";
+  for (const auto& [world, marks] : by_world) {
+    html << "<div><b>" << escapeHtml(world) << "</b>: " << marks.size() << " runs, median " << number(median(marks)) << "<br>"
+         << histogramSvg(marks, "mark of a run") << "</div>";
+  }
+  html << "</div>\n";
+}
+
+// The students' table, sortable and filtered in the page.
+void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& grades) {
+  html << "<div class='filter'><label>student <input id='filter-text' type='search' placeholder='name'></label> "
+       << "<label><input id='filter-flagged' type='checkbox'> flagged only (failed or tampered)</label></div>\n"
+       << "<table class='sortable students'><thead><tr><th>student</th><th>median</th><th>spread</th><th>min</th><th>max</th>";
+  if (!grades.empty()) {
+    for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escapeHtml(world) << "</th>";
+    for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escapeHtml(measure) << "</th>";
+  }
+  html << "<th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
+  for (const auto& g : grades) {
+    const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0;
+    html << "<tr data-student='" << escapeHtml(g.student) << "'" << (is_flagged ? " class='flagged'" : "")
+         << "><td class='name'><a href='#" << escapeHtml(g.student) << "'>" << escapeHtml(g.student) << "</a></td><td>"
+         << number(g.median) << "</td><td>" << number(g.max - g.min) << "</td><td>" << number(g.min) << "</td><td>"
+         << number(g.max) << "</td>";
+    for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
+    for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
+    html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
+         << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
+  }
+  html << "</tbody></table>\n";
+}
+
+// The flagged runs, each a link to its card.
+void writeFlagged(std::ostringstream& html, const std::vector<nlohmann::json>& results) {
+  std::vector<const nlohmann::json*> flagged_runs;
+  for (const auto& r : results) {
+    if (flagged(r)) flagged_runs.push_back(&r);
+  }
+  html << "<h3>Flagged runs (" << flagged_runs.size() << ")</h3>\n<ul class='flagged-runs'>";
+  for (const nlohmann::json* r : flagged_runs) {
+    const std::string reason = failureOf(*r).empty() ? tamperingOf(*r) : failureOf(*r);
+    html << "<li><a href='#card-" << escapeHtml(runId(*r)) << "'>" << escapeHtml(runId(*r)) << "</a>: " << escapeHtml(reason) << "</li>";
+  }
+  html << "</ul>\n";
+}
+
+// One run's card: its mark, measures, failure, forgeries, its player (built when opened) and picture.
+void writeCard(std::ostringstream& html, const nlohmann::json& r) {
+  const std::string id = runId(r);
+  const RunFiles files = runFilesOf(r);
+  const std::string failure = failureOf(r);
+  html << "<div class='run' id='card-" << escapeHtml(id) << "'><b>" << escapeHtml(fs::path(r.value("world", "?")).stem().string())
+       << ", seed " << r.value("seed", 0LL) << ": " << number(r.value("mark", 0.0)) << "</b>";
+  const std::string measures = measuresOf(r);
+  if (!measures.empty()) html << "<div>" << escapeHtml(measures) << "</div>";
+  if (!failure.empty()) html << "<div class='failed'>" << escapeHtml(failure) << "</div>";
+  const std::string tampering = tamperingOf(r);
+  if (!tampering.empty()) html << "<div class='failed'>" << escapeHtml(tampering) << "</div>";
+  if (!files.trace_json.empty()) {
+    html << "<div><button type='button' class='open-run' data-run='" << escapeHtml(id) << "'>Watch the run</button></div>"
+         << runDataBlock("data-" + id, files);
+  }
+  html << "<div class='watch'></div>";
+  if (!files.picture_png.empty()) {
+    html << "<img alt='the referee&apos;s picture of the run' src='" << dataUri("image/png", files.picture_png) << "'>";
+  }
+  html << "</div>\n";
+}
+
+void writeRuns(std::ostringstream& html, const std::vector<nlohmann::json>& results) {
+  std::map<std::string, std::vector<const nlohmann::json*>> by_student;
+  for (const auto& r : results) by_student[r.value("student", "?")].push_back(&r);
+  for (const auto& [student, runs] : by_student) {
+    bool any_flagged = false;
+    for (const nlohmann::json* r : runs) any_flagged = any_flagged || flagged(*r);
+    html << "<section class='student' data-student='" << escapeHtml(student) << "' data-flagged='" << (any_flagged ? "yes" : "no")
+         << "'><h2 id='" << escapeHtml(student) << "'>" << escapeHtml(student) << "</h2>\n<div class='runs'>\n";
+    for (const nlohmann::json* r : runs) writeCard(html, *r);
+    html << "</div></section>\n";
+  }
+}
 
 }  // namespace
 
 std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {
-  std::string exercise;  // from any referee's report (a run that never started has none)
-  for (const auto& r : results) {
-    if (exercise.empty()) exercise = r.value("exercise", "");
-  }
-  int failed = 0;
-  int tampered = 0;
-  for (const auto& r : results) {
-    failed += failureOf(r).empty() ? 0 : 1;
-    tampered += tamperingOf(r).empty() ? 0 : 1;
-  }
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'><title>Aula grades: " << escape(exercise)
-       << "</title><style>" << kStyle << "</style></head><body>\n"
-       << "<h1>Aula grades: " << escape(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
-       << " runs, " << failed << " failed"
-       << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages the referee refused)" : "")
-       << ". The mark of a student is the median over every world and seed"
-       << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escape(presetsOf(results)))
-       << ". Beside it, the median of each raw measure.</p>\n"
-       << histogramSvg(grades) << "\n<table class='sortable'><thead><tr><th>student</th><th>median</th><th>min</th><th>max</th>";
-  if (!grades.empty()) {
-    for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escape(world) << "</th>";
-    for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escape(measure) << "</th>";
-  }
-  html << "<th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
-  for (const auto& g : grades) {
-    html << "<tr><td class='name'><a href='#" << escape(g.student) << "'>" << escape(g.student) << "</a></td><td>"
-         << number(g.median) << "</td><td>" << number(g.min) << "</td><td>" << number(g.max) << "</td>";
-    for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
-    for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
-    html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
-         << ">" << g.runs_tampered << "</td><td class='why'>" << escape(g.failures)
-         << "</td></tr>\n";
-  }
-  html << "</tbody></table>\n";
-  std::map<std::string, std::vector<const nlohmann::json*>> by_student;
-  for (const auto& r : results) by_student[r.value("student", "?")].push_back(&r);
-  for (const auto& [student, runs] : by_student) {
-    html << "<h2 id='" << escape(student) << "'>" << escape(student) << "</h2>\n<div class='runs'>\n";
-    for (const nlohmann::json* r : runs) {
-      const std::string failure = failureOf(*r);
-      html << "<div class='run'><b>" << escape(fs::path(r->value("world", "?")).stem().string()) << ", seed "
-           << r->value("seed", 0LL) << ": " << number(r->value("mark", 0.0)) << "</b>";
-      const std::string measures = measuresOf(*r);
-      if (!measures.empty()) html << "<div>" << escape(measures) << "</div>";
-      if (!failure.empty()) html << "<div class='failed'>" << escape(failure) << "</div>";
-      const std::string tampering = tamperingOf(*r);
-      if (!tampering.empty()) html << "<div class='failed'>" << escape(tampering) << "</div>";
-      const std::string picture = pictureUri(*r);
-      if (!picture.empty()) html << "<img alt='the referee&apos;s picture of the run' src='" << picture << "'>";
-      html << "</div>\n";
-    }
-    html << "</div>\n";
-  }
-  html << "<script>" << kSortScript << "</script>\n</body></html>\n";
+  writeHead(html, grades, results);
+  writeOverview(html, grades, results);
+  writeStudents(html, grades);
+  writeFlagged(html, results);
+  writeRuns(html, results);
+  html << "<script>" << playerScript() << kSortScript << "</script>\n</body></html>\n";
   return html.str();
 }
 

@@ -51,7 +51,8 @@ aula::run_record_t runRecord(const settings::Exercise& exercise, const std::stri
   return record;
 }
 
-int regrade(const std::string& log_path, const std::string& report_path, const std::string& bin_dir) {
+int regrade(const std::string& log_path, const std::string& report_path, const std::string& bin_dir,
+            const std::string& trace_path) {
   const aula::run_record_t record = lcmbus::readRunRecord(log_path);
   const settings::Exercise* exercise = settings::exerciseNamed(record.exercise);
   if (exercise == nullptr || exercise->referee != record.referee) {
@@ -69,6 +70,7 @@ int regrade(const std::string& log_path, const std::string& report_path, const s
                                    "--" + exercise->section + ".World=" + world};
   for (const std::string& setting : record.settings) args.push_back("--" + setting);
   if (!report_path.empty()) args.push_back("--report=" + report_path);
+  if (!trace_path.empty()) args.push_back("--trace=" + trace_path);
   process::ChildProcess referee(args);
   return referee.wait(std::chrono::hours(24 * 365)).value_or(1);
 }

@@ -10,10 +10,11 @@
 // what it has and says why; such a run exits 1 (it did not finish).
 //
 // `--picture=FILE.png` writes the referee's picture of the run (drawn headless with OpenCV, for
-// the teacher's grading report) at the same moment as the report.
+// the teacher's grading report) at the same moment as the report; `--trace=FILE.json` the
+// run's trace for the grading page's player (aula/referee/run_trace.hpp).
 //
 // Node needs finished(), endedEarly(), abort(reason), poll(), leave(), deferSensorWakeUps(bus), summary(), report(),
-// writePicture(path), setOnFinished(hook);
+// writePicture(path), writeTrace(path), setOnFinished(hook);
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
 #include <aula/app/bus_pump.hpp>
@@ -32,8 +33,8 @@ namespace aula::app {
 // The options of every referee: ProcessSetup::fromArgs plus the output files, whose folders are
 // checked now, before the run starts (a ConfigError, exit code 2, naming the path).
 inline ProcessSetup refereeSetup(int argc, const char* const* argv, const std::string& program, const std::string& usage) {
-  ProcessSetup setup = ProcessSetup::fromArgs(argc, argv, program, {"report", "picture", "screenshot"}, usage);
-  for (const char* option : {"report", "picture", "screenshot"}) {
+  ProcessSetup setup = ProcessSetup::fromArgs(argc, argv, program, {"report", "picture", "trace", "screenshot"}, usage);
+  for (const char* option : {"report", "picture", "trace", "screenshot"}) {
     if (!setup.command_line.flag(option)) continue;
     const std::string path = setup.command_line.option(option);
     config::requireWritableFolder(path, std::string("--") + option + "=" + path);
@@ -45,6 +46,7 @@ template <class Node, class Window>
 int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   const std::string report_path = setup.command_line.option("report");
   const std::string picture_path = setup.command_line.option("picture");
+  const std::string trace_path = setup.command_line.option("trace");
   process::LinePipe control(setup.command_line.flag("control-fd")
                           ? static_cast<int>(setup.command_line.optionDouble("control-fd", -1))
                           : -1);
@@ -77,6 +79,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
       report.writeAtomically(report_path);
     }
     if (!picture_path.empty()) node.writePicture(picture_path);
+    if (!trace_path.empty()) node.writeTrace(trace_path);
   };
   if (setup.command_line.flag("replay")) {
     // The recorded run, graded on its own clock: the same handlers see the same messages.

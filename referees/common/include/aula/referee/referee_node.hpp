@@ -16,6 +16,7 @@
 #include <aula/pose3d_t.hpp>
 #include <aula/referee/report.hpp>
 #include <aula/referee/run_outcome.hpp>
+#include <aula/referee/run_trace.hpp>
 #include <aula/referee/status_sender.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -43,6 +44,9 @@ class RefereeNode {
   Report report() const;
   std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
   void writePicture(const std::string& png_path) const;                        // --picture
+  // --trace: the run as the referee graded it, for the player (aula/referee/run_trace.hpp).
+  std::string traceJson() const;
+  void writeTrace(const std::string& json_path) const;
   void poll() { clock_->poll(); }
   // Headless: the simulator's truth (pose, bumper) no longer wakes this process at every tick; it
   // is read, in order, when the referee's own tick (or anything else) wakes it (Bus::deferWakeUps).
@@ -78,6 +82,13 @@ class RefereeNode {
   virtual std::string gradeSummary() const = 0;
   // The picture of the run; `notes` are its caption's world, seed, algorithm and outcome lines.
   virtual cv::Mat picture(const std::vector<std::string>& notes) const = 0;
+  // The trace's exercise part: "robot" (traceDisc/traceBox), "map" (traceMap), "state" (what
+  // the exercise's player draws) and "breakdown" (breakdownJson of the mark's terms). The
+  // exercise feeds trace() as it grades: start, poses, its events, stop.
+  virtual void addTrace(Report& trace) const = 0;
+
+  RunTrace& trace() { return trace_; }
+  const RunTrace& trace() const { return trace_; }
 
   const RunOutcome& outcome() const { return outcome_; }
   const std::string& robotName() const { return robot_name_; }
@@ -94,6 +105,7 @@ class RefereeNode {
   Report rubric_;                          // the report's "rubric": the preset and its numbers
   int64_t episode_from_utime_ = -1;        // truth at or before this sim time is the last episode's
   RunOutcome outcome_;
+  RunTrace trace_;
   std::unique_ptr<StatusSender> status_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;

@@ -23,6 +23,8 @@ class Report {
   void set(const std::string& key, const Report& object);  // a nested object
   // An object of counts by name, in the map's (sorted) order: {"ROOMBA_POSE": 1532}.
   void set(const std::string& key, const std::map<std::string, long long>& counts);
+  // JSON the caller has encoded already (a compact array of a trace), kept as it is.
+  void setJson(const std::string& key, std::string json) { put(key, std::move(json)); }
 
   std::string toJson() const;
   // Throws std::runtime_error naming the path on failure.
@@ -36,6 +38,9 @@ class Report {
   std::string json(int indent) const;
   std::vector<std::pair<std::string, std::string>> fields_;
 };
+
+// `text` as a JSON string, quoted and escaped.
+std::string jsonString(const std::string& text);
 
 // Fixed, locale-independent number formatting used in reports ("12.345678").
 std::string formatNumber(double value);

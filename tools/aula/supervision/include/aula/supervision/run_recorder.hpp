@@ -31,8 +31,10 @@ aula::run_record_t runRecord(const settings::Exercise& exercise, const std::stri
                              const config::Config& referee_settings);
 
 // `aula regrade LOG [--report=FILE.json]`: the log's referee, alone and headless, grades the
-// log (--replay) with the recorded settings; returns its exit code.
-int regrade(const std::string& log_path, const std::string& report_path, const std::string& bin_dir);
+// log (--replay) with the recorded settings; returns its exit code. `trace_path`: the referee's
+// --trace too (the same bytes as the live run's).
+int regrade(const std::string& log_path, const std::string& report_path, const std::string& bin_dir,
+            const std::string& trace_path = "");
 
 class RunRecorder {
  public:

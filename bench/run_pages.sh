@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# The grading page's players, measured in one script run (docs/performance.md):
+#   1. the cost of the referee's --trace: full 900 s vacuum runs, with and without it, alternated;
+#   2. a trace's size (900 s vacuum; TeleTaxi; Autopark);
+#   3. a class of STUDENTS x 5 vacuum runs: report.html's size, and how long headless Chromium
+#      takes to load it (the page's own `load` time, and Chromium's whole wall time), and to open
+#      one run's player in it.
+# A run's three processes are started here as `aula run --headless` starts them (the launcher
+# does not pass --trace to the referee yet). With --screenshots it also writes the page's pictures
+# in docs/images (look at them before committing); --screenshots-only skips the measures.
+# Usage: bench/run_pages.sh BUILD_DIR [STUDENTS=30] [--screenshots|--screenshots-only]
+set -euo pipefail
+build="$(cd "$1" && pwd)"; students="${2:-30}"; screenshots="${3:-}"
+src="$(cd "$(dirname "$0")/.." && pwd)"
+bin="$build/bin"; worlds="$build/share/aula/worlds"
+work="$(mktemp -d "${TMPDIR:-/tmp}/aula-pages-bench-XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+
+# run3 SECTION COMPONENT REFEREE WORLD SEED STEM [REFEREE_OPTION...] [-- SIM_SETTING...]: one
+# headless run in lockstep as fast as possible, the exercise's .cfg and its algorithm $ALGORITHM
+# (reference; Autopark: reactive); prints its wall time and the CPU time of its three processes.
+run3() {
+  local section="$1" component="$2" referee="$3" world="$4" seed="$5" stem="$6"
+  shift 6
+  local cfg algorithm="${ALGORITHM:-reference}"
+  case "$section" in
+    Vacuum) cfg=vacuumCleaner.cfg ;; TeleTaxi) cfg=teleTaxi.cfg ;; Autopark) cfg=autopark.cfg; algorithm="${ALGORITHM:-reactive}" ;;
+  esac
+  cfg="$build/share/aula/config/$cfg"
+  local referee_args=() sim_args=()
+  while [ $# -gt 0 ] && [ "$1" != "--" ]; do referee_args+=("$1"); shift; done
+  [ $# -gt 0 ] && shift && sim_args=("$@")
+  local url="udpm://239.255.76.67:$((20000 + RANDOM % 20000))?ttl=0&recv_buf_size=4194304"
+  local t0 cpu0; t0=$(date +%s.%N); children_cpu >"$work/cpu0"; cpu0=$(cat "$work/cpu0")
+  "$bin/aula-sim" "$worlds/$world" --lockstep --Simulator.Lockstep.WaitForClients=2 --rtf=0 --Simulator.Seed="$seed" \
+    --lcm-url="$url" ${sim_args[@]+"${sim_args[@]}"} >"$stem.sim.txt" 2>&1 &
+  local sim=$!
+  "$bin/$referee" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$worlds/$world" ${referee_args[@]+"${referee_args[@]}"} \
+    >"$stem.referee.txt" 2>&1 &
+  local ref=$!
+  "$bin/$component" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$worlds/$world" "--$section.Autostart=true" \
+    "--$section.Algorithm=$algorithm" \
+    >"$stem.component.txt" 2>&1 &
+  local comp=$!
+  wait "$ref"
+  local t1; t1=$(date +%s.%N)
+  kill -TERM "$comp" "$sim" 2>/dev/null || true
+  wait "$comp" "$sim" 2>/dev/null || true
+  children_cpu >"$work/cpu1"
+  echo "$(echo "$t1 - $t0" | bc -l) $(echo "$(cat "$work/cpu1") - $cpu0" | bc -l)"
+}
+
+# The CPU seconds (user + system) of this shell's waited-for children so far.
+# `times` itself, not in a pipe or $(...): a subshell's children are not this shell's.
+children_cpu() {
+  times >"$work/times"
+  tail -1 "$work/times" | tr -d s | awk '{ n = 0; for (i = 1; i <= 2; ++i) { split($i, p, "m"); n += p[1] * 60 + p[2] } print n }'
+}
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
+
+# Chromium, headless, a fresh profile, nothing in the background.
+chrome() {
+  local profile; profile="$(mktemp -d "$work/profile-XXXXXX")"
+  /usr/bin/chromium --headless --no-sandbox --disable-gpu --disable-background-networking --disable-component-update \
+    --disable-sync --no-first-run --user-data-dir="$profile" --hide-scrollbars "$@" 2>/dev/null
+}
+
+if [ "$screenshots" != "--screenshots-only" ]; then
+echo "== 1. the cost of --trace: 900 s vacuum runs (reference), seeds 1-5 twice, each without and with it, alternated"
+mkdir -p "$work/cost"
+: >"$work/cost/without"; : >"$work/cost/with"
+for round in 1 2; do
+  for seed in 1 2 3 4 5; do
+    run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world "$seed" "$work/cost/a$seed" \
+      --report="$work/cost/a$seed.json" >>"$work/cost/without"
+    run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world "$seed" "$work/cost/b$seed" \
+      --report="$work/cost/b$seed.json" --trace="$work/cost/b$seed.trace.json" >>"$work/cost/with"
+    cmp -s "$work/cost/a$seed.json" "$work/cost/b$seed.json" || { echo "seed $seed: the report changed with --trace"; exit 1; }
+  done
+done
+for what in without with; do
+  wall=$(cut -d' ' -f1 "$work/cost/$what" | median); cpu=$(cut -d' ' -f2 "$work/cost/$what" | median)
+  printf '%-8s --trace: wall %s s, CPU %s s (medians of 10; each run: %s)\n' "$what" "$(printf '%.3f' "$wall")" \
+    "$(printf '%.3f' "$cpu")" "$(cut -d' ' -f1 "$work/cost/$what" | xargs printf '%.2f ')"
+  eval "wall_$what=$wall cpu_$what=$cpu"
+done
+echo "cost of --trace: wall $(echo "100 * ($wall_with - $wall_without) / $wall_without" | bc -l | xargs printf '%+.1f') %," \
+     "CPU $(echo "100 * ($cpu_with - $cpu_without) / $cpu_without" | bc -l | xargs printf '%+.1f') %"
+
+echo "== 2. trace sizes"
+for seed in 1 2 3 4 5; do printf 'vacuum 900 s seed %s: %s bytes\n' "$seed" "$(stat -c %s "$work/cost/b$seed.trace.json")"; done
+run3 TeleTaxi teletaxi teletaxi-referee cityLarge.world 1 "$work/taxi" --trace="$work/taxi.trace.json" >/dev/null
+run3 Autopark autopark autopark-referee autopark.world 1 "$work/park" --trace="$work/park.trace.json" >/dev/null
+grep -q "mark" "$work/taxi.referee.txt" && grep -q "mark" "$work/park.referee.txt" || { echo "a run did not end with a mark"; exit 1; }
+echo "teletaxi: $(stat -c %s "$work/taxi.trace.json") bytes; autopark: $(stat -c %s "$work/park.trace.json") bytes"
+
+echo "== 3. a class of $students x 5 vacuum runs: report.html"
+# Each student's five runs are the five seeds above (report, trace, picture): the page's size and
+# load time depend on the runs' files, not on who ran them.
+for seed in 1 2 3 4 5; do
+  run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world "$seed" "$work/cost/c$seed" \
+    --report="$work/cost/c$seed.json" --picture="$work/cost/c$seed.png" >/dev/null
+done
+class="$work/class"
+for i in $(seq -w 1 "$students"); do
+  mkdir -p "$class/runs/student$i"
+  for seed in 1 2 3 4 5; do
+    stem="$class/runs/student$i/vacuum-seed$seed"
+    python3 - "$work/cost/c$seed.json" "$stem" "student$i" <<'EOF'
+import json, sys
+report = json.load(open(sys.argv[1]))
+report.update({"student": sys.argv[3], "log": sys.argv[2] + ".log"})
+json.dump(report, open(sys.argv[2] + ".json", "w"), indent=2)
+EOF
+    cp "$work/cost/b$seed.trace.json" "$stem.trace.json"
+    cp "$work/cost/c$seed.png" "$stem.png"
+  done
+done
+t0=$(date +%s.%N)
+"$bin/aula" grade --collect "$class" >/dev/null
+t1=$(date +%s.%N)
+echo "aula grade --collect: $(echo "$t1 - $t0" | bc -l | xargs printf '%.2f') s"
+echo "report.html: $(stat -c %s "$class/report.html") bytes; a run's page: $(stat -c %s "$class/runs/student01/vacuum-seed3.html") bytes"
+for n in 1 2 3; do
+  t0=$(date +%s.%N)
+  dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/report.html")"
+  t1=$(date +%s.%N)
+  echo "load $n: the page's load event at $(grep -o 'data-loaded-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms;" \
+       "Chromium's whole run (start, load, dump, quit) $(echo "$t1 - $t0" | bc -l | xargs printf '%.2f') s"
+done
+dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/report.html#run=student15/vacuum-seed3&t=450")"
+echo "opening one run's player in it: $(grep -o 'data-open-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms"
+fi
+
+if [ -n "$screenshots" ]; then
+  echo "== screenshots in docs/images"
+  out="$src/docs/images"
+  mkdir -p "$work/alice/runs/alice" "$work/shots"
+  # A vacuum player mid-run (seed 3, at 450 s), with its timeline.
+  run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world 3 "$work/shots/v" --report="$work/alice/runs/alice/vacuum-seed3.report.json" \
+    --picture="$work/alice/runs/alice/vacuum-seed3.png" --trace="$work/alice/runs/alice/vacuum-seed3.trace.json" >/dev/null
+  # An Autopark run that touches a parked car when it sets off, stopped at that contact.
+  run3 Autopark autopark autopark-referee autopark.world 1 "$work/shots/p" --report="$work/alice/runs/alice/autopark-seed1.report.json" \
+    --picture="$work/alice/runs/alice/autopark-seed1.png" --trace="$work/alice/runs/alice/autopark-seed1.trace.json" \
+    -- --Simulator.StartPose.car=-7,-1.0,0 >/dev/null
+  # A small class whose marks differ: six students, two seeds, each student's episode shorter or
+  # longer (the reference as everyone's algorithm; the overview's histograms and spreads are real).
+  i=0
+  for duration in 150 300 420 540 700 900; do
+    i=$((i + 1))
+    mkdir -p "$work/shots/runs/student$i"
+    for seed in 1 2; do
+      stem="$work/shots/runs/student$i/vacuum-seed$seed"
+      run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world "$seed" "$stem" --report="$stem.report.json" \
+        --picture="$stem.png" --trace="$stem.trace.json" --Vacuum.Referee.Duration="$duration" >/dev/null
+    done
+  done
+  for report in "$work"/shots/runs/*/*.report.json; do
+    stem="${report%.report.json}"
+    python3 - "$stem" "$(basename "$(dirname "$stem")")" <<'EOF'
+import json, sys
+report = json.load(open(sys.argv[1] + ".report.json"))
+report.update({"student": sys.argv[2], "log": sys.argv[1] + ".log"})
+json.dump(report, open(sys.argv[1] + ".json", "w"), indent=2)
+EOF
+    rm "$report"
+  done
+  "$bin/aula" grade --collect "$work/shots" >/dev/null
+  for report in "$work"/alice/runs/alice/*.report.json; do
+    stem="${report%.report.json}"
+    python3 - "$stem" alice <<'EOF'
+import json, sys
+report = json.load(open(sys.argv[1] + ".report.json"))
+report.update({"student": sys.argv[2], "log": sys.argv[1] + ".log"})
+json.dump(report, open(sys.argv[1] + ".json", "w"), indent=2)
+EOF
+  done
+  "$bin/aula" grade --collect "$work/alice" >/dev/null
+  contact=$(python3 -c "import json,sys; t=json.load(open(sys.argv[1])); print([e['t_s'] for e in t['events'] if e['kind']=='contact'][0])" \
+            "$work/alice/runs/alice/autopark-seed1.trace.json")
+  chrome --window-size=1280,760 --virtual-time-budget=5000 --screenshot="$out/player_vacuum.png" \
+    "file://$work/alice/runs/alice/vacuum-seed3.html#t=450"
+  chrome --window-size=1280,620 --virtual-time-budget=5000 --screenshot="$out/player_autopark_contact.png" \
+    "file://$work/alice/runs/alice/autopark-seed1.html#t=$contact"
+  chrome --window-size=1280,1100 --virtual-time-budget=8000 --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
+  echo "written: $out/{player_vacuum,player_autopark_contact,report_overview}.png: look at each"
+fi

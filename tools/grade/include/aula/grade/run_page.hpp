@@ -1,0 +1,54 @@
+#pragma once
+// A run's player in the browser: from the referee's report, its trace (--trace, aula/referee/
+// run_trace.hpp) and its picture, one self-contained HTML page (scripts, style and data inline,
+// no network: a Content-Security-Policy forbids any request) with a <canvas> over the run's map
+// (the robot's footprint and heading, its trail, the exercise's state building up), play/pause,
+// speed 1x-100x, a time slider, the referee's events on a timeline (a click jumps there) and the
+// mark's breakdown (each rubric term: its measure, points and points missed).
+//
+// The data of a run travels compressed (zlib's deflate, base64) in a <script type="application/
+// octet-stream"> block and is decoded only when the run is opened, so a class page of 150 runs
+// loads as fast as one without players. `page.html#t=SECONDS` opens the player paused at that
+// sim time. The player writes what it shows into its status element's data-* attributes
+// (data-t-s, data-robot-x-mm, data-robot-y-mm, data-robot-yaw-mrad, data-breakdown-sum,
+// data-errors): what the browser tests read back.
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace aula::grade {
+
+struct RunFiles {
+  std::string title;        // "alice, vacuum seed 3"
+  nlohmann::json report;    // the run's result (the referee's report and who ran it)
+  std::string trace_json;   // "" when the run has no trace: the page shows the still picture only
+  std::string picture_png;  // the referee's picture, "" when there is none
+};
+
+// A run's files beside its result: <stem>.trace.json and <stem>.png, where <stem> is the result's
+// "log" without its extension (runs/<student>/<world>-seed<k>).
+RunFiles runFilesOf(const nlohmann::json& result);
+
+// The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`).
+std::string runPageHtml(const RunFiles& run);
+// `aula run --report-html=FILE.html`: the page of a single run from the referee's files (the trace
+// and the picture may be "" or missing: the page then has no player, or no still picture).
+// Throws config::ConfigError naming a report that cannot be read, or a page that cannot be written.
+void writeRunPage(const std::string& html_path, const std::string& report_path, const std::string& trace_path,
+                  const std::string& picture_path);
+
+// For a page of many runs (report.html): the player's style and script, once per page, and one
+// run's data block, its id `id`. playerScript() defines openRun(id, container): the run's player
+// built into `container` the first time it is asked for.
+std::string playerStyle();
+std::string playerScript();
+std::string runDataBlock(const std::string& id, const RunFiles& run);
+// The page's Content-Security-Policy <meta>: inline scripts, styles and data: images only.
+std::string noNetworkPolicy();
+// Text for HTML: & < > " ' escaped.
+std::string escapeHtml(const std::string& text);
+// `bytes` as a data: URI of `mime`.
+std::string dataUri(const std::string& mime, const std::string& bytes);
+
+}  // namespace aula::grade
