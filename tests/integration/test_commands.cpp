@@ -71,6 +71,9 @@ TEST(Commands, AnOptionACommandDoesNotDeclareIsRefusedWithTheNearest) {
       EXPECT_NE(out.output.find("did you mean '--" + options.front() + "'?"), std::string::npos) << out.output;
     }
   }
+  // --3d opens a window: refused headless.
+  const Outcome three_d = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--3d"}, 10s);
+  EXPECT_EQ(three_d.code.value_or(-1), 2) << three_d.output;
   // What the old shared option list let through.
   const Outcome world = runToEnd({kBin + "/aula", "check-world", kWorlds + "vacuum.world", "--headless"}, 10s);
   EXPECT_EQ(world.code.value_or(-1), 2) << world.output;

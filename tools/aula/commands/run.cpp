@@ -66,6 +66,7 @@ std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings&
   if (args.given("rtf")) sim.push_back("--rtf=" + args.text("rtf"));
   else if (headless) sim.push_back("--rtf=0");
   if (!lcm_url.empty()) sim.push_back("--lcm-url=" + lcm_url);
+  if (args.flag("3d")) sim.push_back("--gui");  // the world in 3D (DART's OpenSceneGraph view)
   return sim;
 }
 
@@ -124,6 +125,7 @@ void writePage(const Arguments& args) {
 }
 
 void checkOptions(const Exercise& ex, const Arguments& args, bool headless) {
+  if (args.flag("3d") && headless) throw ConfigError("--3d shows the world in a window: not with --headless (or without a display)");
   if (args.flag("sandbox") && !headless) {
     throw ConfigError("--sandbox runs the student's component headless, in bubblewrap: add --headless");
   }
@@ -238,6 +240,7 @@ cli::Command declare() {
       .add(cli::valueOption("trace", "FILE.json", "the referee's trace: poses at 10 Hz, the exercise's state, every event and its points"))
       .add(cli::valueOption("report-html", "FILE.html", "the run's own page: a player in the browser, its events and the mark's breakdown"))
       .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
+      .flag("3d", false, "also show the world in 3D (the simulator's OpenSceneGraph window)")
       .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
       .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,
                              "real-time factor (0: as fast as possible; default 1 with windows, 0 headless)"))
