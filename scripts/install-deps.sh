@@ -20,6 +20,7 @@ packages=(
   nlohmann-json3-dev libssl-dev
   slurmctld slurmd slurm-client munge
   chromium
+  python3-dev pybind11-dev python3-numpy python3-opencv
 )
 
 missing=()

@@ -1,5 +1,6 @@
 #include "aula/component/algorithm_host.hpp"
 
+#include <aula/component/algorithm_plugin.hpp>
 #include <aula/component/crash_report.hpp>
 #include <aula/config/paths.hpp>
 
@@ -8,7 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <thread>
 #include <typeinfo>
 
 namespace aula::component {
@@ -22,6 +23,8 @@ std::string typeName(const std::type_info& type);
 std::string faultOf(const char* what, const std::function<void()>& call) {
   try {
     call();
+  } catch (const AlgorithmFault& e) {
+    return e.what();  // already in the student's lines (a Python traceback)
   } catch (const std::exception& e) {
     return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
   } catch (...) {
@@ -45,7 +48,8 @@ std::string AlgorithmHostBase::studentPluginPath(const std::string& exercise) {
 }
 
 bool AlgorithmHostBase::namesPlugin(const std::string& choice) {
-  return choice.find('/') != std::string::npos || fs::path(choice).extension() == ".so";
+  return choice.find('/') != std::string::npos || fs::path(choice).extension() == ".so" ||
+         PluginLibrary::isPythonFile(choice);
 }
 
 AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
@@ -65,14 +69,16 @@ void AlgorithmHostBase::loadPlugin() {
     plugin_path_ = fs::absolute(choice_).lexically_normal().string();
   } else {
     throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ +
-                      " and not a plugin file (PATH.so)");
+                      " and not a plugin file (PATH.so) or a Python file (PATH.py)");
   }
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
+  watchdog_.setInterrupter(plugin_->interrupter());
   installCrashReport(program_, plugin_path_);
 }
 
 bool AlgorithmHostBase::reloadPlugin() {
   const std::string file = fs::path(plugin_path_).filename().string();
+  watchdog_.setInterrupter({});
   plugin_.reset();
   try {
     loadPlugin();
@@ -99,7 +105,8 @@ std::string AlgorithmHostBase::name() const {
 
 std::string AlgorithmHostBase::label() const {
   if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
-  return fs::path(plugin_->path()).filename().string() + " (built " + plugin_->builtAt() + ")";
+  const char* when = PluginLibrary::isPythonFile(plugin_->path()) ? " (saved " : " (built ";
+  return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";
 }
 
 void AlgorithmHostBase::containHangs() {
@@ -111,8 +118,13 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
   if (thread_) {
     // The outcome is shared with the job: an abandoned call may still write it.
     auto fault = std::make_shared<std::string>();
-    const bool returned =
+    bool returned =
         thread_->run([what, fault, call = std::move(call)] { *fault = faultOf(what, call); }, watchdog_.budgetS());
+    if (!returned && plugin_ != nullptr && plugin_->interrupter()) {
+      // Raise inside the call (see ExecuteWatchdog), from a thread of its own: it may block.
+      std::thread(plugin_->interrupter(), ExecuteWatchdog::overrunText(what, watchdog_.budgetS())).detach();
+      returned = thread_->waitMore(ExecuteWatchdog::kInterruptGraceS);
+    }
     if (!returned) {
       abandonHungCall(what);
       return false;
@@ -133,9 +145,7 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
 void AlgorithmHostBase::abandonHungCall(const char* what) {
   hung_ = true;
   (void)thread_.release();  // still running the call: never joined, never freed
-  std::ostringstream text;
-  text << what << " did not return within " << watchdog_.budgetS() << " s (an endless loop?)";
-  fault_ = text.str();
+  fault_ = ExecuteWatchdog::overrunText(what, watchdog_.budgetS());
   std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted "
             << "(Component.ExecuteBudget). Fix it, rebuild, and start the run again." << std::endl;
   if (on_hung_) on_hung_();
