@@ -91,6 +91,19 @@ TEST(PythonAlgorithms, VacuumBouncePortEarnsTheCppReportByteForByte) {
   EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
 }
 
+// TeleTaxi: the grid's wave and path (field and map as numpy arrays over the C++ grid), then
+// the path followed to the destination.
+TEST(PythonAlgorithms, TeletaxiPathFollowerPortEarnsTheCppReportByteForByte) {
+  const std::vector<std::string> trip = {"--TeleTaxi.Destination=220,240"};
+  const PyRun cpp = runHeadless("teletaxi", AULA_PLUGIN_TELETAXI_FOLLOW, trip);
+  const PyRun python = runHeadless("teletaxi", kPython + "teletaxi_follow/MyAlgorithm.py", trip);
+  ASSERT_EQ(cpp.code.value_or(-1), 0) << describe(cpp);
+  ASSERT_EQ(python.code.value_or(-1), 0) << describe(python);
+  EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
+  EXPECT_GT(jsonNumber(cpp.report, "mark"), 0.0) << cpp.report;  // it drove somewhere
+  EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
 TEST(PythonAlgorithms, SyntaxErrorNamesTheLine) {
   const PyRun run = runHeadless("vacuum", kPython + "syntax_error/MyAlgorithm.py", kShortVacuum);
   expectPythonFault(run, "MyAlgorithm.py:7: SyntaxError: ");
