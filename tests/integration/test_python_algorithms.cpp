@@ -104,6 +104,18 @@ TEST(PythonAlgorithms, TeletaxiPathFollowerPortEarnsTheCppReportByteForByte) {
   EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
 }
 
+// Autopark: the slot found with the right laser, two reversing arcs, centred with the front and
+// rear lasers (the mounts, the car's size and the status line read and written too).
+TEST(PythonAlgorithms, AutoparkReverseParkPortEarnsTheCppReportByteForByte) {
+  const PyRun cpp = runHeadless("autopark", AULA_PLUGIN_AUTOPARK_REVERSE);
+  const PyRun python = runHeadless("autopark", kPython + "autopark_reverse/MyAlgorithm.py");
+  ASSERT_EQ(cpp.code.value_or(-1), 0) << describe(cpp);
+  ASSERT_EQ(python.code.value_or(-1), 0) << describe(python);
+  EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
+  EXPECT_NE(cpp.report.find("\"parked\": true"), std::string::npos) << cpp.report;  // it went into the slot
+  EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
 TEST(PythonAlgorithms, SyntaxErrorNamesTheLine) {
   const PyRun run = runHeadless("vacuum", kPython + "syntax_error/MyAlgorithm.py", kShortVacuum);
   expectPythonFault(run, "MyAlgorithm.py:7: SyntaxError: ");
