@@ -13,14 +13,8 @@ namespace py = pybind11;
 using aula::autopark::AutoparkApi;
 using aula::autopark::LaserMount;
 
-class PythonAutopark : public aula::autopark::AutoparkAlgorithm {
- public:
-  explicit PythonAutopark(uint64_t seed) : algorithm_(seed, "aula_autopark") {}
-  void execute(AutoparkApi& api) override { algorithm_.call("execute", api); }
-
- private:
-  aula::python::PythonAlgorithm algorithm_;
-};
+constexpr char kApiModule[] = "aula_autopark";
+using PythonAutopark = aula::python::PythonExecuteAlgorithm<aula::autopark::AutoparkAlgorithm, AutoparkApi, kApiModule>;
 
 }  // namespace
 

@@ -11,14 +11,8 @@ namespace py = pybind11;
 using aula::vacuum::VacuumApi;
 using aula::vacuum::YawSensor;
 
-class PythonVacuum : public aula::vacuum::VacuumAlgorithm {
- public:
-  explicit PythonVacuum(uint64_t seed) : algorithm_(seed, "aula_vacuum") {}
-  void execute(VacuumApi& api) override { algorithm_.call("execute", api); }
-
- private:
-  aula::python::PythonAlgorithm algorithm_;
-};
+constexpr char kApiModule[] = "aula_vacuum";
+using PythonVacuum = aula::python::PythonExecuteAlgorithm<aula::vacuum::VacuumAlgorithm, VacuumApi, kApiModule>;
 
 }  // namespace
 

@@ -62,6 +62,18 @@ class PythonAlgorithm {
   py::object self_;
 };
 
+// The student's class behind an exercise's interface whose one method is execute(Api&)
+// (vacuum, Autopark); `kApiModule` names the exercise's bindings.
+template <class Algorithm, class Api, const char* kApiModule>
+class PythonExecuteAlgorithm : public Algorithm {
+ public:
+  explicit PythonExecuteAlgorithm(uint64_t seed) : algorithm_(seed, kApiModule) {}
+  void execute(Api& api) override { algorithm_.call("execute", api); }
+
+ private:
+  PythonAlgorithm algorithm_;
+};
+
 }  // namespace aula::python
 
 // The entry points of the exercise's host module: the three of algorithm_plugin.hpp, the factory
