@@ -189,3 +189,21 @@ TEST(PythonAlgorithms, SeededAndIsolatedFromTheEnvironment) {
   EXPECT_NE(jsonNumber(other.report, "coverage_percent"), jsonNumber(first.report, "coverage_percent"))
       << first.report << other.report;
 }
+
+// The shipped .pyi stubs name exactly what each exercise's module binds (checked inside Aula's
+// Python: tests/data/python/stubs_match), and the templates run as shipped.
+TEST(PythonAlgorithms, StubsNameExactlyWhatEachExerciseBindsAndTemplatesRun) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> exercises = {
+      {"vacuum", {"--Vacuum.Referee.Duration=5"}},
+      {"teletaxi", {"--TeleTaxi.Destination=220,240", "--TeleTaxi.Referee.Timeout=5"}},
+      {"autopark", {"--Autopark.Referee.Timeout=5"}}};
+  for (const auto& [exercise, options] : exercises) {
+    const PyRun stubs = runHeadless(exercise, kPython + "stubs_match/MyAlgorithm.py", options);
+    EXPECT_NE(stubs.output.find("stubs match: aula_" + exercise), std::string::npos) << describe(stubs);
+    EXPECT_FALSE(jsonString(stubs.report, "algorithm_error").has_value()) << describe(stubs);
+    const PyRun shipped =
+        runHeadless(exercise, std::string(AULA_SOURCE_DIR) + "/components/" + exercise + "/student/MyAlgorithm.py", options);
+    EXPECT_FALSE(shipped.report.empty()) << describe(shipped);
+    EXPECT_FALSE(jsonString(shipped.report, "algorithm_error").has_value()) << describe(shipped);
+  }
+}

@@ -19,14 +19,16 @@ namespace {
 
 std::string typeName(const std::type_info& type);
 
-// Runs `call`; "" when it returned, else what it threw.
-std::string faultOf(const char* what, const std::function<void()>& call) {
+// Runs `call`; "" when it returned, else what it threw, and where in `plugin` (when it can tell).
+std::string faultOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin) {
   try {
     call();
   } catch (const AlgorithmFault& e) {
     return e.what();  // already in the student's lines (a Python traceback)
   } catch (const std::exception& e) {
-    return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
+    const std::string site = plugin != nullptr ? plugin->throwSite(dynamic_cast<const void*>(&e)) : "";
+    return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what() +
+           (site.empty() ? "" : " (thrown at " + site + ")");
   } catch (...) {
     return std::string(what) + " threw an exception that is not a std::exception";
   }
@@ -119,7 +121,8 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
     // The outcome is shared with the job: an abandoned call may still write it.
     auto fault = std::make_shared<std::string>();
     bool returned =
-        thread_->run([what, fault, call = std::move(call)] { *fault = faultOf(what, call); }, watchdog_.budgetS());
+        thread_->run([what, fault, call = std::move(call), plugin = plugin_.get()] { *fault = faultOf(what, call, plugin); },
+                     watchdog_.budgetS());
     if (!returned && plugin_ != nullptr && plugin_->interrupter()) {
       // Raise inside the call (see ExecuteWatchdog), from a thread of its own: it may block.
       std::thread(plugin_->interrupter(), ExecuteWatchdog::overrunText(what, watchdog_.budgetS())).detach();
@@ -132,7 +135,7 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
     fault_ = *fault;
   } else {
     watchdog_.arm(what);
-    fault_ = faultOf(what, call);
+    fault_ = faultOf(what, call, plugin_.get());
     watchdog_.disarm();
   }
   noteNonFinite();

@@ -1,9 +1,11 @@
 #include "aula/component/plugin_library.hpp"
 
 #include <aula/component/algorithm_plugin.hpp>
+#include <aula/component/throw_site.hpp>
 #include <aula/config/paths.hpp>
 
 #include <array>
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <ctime>
@@ -11,6 +13,7 @@
 #include <fstream>
 
 #include <dlfcn.h>
+#include <link.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -150,6 +153,36 @@ void PluginLibrary::bindEntryPoints(const std::string& exercise) {
     dlclose(handle_);
     throw PluginError(path + ": has no " + factory + "(); build it with aula_add_algorithm");
   }
+}
+
+std::string PluginLibrary::throwSite(const void* thrown) const {
+  const ThrowStack& stack = lastThrowOnThisThread();
+  const link_map* map = nullptr;
+  if (stack.object != thrown || handle_ == nullptr || dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr) {
+    return "";
+  }
+  for (int i = 1; i < stack.count; ++i) {
+    Dl_info info{};
+    if (dladdr(stack.frames[i], &info) == 0 || reinterpret_cast<uintptr_t>(info.dli_fbase) != map->l_addr) continue;
+    // The call instruction before the return address; -i: the inlined frames too, innermost
+    // first, so that vector::at's header gives way to the student's line that called it.
+    char offset[32];
+    std::snprintf(offset, sizeof offset, "0x%zx",
+                  static_cast<size_t>(reinterpret_cast<uintptr_t>(stack.frames[i]) - map->l_addr - 1));
+    const std::string command = "addr2line -i -e '" + path_ + "' " + offset + " 2>/dev/null";
+    FILE* pipe = path_.find('\'') == std::string::npos ? ::popen(command.c_str(), "r") : nullptr;
+    if (pipe == nullptr) return "";
+    std::string site;
+    std::array<char, 1024> line{};
+    while (std::fgets(line.data(), line.size(), pipe) != nullptr) {
+      std::string where(line.data());
+      where = where.substr(0, where.find_first_of(" \n"));  // drops " (discriminator N)"
+      if (site.empty() && where.rfind("??", 0) != 0 && where.rfind("/usr/", 0) != 0) site = where;
+    }
+    ::pclose(pipe);
+    if (!site.empty()) return fs::path(site).filename().string();
+  }
+  return "";
 }
 
 std::function<void(const std::string&)> PluginLibrary::interrupter() const {

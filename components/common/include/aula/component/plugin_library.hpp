@@ -46,6 +46,12 @@ class PluginLibrary {
   // yields: call it on a thread of its own. It stays valid after this library is gone.
   std::function<void(const std::string& why)> interrupter() const;
 
+  // Where the exception object `thrown` (as dynamic_cast<const void*> gives it) was thrown in
+  // this plugin, from the stack __cxa_throw kept on this thread (throw_site.hpp): the student's
+  // "MyAlgorithm.cpp:14" (addr2line on the plugin's debug info, inlined library frames skipped),
+  // or "" when it was not thrown from here or the line cannot be told.
+  std::string throwSite(const void* thrown) const;
+
   const std::string& path() const { return path_; }
   // A student's Python file rather than a shared library.
   static bool isPythonFile(const std::string& path);
