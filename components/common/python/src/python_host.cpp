@@ -40,6 +40,11 @@ def load(path, seed):
     import random, numpy
     random.seed(seed)
     numpy.random.seed(seed % 2**32)
+    # default_rng() without a seed: the next generator of the run's seed sequence, not the OS's entropy.
+    unseeded = getattr(numpy.random, "_aula_unseeded_default_rng", numpy.random.default_rng)
+    numpy.random._aula_unseeded_default_rng = unseeded
+    sequence = numpy.random.SeedSequence(seed)
+    numpy.random.default_rng = lambda given=None: unseeded(sequence.spawn(1)[0] if given is None else given)
     module = types.ModuleType("MyAlgorithm")
     module.__file__ = path
     sys.modules["MyAlgorithm"] = module

@@ -8,7 +8,8 @@
 //   once and never shut down (numpy cannot start twice);
 // - the student's file, read and run afresh for every new algorithm (hot reload), its folder
 //   first on sys.path (its own modules, dropped again on reload);
-// - `random` and numpy's global generator seeded with the run's seed before __init__(seed);
+// - `random` and numpy's global generator seeded with the run's seed before the file runs, and
+//   numpy's default_rng() without a seed drawing from the run's seed sequence;
 // - every Python exception, a SyntaxError at load included, becomes an AlgorithmFault in the
 //   student's own lines ("MyAlgorithm.py:12: ZeroDivisionError: division by zero (...)");
 // - interrupt(): a call that overran its budget raises inside the student's loop.
