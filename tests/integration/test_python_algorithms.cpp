@@ -191,15 +191,17 @@ TEST(PythonAlgorithms, SeededAndIsolatedFromTheEnvironment) {
 }
 
 // The shipped .pyi stubs name exactly what each exercise's module binds (checked inside Aula's
-// Python: tests/data/python/stubs_match), and the templates run as shipped.
+// Python: tests/data/python/stubs_match), every exercise makes MyAlgorithm with the run's seed
+// (TeleTaxi's generatePath() first too), and the templates run as shipped.
 TEST(PythonAlgorithms, StubsNameExactlyWhatEachExerciseBindsAndTemplatesRun) {
   const std::vector<std::pair<std::string, std::vector<std::string>>> exercises = {
-      {"vacuum", {"--Vacuum.Referee.Duration=5"}},
-      {"teletaxi", {"--TeleTaxi.Destination=220,240", "--TeleTaxi.Referee.Timeout=5"}},
-      {"autopark", {"--Autopark.Referee.Timeout=5"}}};
+      {"vacuum", {"--seed=7", "--Vacuum.Referee.Duration=5"}},
+      {"teletaxi", {"--seed=7", "--TeleTaxi.Destination=220,240", "--TeleTaxi.Referee.Timeout=5"}},
+      {"autopark", {"--seed=7", "--Autopark.Referee.Timeout=5"}}};
   for (const auto& [exercise, options] : exercises) {
     const PyRun stubs = runHeadless(exercise, kPython + "stubs_match/MyAlgorithm.py", options);
     EXPECT_NE(stubs.output.find("stubs match: aula_" + exercise), std::string::npos) << describe(stubs);
+    EXPECT_NE(stubs.output.find("MyAlgorithm(seed=7)"), std::string::npos) << describe(stubs);
     EXPECT_FALSE(jsonString(stubs.report, "algorithm_error").has_value()) << describe(stubs);
     const PyRun shipped =
         runHeadless(exercise, std::string(AULA_SOURCE_DIR) + "/components/" + exercise + "/student/MyAlgorithm.py", options);
