@@ -110,6 +110,7 @@ void startInterpreter() {
   PyConfig_InitIsolatedConfig(&config);
   config.install_signal_handlers = 0;  // the component's signals stay the component's
   config.write_bytecode = 0;           // a student's folder may be read-only (the sandbox)
+  config.buffered_stdio = 0;           // a print() shows at once, in the terminal's order
   PyConfig_SetBytesString(&config, &config.program_name, AULA_PYTHON_EXECUTABLE);
   PyConfig_SetBytesString(&config, &config.home, AULA_PYTHON_PREFIX);
   py::initialize_interpreter(&config, 0, nullptr, false);
