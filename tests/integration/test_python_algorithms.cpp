@@ -4,7 +4,8 @@
 //   same seed, byte for byte but the algorithm's name.
 // - Faults in the student's own lines: a SyntaxError, an exception's traceback, an endless loop
 //   interrupted inside Python, NaN commands, a missing module; each on stderr and in the report.
-// - Determinism: `random` and numpy seeded from the run's seed; the user's environment ignored.
+// - Determinism: `random` and numpy seeded from the run's seed; the user's environment ignored;
+//   a recorded run regrades to the same report.
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -114,6 +115,18 @@ TEST(PythonAlgorithms, AutoparkReverseParkPortEarnsTheCppReportByteForByte) {
   EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
   EXPECT_NE(cpp.report.find("\"parked\": true"), std::string::npos) << cpp.report;  // it went into the slot
   EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
+// A Python run recorded and graded again from the log alone: the same report, byte for byte.
+TEST(PythonAlgorithms, RecordedRunRegradesToTheSameReport) {
+  const std::string dir = aula::testing::privateDir();
+  const PyRun live = runHeadless("vacuum", kPython + "vacuum_bounce/MyAlgorithm.py",
+                                 {"--Vacuum.Referee.Duration=120", "--record=" + dir + "/run.lcmlog"});
+  ASSERT_EQ(live.code.value_or(-1), 0) << describe(live);
+  const aula::testing::Outcome again = aula::testing::runToEnd(
+      {std::string(AULA_BIN_DIR) + "/aula", "regrade", dir + "/run.lcmlog", "--report=" + dir + "/again.json"});
+  ASSERT_EQ(again.code.value_or(-1), 0) << again.output;
+  EXPECT_EQ(readFile(dir + "/again.json"), live.report);
 }
 
 TEST(PythonAlgorithms, SyntaxErrorNamesTheLine) {
