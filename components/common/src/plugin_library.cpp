@@ -5,8 +5,8 @@
 #include <aula/config/paths.hpp>
 
 #include <array>
-#include <cstdio>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
@@ -156,6 +156,9 @@ void PluginLibrary::bindEntryPoints(const std::string& exercise) {
 }
 
 std::string PluginLibrary::throwSite(const void* thrown) const {
+  // The lines are read from the file on disk: not from a rebuild that is not what runs, nor
+  // from a Python file (its host says its own lines).
+  if (isPythonFile(path_) || changedOnDisk()) return "";
   const ThrowStack& stack = lastThrowOnThisThread();
   const link_map* map = nullptr;
   if (stack.object != thrown || handle_ == nullptr || dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr) {
