@@ -3,6 +3,7 @@
 #   lib/aula/algorithms/     the in-tree templates, built as plugins (--algorithm=student)
 #   lib/aula/libaula_world_sdf.so  the SDF reader, opened on a miss of the parsed-world cache
 #   lib/aula/libaula_sim_view.so   aula-sim --gui's 3D view, opened only with --gui
+#   lib/aula/python/         the Python hosts, one per exercise (--algorithm=PATH.py)
 #   include/aula/            the student API (plain-data devices, the plugin ABI, the three
 #                            *_algorithm.hpp and what they include), the proxies and the
 #                            generated LCM types
@@ -10,6 +11,7 @@
 #   share/aula/              worlds (with models and generators), configs, student templates
 #   share/doc/aula/          the user's documentation (`aula --help` names it: config::docDir),
 #                            the copyright file (Apache-2.0) and the changelogs
+#                            (MyAlgorithm.cpp, MyAlgorithm.py and the Python API's .pyi stubs)
 # Nothing in a binary names the source or build tree: programs find share/aula next to their
 # own bin/ (config::dataDir), and maps are drawn into the user's cache.
 include(GNUInstallDirs)
@@ -21,6 +23,7 @@ install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
         LIBRARY DESTINATION lib/aula/algorithms)
 install(TARGETS aula_world_sdf aula_sim_view LIBRARY DESTINATION lib/aula)
+install(TARGETS aula_teletaxi_python aula_vacuum_python aula_autopark_python LIBRARY DESTINATION lib/aula/python)
 
 # The API a plugin compiles against.
 set(_src ${PROJECT_SOURCE_DIR})
@@ -78,7 +81,8 @@ configure_file(${_src}/cmake/aula_algorithm_entry.cpp.in ${PROJECT_BINARY_DIR}/a
 install(DIRECTORY ${_src}/worlds ${_src}/config DESTINATION ${CMAKE_INSTALL_DATADIR}/aula
         PATTERN "__pycache__" EXCLUDE)
 foreach(_exercise teletaxi vacuum autopark)
-  install(FILES ${_src}/components/${_exercise}/student/MyAlgorithm.cpp
+  install(FILES ${_src}/components/${_exercise}/student/MyAlgorithm.cpp ${_src}/components/${_exercise}/student/MyAlgorithm.py
+          ${_src}/components/${_exercise}/student/aula_${_exercise}.pyi ${_src}/components/common/python/aula_devices.pyi
           DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise})
 endforeach()
 
@@ -96,8 +100,9 @@ file(WRITE ${PROJECT_BINARY_DIR}/changelog.Debian
 execute_process(COMMAND gzip -9nf ${PROJECT_BINARY_DIR}/changelog.Debian)
 install(FILES ${PROJECT_BINARY_DIR}/changelog.Debian.gz DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/aula)
 
-# cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps; a student's
-# plugin build needs a compiler, CMake and the headers the API includes.
+# cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps (libpython3.11
+# too); a student's plugin build needs a compiler, CMake and the headers the API includes; a
+# student's MyAlgorithm.py, Debian's python3 with numpy and cv2 (the embedded interpreter's).
 set(CPACK_PACKAGE_NAME aula)
 set(CPACK_PACKAGE_VENDOR "Aula")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Robotics teaching environment: TeleTaxi, Vacuum cleaner and Autopark exercises")
@@ -114,7 +119,8 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS
+    "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap, python3, python3-numpy, python3-opencv")
 # aula grade --engine=slurm submits with sbatch; report.html screenshots use a browser.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "slurm-client")
 include(CPack)

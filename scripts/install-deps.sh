@@ -22,6 +22,8 @@ build_packages=(
   nlohmann-json3-dev libssl-dev libseccomp-dev
   # to run: the sandbox, a run's private network, the generators
   libgl1-mesa-dri bubblewrap iproute2 procps python3
+  # the embedded Python of a student's MyAlgorithm.py
+  python3-dev pybind11-dev python3-numpy python3-opencv
 )
 test_packages=(xvfb xauth xdotool bc python3-pip chromium lintian)
 slurm_packages=(slurmctld slurmd slurm-client munge)

@@ -13,7 +13,7 @@ if [ -z "${AULA_SCREENSHOT_DISPLAY:-}" ]; then
   AULA_SCREENSHOT_DISPLAY=1 exec xvfb-run -a -s "-screen 0 1600x1100x24" bash "$0" "$build"
 fi
 
-# shoot EXERCISE SECTION WORLD COMPONENT REFEREE [COMPONENT_ARGS...]
+# shoot NAME SECTION WORLD COMPONENT REFEREE [COMPONENT_ARGS...]: NAME_component.png, NAME_referee.png
 shoot() {
   local exercise="$1" section="$2" world="$3" component="$4" referee="$5"
   shift 5
@@ -33,4 +33,8 @@ shoot() {
 shoot vacuum Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee --Vacuum.Algorithm=reference --screenshot-at=905
 shoot teletaxi TeleTaxi cityLarge.world teletaxi teletaxi-referee --TeleTaxi.Algorithm=reference
 shoot autopark Autopark autopark.world autopark autopark-referee --Autopark.Algorithm=planner --screenshot-at=120
-echo "written: $out/{vacuum,teletaxi,autopark}_{component,referee}.png: look at each"
+# A student's MyAlgorithm.py that divides by zero on its 31st call: the traceback in the fault panel.
+shoot vacuum_python_fault Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee \
+  --Vacuum.Algorithm="$root/tests/data/python/raises/MyAlgorithm.py" --screenshot-at=6
+rm -f "$out/vacuum_python_fault_referee.png"  # the component's fault panel is the point
+echo "written: $out/{vacuum,teletaxi,autopark}_{component,referee}.png, $out/vacuum_python_fault_component.png: look at each"

@@ -212,8 +212,11 @@ TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
 // A plugin that tries to write outside, to see and ptrace the simulator and the referee, and to
 // open TCP and Unix sockets: without the sandbox every try succeeds (so this test can fail);
 // with `aula run --sandbox` (what `aula grade` runs) every one is refused, and the run is graded
-// as usual (LCM's UDP multicast still works).
-TEST(Sandbox, AStudentsPluginCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSockets) {
+// as usual (LCM's UDP multicast still works). The same tries from a student's MyAlgorithm.py
+// (tests/attacks/python) meet the same walls.
+class Sandbox : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Sandbox, AStudentsAlgorithmCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSockets) {
   // A folder outside /tmp (the sandbox has a /tmp of its own), beside the test's binary.
   const std::string dir = std::string(AULA_BIN_DIR) + "/escape-target-" + std::to_string(::getpid());
   std::filesystem::create_directories(dir);
@@ -231,7 +234,7 @@ TEST(Sandbox, AStudentsPluginCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSock
     const std::string report = dir + "/report.json", log = dir + (sandboxed ? "/sandboxed.log" : "/open.log");
     std::filesystem::remove(dir + "/escaped.txt");
     std::vector<std::string> argv = {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless",
-                                     std::string("--algorithm=") + AULA_ESCAPE_PLUGIN, "--Vacuum.Referee.Duration=5",
+                                     "--algorithm=" + GetParam(), "--Vacuum.Referee.Duration=5",
                                      "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
     if (sandboxed) argv.push_back("--sandbox");
     aula::process::ChildProcess run(argv, log, log);
@@ -247,3 +250,9 @@ TEST(Sandbox, AStudentsPluginCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSock
   ::unsetenv("AULA_TEST_ESCAPE_DIR");
   std::filesystem::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(CppAndPython, Sandbox, ::testing::Values(AULA_ESCAPE_PLUGIN, AULA_ESCAPE_PYTHON),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param.size() > 3 && info.param.compare(info.param.size() - 3, 3, ".py") == 0
+                                      ? "Python" : "Cpp";
+                         });

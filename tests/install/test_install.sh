@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # An installed Aula, used the way a student uses it: install into a prefix, then - with the
 # source and build trees hidden (an empty folder mounted over each, bubblewrap) - scaffold a
-# project with `aula new`, build it against the prefix only, run it headless and get a report.
+# project with `aula new`, build it against the prefix only, run it headless and get a report;
+# and the installed MyAlgorithm.py template, run as it is (nothing to build), gives one too.
 # Usage: test_install.sh SOURCE_DIR BUILD_DIR EXERCISE
 set -euo pipefail
 src="$1"; build="$2"; exercise="$3"
@@ -38,12 +39,24 @@ run "set -e
   '$work/prefix/bin/aula' run $exercise --headless --algorithm='$work/student/build/libmy_algorithm.so' \
       --report=r.json --lcm-url='udpm://239.255.76.67:$port?ttl=0' \
       $short >'$work/out.txt' 2>&1 || true
+  mkdir '$work/student_py'
+  cp '$work/prefix/share/aula/templates/$exercise/MyAlgorithm.py' '$work/student_py/'
+  '$work/prefix/bin/aula' run $exercise --headless --algorithm='$work/student_py/MyAlgorithm.py' \
+      --report=py.json --lcm-url='udpm://239.255.76.67:$port?ttl=0' \
+      $short >'$work/py_out.txt' 2>&1 || true
 "
 if [ ! -s "$work/r.json" ]; then
   echo "no report; the run printed:"; cat "$work/out.txt"; exit 1
 fi
 grep -q "\"exercise\": \"$exercise\"" "$work/r.json" || { echo "report is not $exercise's:"; cat "$work/r.json"; exit 1; }
 grep -q '"algorithm": "libmy_algorithm.so"' "$work/r.json" || { echo "report does not name the plugin:"; cat "$work/r.json"; exit 1; }
+if [ ! -s "$work/py.json" ] || ! grep -q '"algorithm": "MyAlgorithm.py"' "$work/py.json" || grep -q '"algorithm_error"' "$work/py.json"; then
+  echo "the installed MyAlgorithm.py template gave no clean report; the run printed:"; cat "$work/py_out.txt"
+  cat "$work/py.json" 2>/dev/null; exit 1
+fi
+for stub in "aula_$exercise.pyi" aula_devices.pyi; do
+  test -s "$work/prefix/share/aula/templates/$exercise/$stub" || { echo "no $stub installed"; exit 1; }
+done
 if grep -rq -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; then
   echo "an installed binary names the source or build tree:"; grep -rl -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; exit 1
 fi

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # cpack -G DEB gives aula_<version>_amd64.deb, with Depends from dpkg-shlibdeps, listing the
-# programs, the student API headers, the worlds, the CMake package and the documentation that
+# programs, the student API headers, the worlds, the CMake package, the Python hosts and stubs,
+# the Debian Python packages a student's MyAlgorithm.py runs on, and the documentation that
 # `aula --help` names; lintian finds no error in it.
 # Usage: test_package.sh BUILD_DIR
 set -euo pipefail
@@ -14,11 +15,14 @@ for path in ./usr/bin/aula ./usr/bin/aula-sim ./usr/bin/vacuum-cleaner ./usr/bin
     ./usr/include/aula/vacuum/vacuum_algorithm.hpp ./usr/include/aula/component/devices.hpp \
     ./usr/include/aula/episode_t.hpp ./usr/share/aula/worlds/vacuum.world ./usr/share/aula/config/vacuumCleaner.cfg \
     ./usr/lib/cmake/Aula/AulaConfig.cmake ./usr/lib/aula/algorithms/libaula_vacuum_student.so \
-    ./usr/share/aula/templates/teletaxi/MyAlgorithm.cpp; do
+    ./usr/share/aula/templates/teletaxi/MyAlgorithm.cpp ./usr/lib/aula/python/libaula_vacuum_python.so \
+    ./usr/lib/aula/python/libaula_teletaxi_python.so ./usr/lib/aula/python/libaula_autopark_python.so \
+    ./usr/share/aula/templates/vacuum/MyAlgorithm.py ./usr/share/aula/templates/vacuum/aula_vacuum.pyi \
+    ./usr/share/aula/templates/vacuum/aula_devices.pyi; do
   grep -q " $path\$" <<<"$contents" || { echo "missing from $deb: $path"; exit 1; }
 done
 depends="$(dpkg-deb -f "$deb" Depends)"
-for lib in libdart libsdformat liblcm libqt5widgets libopencv-core; do
+for lib in libdart libsdformat liblcm libqt5widgets libopencv-core libpython3.11 python3-numpy python3-opencv; do
   grep -q "$lib" <<<"$depends" || { echo "Depends lacks $lib (dpkg-shlibdeps): $depends"; exit 1; }
 done
 grep -q "cmake" <<<"$depends" || { echo "Depends lacks what a plugin build needs: $depends"; exit 1; }

@@ -133,7 +133,8 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   EXPECT_NE(rows["broken"]["failures"].find("error"), std::string::npos);
 
   EXPECT_EQ(rows["thrower"]["runs_failed"], "2");
-  EXPECT_EQ(rows["thrower"]["failures"], "execute() threw std::runtime_error: boom (x2)");
+  // Where it threw, in the student's file (tests/data/plugins/throws.cpp, line 12), even sandboxed.
+  EXPECT_EQ(rows["thrower"]["failures"], "execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12) (x2)");
 
   // Each run's result: the referee's report plus who, what and how long.
   const std::string good1 = readFile((out / "runs" / "good" / "vacuum-seed1.json").string());
@@ -143,7 +144,9 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   EXPECT_GE(jsonNumber(good1, "wall_time_s"), 0.0);
   EXPECT_DOUBLE_EQ(jsonNumber(good1, "mark"), reference[0]);
   const std::string thrower2 = readFile((out / "runs" / "thrower" / "vacuum-seed2.json").string());
-  EXPECT_NE(thrower2.find("\"failure\": \"execute() threw std::runtime_error: boom\""), std::string::npos) << thrower2;
+  EXPECT_NE(thrower2.find("\"failure\": \"execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12)\""),
+            std::string::npos)
+      << thrower2;
 
   // The teacher's page: every student in the table, the referee's picture of each run that ran,
   // and each run's log (--record).

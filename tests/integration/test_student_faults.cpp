@@ -133,18 +133,36 @@ TEST(StudentFaults, ExceptionEndsTheRunWithAlgorithmError) {
   const RunResult run = runVacuum(AULA_PLUGIN_THROWS, "throws");
   ASSERT_TRUE(run.code.has_value()) << describe(run);
   EXPECT_NE(*run.code, 0) << describe(run);
-  EXPECT_NE(run.err.find("vacuum-cleaner: the student's algorithm failed: execute() threw std::runtime_error: boom"),
+  // Named where it was thrown, in the student's file (the plugin is built with -g).
+  EXPECT_NE(run.err.find("vacuum-cleaner: the student's algorithm failed: execute() threw std::runtime_error: boom "
+                         "(thrown at throws.cpp:12)"),
             std::string::npos)
       << describe(run);
   ASSERT_FALSE(run.report.empty()) << describe(run);
   const auto error = jsonString(run.report, "algorithm_error");
   ASSERT_TRUE(error.has_value()) << describe(run);
-  EXPECT_NE(error->find("boom"), std::string::npos) << describe(run);
+  EXPECT_NE(error->find("boom (thrown at throws.cpp:12)"), std::string::npos) << describe(run);
   EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
   EXPECT_EQ(run.report.find("\"finished\": true"), std::string::npos) << describe(run);
   EXPECT_GE(jsonNumber(run.report, "mark"), 0.0) << describe(run);
   // Graded at the fault, not at the end of the 20 s episode.
   EXPECT_LT(jsonNumber(run.report, "sim_time_s"), 20.0) << describe(run);
+  EXPECT_NO_AULA_PROCESS_LEFT();
+}
+
+// 1b. An exception the C++ runtime throws from inside the library (vector::at) is named at the
+// student's line that called it, not in the library's header.
+TEST(StudentFaults, LibraryExceptionNamesTheStudentsLine) {
+  const RunResult run = runVacuum(AULA_PLUGIN_OUT_OF_RANGE, "out_of_range");
+  ASSERT_TRUE(run.code.has_value()) << describe(run);
+  EXPECT_NE(*run.code, 0) << describe(run);
+  EXPECT_NE(run.err.find("execute() threw std::out_of_range: vector::_M_range_check: __n (which is 500) >= "
+                         "this->size() (which is 180) (thrown at out_of_range.cpp:13)"),
+            std::string::npos)
+      << describe(run);
+  const auto error = jsonString(run.report, "algorithm_error");
+  ASSERT_TRUE(error.has_value()) << describe(run);
+  EXPECT_NE(error->find("(thrown at out_of_range.cpp:13)"), std::string::npos) << describe(run);
   EXPECT_NO_AULA_PROCESS_LEFT();
 }
 

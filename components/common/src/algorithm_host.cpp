@@ -1,5 +1,6 @@
 #include "aula/component/algorithm_host.hpp"
 
+#include <aula/component/algorithm_plugin.hpp>
 #include <aula/component/crash_report.hpp>
 #include <aula/config/paths.hpp>
 
@@ -10,6 +11,7 @@
 #include <memory>
 #include <new>
 #include <sstream>
+#include <thread>
 #include <typeinfo>
 
 #include <sys/resource.h>
@@ -21,10 +23,12 @@ namespace {
 
 std::string typeName(const std::type_info& type);
 
-// Runs `call`; "" when it returned, else what it threw.
-std::string faultOf(const char* what, const std::function<void()>& call) {
+// Runs `call`; "" when it returned, else what it threw, and where in `plugin` (when it can tell).
+std::string faultOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin) {
   try {
     call();
+  } catch (const AlgorithmFault& e) {
+    return e.what();  // already in the student's lines (a Python traceback)
   } catch (const std::bad_alloc& e) {
     // In a sandboxed run the memory limit (RLIMIT_DATA, Component.Sandbox.Memory) is why.
     rlimit limit{};
@@ -34,7 +38,9 @@ std::string faultOf(const char* what, const std::function<void()>& call) {
     }
     return std::string(what) + " threw std::bad_alloc: " + e.what();
   } catch (const std::exception& e) {
-    return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what();
+    const std::string site = plugin != nullptr ? plugin->throwSite(dynamic_cast<const void*>(&e)) : "";
+    return std::string(what) + " threw " + typeName(typeid(e)) + ": " + e.what() +
+           (site.empty() ? "" : " (thrown at " + site + ")");
   } catch (...) {
     return std::string(what) + " threw an exception that is not a std::exception";
   }
@@ -56,7 +62,8 @@ std::string AlgorithmHostBase::studentPluginPath(const std::string& exercise) {
 }
 
 bool AlgorithmHostBase::namesPlugin(const std::string& choice) {
-  return choice.find('/') != std::string::npos || fs::path(choice).extension() == ".so";
+  return choice.find('/') != std::string::npos || fs::path(choice).extension() == ".so" ||
+         PluginLibrary::isPythonFile(choice);
 }
 
 AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
@@ -76,14 +83,16 @@ void AlgorithmHostBase::loadPlugin() {
     plugin_path_ = fs::absolute(choice_).lexically_normal().string();
   } else {
     throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ +
-                      " and not a plugin file (PATH.so)");
+                      " and not a plugin file (PATH.so) or a Python file (PATH.py)");
   }
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
+  watchdog_.setInterrupter(plugin_->interrupter());
   installCrashReport(program_, plugin_path_);
 }
 
 bool AlgorithmHostBase::reloadPlugin() {
   const std::string file = fs::path(plugin_path_).filename().string();
+  watchdog_.setInterrupter({});
   plugin_.reset();
   try {
     loadPlugin();
@@ -110,7 +119,8 @@ std::string AlgorithmHostBase::name() const {
 
 std::string AlgorithmHostBase::label() const {
   if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
-  return fs::path(plugin_->path()).filename().string() + " (built " + plugin_->builtAt() + ")";
+  const char* when = PluginLibrary::isPythonFile(plugin_->path()) ? " (saved " : " (built ";
+  return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";
 }
 
 void AlgorithmHostBase::containHangs() {
@@ -122,8 +132,14 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
   if (thread_) {
     // The outcome is shared with the job: an abandoned call may still write it.
     auto fault = std::make_shared<std::string>();
-    const bool returned =
-        thread_->run([what, fault, call = std::move(call)] { *fault = faultOf(what, call); }, watchdog_.budgetS());
+    bool returned =
+        thread_->run([what, fault, call = std::move(call), plugin = plugin_.get()] { *fault = faultOf(what, call, plugin); },
+                     watchdog_.budgetS());
+    if (!returned && plugin_ != nullptr && plugin_->interrupter()) {
+      // Raise inside the call (see ExecuteWatchdog), from a thread of its own: it may block.
+      std::thread(plugin_->interrupter(), ExecuteWatchdog::overrunText(what, watchdog_.budgetS())).detach();
+      returned = thread_->waitMore(ExecuteWatchdog::kInterruptGraceS);
+    }
     if (!returned) {
       abandonHungCall(what);
       return false;
@@ -131,7 +147,7 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
     fault_ = *fault;
   } else {
     watchdog_.arm(what);
-    fault_ = faultOf(what, call);
+    fault_ = faultOf(what, call, plugin_.get());
     watchdog_.disarm();
   }
   noteNonFinite();
@@ -144,9 +160,7 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
 void AlgorithmHostBase::abandonHungCall(const char* what) {
   hung_ = true;
   (void)thread_.release();  // still running the call: never joined, never freed
-  std::ostringstream text;
-  text << what << " did not return within " << watchdog_.budgetS() << " s (an endless loop?)";
-  fault_ = text.str();
+  fault_ = ExecuteWatchdog::overrunText(what, watchdog_.budgetS());
   std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted "
             << "(Component.ExecuteBudget). Fix it, rebuild, and start the run again." << std::endl;
   if (on_hung_) on_hung_();

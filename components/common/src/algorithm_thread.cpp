@@ -27,6 +27,11 @@ bool AlgorithmThread::run(std::function<void()> call, double budget_s) {
   return wake_.wait_for(lock, std::chrono::duration<double>(budget_s), [this] { return done_; });
 }
 
+bool AlgorithmThread::waitMore(double s) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  return wake_.wait_for(lock, std::chrono::duration<double>(s), [this] { return done_; });
+}
+
 void AlgorithmThread::loop() {
   // Stop signals belong to the main thread (SignalWatcher), never to the student's code.
   sigset_t all;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include <csignal>
 
@@ -44,6 +45,17 @@ void ExecuteWatchdog::arm(const char* what) {
 
 void ExecuteWatchdog::disarm() { deadline_ns_.store(0, std::memory_order_release); }
 
+void ExecuteWatchdog::setInterrupter(std::function<void(const std::string&)> interrupter) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  interrupter_ = std::move(interrupter);
+}
+
+std::string ExecuteWatchdog::overrunText(const char* what, double budget_s) {
+  std::ostringstream text;
+  text << what << " did not return within " << budget_s << " s (an endless loop?)";
+  return text.str();
+}
+
 void ExecuteWatchdog::watch() {
   // Stop signals belong to the main thread's signalfd (SignalWatcher): never to this one, or
   // Ctrl-C would kill the process instead of ending the run cleanly.
@@ -54,8 +66,17 @@ void ExecuteWatchdog::watch() {
   while (!stopping_) {
     // Short naps: an armed call is checked within 50 ms of its deadline.
     wake_.wait_for(lock, std::chrono::milliseconds(50));
-    const int64_t deadline = deadline_ns_.load(std::memory_order_acquire);
+    int64_t deadline = deadline_ns_.load(std::memory_order_acquire);
     if (deadline == 0 || steadyNowNs() < deadline) continue;
+    if (interrupter_ && interrupted_deadline_ns_ != deadline) {
+      // Raise inside the call, from a thread of its own: the interrupter may wait for the
+      // student's code to yield, and this thread must still end the process if it never does.
+      const int64_t extended = deadline + static_cast<int64_t>(kInterruptGraceS * 1e9);
+      interrupted_deadline_ns_ = extended;
+      std::thread(interrupter_, overrunText(what_.load(std::memory_order_relaxed), budget_s_)).detach();
+      deadline_ns_.compare_exchange_strong(deadline, extended);  // unless it returned meanwhile
+      continue;
+    }
     char text[512];
     const int n = std::snprintf(text, sizeof text,
                                 "%s: the student's algorithm: %s did not return within %g s (an endless loop?); "

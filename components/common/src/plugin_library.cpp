@@ -1,16 +1,19 @@
 #include "aula/component/plugin_library.hpp"
 
 #include <aula/component/algorithm_plugin.hpp>
+#include <aula/component/throw_site.hpp>
 #include <aula/config/paths.hpp>
 
 #include <array>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 
 #include <dlfcn.h>
+#include <link.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -65,12 +68,25 @@ std::string privateCopy(const std::string& path) {
 
 }  // namespace
 
+bool PluginLibrary::isPythonFile(const std::string& path) { return fs::path(path).extension() == ".py"; }
+
+std::string PluginLibrary::pythonHostPath(const std::string& exercise) {
+  return (fs::path(config::libDir()) / "python" / ("libaula_" + exercise + "_python.so")).string();
+}
+
 PluginLibrary::PluginLibrary(const std::string& path, const std::string& exercise) : path_(path) {
-  if (!fs::exists(path)) throw PluginError(path + ": no such plugin file (build it with cmake --build)");
+  const bool python = isPythonFile(path);
+  if (!fs::exists(path)) {
+    throw PluginError(path + (python ? ": no such file" : ": no such plugin file (build it with cmake --build)"));
+  }
   if (!fs::is_regular_file(path)) throw PluginError(path + ": not a file");
-  if (!looksLikeElf(path)) throw PluginError(path + ": not a shared library (no ELF header)");
   mtime_ns_ = mtimeNs(path);
   built_at_ = localTime(mtime_ns_);
+  if (python) {
+    openPython(exercise);
+    return;
+  }
+  if (!looksLikeElf(path)) throw PluginError(path + ": not a shared library (no ELF header)");
 
   const std::string copy = privateCopy(path);
   dlerror();
@@ -88,7 +104,30 @@ PluginLibrary::PluginLibrary(const std::string& path, const std::string& exercis
     }
     throw PluginError(path + ": cannot load this shared library: " + why);
   }
+  bindEntryPoints(exercise);
+}
 
+void PluginLibrary::openPython(const std::string& exercise) {
+  const std::string host = pythonHostPath(exercise);
+  // Never unloaded (RTLD_NODELETE): the interpreter inside lives as long as the process.
+  dlerror();
+  handle_ = dlopen(host.c_str(), RTLD_NOW | RTLD_LOCAL | RTLD_NODELETE);
+  if (handle_ == nullptr) {
+    const char* why = dlerror();
+    throw PluginError(path_ + ": cannot load the Python host for " + exercise + " (" + host +
+                      "): " + (why != nullptr ? why : "?"));
+  }
+  bindEntryPoints(exercise);
+  const auto set_file = reinterpret_cast<const char* (*)(const char*)>(dlsym(handle_, "aula_python_set_file"));
+  interrupt_ = reinterpret_cast<void (*)(const char*)>(dlsym(handle_, "aula_python_interrupt"));
+  if (set_file == nullptr || interrupt_ == nullptr) {
+    throw PluginError(path_ + ": " + host + " is not an Aula Python host (no aula_python_set_file())");
+  }
+  if (const char* error = set_file(path_.c_str())) throw PluginError(path_ + ": " + error);
+}
+
+void PluginLibrary::bindEntryPoints(const std::string& exercise) {
+  const std::string& path = path_;
   auto symbol = [&](const std::string& name) { return dlsym(handle_, name.c_str()); };
   const auto exercise_of = reinterpret_cast<const char* (*)()>(symbol("aula_algorithm_exercise"));
   const auto abi_of = reinterpret_cast<int (*)()>(symbol("aula_algorithm_abi_version"));
@@ -114,6 +153,44 @@ PluginLibrary::PluginLibrary(const std::string& path, const std::string& exercis
     dlclose(handle_);
     throw PluginError(path + ": has no " + factory + "(); build it with aula_add_algorithm");
   }
+}
+
+std::string PluginLibrary::throwSite(const void* thrown) const {
+  // The lines are read from the file on disk: not from a rebuild that is not what runs, nor
+  // from a Python file (its host says its own lines).
+  if (isPythonFile(path_) || changedOnDisk()) return "";
+  const ThrowStack& stack = lastThrowOnThisThread();
+  const link_map* map = nullptr;
+  if (stack.object != thrown || handle_ == nullptr || dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr) {
+    return "";
+  }
+  for (int i = 1; i < stack.count; ++i) {
+    Dl_info info{};
+    if (dladdr(stack.frames[i], &info) == 0 || reinterpret_cast<uintptr_t>(info.dli_fbase) != map->l_addr) continue;
+    // The call instruction before the return address; -i: the inlined frames too, innermost
+    // first, so that vector::at's header gives way to the student's line that called it.
+    char offset[32];
+    std::snprintf(offset, sizeof offset, "0x%zx",
+                  static_cast<size_t>(reinterpret_cast<uintptr_t>(stack.frames[i]) - map->l_addr - 1));
+    const std::string command = "addr2line -i -e '" + path_ + "' " + offset + " 2>/dev/null";
+    FILE* pipe = path_.find('\'') == std::string::npos ? ::popen(command.c_str(), "r") : nullptr;
+    if (pipe == nullptr) return "";
+    std::string site;
+    std::array<char, 1024> line{};
+    while (std::fgets(line.data(), line.size(), pipe) != nullptr) {
+      std::string where(line.data());
+      where = where.substr(0, where.find_first_of(" \n"));  // drops " (discriminator N)"
+      if (site.empty() && where.rfind("??", 0) != 0 && where.rfind("/usr/", 0) != 0) site = where;
+    }
+    ::pclose(pipe);
+    if (!site.empty()) return fs::path(site).filename().string();
+  }
+  return "";
+}
+
+std::function<void(const std::string&)> PluginLibrary::interrupter() const {
+  if (interrupt_ == nullptr) return {};
+  return [interrupt = interrupt_](const std::string& why) { interrupt(why.c_str()); };  // the host is never unloaded
 }
 
 PluginLibrary::~PluginLibrary() {

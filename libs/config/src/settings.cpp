@@ -17,7 +17,11 @@ std::string numberText(double v) {
   return out.str();
 }
 
-bool isFamily(const std::string& key) { return key.size() > 2 && key.compare(key.size() - 2, 2, ".*") == 0; }
+bool endsWith(const std::string& text, const std::string& tail) {
+  return text.size() > tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+bool isFamily(const std::string& key) { return endsWith(key, ".*"); }
 
 bool matches(const SettingSpec& spec, const std::string& key) {
   if (isFamily(spec.key)) {
@@ -63,7 +67,7 @@ std::string SettingSpec::rangeText() const {
   if (type == SettingType::Choice) {
     std::string out = "one of: ";
     for (size_t i = 0; i < choices.size(); ++i) out += (i ? ", " : "") + choices[i];
-    return or_plugin ? out + ", or a plugin PATH.so" : out;
+    return or_plugin ? out + ", or a plugin PATH.so, or a Python file PATH.py" : out;
   }
   if (type != SettingType::Int && type != SettingType::Double && type != SettingType::DoubleList) return "";
   if (std::isinf(min) && std::isinf(max)) return unit;
@@ -242,8 +246,7 @@ void SettingsTable::check(const SettingSpec& spec, const std::string& key, const
       break;
     case SettingType::Choice:
       // A plugin's file is checked by the component that loads it (missing, wrong exercise...).
-      if (spec.or_plugin && (value.find('/') != std::string::npos ||
-                             (value.size() > 3 && value.compare(value.size() - 3, 3, ".so") == 0))) {
+      if (spec.or_plugin && (value.find('/') != std::string::npos || endsWith(value, ".so") || endsWith(value, ".py"))) {
         break;
       }
       if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {

@@ -94,7 +94,8 @@ SettingsTable makeTaxiComponent() {
   mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");
   motionKeys(t, "TeleTaxi", 20, 2, 0.08, 50, 10);
   t.algorithm("TeleTaxi.Algorithm", "student", {"student", "reference"},
-              "the algorithm that drives the taxi (student: the template; PATH.so: a plugin built with aula_add_algorithm)");
+              "the algorithm that drives the taxi (student: the template; PATH.so: a plugin built with aula_add_algorithm; "
+              "PATH.py: a MyAlgorithm.py)");
   config::SettingSpec destination;
   destination.key = "TeleTaxi.Destination";
   destination.type = config::SettingType::DoubleList;
@@ -140,7 +141,8 @@ SettingsTable makeVacuumComponent() {
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
   t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "bounce"},
-              "the algorithm that drives the roomba (bounce: the random-bounce baseline; PATH.so: a plugin)");
+              "the algorithm that drives the roomba (bounce: the random-bounce baseline; PATH.so: a plugin; PATH.py: a "
+              "MyAlgorithm.py)");
   vacuumDuration(t);
   return t;
 }
@@ -170,7 +172,8 @@ SettingsTable makeAutoparkComponent() {
   worldKeys(t, "Autopark", "worlds/autopark.world", "car");
   motionKeys(t, "Autopark", 3, 1, 0.05, 10, 5);
   t.algorithm("Autopark.Algorithm", "student", {"student", "reactive", "planner"},
-              "PATH.so: a plugin; reactive: the thesis's two arcs; planner: laser map + OMPL Reeds-Shepp path (docs/planner.md)");
+              "PATH.so: a plugin; PATH.py: a MyAlgorithm.py; reactive: the thesis's two arcs; planner: laser map + OMPL "
+              "Reeds-Shepp path (docs/planner.md)");
   return t;
 }
 

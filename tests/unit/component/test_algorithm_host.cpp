@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <regex>
 #include <thread>
 
 namespace fs = std::filesystem;
@@ -89,4 +91,40 @@ TEST(AlgorithmHost, ReloadingABuiltInCreatesAFreshAlgorithm) {
   host.call(1, "execute()", [](VacuumAlgorithm&) {});
   EXPECT_EQ(created, 2);
   EXPECT_FALSE(host.isPlugin());
+}
+
+// With windows (containHangs), a MyAlgorithm.py stuck in a loop is interrupted inside Python:
+// the call returns as a fault naming the loop's line, the algorithm is not abandoned (no hang),
+// and a fixed file runs after Reload.
+TEST_F(AlgorithmHostReload, APythonLoopWithWindowsIsInterruptedAtItsLineAndReloadWorks) {
+  struct Devices {
+    aula::component::Pose3d pose;
+    aula::vacuum::YawSensor yaw{pose};
+    aula::component::Laser laser;
+    aula::component::Bumper bumper;
+    Motors motors{1.0, 1.0};
+    aula::vacuum::VacuumApi api{yaw, laser, bumper, motors, 0.08};
+  };
+  auto devices = std::make_shared<Devices>();  // owned by the calls too: one could outlive the test
+  const fs::path file = dir_ / "MyAlgorithm.py";
+  replaceFile(std::string(AULA_TEST_DATA_DIR) + "/python/endless_loop/MyAlgorithm.py", file);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, file.string(), devices->motors, 0.5);
+  host.containHangs();
+  auto run = [&] { return host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
+  for (int call = 1; call <= 5; ++call) EXPECT_TRUE(run()) << call << ": " << host.fault();
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(run());  // the 6th call loops
+  const double waited_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_FALSE(host.hung());
+  EXPECT_LT(waited_s, 0.5 + aula::component::ExecuteWatchdog::kInterruptGraceS);
+  EXPECT_TRUE(std::regex_search(host.fault(), std::regex("^MyAlgorithm\\.py:1[12]: execute\\(\\) did not return within "
+                                                         "0\\.5 s \\(an endless loop\\?\\): interrupted here")))
+      << host.fault();
+  EXPECT_NE(host.label().find("MyAlgorithm.py (saved "), std::string::npos) << host.label();
+
+  replaceFile(std::string(AULA_TEST_DATA_DIR) + "/python/nan_commands/MyAlgorithm.py", file);  // "fixed"
+  EXPECT_TRUE(host.pluginChanged());
+  EXPECT_TRUE(host.reload()) << host.fault();
+  EXPECT_TRUE(run()) << host.fault();
+  EXPECT_EQ(devices->motors.nonFiniteV(), 1);  // the new file ran: it sends NaN
 }

@@ -64,6 +64,35 @@ std::string writeBuildProject(const Submission& s, const std::string& exercise, 
 
 }  // namespace
 
+namespace {
+
+// A Python submission (MyAlgorithm.py, no MyAlgorithm.cpp): its .py files copied into
+// `project`, the copy of MyAlgorithm.py to run; a folder that cannot be copied is its failure.
+void preparePython(Submission& s, const fs::path& project) {
+  s.language = "Python";
+  std::error_code error;
+  fs::remove_all(project, error);
+  fs::create_directories(project, error);
+  for (const auto& entry : fs::directory_iterator(s.folder, error)) {
+    if (error) break;
+    if (entry.path().extension() != ".py" || !entry.is_regular_file()) continue;
+    fs::copy_file(entry.path(), project / entry.path().filename(), error);
+    if (error) break;
+  }
+  if (error) {
+    s.compile_error = "cannot copy " + s.folder + " into " + project.string() + ": " + error.message();
+    return;
+  }
+  s.plugin = (project / "MyAlgorithm.py").string();
+  s.plugin_sha256 = world::sha256OfFile(s.plugin);
+}
+
+bool isPythonSubmission(const std::string& folder) {
+  return !fs::exists(fs::path(folder) / "MyAlgorithm.cpp") && fs::is_regular_file(fs::path(folder) / "MyAlgorithm.py");
+}
+
+}  // namespace
+
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix) {
   struct Compiling {
     size_t index;
@@ -83,6 +112,11 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
     while (next < out.size() && static_cast<int>(running.size()) < request.jobs) {
       Submission& s = out[next];
       const fs::path project = fs::path(request.out_dir) / "build" / s.student;
+      if (isPythonSubmission(s.folder)) {  // nothing to compile
+        preparePython(s, project);
+        ++next;
+        continue;
+      }
       s.plugin = writeBuildProject(s, request.exercise, aula_prefix, project);
       const std::string build = (project / "build").string();
       const std::string log = (project / "compile.log").string();

@@ -25,7 +25,8 @@ AlgorithmPanel::AlgorithmPanel(const AlgorithmHostBase& host, std::function<bool
   non_finite_->setStyleSheet("color: #e65100;");
   reload_button_ = new QPushButton(host_.isPlugin() ? "Reload algorithm (Ctrl+R)" : "Restart episode (Ctrl+R)", this);
   reload_button_->setToolTip(
-      "Loads the algorithm again (a new build of the plugin), puts the robot back at its start and starts a new "
+      "Loads the algorithm again (a new build of the plugin, or your MyAlgorithm.py read again), puts the robot back "
+      "at its start and starts a new "
       "episode; the simulator and the referee keep running");
   for (QWidget* w : {static_cast<QWidget*>(build_), static_cast<QWidget*>(rebuilt_), static_cast<QWidget*>(fault_),
                      static_cast<QWidget*>(non_finite_), static_cast<QWidget*>(reload_button_)}) {
@@ -74,12 +75,16 @@ void AlgorithmPanel::reload() {
 void AlgorithmPanel::refresh() {
   build_->setText("Algorithm: " + QString::fromStdString(host_.label()));
   const bool rebuilt = host_.pluginChanged();
-  rebuilt_->setText(rebuilt ? "A new build is on disk: press Reload (Ctrl+R) to use it" : "");
+  const bool python = PluginLibrary::isPythonFile(host_.pluginPath());
+  rebuilt_->setText(!rebuilt ? ""
+                    : python ? "A new version is on disk: press Reload (Ctrl+R) to use it"
+                             : "A new build is on disk: press Reload (Ctrl+R) to use it");
   rebuilt_->setVisible(rebuilt);
   QString fault = host_.fault().empty() ? "" : "Your algorithm was stopped: " + QString::fromStdString(host_.fault());
   if (host_.hung()) {
     // The call is still running on its thread: nothing can reload under it.
-    fault += ". The robot is stopped. Fix it, rebuild, and start the run again.";
+    fault += python ? ". The robot is stopped. Fix it, save, and start the run again."
+                    : ". The robot is stopped. Fix it, rebuild, and start the run again.";
     reload_button_->setEnabled(false);
   }
   fault_->setText(fault);

@@ -38,6 +38,9 @@ ComponentFiles componentFiles(const std::string& program, const std::string& cfg
   }
   const bool is_path = algorithm.find('/') != std::string::npos || fs::path(algorithm).has_extension();
   if (is_path) files.algorithm = fs::absolute(algorithm).lexically_normal().string();
+  // A MyAlgorithm.py may import its own modules beside it: its folder (in a graded run, the copy
+  // of the submission's .py files and nothing else).
+  if (fs::path(files.algorithm).extension() == ".py") files.algorithm = fs::path(files.algorithm).parent_path().string();
   return files;
 }
 

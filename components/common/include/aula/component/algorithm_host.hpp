@@ -1,14 +1,16 @@
 #pragma once
 // Which algorithm a component runs, and running it with the student's faults contained. One
 // table by name, like the drivers' registry: the exercise's built-ins (references, baselines),
-// "student" (the in-tree template, built as a plugin like any student's) or the path of a plugin
-// (.so, built with aula_add_algorithm). Around every call into the algorithm:
+// "student" (the in-tree template, built as a plugin like any student's), the path of a plugin
+// (.so, built with aula_add_algorithm) or of a student's Python file (.py, run by the exercise's
+// Python host behind the same entry points). Around every call into the algorithm:
 // - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
 // - a call that does not return within the execute budget (wall seconds) ends the process
 //   (ExecuteWatchdog) with its own exit code, which the launcher explains; with windows
 //   (containHangs) the calls run on an AlgorithmThread instead, and a call that does not return
 //   halts the algorithm for good: the fault says so, the component freezes its devices and
-//   stops the robot (its onHung hook), the window stays responsive;
+//   stops the robot (its onHung hook), the window stays responsive; an algorithm that can be
+//   interrupted (Python) is first raised into, and a call that then returns is an ordinary fault;
 // - non-finite motor commands are counted, and said once in the log.
 
 #include <aula/component/devices.hpp>
@@ -39,7 +41,8 @@ class AlgorithmHostBase {
   bool isPlugin() const { return !plugin_path_.empty(); }
   // The plugin's file ("" for a built-in), kept when a reload failed: the window watches it.
   const std::string& pluginPath() const { return plugin_path_; }
-  // What runs, for windows and logs: "reference", or "libmy_algorithm.so (built 2026-11-23 17:04:12)".
+  // What runs, for windows and logs: "reference", "libmy_algorithm.so (built 2026-11-23 17:04:12)"
+  // or "MyAlgorithm.py (saved 2026-11-23 17:04:12)".
   std::string label() const;
   // A rebuilt plugin waits on disk (hot reload: the window offers it at the next Run).
   bool pluginChanged() const;

@@ -9,12 +9,29 @@
 //
 // The component checks the exercise and the ABI version before it calls the factory. Raise the
 // version whenever an API struct or algorithm interface changes layout.
+//
+// A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
+// Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
+// exports them, plus two of its own:
+//
+//   const char* aula_python_set_file(const char* path);  // the .py its factory loads; error text or nullptr
+//   void        aula_python_interrupt(const char* why);  // raises inside a call that overran its budget
 
 #define AULA_ALGORITHM_ABI_VERSION 1
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
+#include <stdexcept>
+
 namespace aula::component {
 
 constexpr int kAlgorithmAbiVersion = AULA_ALGORITHM_ABI_VERSION;
+
+// A fault that already says where and what, in the student's own lines
+// ("MyAlgorithm.py:12: ZeroDivisionError: ..."): the host shows its text as it is. Visible, so
+// that the component catches the one a plugin throws.
+class __attribute__((visibility("default"))) AlgorithmFault : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 }  // namespace aula::component

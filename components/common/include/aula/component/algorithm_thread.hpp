@@ -23,6 +23,8 @@ class AlgorithmThread {
   // Runs `call` on the thread; true when it returned within `budget_s` wall seconds. `call`
   // must own what it uses (an abandoned call outlives the caller's stack).
   bool run(std::function<void()> call, double budget_s);
+  // After run() returned false: waits up to `s` more for that call (an interrupted one) to return.
+  bool waitMore(double s);
 
  private:
   void loop();

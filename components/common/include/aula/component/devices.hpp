@@ -55,12 +55,19 @@ class Laser {
   const LaserData& getLaserData() const { return data_; }
   bool received() const { return data_.numLaser > 0; }
 
-  // A scan in metres; the millimetre view is derived here, once.
+  // A scan in metres; the millimetre view is derived here, once. The values go into the buffers
+  // this laser already has (while the beam count stays): a view of them that the algorithm
+  // keeps (a Python numpy array) then shows the latest scan, never freed memory.
   void set(LaserData data) {
-    data.distanceData.resize(data.values_m.size());
+    std::vector<float> values_m = std::move(data_.values_m);
+    values_m.assign(data.values_m.begin(), data.values_m.end());
+    data.values_m.swap(values_m);
+    std::vector<int> distance_mm = std::move(data_.distanceData);
+    distance_mm.resize(data.values_m.size());
     for (size_t i = 0; i < data.values_m.size(); ++i) {
-      data.distanceData[i] = static_cast<int>(std::lround(data.values_m[i] * 1000.0));
+      distance_mm[i] = static_cast<int>(std::lround(data.values_m[i] * 1000.0));
     }
+    data.distanceData = std::move(distance_mm);
     data_ = std::move(data);
   }
 

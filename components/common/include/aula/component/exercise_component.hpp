@@ -110,6 +110,8 @@ class ExerciseComponent {
   // on at once (TeleTaxi: a new path must be generated first).
   virtual bool startNewEpisode() { return true; }
 
+  // The run's seed (from the simulator's clock), which the algorithm is made with.
+  uint64_t runSeed() const { return static_cast<uint64_t>(loop_->seed()); }
   Pose3dProxy& poseProxy() { return *pose_; }
   MotorsProxy& motorsProxy() { return *motors_; }
   Host& host() { return *host_; }
@@ -144,7 +146,7 @@ class ExerciseComponent {
   }
 
   void step() {
-    if (!host_->call(static_cast<uint64_t>(loop_->seed()), "execute()", [this](Algorithm& a) { execute(a); })) {
+    if (!host_->call(runSeed(), "execute()", [this](Algorithm& a) { execute(a); })) {
       setRunning(false);
     }
   }

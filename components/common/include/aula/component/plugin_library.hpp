@@ -6,10 +6,15 @@
 //
 // The file is copied before dlopen and the copy unlinked at once, so rebuilding the plugin while
 // it runs never touches the mapped code, and loading it again loads the new build (hot reload).
+//
+// A Python file (PATH.py) loads the exercise's Python host module instead, once for the process
+// (the interpreter is never shut down: numpy cannot start twice), and gives it the file; the
+// host reads the file afresh every time the factory makes an algorithm (hot reload again).
 
 #include <aula/config/config.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -36,7 +41,22 @@ class PluginLibrary {
     return std::unique_ptr<Algorithm>(reinterpret_cast<Factory>(factory_)(seed));
   }
 
+  // What raises `why` inside a call that overran its budget, when the algorithm can be
+  // interrupted (a Python file), else empty (C++). It may block until the algorithm's code
+  // yields: call it on a thread of its own. It stays valid after this library is gone.
+  std::function<void(const std::string& why)> interrupter() const;
+
+  // Where the exception object `thrown` (as dynamic_cast<const void*> gives it) was thrown in
+  // this plugin, from the stack __cxa_throw kept on this thread (throw_site.hpp): the student's
+  // "MyAlgorithm.cpp:14" (addr2line on the plugin's debug info, inlined library frames skipped),
+  // or "" when it was not thrown from here or the line cannot be told.
+  std::string throwSite(const void* thrown) const;
+
   const std::string& path() const { return path_; }
+  // A student's Python file rather than a shared library.
+  static bool isPythonFile(const std::string& path);
+  // The exercise's Python host module: <lib>/aula/python/libaula_<exercise>_python.so.
+  static std::string pythonHostPath(const std::string& exercise);
   // The plugin file's modification time when it was loaded ("2026-11-23 17:04:12").
   const std::string& builtAt() const { return built_at_; }
   // True when the file on disk is newer than what is loaded (a rebuild since).
@@ -46,9 +66,13 @@ class PluginLibrary {
 
  private:
   std::string path_, built_at_;
+  void openPython(const std::string& exercise);
+  void bindEntryPoints(const std::string& exercise);
+
   int64_t mtime_ns_ = 0;
   void* handle_ = nullptr;
   void* factory_ = nullptr;
+  void (*interrupt_)(const char*) = nullptr;
 };
 
 }  // namespace aula::component

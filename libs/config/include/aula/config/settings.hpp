@@ -36,7 +36,7 @@ struct SettingSpec {
   bool min_exclusive = false;      // (min, max] instead of [min, max]
   size_t list_size = 0;            // DoubleList: exact number of items (0: any)
   std::vector<std::string> choices;  // Choice: the allowed words
-  bool or_plugin = false;          // Choice: a plugin file (PATH.so) is allowed too
+  bool or_plugin = false;          // Choice: a plugin file (PATH.so) or a Python file (PATH.py) is allowed too
   bool free_point = false;         // DoubleList of 2: x, y that must be free floor on the exercise's map
   // A preset setting: `choices` are the presets' names; the keys it governs (declared before it,
   // in the same table) take the selected preset's value, or their own default when it has none.
@@ -58,7 +58,8 @@ class SettingsTable {
   SettingsTable& text(const std::string& key, const std::string& def, const std::string& help);
   SettingsTable& choice(const std::string& key, const std::string& def, std::vector<std::string> choices,
                         const std::string& help);
-  // A Choice of built-in algorithms, or the path of an algorithm plugin (PATH.so).
+  // A Choice of built-in algorithms, or the path of an algorithm plugin (PATH.so) or of a
+  // student's Python file (PATH.py).
   SettingsTable& algorithm(const std::string& key, const std::string& def, std::vector<std::string> builtins,
                            const std::string& help);
   SettingsTable& real(const std::string& key, double def, const std::string& unit, double min, double max,

@@ -47,17 +47,20 @@ GradeRequest parseRequest(const GradeOptions& options);
 // "1-5", "1,3,9", "2-3,7" -> the seeds, in order, without repeats.
 std::vector<long long> parseSeeds(const std::string& text);
 
-// A submission compiled (or not) into a plugin.
+// A submission compiled (or not) into a plugin, or a student's Python file.
 struct Submission {
   std::string student;  // the folder's name
   std::string folder;   // absolute
-  std::string plugin;   // the built .so ("" when it did not compile)
+  std::string language = "C++";  // "C++" (MyAlgorithm.cpp) or "Python" (MyAlgorithm.py alone)
+  std::string plugin;   // the built .so, or the copy of MyAlgorithm.py ("" when it did not compile)
   std::string plugin_sha256;
   std::string compile_error;  // "did not compile: <the compiler's first error lines>"
 };
 
 // Builds every submission as a plugin in OUT/build/<student>, `jobs` at once. A compile error
-// is that student's result and never stops the others.
+// is that student's result and never stops the others. A folder with MyAlgorithm.py and no
+// MyAlgorithm.cpp is not compiled: its .py files are copied there (what runs cannot change
+// under the batch) and the copy of MyAlgorithm.py is what its runs load.
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix);
 
 // One run of the batch.

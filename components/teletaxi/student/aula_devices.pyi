@@ -1,0 +1,1 @@
+../../common/python/aula_devices.pyi

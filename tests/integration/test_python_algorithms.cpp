@@ -1,0 +1,224 @@
+// A student's MyAlgorithm.py, run the way a student runs it: `aula run EXERCISE --headless
+// --algorithm=DIR/MyAlgorithm.py`, real processes on a private LCM URL (issue 31).
+// - One API, two languages: a Python port of a C++ test algorithm earns the same report for the
+//   same seed, byte for byte but the algorithm's name.
+// - Faults in the student's own lines: a SyntaxError, an exception's traceback, an endless loop
+//   interrupted inside Python, NaN commands, a missing module; each on stderr and in the report.
+// - Determinism: `random` and numpy seeded from the run's seed; the user's environment ignored;
+//   a recorded run regrades to the same report.
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <string>
+#include <vector>
+
+using namespace std::chrono_literals;
+using aula::testing::jsonNumber;
+using aula::testing::readFile;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kPython = std::string(AULA_TEST_DATA_DIR) + "/python/";
+
+struct PyRun {
+  std::optional<int> code;
+  std::string output;  // stderr, then stdout
+  std::string report;  // "" when none was written
+};
+
+PyRun runHeadless(const std::string& exercise, const std::string& algorithm, std::vector<std::string> extra = {},
+                std::chrono::seconds limit = 90s) {
+  const std::string report = aula::testing::privateDir() + "/report.json";
+  std::vector<std::string> argv = {std::string(AULA_BIN_DIR) + "/aula", "run", exercise, "--headless",
+                                   "--algorithm=" + algorithm, "--report=" + report,
+                                   "--lcm-url=" + aula::testing::privateLcmUrl()};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  const aula::testing::Outcome outcome = aula::testing::runToEnd(argv, limit);
+  return {outcome.code, outcome.output, fs::exists(report) ? readFile(report) : ""};
+}
+
+std::string describe(const PyRun& run) {
+  return "exit " + (run.code ? std::to_string(*run.code) : std::string("(none: still running)")) + "\n--- output:\n" +
+         run.output + "--- report:\n" + run.report;
+}
+
+std::optional<std::string> jsonString(const std::string& json, const std::string& key) {
+  std::smatch m;
+  if (!std::regex_search(json, m, std::regex("\"" + key + "\": \"((?:[^\"\\\\]|\\\\.)*)\""))) return std::nullopt;
+  return m[1].str();
+}
+
+// The report without its "algorithm" line: what must not depend on the language.
+std::string withoutAlgorithmName(const std::string& report) {
+  return std::regex_replace(report, std::regex("\n *\"algorithm\": \"[^\"]*\",?"), "");
+}
+
+// A Python fault ends a 20 s vacuum run early: `message` on stderr (the component's line) and
+// as the report's algorithm_error.
+void expectPythonFault(const PyRun& run, const std::string& message) {
+  ASSERT_TRUE(run.code.has_value()) << describe(run);
+  EXPECT_NE(*run.code, 0) << describe(run);
+  EXPECT_NE(run.output.find("vacuum-cleaner: the student's algorithm failed: " + message), std::string::npos)
+      << "expected on stderr: " << message << "\n" << describe(run);
+  ASSERT_FALSE(run.report.empty()) << describe(run);
+  const auto error = jsonString(run.report, "algorithm_error");
+  ASSERT_TRUE(error.has_value()) << describe(run);
+  EXPECT_EQ(error->rfind(message, 0), 0u) << "algorithm_error: " << *error << "\nexpected it to start with: " << message;
+  EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
+}
+
+const std::vector<std::string> kShortVacuum = {"--Vacuum.Referee.Duration=20"};
+
+}  // namespace
+
+// One API, two languages: the vacuum bounce (no random draw) in C++ and in Python, 900 s each.
+TEST(PythonAlgorithms, VacuumBouncePortEarnsTheCppReportByteForByte) {
+  const PyRun cpp = runHeadless("vacuum", AULA_PLUGIN_VACUUM_BOUNCE, {"--seed=3"});
+  const PyRun python = runHeadless("vacuum", kPython + "vacuum_bounce/MyAlgorithm.py", {"--seed=3"});
+  ASSERT_EQ(cpp.code.value_or(-1), 0) << describe(cpp);
+  ASSERT_EQ(python.code.value_or(-1), 0) << describe(python);
+  EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
+  // A bounce that moves and bumps: the comparison is not between two robots standing still.
+  EXPECT_GT(jsonNumber(cpp.report, "coverage_percent"), 5.0) << cpp.report;
+  EXPECT_GT(jsonNumber(cpp.report, "bumps"), 0.0) << cpp.report;
+  EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
+// TeleTaxi: the grid's wave and path (field and map as numpy arrays over the C++ grid), then
+// the path followed to the destination.
+TEST(PythonAlgorithms, TeletaxiPathFollowerPortEarnsTheCppReportByteForByte) {
+  const std::vector<std::string> trip = {"--TeleTaxi.Destination=220,240"};
+  const PyRun cpp = runHeadless("teletaxi", AULA_PLUGIN_TELETAXI_FOLLOW, trip);
+  const PyRun python = runHeadless("teletaxi", kPython + "teletaxi_follow/MyAlgorithm.py", trip);
+  ASSERT_EQ(cpp.code.value_or(-1), 0) << describe(cpp);
+  ASSERT_EQ(python.code.value_or(-1), 0) << describe(python);
+  EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
+  EXPECT_GT(jsonNumber(cpp.report, "mark"), 0.0) << cpp.report;  // it drove somewhere
+  EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
+// Autopark: the slot found with the right laser, two reversing arcs, centred with the front and
+// rear lasers (the mounts, the car's size and the status line read and written too).
+TEST(PythonAlgorithms, AutoparkReverseParkPortEarnsTheCppReportByteForByte) {
+  const PyRun cpp = runHeadless("autopark", AULA_PLUGIN_AUTOPARK_REVERSE);
+  const PyRun python = runHeadless("autopark", kPython + "autopark_reverse/MyAlgorithm.py");
+  ASSERT_EQ(cpp.code.value_or(-1), 0) << describe(cpp);
+  ASSERT_EQ(python.code.value_or(-1), 0) << describe(python);
+  EXPECT_NE(python.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << python.report;
+  EXPECT_NE(cpp.report.find("\"parked\": true"), std::string::npos) << cpp.report;  // it went into the slot
+  EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
+}
+
+// A Python run recorded and graded again from the log alone: the same report, byte for byte.
+TEST(PythonAlgorithms, RecordedRunRegradesToTheSameReport) {
+  const std::string dir = aula::testing::privateDir();
+  const PyRun live = runHeadless("vacuum", kPython + "vacuum_bounce/MyAlgorithm.py",
+                                 {"--Vacuum.Referee.Duration=120", "--record=" + dir + "/run.lcmlog"});
+  ASSERT_EQ(live.code.value_or(-1), 0) << describe(live);
+  const aula::testing::Outcome again = aula::testing::runToEnd(
+      {std::string(AULA_BIN_DIR) + "/aula", "regrade", dir + "/run.lcmlog", "--report=" + dir + "/again.json"});
+  ASSERT_EQ(again.code.value_or(-1), 0) << again.output;
+  EXPECT_EQ(readFile(dir + "/again.json"), live.report);
+}
+
+TEST(PythonAlgorithms, SyntaxErrorNamesTheLine) {
+  const PyRun run = runHeadless("vacuum", kPython + "syntax_error/MyAlgorithm.py", kShortVacuum);
+  expectPythonFault(run, "MyAlgorithm.py:7: SyntaxError: ");
+  EXPECT_NE(run.output.find("(`if self.calls = 3:`)"), std::string::npos) << describe(run);
+  EXPECT_EQ(jsonNumber(run.report, "sim_time_s"), 0.0) << describe(run);
+}
+
+TEST(PythonAlgorithms, ExceptionGivesTheTracebackInTheStudentsLines) {
+  const PyRun run = runHeadless("vacuum", kPython + "raises/MyAlgorithm.py", kShortVacuum);
+  expectPythonFault(run, "MyAlgorithm.py:8: ZeroDivisionError: float division by zero (traceback, most recent call "
+                         "last: MyAlgorithm.py:18 in execute: `api.motors.sendV(self.speed(api))`; MyAlgorithm.py:8 "
+                         "in speed: `return 1.0 / remaining`)");
+  EXPECT_GT(jsonNumber(run.report, "sim_time_s"), 0.0) << describe(run);
+  EXPECT_LT(jsonNumber(run.report, "sim_time_s"), 20.0) << describe(run);
+}
+
+// The execute budget raises inside the loop (even past `except Exception`): the run goes on to
+// its report with the loop's line, instead of the process being ended.
+TEST(PythonAlgorithms, EndlessLoopIsInterruptedAtItsLine) {
+  const PyRun run = runHeadless("vacuum", kPython + "endless_loop/MyAlgorithm.py",
+                              {"--Vacuum.Referee.Duration=20", "--Component.ExecuteBudget=1"}, 30s);
+  ASSERT_TRUE(run.code.has_value()) << "the run hung\n" << describe(run);
+  const auto error = jsonString(run.report, "algorithm_error");
+  ASSERT_TRUE(error.has_value()) << describe(run);
+  EXPECT_TRUE(std::regex_search(*error, std::regex("^MyAlgorithm\\.py:1[12]: execute\\(\\) did not return within 1 s "
+                                                   "\\(an endless loop\\?\\): interrupted here")))
+      << *error;
+  expectPythonFault(run, "MyAlgorithm.py:1");
+  EXPECT_EQ(run.report.find("\"aborted\""), std::string::npos) << describe(run);
+}
+
+TEST(PythonAlgorithms, NanCommandsAreRefusedAndCounted) {
+  const PyRun run = runHeadless("vacuum", kPython + "nan_commands/MyAlgorithm.py", kShortVacuum);
+  ASSERT_EQ(run.code.value_or(-1), 0) << describe(run);
+  EXPECT_GT(jsonNumber(run.report, "non_finite_commands"), 0.0) << describe(run);
+  EXPECT_LT(jsonNumber(run.report, "coverage_percent"), 0.5) << describe(run);
+  EXPECT_NE(run.output.find("not a finite number"), std::string::npos) << describe(run);
+}
+
+TEST(PythonAlgorithms, MissingImportNamesTheModule) {
+  const PyRun run = runHeadless("vacuum", kPython + "missing_import/MyAlgorithm.py", kShortVacuum);
+  expectPythonFault(run, "MyAlgorithm.py:2: ModuleNotFoundError: no module named 'pandas'");
+}
+
+// A file that is not there is refused at once, like a missing plugin (exit 2).
+TEST(PythonAlgorithms, MissingFileIsRefusedAtOnce) {
+  const std::string missing = aula::testing::privateDir() + "/MyAlgorithm.py";
+  const PyRun run = runHeadless("vacuum", missing, kShortVacuum);
+  EXPECT_EQ(run.code.value_or(-1), 2) << describe(run);
+  EXPECT_NE(run.output.find(missing + ": no such file"), std::string::npos) << describe(run);
+}
+
+// The same seed, the same report; another seed, other draws. And the student's environment
+// (PYTHONPATH with a numpy that would fail, user site-packages) never reaches the interpreter.
+TEST(PythonAlgorithms, SeededAndIsolatedFromTheEnvironment) {
+  const std::string file = kPython + "seeded_random/MyAlgorithm.py";
+  const PyRun first = runHeadless("vacuum", file, {"--seed=5", "--Vacuum.Referee.Duration=60"});
+  const std::string shadow = aula::testing::privateDir();
+  fs::create_directories(shadow + "/numpy");
+  std::ofstream(shadow + "/numpy/__init__.py") << "raise ImportError('the PYTHONPATH numpy was imported')\n";
+  ::setenv("PYTHONPATH", shadow.c_str(), 1);
+  ::setenv("PYTHONUSERBASE", shadow.c_str(), 1);
+  const PyRun again = runHeadless("vacuum", file, {"--seed=5", "--Vacuum.Referee.Duration=60"});
+  ::unsetenv("PYTHONPATH");
+  ::unsetenv("PYTHONUSERBASE");
+  const PyRun other = runHeadless("vacuum", file, {"--seed=6", "--Vacuum.Referee.Duration=60"});
+  ASSERT_EQ(first.code.value_or(-1), 0) << describe(first);
+  ASSERT_EQ(again.code.value_or(-1), 0) << describe(again);
+  ASSERT_EQ(other.code.value_or(-1), 0) << describe(other);
+  EXPECT_EQ(again.report, first.report);
+  EXPECT_NE(jsonNumber(other.report, "coverage_percent"), jsonNumber(first.report, "coverage_percent"))
+      << first.report << other.report;
+}
+
+// The shipped .pyi stubs name exactly what each exercise's module binds (checked inside Aula's
+// Python: tests/data/python/stubs_match), every exercise makes MyAlgorithm with the run's seed
+// (TeleTaxi's generatePath() first too), and the templates run as shipped.
+TEST(PythonAlgorithms, StubsNameExactlyWhatEachExerciseBindsAndTemplatesRun) {
+  const std::vector<std::pair<std::string, std::vector<std::string>>> exercises = {
+      {"vacuum", {"--seed=7", "--Vacuum.Referee.Duration=5"}},
+      {"teletaxi", {"--seed=7", "--TeleTaxi.Destination=220,240", "--TeleTaxi.Referee.Timeout=5"}},
+      {"autopark", {"--seed=7", "--Autopark.Referee.Timeout=5"}}};
+  for (const auto& [exercise, options] : exercises) {
+    const PyRun stubs = runHeadless(exercise, kPython + "stubs_match/MyAlgorithm.py", options);
+    EXPECT_NE(stubs.output.find("stubs match: aula_" + exercise), std::string::npos) << describe(stubs);
+    EXPECT_NE(stubs.output.find("MyAlgorithm(seed=7)"), std::string::npos) << describe(stubs);
+    EXPECT_FALSE(jsonString(stubs.report, "algorithm_error").has_value()) << describe(stubs);
+    const PyRun shipped =
+        runHeadless(exercise, std::string(AULA_SOURCE_DIR) + "/components/" + exercise + "/student/MyAlgorithm.py", options);
+    EXPECT_FALSE(shipped.report.empty()) << describe(shipped);
+    EXPECT_FALSE(jsonString(shipped.report, "algorithm_error").has_value()) << describe(shipped);
+  }
+}

@@ -1,0 +1,87 @@
+#pragma once
+// Similarity between students (`aula grade --similarity`): pairs for a teacher to look at, never a
+// change of mark.
+// - Code: each submission's tokens (C++ or Python; comments and layout dropped, identifiers,
+//   numbers and strings each one class, so renaming changes nothing), fingerprinted by winnowing
+//   k-grams of tokens (Schleimer, Wilkerson, Aiken 2003: MOSS's algorithm), less the fingerprints of
+//   the exercise's template that everyone starts from. A pair's score is the share of the smaller
+//   submission's fingerprints the other has too; reordered functions keep their fingerprints. The
+//   evidence: the matching line ranges in both files.
+// - Behaviour: for the same world and seed, the mean distance between two students' true poses at
+//   the same sim time (the referee's traces, 10 Hz). Differently written code that drives the same
+//   path is a signal too: a transliteration from one language to another.
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace aula::grade {
+
+struct Token {
+  std::string text;  // a keyword or operator as written; "I" identifier, "N" number, "S" string
+  int line = 0;
+};
+
+// The tokens of a source file; `python` chooses the language (else C++).
+std::vector<Token> tokenize(const std::string& source, bool python);
+
+struct Fingerprint {
+  uint64_t hash = 0;
+  int first_line = 0, last_line = 0;  // the lines its k-gram spans
+};
+
+// Winnowing: of every window of `window` consecutive k-gram hashes, the smallest (rightmost on a tie).
+std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k = 12, size_t window = 8);
+
+struct CodeMatch {
+  double score = 0;  // shared fingerprints over the smaller set, 0-1
+  std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> ranges;  // (a first, last) ~ (b first, last)
+};
+
+// `starter`: the template's fingerprints, shared by everyone and so not counted.
+CodeMatch compareCode(const std::vector<Fingerprint>& a, const std::vector<Fingerprint>& b,
+                      const std::vector<Fingerprint>& starter);
+
+// A run's true path, from its trace: x, y in metres every period_s of sim time.
+struct Path {
+  double period_s = 0.1;
+  std::vector<double> x_m, y_m;
+};
+Path pathOfTrace(const nlohmann::json& trace);
+// The mean distance between the two paths at the same sim times (the shorter's length), in metres;
+// NaN when they have no sample in common or a different period.
+double meanDistance(const Path& a, const Path& b);
+double pathLength(const Path& path);
+
+struct Submitted {
+  std::string student;
+  std::string source_path;  // MyAlgorithm.cpp or MyAlgorithm.py
+};
+
+struct PairSimilarity {
+  std::string a, b;
+  double code_score = 0;
+  double behaviour_m = -1;  // the median over the runs compared of the mean distance; -1: none
+  int runs_compared = 0;
+  bool flagged = false;
+  std::string evidence;     // "MyAlgorithm.cpp:10-24 ~ MyAlgorithm.cpp:40-54; ..." and the runs compared
+};
+
+struct SimilarityRules {
+  double code_threshold = 0.6;        // flagged at or above this share of fingerprints
+  double behaviour_threshold_m = 0.05;  // flagged at or below this mean distance, for paths that moved
+  double moved_m = 1.0;               // paths shorter than this say nothing (a robot that stays still)
+};
+
+// Every pair of `students`; `results` are the runs' results (their "log" names the trace beside
+// them); `starter` the exercise's templates' fingerprints. Pairs sorted, flagged first.
+std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students, const std::vector<nlohmann::json>& results,
+                                         const std::vector<Fingerprint>& starter, const SimilarityRules& rules = {});
+
+std::string similarityCsv(const std::vector<PairSimilarity>& pairs);
+// The report's section: the flagged pairs, each with its two files side by side.
+std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students);
+
+}  // namespace aula::grade
