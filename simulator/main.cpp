@@ -102,10 +102,12 @@ int runSimulator(int argc, char** argv) {
   }
   const config::Config cfg = simulatorConfig(cl);
   auto options = sim::SimulatorOptions::fromConfig(cfg);
+  // The bus before the world: the clients, started with the simulator, register while it loads.
+  auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
+  sim::Simulator::listenForClients(*bus);
   world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(cl.positional[0], "command line: WORLD"));
   sim::applyStartPoses(cfg, spec);
   takeWorldStep(cfg, spec, options);
-  auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
   process::SignalWatcher signals;
   // --key-fd=N: a graded run's key, from the launcher (docs/grading.md, "What a student's code can do").
   std::optional<auth::Key> key;

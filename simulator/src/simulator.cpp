@@ -79,9 +79,12 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
       instance_(randomInstance()),
       graded_(key.has_value()) {
   // The clock channel first, then the question: a simulator already running on this bus answers
-  // while the world loads.
+  // while the world loads. Nothing is handled before the world is built.
   subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
   subscriptions_.push_back(bus_.subscribe(lcmbus::kHelloChannel, &Simulator::onHello, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
   const aula::sim_clock_t hello = tickAt(0);  // before the world is built: seq -1, no clients
   bus_.publish(lcmbus::kHelloChannel, &hello);
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
@@ -97,15 +100,17 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
       drivers_.push_back(std::move(driver));
     }
   }
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
-  subscriptions_.push_back(
-      bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
   paused_ = options_.start_paused;
   // A robot may be put anywhere within the world's statics (a metre of margin), or within
   // 1 km of the origin in a world with none.
   bounds_m_ = spec_.statics.empty() ? Eigen::Vector4d(-1000, -1000, 1000, 1000)
                                     : Eigen::Vector4d(world::staticBounds(spec_) + Eigen::Vector4d(-1, -1, 1, 1));
+}
+
+void Simulator::listenForClients(lcmbus::Bus& bus) {
+  for (const char* channel : {lcmbus::kLockstepRegisterChannel, lcmbus::kLockstepAckChannel, lcmbus::kControlChannel}) {
+    bus.listen(channel);
+  }
 }
 
 std::optional<std::string> Simulator::poseProblem(double x_m, double y_m, double yaw_rad) const {

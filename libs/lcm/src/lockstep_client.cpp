@@ -25,12 +25,21 @@ LockstepClient::LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_
     : bus_(bus), name_(std::move(client_name)), period_us_(period_us), on_tick_(std::move(on_tick)) {
   if (period_us_ <= 0) period_us_ = 1;
   subscription_ = bus_.subscribe(kClockChannel, &LockstepClient::onClock, this);
+  hello_subscription_ = bus_.subscribe(kHelloChannel, &LockstepClient::onHello, this);
   sendRegister(false);
 }
 
 LockstepClient::~LockstepClient() {
   leave();
   if (subscription_ != nullptr) bus_.unsubscribe(subscription_);
+  if (hello_subscription_ != nullptr) bus_.unsubscribe(hello_subscription_);
+}
+
+// A simulator starting up says hello once it listens: a client started before it (a simulator
+// loads DART and its world for tens of ms, a client is quicker) registers again at once instead
+// of at its next re-send.
+void LockstepClient::onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t*) {
+  if (!left_ && !registered_) sendRegister(false);
 }
 
 void LockstepClient::poll() {

@@ -5,6 +5,7 @@
 #include <aula/lcm/lockstep_client.hpp>
 
 #include <aula/lockstep_ack_t.hpp>
+#include <aula/lockstep_register_t.hpp>
 #include <aula/sim_clock_t.hpp>
 
 #include <gtest/gtest.h>
@@ -33,6 +34,13 @@ aula::sim_clock_t tick(int64_t instance, int64_t seq, int64_t utime, std::vector
   t.num_clients = static_cast<int32_t>(t.clients.size());
   return t;
 }
+
+struct Registrations {
+  std::vector<std::string> clients;
+  void on(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* msg) {
+    if (!msg->leave) clients.push_back(msg->client);
+  }
+};
 
 void drain(Bus& bus) {
   while (bus.handleTimeout(0) > 0) {
@@ -95,6 +103,32 @@ TEST(LockstepClient, AForeignTickOfAnotherWorldDoesNotStopTheClient) {
   drain(bus);
   EXPECT_NO_THROW(client.poll());  // not "another world": not our simulator at all
   EXPECT_EQ(client.foreignTicks(), 1);
+}
+
+// A simulator started after its clients (it loads DART and the world for tens of ms) says hello:
+// a client not yet listed registers again at once, not at its next re-send 100 ms later; a
+// listed client does not.
+TEST(LockstepClient, RegistersAgainWhenASimulatorSaysHello) {
+  Bus bus("memq://");
+  Registrations registrations;
+  bus.subscribe(aula::lcmbus::kLockstepRegisterChannel, &Registrations::on, &registrations);
+  LockstepClient client(bus, "ctl", 20000, nullptr);
+  drain(bus);
+  ASSERT_EQ(registrations.clients.size(), 1u);  // at its start, before any simulator listened
+
+  auto hello = tick(kOurs, -1, 0, {});
+  bus.publish(aula::lcmbus::kHelloChannel, &hello);
+  drain(bus);
+  EXPECT_EQ(registrations.clients.size(), 2u);
+
+  auto listed = tick(kOurs, 0, 0, {"ctl"});
+  bus.publish(aula::lcmbus::kClockChannel, &listed);
+  drain(bus);
+  ASSERT_TRUE(client.registered());
+  auto another = tick(kOther, -1, 0, {});
+  bus.publish(aula::lcmbus::kHelloChannel, &another);
+  drain(bus);
+  EXPECT_EQ(registrations.clients.size(), 2u);
 }
 
 }  // namespace

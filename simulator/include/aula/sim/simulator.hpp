@@ -62,6 +62,10 @@ class Simulator {
             std::optional<auth::Key> key = std::nullopt);
   ~Simulator();
   Simulator(const Simulator&) = delete;
+  // Before the world loads: what the clients send (registrations, acks, controls) waits in the
+  // socket until the simulator handles the bus, instead of being dropped by its filter (a client
+  // re-sends its registration only 100 ms later: every run would start that much later).
+  static void listenForClients(lcmbus::Bus& bus);
   Simulator& operator=(const Simulator&) = delete;
 
   // Runs until `should_stop()` returns true or duration_s is reached. `frame`, if given, runs

@@ -5,7 +5,8 @@
 // tick's utime must acknowledge it (after handling the sensor data published before the tick
 // and publishing its own outputs); until every due client has acked, the world does not
 // advance. Registration and acks are re-sent after a short wall-clock wait, so one lost UDP
-// packet never stalls a run.
+// packet never stalls a run; a simulator that starts after the client (its SIM_HELLO) is sent the
+// registration again at once.
 
 #include <aula/sim_clock_t.hpp>
 
@@ -61,12 +62,14 @@ class LockstepClient {
 
  private:
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
+  void onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello);
   void sendRegister(bool leave);
   void noteForeignTick(const aula::sim_clock_t& tick);
   void sendAck(int64_t seq, int64_t utime);
 
   lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
+  lcm::Subscription* hello_subscription_ = nullptr;
   std::string name_;
   int64_t period_us_;
   TickHandler on_tick_;
