@@ -114,6 +114,7 @@ int runSimulator(int argc, char** argv) {
   if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
   // --status-fd=N: the launcher's pipe, told why the simulator ended a run early.
   const int status_fd = cl.flag("status-fd") ? static_cast<int>(cl.optionDouble("status-fd", -1)) : -1;
+  options.watch_client_processes = status_fd < 0;  // alone, no launcher watches the processes
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
   // ask (SIM_HELLO, sent as the simulator is built) and listen for one (while the world loads,
   // then up to kListenForOthers in all). A running simulator answers at once with its tick: its
@@ -148,6 +149,8 @@ int runSimulator(int argc, char** argv) {
       const std::string line = "ended " + simulator.endedBecause() + "\n";
       (void)!::write(status_fd, line.data(), line.size());
     }
+    // Then the clients: the launcher knows why before any client can end because of it.
+    simulator.announceEnd();
     return process::kExitFailed;
   }
   return 0;

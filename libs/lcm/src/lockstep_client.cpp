@@ -64,6 +64,14 @@ void LockstepClient::sendRegister(bool leave) {
   last_register_ = std::chrono::steady_clock::now();
 }
 
+std::string LockstepClient::simulatorGone(std::chrono::steady_clock::time_point now) const {
+  if (!instance_locked_) return "";
+  if (!last_tick_.ended.empty()) return "the simulator ended the run: " + last_tick_.ended;
+  if (now - last_clock_ < kSimulatorSilence) return "";
+  return "the simulator stopped (no " + std::string(kClockChannel) + " for " + std::to_string(kSimulatorSilence.count()) +
+         " s of wall time)";
+}
+
 void LockstepClient::sendAck(int64_t seq, int64_t utime) {
   aula::lockstep_ack_t ack;
   ack.client = name_;
@@ -102,6 +110,7 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& chann
                       "three processes the same --world";
     return;
   }
+  last_clock_ = std::chrono::steady_clock::now();
   lockstep_ = tick->lockstep;
   paused_ = tick->paused;
   rtf_ = tick->real_time_factor;

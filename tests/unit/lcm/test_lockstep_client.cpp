@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -129,6 +130,33 @@ TEST(LockstepClient, RegistersAgainWhenASimulatorSaysHello) {
   bus.publish(aula::lcmbus::kHelloChannel, &another);
   drain(bus);
   EXPECT_EQ(registrations.clients.size(), 2u);
+}
+
+// The simulator is gone for a client once it has followed it: when its clock has been silent for
+// 2 s of wall time (killed), or at once when its last tick says it ended the run.
+TEST(LockstepClient, KnowsWhenItsSimulatorIsGone) {
+  Bus bus("memq://");
+  LockstepClient client(bus, "ctl", 20000, nullptr);
+  const auto later = std::chrono::steady_clock::now() + LockstepClient::kSimulatorSilence + std::chrono::seconds(1);
+  EXPECT_EQ(client.simulatorGone(later), "") << "no simulator yet: it waits for one";
+
+  auto listed = tick(kOurs, 0, 0, {"ctl"});
+  bus.publish(aula::lcmbus::kClockChannel, &listed);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "");
+  EXPECT_EQ(client.simulatorGone(later), "the simulator stopped (no SIM_CLOCK for 2 s of wall time)");
+
+  auto foreign = tick(kOther, 5, 100000, {"ctl"});
+  foreign.ended = "not ours";
+  bus.publish(aula::lcmbus::kClockChannel, &foreign);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "") << "another simulator's word is not ours";
+
+  auto last = tick(kOurs, 1, 20000, {});
+  last.ended = "lockstep client 'referee' (pid 42) is gone without leaving the run";
+  bus.publish(aula::lcmbus::kClockChannel, &last);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "the simulator ended the run: lockstep client 'referee' (pid 42) is gone without leaving the run");
 }
 
 }  // namespace

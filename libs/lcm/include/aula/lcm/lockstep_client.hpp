@@ -59,6 +59,12 @@ class LockstepClient {
   long long foreignTicks() const { return foreign_ticks_; }
   // The latest tick as received (world name, seed, clients...).
   const aula::sim_clock_t& lastTick() const { return last_tick_; }
+  // Why the simulator this client follows is gone, or "" while it runs (or before it listed this
+  // client): its last tick said it ended the run (sim_clock_t.ended), or it has not ticked for
+  // kSimulatorSilence of wall time (killed, crashed: a running simulator ticks at least every
+  // 100 ms, paused, paced or waiting).
+  static constexpr std::chrono::seconds kSimulatorSilence{2};
+  std::string simulatorGone(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now()) const;
 
  private:
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
@@ -89,6 +95,7 @@ class LockstepClient {
   int64_t last_logged_foreign_ = 0;
   std::chrono::steady_clock::time_point last_foreign_log_{};
   std::chrono::steady_clock::time_point last_register_{};
+  std::chrono::steady_clock::time_point last_clock_{};  // wall time of our simulator's last tick
   std::string expected_world_sha256_, expected_world_path_;
   std::string world_mismatch_;  // set by a tick of another world
 };
