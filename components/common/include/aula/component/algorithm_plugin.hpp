@@ -7,10 +7,16 @@
 //   const char* aula_algorithm_exercise();      // "vacuum", "teletaxi" or "autopark"
 //   <Algorithm>* aula_<exercise>_algorithm_v1(uint64_t seed);  // a new algorithm, owned by the caller
 //
-// The component checks the exercise and the ABI version before it calls the factory. Raise the
-// version whenever an API struct or algorithm interface changes layout.
+// The component checks the exercise and the ABI version before it calls the factory. The
+// version goes with the API's headers (AULA_API_HEADERS in cmake/AulaApi.cmake: the devices, the
+// algorithm interfaces and what they include): their SHA-256, comments and white space left out,
+// is recorded next to it, and the test AlgorithmAbi.TheVersionWasRaisedWhenTheApiHeadersChanged
+// fails when they change. Then raise the version and record the hash the test prints.
+//   1: the first plugins.
+//   2: the first version checked against the hash (the API had changed under 1, issue 30).
 
-#define AULA_ALGORITHM_ABI_VERSION 1
+#define AULA_ALGORITHM_ABI_VERSION 2
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "da255479904072e70c8fd13a18911790bce7da3d6997c91581bc791200ea1fe3"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 namespace aula::component {
