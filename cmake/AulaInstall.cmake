@@ -5,7 +5,7 @@
 #   lib/aula/libaula_sim_view.so   aula-sim --gui's 3D view, opened only with --gui
 #   lib/aula/python/         the Python hosts, one per exercise (--algorithm=PATH.py)
 #   include/aula/            the student API (plain-data devices, the plugin ABI, the three
-#                            *_algorithm.hpp and what they include), the proxies and the
+#                            *_algorithm.hpp and what they include: AULA_API_HEADERS) and the
 #                            generated LCM types
 #   lib/cmake/Aula/          find_package(Aula): Aula::<exercise>_api and aula_add_algorithm
 #   share/aula/              worlds (with models and generators), configs, student templates
@@ -25,36 +25,14 @@ install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
 install(TARGETS aula_world_sdf aula_sim_view LIBRARY DESTINATION lib/aula)
 install(TARGETS aula_teletaxi_python aula_vacuum_python aula_autopark_python LIBRARY DESTINATION lib/aula/python)
 
-# The API a plugin compiles against.
+# The API a plugin compiles against (AULA_API_HEADERS, cmake/AulaApi.cmake). Not the proxies: they
+# feed the devices from Aula's bus, a library a plugin never links.
 set(_src ${PROJECT_SOURCE_DIR})
-install(FILES
-  ${_src}/components/common/include/aula/component/devices.hpp
-  ${_src}/components/common/include/aula/component/algorithm_plugin.hpp
-  ${_src}/components/common/include/aula/component/proxies.hpp
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/component)
-install(DIRECTORY ${_src}/components/vacuum/include/aula/vacuum DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula
-        FILES_MATCHING PATTERN "vacuum_algorithm.hpp")
-install(FILES
-  ${_src}/components/teletaxi/include/aula/teletaxi/taxi_algorithm.hpp
-  ${_src}/components/teletaxi/include/aula/teletaxi/grid.hpp
-  ${_src}/components/teletaxi/include/aula/teletaxi/gradient_field.hpp
-  ${_src}/components/teletaxi/include/aula/teletaxi/path_pilot.hpp
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/teletaxi)
-# The old path of the map transform, for plugins that still include it.
-install(FILES ${_src}/libs/world/include/aula/world/map_transform.hpp DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/world)
-install(FILES
-  ${_src}/components/autopark/include/aula/autopark/autopark_algorithm.hpp
-  ${_src}/components/autopark/include/aula/autopark/slot_detector.hpp
-  ${_src}/components/autopark/include/aula/autopark/street_search.hpp
-  ${_src}/components/autopark/planner/include/aula/autopark/car_geometry.hpp
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/autopark)
-# The shared plane geometry the API headers above are written in.
-install(FILES
-  ${_src}/libs/geometry/include/aula/geometry/angles.hpp
-  ${_src}/libs/geometry/include/aula/geometry/map_transform.hpp
-  ${_src}/libs/geometry/include/aula/geometry/oriented_box.hpp
-  ${_src}/libs/geometry/include/aula/geometry/pose2d.hpp
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/geometry)
+foreach(_entry ${AULA_API_HEADERS})
+  string(REGEX MATCH "^[^:]*" _dir "${_entry}")
+  string(REGEX REPLACE "^[^:]*:" "" _file "${_entry}")
+  install(FILES ${_src}/${_file} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/aula/${_dir})
+endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # find_package(Aula)

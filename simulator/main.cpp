@@ -102,16 +102,19 @@ int runSimulator(int argc, char** argv) {
   }
   const config::Config cfg = simulatorConfig(cl);
   auto options = sim::SimulatorOptions::fromConfig(cfg);
+  // The bus before the world: the clients, started with the simulator, register while it loads.
+  auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
+  sim::Simulator::listenForClients(*bus);
   world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(cl.positional[0], "command line: WORLD"));
   sim::applyStartPoses(cfg, spec);
   takeWorldStep(cfg, spec, options);
-  auto bus = lcmbus::openBus(lcmbus::resolveUrl(cl, cfg));
   process::SignalWatcher signals;
   // --key-fd=N: a graded run's key, from the launcher (docs/grading.md, "What a student's code can do").
   std::optional<auth::Key> key;
   if (cl.flag("key-fd")) key = auth::readKey(static_cast<int>(cl.optionDouble("key-fd", -1)), "--key-fd");
   // --status-fd=N: the launcher's pipe, told why the simulator ended a run early.
   const int status_fd = cl.flag("status-fd") ? static_cast<int>(cl.optionDouble("status-fd", -1)) : -1;
+  options.watch_client_processes = status_fd < 0;  // alone, no launcher watches the processes
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
   // ask (SIM_HELLO, sent as the simulator is built) and listen for one (while the world loads,
   // then up to kListenForOthers in all). A running simulator answers at once with its tick: its
@@ -146,6 +149,8 @@ int runSimulator(int argc, char** argv) {
       const std::string line = "ended " + simulator.endedBecause() + "\n";
       (void)!::write(status_fd, line.data(), line.size());
     }
+    // Then the clients: the launcher knows why before any client can end because of it.
+    simulator.announceEnd();
     return process::kExitFailed;
   }
   return 0;

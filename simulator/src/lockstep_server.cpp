@@ -67,4 +67,10 @@ std::vector<std::string> LockstepServer::clients() const {
   return names;
 }
 
+std::vector<std::pair<std::string, int>> LockstepServer::pids() const {
+  std::vector<std::pair<std::string, int>> out;
+  for (const auto& [name, c] : clients_) out.emplace_back(name, c.pid);
+  return out;
+}
+
 }  // namespace aula::sim

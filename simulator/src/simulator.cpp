@@ -2,14 +2,13 @@
 
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/process/child_process.hpp>
 #include <aula/sim_clock_t.hpp>
 #include <aula/world/obstacle_slice.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -18,6 +17,8 @@
 namespace aula::sim {
 namespace {
 using WallClock = std::chrono::steady_clock;
+constexpr auto kHeartbeat = std::chrono::milliseconds(100);
+constexpr auto kProcessCheckPeriod = std::chrono::milliseconds(100);
 
 int64_t secondsToUs(double s) { return static_cast<int64_t>(std::llround(s * 1e6)); }
 
@@ -79,9 +80,12 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
       instance_(randomInstance()),
       graded_(key.has_value()) {
   // The clock channel first, then the question: a simulator already running on this bus answers
-  // while the world loads.
+  // while the world loads. Nothing is handled before the world is built.
   subscriptions_.push_back(bus_.subscribe(lcmbus::kClockChannel, &Simulator::onClock, this));
   subscriptions_.push_back(bus_.subscribe(lcmbus::kHelloChannel, &Simulator::onHello, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
+  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
   const aula::sim_clock_t hello = tickAt(0);  // before the world is built: seq -1, no clients
   bus_.publish(lcmbus::kHelloChannel, &hello);
   physics_ = std::make_unique<physics::PhysicsWorld>(spec_, options_.step_s);
@@ -97,15 +101,17 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
       drivers_.push_back(std::move(driver));
     }
   }
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kControlChannel, &Simulator::onControl, this));
-  subscriptions_.push_back(
-      bus_.subscribe(lcmbus::kLockstepRegisterChannel, &Simulator::onRegister, this));
-  subscriptions_.push_back(bus_.subscribe(lcmbus::kLockstepAckChannel, &Simulator::onAck, this));
   paused_ = options_.start_paused;
   // A robot may be put anywhere within the world's statics (a metre of margin), or within
   // 1 km of the origin in a world with none.
   bounds_m_ = spec_.statics.empty() ? Eigen::Vector4d(-1000, -1000, 1000, 1000)
                                     : Eigen::Vector4d(world::staticBounds(spec_) + Eigen::Vector4d(-1, -1, 1, 1));
+}
+
+void Simulator::listenForClients(lcmbus::Bus& bus) {
+  for (const char* channel : {lcmbus::kLockstepRegisterChannel, lcmbus::kLockstepAckChannel, lcmbus::kControlChannel}) {
+    bus.listen(channel);
+  }
 }
 
 std::optional<std::string> Simulator::poseProblem(double x_m, double y_m, double yaw_rad) const {
@@ -286,6 +292,7 @@ aula::sim_clock_t Simulator::tickAt(int64_t utime_us) const {
   tick.num_clients = static_cast<int32_t>(tick.clients.size());
   tick.rejected_controls = rejected_controls_;
   tick.instance = instance_;
+  tick.ended = ended_because_;
   return tick;
 }
 
@@ -350,6 +357,8 @@ void Simulator::run(const std::function<bool()>& should_stop, const std::functio
     }
     if (started_) injectDueCommands();
     const auto now = WallClock::now();
+    if (clientProcessGone(now)) break;
+    heartbeat(now, clocks);
     if (repace_) {  // a new pace counts from now, not from the start of the run
       clocks.pace_origin = now;
       clocks.pace_origin_us = physics_->timeUs();
@@ -426,7 +435,7 @@ bool Simulator::awaitLockstepAcks(WallTime now) {
       log(ended_because_ + " (wall): a graded run does not go on without it; the run ends");
       return true;
     }
-    if (c.pid > 0 && (::kill(c.pid, 0) == 0 || errno == EPERM)) {
+    if (c.pid > 0 && !process::processGone(c.pid)) {
       log(std::string(silent) + " (wall): waiting while its process " + std::to_string(c.pid) +
           " lives (stopped in a debugger?)");
       repace_ = true;  // when it resumes, real time counts from then: no rush to catch up
@@ -441,6 +450,33 @@ bool Simulator::awaitLockstepAcks(WallTime now) {
   return true;
 }
 
+bool Simulator::clientProcessGone(WallTime now) {
+  if (!options_.watch_client_processes || now - last_process_check_ < kProcessCheckPeriod) return false;
+  last_process_check_ = now;
+  for (const auto& [client, pid] : lockstep_.pids()) {
+    if (!process::processGone(pid)) continue;
+    lockstep_.leave(client);  // the last ticks no longer list it: its peers see which one is gone
+    ended_because_ = "lockstep client '" + client + "' (pid " + std::to_string(pid) + ") is gone without leaving the run";
+    log(ended_because_ + ": the run ends");
+    return true;
+  }
+  return false;
+}
+
+void Simulator::heartbeat(WallTime now, RunClocks& clocks) {
+  if (!started_ || now - clocks.last_publish < kHeartbeat) return;
+  publishClock();  // the current tick again: a client acks it again, runs nothing
+  clocks.last_publish = now;
+}
+
+void Simulator::announceEnd() {
+  if (ended_because_.empty()) return;
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    publishClock();
+  }
+}
+
 // Real-time factor over the last second of wall time, published in the clock.
 void Simulator::measureRealTimeFactor(RunClocks& clocks) {
   const auto now = WallClock::now();
@@ -453,16 +489,20 @@ void Simulator::measureRealTimeFactor(RunClocks& clocks) {
 }
 
 // Paced in lockstep too: the slowest of the clients and the real-time factor sets the pace.
-void Simulator::paceToRealTime(const RunClocks& clocks, const std::function<bool()>& should_stop) {
+void Simulator::paceToRealTime(RunClocks& clocks, const std::function<bool()>& should_stop) {
   if (options_.real_time_factor <= 0) return;
   const double sim_s = (physics_->timeUs() - clocks.pace_origin_us) / 1e6;
   const auto target = clocks.pace_origin + std::chrono::duration_cast<WallClock::duration>(
                                                std::chrono::duration<double>(sim_s / options_.real_time_factor));
-  // Sleep by waiting on the bus, so commands are handled while we wait.
+  // Sleep by waiting on the bus, so commands are handled while we wait; a slow pace still
+  // ticks every kHeartbeat.
   while (!should_stop()) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(target - WallClock::now());
+    const auto now = WallClock::now();
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(target - now);
     if (left.count() <= 0) break;
-    bus_.handleTimeout(static_cast<int>(left.count()));
+    heartbeat(now, clocks);
+    const auto beat = std::chrono::duration_cast<std::chrono::milliseconds>(clocks.last_publish + kHeartbeat - now);
+    bus_.handleTimeout(static_cast<int>(std::max<long long>(1, std::min(left.count(), beat.count()))));
   }
 }
 

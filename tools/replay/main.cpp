@@ -57,8 +57,9 @@ class Viewers {
       // The viewer shows the replayed referee's clock, not the recorded one's (which the log
       // also plays, and older logs lack): the two talk on a channel of their own.
       argv.push_back("--" + ex.section + ".RefereeStatus.Channel=AULA_REPLAY_REFEREE_STATUS");
+      // Both view a replay: neither ends when the replay's clock pauses (LockstepClient::simulatorGone).
+      argv.push_back("--view-only");
       if (program == ex.component) {
-        argv.push_back("--view-only");
         // The viewer's own episode messages must not reach the referee, which grades the
         // recorded ones: they go to a channel nobody listens to.
         argv.push_back("--" + ex.section + ".Episode.Channel=AULA_REPLAY_VIEWER_EPISODE");

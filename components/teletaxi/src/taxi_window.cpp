@@ -94,7 +94,10 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   });
   connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
-  component_.grid().setShowGridHandler([this] { showGridField(); });
+  // The student's generatePath() calls showGrid() on the algorithm's thread: the window opens on
+  // the GUI's, once the call has returned.
+  component_.grid().setShowGridHandler(
+      [this] { QMetaObject::invokeMethod(this, [this] { showGridField(); }, Qt::QueuedConnection); });
   connect(&timer_, &QTimer::timeout, this, &TaxiWindow::refresh);
   timer_.start(50);
   refresh();
@@ -166,9 +169,8 @@ void TaxiWindow::refresh() {
 
 void TaxiWindow::showGridField() {
   if (grid_window_ == nullptr) {
-    grid_window_ = new QLabel;
+    grid_window_ = new QLabel(this, Qt::Window);  // a window of its own, owned by the main one
     grid_window_->setWindowTitle("Grid Field");
-    grid_window_->setAttribute(Qt::WA_DeleteOnClose, false);
   }
   const QImage field = toQImage(component_.grid().fieldImage());
   grid_window_->setPixmap(QPixmap::fromImage(field.scaled(600, 600, Qt::KeepAspectRatio, Qt::FastTransformation)));

@@ -31,7 +31,8 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   std::vector<std::string> known = {"config", "lcm-url", "headless", "help", "control-fd"};
   known.insert(known.end(), extra_options.begin(), extra_options.end());
   if (exercise != nullptr && exercise->referee == program) known.insert(known.end(), {"replay", "key-fd", "isolation"});
-  if (exercise != nullptr && exercise->component == program) known.push_back("view-only");  // aula replay
+  // aula replay's windows: the component's shows and cannot act; neither watches its peers.
+  if (exercise != nullptr && (exercise->component == program || exercise->referee == program)) known.push_back("view-only");
   ProcessSetup setup;
   setup.program = program;
   setup.command_line = config::CommandLine::parse(argc, argv, takes_value);

@@ -234,7 +234,7 @@ int Bus::handleTimeout(int timeout_ms) {
   return 1;
 }
 
-void Bus::receive(const std::string& channel) {
+void Bus::listen(const std::string& channel) {
   if (!receiver_ || receive_all_) return;
   if (isPattern(channel)) {
     receive_all_ = true;  // a recorder: every channel wakes it, nothing is deferred

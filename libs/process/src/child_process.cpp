@@ -2,9 +2,12 @@
 
 #include "aula/process/cpu_affinity.hpp"
 
+#include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include <fcntl.h>
@@ -24,6 +27,19 @@ int decode(int status) {
 }
 
 }  // namespace
+
+bool processGone(pid_t pid) {
+  if (pid <= 0) return false;
+  if (::kill(pid, 0) != 0) return errno == ESRCH;
+  // /proc/PID/stat: "PID (COMMAND) STATE ...", the command in parentheses may hold spaces.
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  const auto paren = line.rfind(')');
+  if (paren == std::string::npos || paren + 2 >= line.size()) return false;
+  const char state = line[paren + 2];
+  return state == 'Z' || state == 'X';
+}
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
                            const std::string& stderr_path, std::vector<int> pass_fds, Placement placement) {

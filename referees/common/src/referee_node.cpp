@@ -7,6 +7,7 @@
 #include <aula/referee/run_picture.hpp>
 #include <aula/settings/tables.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -19,6 +20,7 @@ RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const worl
       world_sha256_(world.sha256) {
   const settings::Exercise& names = settings::requireExercise(exercise);
   const std::string& p = names.section;
+  component_client_ = names.component;
   outcome_.truth() = TruthGate(run_key);
   rubric_ = rubricReport(cfg, *names.referee_settings, p + ".Referee.Rubric");
   const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
@@ -79,6 +81,17 @@ void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string&
 void RefereeNode::announce(int64_t utime) {
   outcome_.announceOnce(finished(), on_finished_);
   status_->tick(utime, status());
+}
+
+std::string RefereeNode::peersGone() {
+  const aula::sim_clock_t& tick = clock_->lastTick();
+  const bool listed = std::find(tick.clients.begin(), tick.clients.end(), component_client_) != tick.clients.end();
+  component_listed_ = component_listed_ || (listed && clock_->instanceLocked());
+  if (component_listed_ && !listed) {
+    return "the component '" + component_client_ + "' " +
+           (tick.ended.empty() ? "left the run" : "is gone; the simulator ended the run: " + tick.ended);
+  }
+  return clock_->simulatorGone();
 }
 
 void RefereeNode::abort(const std::string& reason) {

@@ -5,10 +5,12 @@
 #include <aula/lcm/lockstep_client.hpp>
 
 #include <aula/lockstep_ack_t.hpp>
+#include <aula/lockstep_register_t.hpp>
 #include <aula/sim_clock_t.hpp>
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -33,6 +35,13 @@ aula::sim_clock_t tick(int64_t instance, int64_t seq, int64_t utime, std::vector
   t.num_clients = static_cast<int32_t>(t.clients.size());
   return t;
 }
+
+struct Registrations {
+  std::vector<std::string> clients;
+  void on(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* msg) {
+    if (!msg->leave) clients.push_back(msg->client);
+  }
+};
 
 void drain(Bus& bus) {
   while (bus.handleTimeout(0) > 0) {
@@ -95,6 +104,59 @@ TEST(LockstepClient, AForeignTickOfAnotherWorldDoesNotStopTheClient) {
   drain(bus);
   EXPECT_NO_THROW(client.poll());  // not "another world": not our simulator at all
   EXPECT_EQ(client.foreignTicks(), 1);
+}
+
+// A simulator started after its clients (it loads DART and the world for tens of ms) says hello:
+// a client not yet listed registers again at once, not at its next re-send 100 ms later; a
+// listed client does not.
+TEST(LockstepClient, RegistersAgainWhenASimulatorSaysHello) {
+  Bus bus("memq://");
+  Registrations registrations;
+  bus.subscribe(aula::lcmbus::kLockstepRegisterChannel, &Registrations::on, &registrations);
+  LockstepClient client(bus, "ctl", 20000, nullptr);
+  drain(bus);
+  ASSERT_EQ(registrations.clients.size(), 1u);  // at its start, before any simulator listened
+
+  auto hello = tick(kOurs, -1, 0, {});
+  bus.publish(aula::lcmbus::kHelloChannel, &hello);
+  drain(bus);
+  EXPECT_EQ(registrations.clients.size(), 2u);
+
+  auto listed = tick(kOurs, 0, 0, {"ctl"});
+  bus.publish(aula::lcmbus::kClockChannel, &listed);
+  drain(bus);
+  ASSERT_TRUE(client.registered());
+  auto another = tick(kOther, -1, 0, {});
+  bus.publish(aula::lcmbus::kHelloChannel, &another);
+  drain(bus);
+  EXPECT_EQ(registrations.clients.size(), 2u);
+}
+
+// The simulator is gone for a client once it has followed it: when its clock has been silent for
+// 2 s of wall time (killed), or at once when its last tick says it ended the run.
+TEST(LockstepClient, KnowsWhenItsSimulatorIsGone) {
+  Bus bus("memq://");
+  LockstepClient client(bus, "ctl", 20000, nullptr);
+  const auto later = std::chrono::steady_clock::now() + LockstepClient::kSimulatorSilence + std::chrono::seconds(1);
+  EXPECT_EQ(client.simulatorGone(later), "") << "no simulator yet: it waits for one";
+
+  auto listed = tick(kOurs, 0, 0, {"ctl"});
+  bus.publish(aula::lcmbus::kClockChannel, &listed);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "");
+  EXPECT_EQ(client.simulatorGone(later), "the simulator stopped (no SIM_CLOCK for 2 s of wall time)");
+
+  auto foreign = tick(kOther, 5, 100000, {"ctl"});
+  foreign.ended = "not ours";
+  bus.publish(aula::lcmbus::kClockChannel, &foreign);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "") << "another simulator's word is not ours";
+
+  auto last = tick(kOurs, 1, 20000, {});
+  last.ended = "lockstep client 'referee' (pid 42) is gone without leaving the run";
+  bus.publish(aula::lcmbus::kClockChannel, &last);
+  drain(bus);
+  EXPECT_EQ(client.simulatorGone(), "the simulator ended the run: lockstep client 'referee' (pid 42) is gone without leaving the run");
 }
 
 }  // namespace

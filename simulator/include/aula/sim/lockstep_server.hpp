@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aula::sim {
@@ -38,6 +39,8 @@ class LockstepServer {
   void resetSchedule();
 
   std::vector<std::string> clients() const;
+  // Each client's process id as it registered (0: unknown).
+  std::vector<std::pair<std::string, int>> pids() const;
   std::size_t size() const { return clients_.size(); }
 
  private:

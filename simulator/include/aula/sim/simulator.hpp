@@ -43,6 +43,10 @@ struct SimulatorOptions {
   std::chrono::milliseconds lockstep_drop{5000};
   double duration_s = 0.0;           // stop after this much sim time; 0 = run until stopped
   bool start_paused = false;
+  // Alone (three terminals: no launcher watches the processes): a client whose process is gone
+  // without leaving (killed, crashed) ends the run. Under the launcher (aula-sim --status-fd) it
+  // watches its children itself and tells the referee why.
+  bool watch_client_processes = false;
 
   // Reads Simulator.* keys; throws config::ConfigError.
   static SimulatorOptions fromConfig(const config::Config& cfg);
@@ -62,6 +66,10 @@ class Simulator {
             std::optional<auth::Key> key = std::nullopt);
   ~Simulator();
   Simulator(const Simulator&) = delete;
+  // Before the world loads: what the clients send (registrations, acks, controls) waits in the
+  // socket until the simulator handles the bus, instead of being dropped by its filter (a client
+  // re-sends its registration only 100 ms later: every run would start that much later).
+  static void listenForClients(lcmbus::Bus& bus);
   Simulator& operator=(const Simulator&) = delete;
 
   // Runs until `should_stop()` returns true or duration_s is reached. `frame`, if given, runs
@@ -92,9 +100,13 @@ class Simulator {
   std::optional<aula::sim_clock_t> otherSimulatorUntil(std::chrono::steady_clock::time_point until);
   // Ticks of another instance heard on the clock channel (another simulator, or a forgery).
   long long foreignTicks() const { return foreign_ticks_; }
-  // Why the simulator ended a graded run before its end ("lockstep client 'vacuum-cleaner'
-  // silent for 5.0 s"), or "": run() has returned then, and nothing more is published.
+  // Why the simulator ended the run before its end ("lockstep client 'vacuum-cleaner' silent for
+  // 5.0 s" in a graded run; "lockstep client 'teletaxi' (pid 4242) is gone without leaving the
+  // run" when watch_client_processes), or "": run() has returned then.
   const std::string& endedBecause() const { return ended_because_; }
+  // After run() ended the run early: the last ticks, which say why (sim_clock_t.ended), for the
+  // clients. Three of them 10 ms apart; a client that misses all three sees the clock stop.
+  void announceEnd();
 
   // Why a SET_POSE to (x, y, yaw) cannot be done, or nullopt.
   std::optional<std::string> poseProblem(double x_m, double y_m, double yaw_rad) const;
@@ -123,8 +135,13 @@ class Simulator {
   bool startIfReady(WallTime now, RunClocks& clocks);
   bool holdWhilePausedOrWaiting(WallTime now, RunClocks& clocks);
   bool awaitLockstepAcks(WallTime now);
+  // watch_client_processes: true (and the reason in ended_because_) once a client's process is gone.
+  bool clientProcessGone(WallTime now);
+  // The clock at least every kHeartbeat of wall time, whatever the pace: a client that hears
+  // nothing for seconds knows the simulator is gone (LockstepClient::simulatorGone).
+  void heartbeat(WallTime now, RunClocks& clocks);
   void measureRealTimeFactor(RunClocks& clocks);
-  void paceToRealTime(const RunClocks& clocks, const std::function<bool()>& should_stop);
+  void paceToRealTime(RunClocks& clocks, const std::function<bool()>& should_stop);
   const geometry::Raycaster2D* raycasterAt(double z_m);
   void log(const std::string& line) const;
 
@@ -156,6 +173,7 @@ class Simulator {
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
   bool graded_ = false;       // a run key: no client is ever dropped, a silent one ends the run
   std::string ended_because_;
+  std::chrono::steady_clock::time_point last_process_check_{};
 };
 
 }  // namespace aula::sim

@@ -7,8 +7,14 @@
 //   const char* aula_algorithm_exercise();      // "vacuum", "teletaxi" or "autopark"
 //   <Algorithm>* aula_<exercise>_algorithm_v1(uint64_t seed);  // a new algorithm, owned by the caller
 //
-// The component checks the exercise and the ABI version before it calls the factory. Raise the
-// version whenever an API struct or algorithm interface changes layout.
+// The component checks the exercise and the ABI version before it calls the factory. The
+// version goes with the API's headers (AULA_API_HEADERS in cmake/AulaApi.cmake: the devices, the
+// algorithm interfaces and what they include): their SHA-256, comments and white space left out,
+// is recorded next to it, and the test AlgorithmAbi.TheVersionWasRaisedWhenTheApiHeadersChanged
+// fails when they change. Then raise the version and record the hash the test prints.
+//   1: the first plugins.
+//   2: the first version checked against the hash (the API had changed under 1, issue 30).
+//   3: the Python hosts (the laser keeps its buffers, issue 31).
 //
 // A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
 // Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
@@ -17,7 +23,8 @@
 //   const char* aula_python_set_file(const char* path);  // the .py its factory loads; error text or nullptr
 //   void        aula_python_interrupt(const char* why);  // raises inside a call that overran its budget
 
-#define AULA_ALGORITHM_ABI_VERSION 1
+#define AULA_ALGORITHM_ABI_VERSION 3
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "3cb36cbf89be7e9393509bd26ca2a1ef978a464ea34a5d7314c9af654f9eb067"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 #include <stdexcept>

@@ -27,6 +27,7 @@ class ControlLoop {
   bool clockSeen() const { return client_.clockSeen(); }
   int64_t periodUs() const { return period_us_; }
   int64_t seed() const { return client_.lastTick().seed; }  // the run's seed (from SIM_CLOCK)
+  std::string simulatorGone() const { return client_.simulatorGone(); }  // LockstepClient's
   // Optional hook after every due tick, running or not (GUI model updates, recorders).
   void setOnTick(std::function<void(int64_t utime)> hook) { on_tick_ = std::move(hook); }
 

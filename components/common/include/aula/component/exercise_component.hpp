@@ -75,6 +75,8 @@ class ExerciseComponent {
   void containHangs() { host_->containHangs(); }
   void poll() { loop_->poll(); }  // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
+  // Why the simulator is gone (it ended the run, or its clock stopped), or "" (LockstepClient's).
+  std::string simulatorGone() const { return loop_->simulatorGone(); }
 
   int generation() const { return episode_->generation(); }
   lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)

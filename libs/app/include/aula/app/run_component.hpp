@@ -3,7 +3,12 @@
 // runs the algorithm on sim time) until a signal. With a display: the component's window.
 // Either way the component leaves the lockstep at the end, so the simulator never waits for it.
 //
-// Component needs poll(), leave(), containHangs(), algorithm().hung(); Window needs Window(Component&).
+// The simulator gone (it ended the run, or its clock stopped: killed in its terminal), the
+// component says why and ends, exit code 1, windows or not; a replay's viewer (--view-only) does
+// not watch, since a replay pauses and ends.
+//
+// Component needs poll(), leave(), containHangs(), algorithm().hung(), simulatorGone(); Window needs
+// Window(Component&).
 // A component that can find once running that its task is impossible (TeleTaxi: a destination the
 // taxi cannot reach from where it stands) also has `std::optional<std::string> refusal() const`:
 // headless, the process then ends with the reason as a ConfigError (exit code 2); the window
@@ -11,7 +16,9 @@
 // screenshot(window, png_path) arranges `--screenshot=FILE.png` (returns false if it cannot).
 
 #include <aula/app/bus_pump.hpp>
+#include <aula/app/main_window.hpp>
 #include <aula/app/process_setup.hpp>
+#include <aula/process/exit_codes.hpp>
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -42,18 +49,37 @@ std::optional<std::string> refusalOf(const Component& component) {
   }
 }
 
+// Why the component cannot go on without its simulator, or "" (always "" for a replay's viewer).
+template <class Component>
+std::string simulatorGoneFor(const ProcessSetup& setup, const Component& component) {
+  return setup.command_line.flag("view-only") ? std::string() : component.simulatorGone();
+}
+
+inline int endWithoutSimulator(const ProcessSetup& setup, const std::string& why) {
+  std::cerr << setup.program << ": " << why << ": the component ends" << std::endl;
+  return process::kExitFailed;
+}
+
 template <class Window, class Component, class Screenshot>
 int runComponent(ProcessSetup& setup, Component& component, int argc, char** argv, Screenshot screenshot) {
   if (setup.headless) {
-    runHeadless(*setup.bus, [&] { return refusalOf(component).has_value(); }, [&] { component.poll(); });
+    std::string gone;
+    runHeadless(*setup.bus, [&] { return refusalOf(component).has_value() || !gone.empty(); }, [&] {
+      component.poll();
+      gone = simulatorGoneFor(setup, component);
+    });
     component.leave();
     if (const auto why = refusalOf(component)) throw config::ConfigError(*why);
-    return 0;
+    return gone.empty() ? 0 : endWithoutSimulator(setup, gone);
   }
   QApplication app(argc, argv);
   component.containHangs();  // a hung execute() halts the algorithm; the window stays
   Window window(component);
-  BusPump pump(*setup.bus, [&] { component.poll(); });
+  std::string gone;
+  BusPump pump(*setup.bus, [&] {
+    component.poll();
+    if (gone.empty() && !(gone = simulatorGoneFor(setup, component)).empty()) QCoreApplication::exit(process::kExitFailed);
+  });
   if (setup.command_line.flag("view-only")) {
     // A replay (aula replay): the window shows what it is sent, and nothing in it can act.
     for (QWidget* w : window.template findChildren<QWidget*>()) {
@@ -63,6 +89,7 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     }
     window.setWindowTitle(window.windowTitle() + " - replay, view only");
   }
+  quitWhenClosed(window);
   window.show();
   int code = 1;
   if (!setup.command_line.flag("screenshot") ||
@@ -70,6 +97,7 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     code = app.exec();
   }
   component.leave();
+  if (!gone.empty()) code = endWithoutSimulator(setup, gone);
   if (component.algorithm().hung()) {
     // A call into the student's code is still running on its thread, in the algorithm, the
     // plugin and the devices: nothing may be destroyed under it.

@@ -7,20 +7,26 @@
 // order, through the same handlers, to the end of the episode; a log that ends first exits 1.
 //
 // The launcher's `--control-fd` pipe can end the run early ("abort <reason>"): the node grades
-// what it has and says why; such a run exits 1 (it did not finish).
+// what it has and says why; such a run exits 1 (it did not finish). Without a launcher (three
+// terminals) the referee watches its peers itself (Node::peersGone: the component left or died,
+// the simulator ended the run or stopped) and ends the same way. With a window, a run ended early
+// ends the process too (the report is written, the terminal says why): the launcher then stops
+// the rest. A replay's window (--view-only, `aula replay`) watches nothing: a replay pauses and ends.
 //
 // `--picture=FILE.png` writes the referee's picture of the run (drawn headless with OpenCV, for
 // the teacher's grading report) at the same moment as the report; `--trace=FILE.json` the
 // run's trace for the grading page's player (aula/referee/run_trace.hpp).
 //
-// Node needs finished(), endedEarly(), abort(reason), poll(), leave(), deferSensorWakeUps(bus), summary(), report(),
-// writePicture(path), writeTrace(path), setOnFinished(hook);
+// Node needs finished(), endedEarly(), abort(reason), aborted(), poll(), peersGone(), leave(), deferSensorWakeUps(bus), summary(),
+// report(), writePicture(path), writeTrace(path), setOnFinished(hook);
 // Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
 
 #include <aula/app/bus_pump.hpp>
+#include <aula/app/main_window.hpp>
 #include <aula/app/process_setup.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/lcm/log_replay.hpp>
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/line_pipe.hpp>
 
 #include <QApplication>
@@ -59,9 +65,22 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
       if (line == "discard") discard = true;
     }
   };
-  auto housekeeping = [&] {
+  // Alone, a peer gone ends the run (graded so far); true once the run cannot go on.
+  const bool watch_peers = !setup.command_line.flag("control-fd") && !setup.command_line.flag("view-only");
+  auto peersGone = [&] {
+    if (!watch_peers) return false;
+    const std::string why = node.peersGone();
+    if (why.empty()) return false;
+    if (!node.finished()) {
+      std::cerr << setup.program << ": " << why << ": the run ends" << std::endl;
+      node.abort(why);
+    }
+    return true;
+  };
+  auto housekeeping = [&] {  // true once a peer is gone
     node.poll();
     readControl();
+    return peersGone();
   };
   auto finish = [&] {
     readControl();
@@ -101,11 +120,16 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   }
   QApplication app(argc, argv);
   Window window(node);
-  BusPump pump(*setup.bus, housekeeping);
+  BusPump pump(*setup.bus, [&] {
+    const bool gone = housekeeping();
+    if (node.aborted()) QCoreApplication::exit(process::kExitFailed);
+    else if (gone) QCoreApplication::exit(0);  // graded to the end before its peers went
+  });
   node.setOnFinished([&] {
     window.showMark();
     finish();
   });
+  quitWhenClosed(window);
   window.show();
   if (setup.command_line.flag("screenshot")) {
     window.screenshotWhenFinished(QString::fromStdString(setup.command_line.option("screenshot")));

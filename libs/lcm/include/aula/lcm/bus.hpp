@@ -123,10 +123,14 @@ class Bus {
   lcm::Subscription* subscribe(const std::string& channel, SubscribeArgs&&... args) {
     lcm::Subscription* subscription = subscriptions().subscribe(channel, std::forward<SubscribeArgs>(args)...);
     if (subscription != nullptr) subscription->setQueueCapacity(kQueueCapacity);
-    receive(channel);
+    listen(channel);
     return subscription;
   }
   void unsubscribe(lcm::Subscription* subscription) { subscriptions().unsubscribe(subscription); }
+  // Lets `channel` through the socket filter now, before anything subscribes to it: its messages
+  // wait in the socket, in order, until handle() hands them to the subscriptions made by then (the
+  // simulator's clients register while it loads its world). subscribe() does it too.
+  void listen(const std::string& channel);
 
   // Waits for the next message and hands it to its subscriptions: 0, or -1 on an error or a
   // signal.
@@ -157,7 +161,6 @@ class Bus {
   std::vector<uint8_t>& holdSlot(const std::string& channel);
   void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
-  void receive(const std::string& channel);
   void updateFilters();   // the receiver's socket filters: channels_, then the doorbell's
   void updateDoorbell();  // what wakes the process: channels_ but deferred_, ticks from the gate
 

@@ -5,7 +5,8 @@
 // tick's utime must acknowledge it (after handling the sensor data published before the tick
 // and publishing its own outputs); until every due client has acked, the world does not
 // advance. Registration and acks are re-sent after a short wall-clock wait, so one lost UDP
-// packet never stalls a run.
+// packet never stalls a run; a simulator that starts after the client (its SIM_HELLO) is sent the
+// registration again at once.
 
 #include <aula/sim_clock_t.hpp>
 
@@ -58,15 +59,23 @@ class LockstepClient {
   long long foreignTicks() const { return foreign_ticks_; }
   // The latest tick as received (world name, seed, clients...).
   const aula::sim_clock_t& lastTick() const { return last_tick_; }
+  // Why the simulator this client follows is gone, or "" while it runs (or before it listed this
+  // client): its last tick said it ended the run (sim_clock_t.ended), or it has not ticked for
+  // kSimulatorSilence of wall time (killed, crashed: a running simulator ticks at least every
+  // 100 ms, paused, paced or waiting).
+  static constexpr std::chrono::seconds kSimulatorSilence{2};
+  std::string simulatorGone(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now()) const;
 
  private:
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
+  void onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello);
   void sendRegister(bool leave);
   void noteForeignTick(const aula::sim_clock_t& tick);
   void sendAck(int64_t seq, int64_t utime);
 
   lcmbus::Bus& bus_;
   lcm::Subscription* subscription_ = nullptr;
+  lcm::Subscription* hello_subscription_ = nullptr;
   std::string name_;
   int64_t period_us_;
   TickHandler on_tick_;
@@ -86,6 +95,7 @@ class LockstepClient {
   int64_t last_logged_foreign_ = 0;
   std::chrono::steady_clock::time_point last_foreign_log_{};
   std::chrono::steady_clock::time_point last_register_{};
+  std::chrono::steady_clock::time_point last_clock_{};  // wall time of our simulator's last tick
   std::string expected_world_sha256_, expected_world_path_;
   std::string world_mismatch_;  // set by a tick of another world
 };

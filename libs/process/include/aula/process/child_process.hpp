@@ -17,6 +17,11 @@ struct Placement {
   bool batch = false;  // SCHED_BATCH: woken, it does not preempt the one that woke it
 };
 
+// True when no process `pid` runs on this machine: none has that id, or it has exited and waits
+// to be reaped (a zombie: its parent, a shell or a test, has not looked yet). One this process
+// may not signal (EPERM) runs. `pid` <= 0 (unknown) is never gone.
+bool processGone(pid_t pid);
+
 class ChildProcess {
  public:
   // argv[0] is the program (a path or a name on PATH). stdout/stderr go to the given files

@@ -41,6 +41,7 @@ class RefereeNode {
   bool endedEarly() const { return outcome_.ended(); }
   // The launcher says the run cannot go on (a process died...): grade what there is, and end.
   void abort(const std::string& reason);
+  bool aborted() const { return !outcome_.aborted().empty(); }
   Report report() const;
   std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
   void writePicture(const std::string& png_path) const;                        // --picture
@@ -48,6 +49,10 @@ class RefereeNode {
   std::string traceJson() const;
   void writeTrace(const std::string& json_path) const;
   void poll() { clock_->poll(); }
+  // Alone (three terminals, no launcher): why the run cannot go on, or "". The component, once
+  // listed in the simulator's ticks, is no longer (it left, or its process ended and the
+  // simulator ended the run), or the simulator is gone (LockstepClient::simulatorGone).
+  std::string peersGone();
   // Headless: the simulator's truth (pose, bumper) no longer wakes this process at every tick; it
   // is read, in order, when the referee's own tick (or anything else) wakes it (Bus::deferWakeUps).
   void deferSensorWakeUps(lcmbus::Bus& bus) const;
@@ -100,6 +105,8 @@ class RefereeNode {
   void announce(int64_t utime);  // the end once to the window, the status to the component
 
   std::string exercise_, robot_name_;
+  std::string component_client_;  // the component's lockstep client ("teletaxi")
+  bool component_listed_ = false;  // seen in a tick's clients
   std::string pose_channel_, bumper_channel_;
   std::string world_file_, world_sha256_;  // the file name and its content's hash
   Report rubric_;                          // the report's "rubric": the preset and its numbers
