@@ -39,8 +39,7 @@ run "set -e
   '$work/prefix/bin/aula' run $exercise --headless --algorithm='$work/student/build/libmy_algorithm.so' \
       --report=r.json --lcm-url='udpm://239.255.76.67:$port?ttl=0' \
       $short >'$work/out.txt' 2>&1 || true
-  mkdir '$work/student_py'
-  cp '$work/prefix/share/aula/templates/$exercise/MyAlgorithm.py' '$work/student_py/'
+  '$work/prefix/bin/aula' new $exercise '$work/student_py' --python >'$work/new_py.txt' 2>&1
   '$work/prefix/bin/aula' run $exercise --headless --algorithm='$work/student_py/MyAlgorithm.py' \
       --report=py.json --lcm-url='udpm://239.255.76.67:$port?ttl=0' \
       $short >'$work/py_out.txt' 2>&1 || true
@@ -56,7 +55,10 @@ if [ ! -s "$work/py.json" ] || ! grep -q '"algorithm": "MyAlgorithm.py"' "$work/
 fi
 for stub in "aula_$exercise.pyi" aula_devices.pyi; do
   test -s "$work/prefix/share/aula/templates/$exercise/$stub" || { echo "no $stub installed"; exit 1; }
+  test -s "$work/student_py/$stub" || { echo "aula new --python wrote no $stub:"; cat "$work/new_py.txt"; exit 1; }
 done
+# The README aula new writes carries the exercise's student page, as installed.
+grep -q "a student's page" "$work/student_py/README.md" || { echo "aula new's README lacks the student page:"; cat "$work/student_py/README.md"; exit 1; }
 if grep -rq -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; then
   echo "an installed binary names the source or build tree:"; grep -rl -- "$src\|$build" "$work/prefix/bin" "$work/prefix/lib/aula"; exit 1
 fi

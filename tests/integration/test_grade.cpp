@@ -114,7 +114,7 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   // Beside the mark, the raw measure the referee's report names (its "measures").
   EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
             "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,failures,"
-            "aula_version");
+            "language,aula_version");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;
@@ -171,6 +171,52 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   const std::string second = readFile((dir / "grade2.txt").string());
   EXPECT_NE(second.find("8 runs already done"), std::string::npos) << second;
   EXPECT_EQ(readFile((out / "grades.csv").string()), first_csv);
+  fs::remove_all(dir);
+}
+
+// A class as it comes: two Python and two C++ students, one of each broken, an empty
+// MyAlgorithm.cpp, a folder with no submission and a link to /etc. Every row of grades.csv is
+// there, each failure with its own whole reason, and each row names its language.
+TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
+  const fs::path dir = privateDir();
+  const fs::path subs = dir / "submissions";
+  const std::string data = AULA_TEST_DATA_DIR;
+  writeFile(subs / "py_bounce" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
+  writeFile(subs / "py_raises" / "MyAlgorithm.py", readFile(data + "/python/raises/MyAlgorithm.py"));
+  writeFile(subs / "cpp_bounce" / "MyAlgorithm.cpp", readFile(data + "/plugins/vacuum_bounce.cpp"));
+  writeFile(subs / "cpp_broken" / "MyAlgorithm.cpp", "#include <aula/vacuum/vacuum_algorithm.hpp>\nint broken( { return 0; }\n");
+  writeFile(subs / "empty_cpp" / "MyAlgorithm.cpp", "");
+  fs::create_directories(subs / "nothing");
+  fs::create_directory_symlink("/etc", subs / "etc_link");
+  std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
+  for (const char* name : {"py_bounce", "py_raises", "cpp_bounce", "cpp_broken", "empty_cpp", "nothing", "etc_link"}) {
+    grade.push_back((subs / name).string());
+  }
+  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), kShortRun});
+  ASSERT_EQ(runToEnd(grade, (dir / "grade.txt").string(), 300), 0) << readFile((dir / "grade.txt").string());
+  auto rows = readGrades((dir / "out" / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 7u) << readFile((dir / "out" / "grades.csv").string());
+  const std::map<std::string, std::pair<std::string, std::string>> expected = {
+      {"py_bounce", {"Python", ""}},
+      {"cpp_bounce", {"C++", ""}},
+      {"py_raises", {"Python", "MyAlgorithm.py:"}},
+      {"cpp_broken", {"C++", "did not compile: "}},
+      {"empty_cpp", {"C++", "undefined symbol"}},
+      {"nothing", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}},
+      {"etc_link", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}}};
+  for (const auto& [student, want] : expected) {
+    SCOPED_TRACE(student);
+    EXPECT_EQ(rows[student]["language"], want.first);
+    if (want.second.empty()) {
+      EXPECT_EQ(rows[student]["failures"], "");
+      EXPECT_GT(std::stod(rows[student]["median"]), 0.0);
+    } else {
+      EXPECT_NE(rows[student]["failures"].find(want.second), std::string::npos) << rows[student]["failures"];
+      EXPECT_EQ(rows[student]["failures"].find("the reason is above"), std::string::npos) << rows[student]["failures"];
+    }
+  }
+  // One API: the Python bounce is the C++ bounce, mark for mark.
+  EXPECT_EQ(rows["py_bounce"]["median"], rows["cpp_bounce"]["median"]);
   fs::remove_all(dir);
 }
 

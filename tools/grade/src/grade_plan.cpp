@@ -117,6 +117,12 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
         ++next;
         continue;
       }
+      if (!fs::is_regular_file(fs::path(s.folder) / "MyAlgorithm.cpp")) {  // nothing to grade: a row, mark 0
+        s.compile_error = "no MyAlgorithm.py or MyAlgorithm.cpp in " + s.folder;
+        s.language = "";
+        ++next;
+        continue;
+      }
       s.plugin = writeBuildProject(s, request.exercise, aula_prefix, project);
       const std::string build = (project / "build").string();
       const std::string log = (project / "compile.log").string();
@@ -167,6 +173,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.plugin = s.plugin;
         r.plugin_sha256 = s.plugin_sha256;
         r.compile_error = s.compile_error;
+        r.language = s.language;
         r.wall_limit_s = request.wall_limit_s;
         const fs::path stem = fs::path(request.out_dir) / "runs" / s.student /
                               (fs::path(world_path).stem().string() + "-seed" + std::to_string(seed));
@@ -204,6 +211,7 @@ nlohmann::ordered_json Manifest::toJson() const {
                             {"seed", r.seed},
                             {"plugin", r.plugin},
                             {"plugin_sha256", r.plugin_sha256},
+                            {"language", r.language},
                             {"compile_error", r.compile_error},
                             {"command", r.argv},
                             {"result", r.result_path},
@@ -228,6 +236,7 @@ Manifest Manifest::fromJson(const nlohmann::json& json) {
     r.plugin = j.at("plugin").get<std::string>();
     r.plugin_sha256 = j.at("plugin_sha256").get<std::string>();
     r.compile_error = j.at("compile_error").get<std::string>();
+    r.language = j.value("language", std::string("C++"));
     r.argv = j.at("command").get<std::vector<std::string>>();
     r.result_path = j.at("result").get<std::string>();
     r.report_path = j.at("report").get<std::string>();

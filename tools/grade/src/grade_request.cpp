@@ -84,10 +84,10 @@ GradeRequest parseRequest(const GradeOptions& options) {
   for (const std::string& given : options.submissions) {
     const fs::path folder = fs::absolute(given).lexically_normal();
     const std::string student = (folder.has_filename() ? folder : folder.parent_path()).filename().string();
+    // A typo of the teacher's stops the grade; a student's folder without a submission (empty, a
+    // link elsewhere) is that student's row ("no MyAlgorithm.py or MyAlgorithm.cpp").
+    if (!fs::exists(folder)) throw ConfigError("aula grade: submission " + given + ": not a folder (there is no such path)");
     if (!fs::is_directory(folder)) throw ConfigError("aula grade: submission " + given + ": not a folder");
-    if (!fs::is_regular_file(folder / "MyAlgorithm.cpp")) {
-      throw ConfigError("aula grade: submission " + given + ": no MyAlgorithm.cpp in it");
-    }
     if (!students.insert(student).second) {
       throw ConfigError("aula grade: two submissions are named '" + student + "' (a student is named after the folder)");
     }

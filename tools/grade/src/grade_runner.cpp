@@ -40,6 +40,20 @@ std::string lastLine(const std::string& log_path) {
   return last;
 }
 
+// Why a run was refused (exit 2): the last line a process said that is its own error, not the
+// launcher's or the referee's account of it ("no mark: the run never started (the reason is
+// above)", "aula: ... exited with code 2") nor a process's world line.
+std::string refusalOf(const std::string& log_path) {
+  std::ifstream in(log_path);
+  std::string line, reason;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.rfind("aula", 0) == 0 || line.rfind("no mark:", 0) == 0) continue;
+    if (line.find(": world ") != std::string::npos) continue;
+    reason = line;
+  }
+  return reason.empty() ? lastLine(log_path) : reason;
+}
+
 // The run's result: the referee's report (when there is one) plus who ran, on what, how long,
 // and why it failed.
 nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_code, bool timed_out, double wall_s) {
@@ -55,6 +69,7 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
     result["algorithm"] = run.plugin.empty() ? "" : fs::path(run.plugin).filename().string();
   }
   result["student"] = run.student;
+  result["language"] = run.language;
   if (!result.contains("world")) result["world"] = run.world_name;
   result["plugin_sha256"] = run.plugin_sha256;
   result["wall_time_s"] = std::round(wall_s * 100) / 100;
@@ -69,7 +84,7 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   } else if (result.contains("aborted")) {
     failure = result["aborted"].get<std::string>();
   } else if (exit_code && *exit_code == 2) {
-    failure = "refused: " + lastLine(run.log_path);
+    failure = "refused: " + refusalOf(run.log_path);
   } else if (!exit_code || *exit_code != 0 || !fs::exists(run.report_path)) {
     failure = "the run failed (exit " + (exit_code ? std::to_string(*exit_code) : std::string("?")) +
               "): " + lastLine(run.log_path);

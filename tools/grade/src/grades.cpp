@@ -79,6 +79,7 @@ namespace {
 
 // One student's runs, as they are read.
 struct Runs {
+  std::string language;
   std::vector<double> marks;
   std::map<std::string, std::vector<double>> by_world;
   std::map<std::string, std::vector<double>> by_measure;
@@ -93,6 +94,7 @@ struct Runs {
 void addRun(const nlohmann::json& r, Runs& runs, std::set<std::string>& worlds, std::vector<std::string>& measures) {
   const double mark = r.value("mark", 0.0);
   const std::string world = worldStem(r.value("world", "?"));
+  if (runs.language.empty()) runs.language = r.value("language", std::string());
   worlds.insert(world);
   runs.marks.push_back(mark);
   runs.by_world[world].push_back(mark);
@@ -115,6 +117,7 @@ StudentGrade gradeOf(const std::string& student, Runs& runs, const std::set<std:
                      const std::vector<std::string>& measures) {
   StudentGrade g;
   g.student = student;
+  g.language = runs.language;
   g.median = median(runs.marks);
   g.min = *std::min_element(runs.marks.begin(), runs.marks.end());
   g.max = *std::max_element(runs.marks.begin(), runs.marks.end());
@@ -155,12 +158,12 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
     for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
-  csv += ",runs,runs_failed,runs_tampered,failures,aula_version\n";
+  csv += ",runs,runs_failed,runs_tampered,failures,language,aula_version\n";
   for (const StudentGrade& g : grades) {
     csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
     for (const auto& [measure, value] : g.measure_medians) csv += "," + number(value);
-    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "," + kVersion + "\n";
+    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "," + csvField(g.language) + "," + kVersion + "\n";
   }
   return csv;
 }

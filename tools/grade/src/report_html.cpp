@@ -191,7 +191,7 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
     for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escapeHtml(world) << "</th>";
     for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escapeHtml(measure) << "</th>";
   }
-  html << "<th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
+  html << "<th>language</th><th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
   for (const auto& g : grades) {
     const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0;
     html << "<tr data-student='" << escapeHtml(g.student) << "'" << (is_flagged ? " class='flagged'" : "")
@@ -200,7 +200,7 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
          << number(g.max) << "</td>";
     for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
     for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
-    html << "<td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
+    html << "<td>" << escapeHtml(g.language) << "</td><td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
          << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
   }
   html << "</tbody></table>\n";

@@ -188,7 +188,7 @@ class RunSupervisor {
     event.referee_told = told_referee_;
     event.simulator_ended_run = simulator_ended_run_;
     event.last_child = i + 1 == children_.size();
-    const std::string name = programName(children_[i]->name());
+    const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
     const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);
     if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
     if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";

@@ -69,6 +69,7 @@ struct PlannedRun {
   std::string student, world_name, world_sha256;  // world_name: the file's name ("vacuum.world")
   long long seed = 0;
   std::string plugin, plugin_sha256, compile_error;
+  std::string language;  // the submission's: "C++", "Python" or "" (none)
   std::vector<std::string> argv;  // the exact command ("" when the plugin did not compile)
   std::string result_path;        // runs/<student>/<world>-seed<k>.json
   std::string report_path;        // where the referee writes its own report

@@ -13,6 +13,7 @@ namespace aula::grade {
 
 struct StudentGrade {
   std::string student;
+  std::string language;  // "C++", "Python", or "" when there was nothing to run
   double median = 0, min = 0, max = 0;
   std::vector<std::pair<std::string, double>> world_medians;  // by world name
   // By measure ("coverage_percent"), in the order the reports name them; NaN when no run has it.
