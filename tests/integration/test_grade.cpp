@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -217,6 +218,82 @@ TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
   }
   // One API: the Python bounce is the C++ bounce, mark for mark.
   EXPECT_EQ(rows["py_bounce"]["median"], rows["cpp_bounce"]["median"]);
+  fs::remove_all(dir);
+}
+
+// Similar work in a class of six: a renamed and reordered copy of a C++ bounce is flagged on its
+// code, the bounce's Python transliteration on its behaviour (the same path on the same seed),
+// and three independent solutions are flagged with nobody. Marks are never changed.
+std::string disguise(std::string source) {
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"Bounce", "Roomba"}, {"phase_start_", "since_"}, {"phase_", "state_"}, {"turns_", "count_"},
+           {"target_", "goal_"}, {"front_mm", "ahead"}, {"beamAt", "rangeToward"}, {"wrap", "normalize"},
+           {"scan", "sweep"}, {"yaw", "heading"}, {"error", "miss"}, {"side", "dir"}, {"t_", "clock_"}}) {
+    source = std::regex_replace(source, std::regex("\\b" + from + "\\b"), to);
+  }
+  source = std::regex_replace(source, std::regex("//[^\n]*"), "");  // other comments
+  // The class's parts reordered: its private part first.
+  const size_t pub = source.find(" public:\n"), priv = source.find(" private:\n"), end = source.find("};\n", priv);
+  return source.substr(0, pub) + source.substr(priv, end - priv) + source.substr(pub, priv - pub) + source.substr(end);
+}
+
+TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
+  const fs::path dir = privateDir();
+  const fs::path subs = dir / "class";
+  const std::string data = AULA_TEST_DATA_DIR;
+  const std::string bounce = readFile(data + "/plugins/vacuum_bounce.cpp");
+  writeFile(subs / "ana" / "MyAlgorithm.cpp", bounce);
+  writeFile(subs / "ben" / "MyAlgorithm.cpp", disguise(bounce));
+  writeFile(subs / "carla" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
+  writeFile(subs / "dani" / "MyAlgorithm.cpp",
+            readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/RoombaReference.cpp") +
+                "\nnamespace aula::vacuum {\n"
+                "std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return makeReferenceAlgorithm(seed); }\n"
+                "}  // namespace aula::vacuum\n");
+  writeFile(subs / "eli" / "MyAlgorithm.cpp",
+            "#include <aula/vacuum/vacuum_algorithm.hpp>\nnamespace aula::vacuum {\nclass Spiral : public VacuumAlgorithm {\n"
+            " public:\n  void execute(VacuumApi& api) override {\n    elapsed_s_ += api.period_s;\n"
+            "    if (api.bumper.getBumperData().state == 1) back_until_s_ = elapsed_s_ + 1.0;\n"
+            "    const bool back = elapsed_s_ < back_until_s_;\n    api.motors.sendV(back ? -0.2 : 0.4);\n"
+            "    api.motors.sendW(back ? 1.5 : 2.0 / (1.0 + 0.2 * elapsed_s_));\n  }\n"
+            " private:\n  double elapsed_s_ = 0, back_until_s_ = 0;\n};\n"
+            "std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t) { return std::make_unique<Spiral>(); }\n}\n");
+  writeFile(subs / "fran" / "MyAlgorithm.py",
+            "class MyAlgorithm:\n    def __init__(self, seed):\n        self.t = 0.0\n        self.turn_until = -1.0\n\n"
+            "    def execute(self, api):\n        self.t += api.period_s\n        ranges = api.laser.getLaserData().values_m\n"
+            "        if min(ranges[85:95]) < 0.5:\n            self.turn_until = self.t + 1.2\n"
+            "        turning = self.t < self.turn_until\n        api.motors.sendV(0.0 if turning else 0.3)\n"
+            "        api.motors.sendW(-1.3 if turning else 0.25)\n");
+  std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
+  for (const char* name : {"ana", "ben", "carla", "dani", "eli", "fran"}) grade.push_back((subs / name).string());
+  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), "--Vacuum.Referee.Duration=60"});
+  ASSERT_EQ(runToEnd(grade, (dir / "grade.txt").string(), 300), 0) << readFile((dir / "grade.txt").string());
+  const std::string csv = readFile((dir / "out" / "similarity.csv").string());
+  std::map<std::string, std::vector<std::string>> pairs;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  while (std::getline(lines, line)) {
+    const auto fields = csvFields(line);
+    pairs[fields[0] + "~" + fields[1]] = fields;
+  }
+  ASSERT_EQ(pairs.size(), 15u) << csv;
+  auto flagged = [&](const std::string& pair) { return pairs.count(pair) != 0 && pairs[pair][2] == "yes"; };
+  EXPECT_TRUE(flagged("ana~ben")) << csv;
+  EXPECT_GE(std::stod(pairs["ana~ben"][3]), 0.6) << csv;
+  EXPECT_NE(pairs["ana~ben"][6].find("ana/MyAlgorithm.cpp:"), std::string::npos) << csv;
+  EXPECT_TRUE(flagged("ana~carla")) << csv;
+  EXPECT_LT(std::stod(pairs["ana~carla"][3]), 0.6) << "flagged on behaviour, not code\n" << csv;
+  EXPECT_LE(std::stod(pairs["ana~carla"][4]), 0.05) << csv;
+  for (const auto& [pair, fields] : pairs) {
+    const bool independent = pair.find("dani") != std::string::npos || pair.find("eli") != std::string::npos ||
+                             pair.find("fran") != std::string::npos;
+    if (independent) {
+      EXPECT_EQ(fields[2], "no") << pair << "\n" << csv;
+    }
+  }
+  const std::string html = readFile((dir / "out" / "report.html").string());
+  EXPECT_NE(html.find("<b>ana ~ ben</b>"), std::string::npos);
   fs::remove_all(dir);
 }
 

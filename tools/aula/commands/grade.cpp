@@ -26,6 +26,7 @@ int gradeSubmissions(const cli::Arguments& args) {
   options.engine = args.text("engine");
   options.wall_limit_s = args.real("wall-limit");
   options.record = args.flag("record");
+  options.similarity = args.text("similarity");
   options.overrides = args.settings();
   return grade::gradeClass(grade::parseRequest(options), binDir());
 }
@@ -44,6 +45,9 @@ cli::Command grade() {
       .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")
       .real("wall-limit", 600, "s", 0, 1e7, "each run's wall-clock limit (the sim-time limit is the referee's)", true)
       .flag("record", false, "keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)")
+      .choice("similarity", "auto", {"auto", "on", "off"},
+              "compare the submissions' code and their robots' paths (similarity.csv, flagged pairs in report.html); "
+              "auto: for a class of 3 or more")
       .add(cli::valueOption("collect", "DIR", "only collect: grades.csv and report.html from DIR's runs (after a Slurm job)"));
   c.details = "out: DIR/grades.csv (median, min, max per student; failures with reasons), DIR/report.html, DIR/runs/\n"
               "see docs/grading.md\n";

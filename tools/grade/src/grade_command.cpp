@@ -125,7 +125,9 @@ int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
   } else {
     runLocally(manifest, request.jobs);
   }
-  printGrades(collect(request.out_dir), request.out_dir);
+  printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise),
+              request.out_dir);
+  if (request.similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", request.out_dir.c_str());
   return 0;
 }
 

@@ -7,6 +7,7 @@
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/report_html.hpp>
 #include <aula/grade/run_page.hpp>
+#include <aula/grade/similarity.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -168,11 +169,39 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
   return csv;
 }
 
-std::vector<StudentGrade> collect(const std::string& out_dir) {
+// Similar work in the class (similarity.hpp): similarity.csv, and the section for report.html.
+std::string compareSubmissions(const std::string& out_dir, const std::vector<std::string>& folders, const std::string& exercise,
+                               const std::vector<nlohmann::json>& results) {
+  std::vector<Submitted> students;
+  for (const std::string& folder : folders) {
+    for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
+      const fs::path source = fs::path(folder) / file;
+      if (fs::is_regular_file(source)) {
+        students.push_back({fs::path(folder).filename().string(), source.string()});
+        break;
+      }
+    }
+  }
+  // What everyone starts from is not a likeness: the exercise's templates, in both languages.
+  std::vector<Fingerprint> starter;
+  for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
+    std::ifstream in(config::dataPath("templates/" + exercise + "/" + file));
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto prints = fingerprints(tokenize(text, fs::path(file).extension() == ".py"));
+    starter.insert(starter.end(), prints.begin(), prints.end());
+  }
+  const auto pairs = compareClass(students, results, starter);
+  config::writeFileAtomically((fs::path(out_dir) / "similarity.csv").string(), similarityCsv(pairs), "similarity");
+  return similarityHtml(pairs, students);
+}
+
+std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions,
+                                  const std::string& exercise) {
   const auto results = readResults(out_dir);
   const auto grades = gradeStudents(results);
+  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results);
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
-  config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results), "the class report");
+  config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results, similar), "the class report");
   // A page per run, beside its result, for the teacher to hand to that student alone.
   for (const auto& r : results) {
     if (!r.contains("log") || !r["log"].is_string()) continue;

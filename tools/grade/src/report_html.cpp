@@ -258,12 +258,14 @@ void writeRuns(std::ostringstream& html, const std::vector<nlohmann::json>& resu
 
 }  // namespace
 
-std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {
+std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results,
+                       const std::string& more) {
   std::ostringstream html;
   writeHead(html, grades, results);
   writeOverview(html, grades, results);
   writeStudents(html, grades);
   writeFlagged(html, results);
+  html << more;
   writeRuns(html, results);
   html << "<script>" << playerScript() << kSortScript << "</script>\n</body></html>\n";
   return html.str();

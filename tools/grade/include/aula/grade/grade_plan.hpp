@@ -23,6 +23,7 @@ struct GradeRequest {
   std::string out_dir;
   std::string engine = "local";  // local | slurm
   double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
+  bool similarity = false;       // compare the submissions (similarity.csv, report.html's section)
   bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
@@ -38,6 +39,7 @@ struct GradeOptions {
   std::string engine = "local";
   double wall_limit_s = 600;
   bool record = false;
+  std::string similarity = "auto";       // on, off, or auto: on for a class of 3 or more
   std::vector<std::pair<std::string, std::string>> overrides;
 };
 

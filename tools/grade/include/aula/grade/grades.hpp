@@ -31,6 +31,9 @@ double median(std::vector<double> values);
 // runs_tampered, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
-std::vector<StudentGrade> collect(const std::string& out_dir);
+// `similarity`: compare the class's submissions too (similarity.csv and report.html's section);
+// the submissions' folders are those of `submissions` (empty: none, no comparison).
+std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions = {},
+                                  const std::string& exercise = "");
 
 }  // namespace aula::grade

@@ -13,6 +13,8 @@
 
 namespace aula::grade {
 
-std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results);
+// `more`: further sections (similar work), placed after the overview.
+std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results,
+                       const std::string& more = "");
 
 }  // namespace aula::grade

@@ -1,0 +1,102 @@
+// Similarity on plain data: tokens that see through names and comments, winnowed fingerprints
+// that survive reordering, scores and line ranges, and paths compared on sim time.
+#include <aula/grade/similarity.hpp>
+
+#include <gtest/gtest.h>
+
+namespace {
+using namespace aula::grade;
+
+const char* kOriginal = R"(// a student's helper
+double clamp(double v, double lo, double hi) { return v < lo ? lo : v > hi ? hi : v; }
+class Cleaner {
+ public:
+  void step(double range_m) {
+    if (range_m < 0.4) { turning_ = true; count_ += 1; }
+    speed_ = clamp(range_m * 0.8, 0.0, 0.5);
+    for (int i = 0; i < 10; ++i) total_ += i * speed_;
+  }
+ private:
+  bool turning_ = false;
+  int count_ = 0;
+  double speed_ = 0, total_ = 0;
+};
+)";
+
+// The same code, every name changed, comments changed, the class's parts reordered.
+const char* kDisguised = R"(
+class Roomba {
+ private:
+  bool spinning = false;   /* renamed */
+  int bumps = 0;
+  double v = 0, sum = 0;
+ public:
+  void step(double d) {
+    if (d < 0.4) { spinning = true; bumps += 1; }
+    v = limit(d * 0.8, 0.0, 0.5);
+    for (int k = 0; k < 10; ++k) sum += k * v;
+  }
+};
+double limit(double x, double a, double b) { return x < a ? a : x > b ? b : x; }
+)";
+
+const char* kOther = R"(
+#include <vector>
+struct Grid { std::vector<int> cells; int width = 0; };
+int count(const Grid& g) {
+  int n = 0;
+  for (int c : g.cells) n += c == 1 ? 1 : 0;
+  while (n > 100) n /= 2;
+  return n * g.width;
+}
+)";
+
+TEST(Similarity, TokensSeeThroughNamesCommentsAndLayout) {
+  const auto a = tokenize("int speed_m = 3; // fast\n", false);
+  const auto b = tokenize("int   v =\n 7; /* slow */", false);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].text, b[i].text);
+  EXPECT_EQ(a[1].text, "I");
+  EXPECT_EQ(a[3].text, "N");
+  const auto py = tokenize("def f(x):  # comment\n    return 'a' + x\n", true);
+  EXPECT_EQ(py.front().text, "def");
+  EXPECT_EQ(py.back().line, 2);
+}
+
+TEST(Similarity, ARenamedAndReorderedCopyScoresHighAnOtherProgramLow) {
+  const auto original = fingerprints(tokenize(kOriginal, false), 8, 4);
+  const auto disguised = fingerprints(tokenize(kDisguised, false), 8, 4);
+  const auto other = fingerprints(tokenize(kOther, false), 8, 4);
+  const CodeMatch copy = compareCode(original, disguised, {});
+  EXPECT_GE(copy.score, 0.6);
+  ASSERT_FALSE(copy.ranges.empty());
+  EXPECT_GE(copy.ranges.front().first.first, 1);
+  EXPECT_LT(compareCode(original, other, {}).score, 0.2);
+  // What the template gives everyone is no likeness.
+  EXPECT_DOUBLE_EQ(compareCode(original, original, original).score, 0.0);
+}
+
+TEST(Similarity, WinnowingKeepsAFingerprintOfEveryLongSharedRun) {
+  // Any run of at least window + k - 1 tokens in both gives a shared fingerprint (the guarantee).
+  std::string shared;
+  for (int i = 0; i < 6; ++i) shared += "x = y + " + std::to_string(i) + " * z; ";
+  const auto a = fingerprints(tokenize("int a; if (b) c(); " + shared, false), 5, 4);
+  const auto b = fingerprints(tokenize(shared + " while (q) { r--; }", false), 5, 4);
+  EXPECT_GT(compareCode(a, b, {}).score, 0.0);
+}
+
+TEST(Similarity, PathsAreComparedAtTheSameSimTimes) {
+  nlohmann::json trace = {{"samples", {{"period_s", 0.1}, {"x_mm", {1000, 100, 100}}, {"y_mm", {0, 0, 0}}}}};
+  const Path a = pathOfTrace(trace);
+  ASSERT_EQ(a.x_m.size(), 3u);
+  EXPECT_DOUBLE_EQ(a.x_m[2], 1.2);  // delta-encoded millimetres
+  EXPECT_NEAR(pathLength(a), 0.2, 1e-12);
+  Path b = a;
+  b.y_m = {0.3, 0.3, 0.3};
+  EXPECT_NEAR(meanDistance(a, b), 0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(meanDistance(a, a), 0.0);
+  b.period_s = 0.2;
+  EXPECT_TRUE(std::isnan(meanDistance(a, b)));
+}
+
+}  // namespace
