@@ -27,7 +27,7 @@ struct ScanMapSettings {
   double cell_m = 0.025;          // a wall is placed within half a cell: the match's bias bound
   double size_m = 40;             // the square mapped, centred on the start
   double field_radius_m = 0.3;    // the match field falls to 0 this far from an occupied cell
-  double free_max_m = 4.0;        // free space is carved along each beam up to this range
+  double free_max_m = 6.0;        // free space is carved along each beam up to this range
   double hit_max_m = 8.0;         // a beam longer than this marks no wall (grazing, far)
   int hit_logodds = 4, free_logodds = 1, occupied_logodds = 4;  // per beam; clamped to +-100
 };
@@ -36,6 +36,10 @@ struct ScanMatch {
   Point2 laser_m;     // where the laser was, in the map
   double score = 0;   // mean match field over the scan's points, 0..1 (1: every point on a wall)
   int points = 0;
+  // How much the score drops kSharpnessStepM away along x and along y: near 0 along a corridor
+  // (or a single wall), where the scan cannot tell where along it the laser is.
+  double sharpness_x = 0, sharpness_y = 0;
+  static constexpr double kSharpnessStepM = 0.05;
 };
 
 class ScanMap {
@@ -72,6 +76,8 @@ class ScanMap {
   bool known(int i, int j) const { return inside(i, j) && (logodds_[idx(i, j)] != 0 || occupied_[idx(i, j)]); }
   // Distance to the nearest occupied cell's centre, capped at field_radius_m.
   double clearanceM(int i, int j) const;
+  // The robot stands here: its footprint is floor (the laser, ahead of the centre, never sees it).
+  void markFree(Point2 centre_m, double radius_m);
   // Marks a cell occupied though the laser did not see it (a bump the laser could not explain).
   void markOccupied(Point2 p_m);
   // The cells ever observed, as a box (for the window and the planner's searches).
