@@ -140,9 +140,10 @@ SettingsTable makeVacuumComponent() {
   worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
-  t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "bounce"},
-              "the algorithm that drives the roomba (bounce: the random-bounce baseline; PATH.so: a plugin; PATH.py: a "
-              "MyAlgorithm.py)");
+  t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "mapping", "bounce"},
+              "the algorithm that drives the roomba (reference: spiral, walls and bounces; mapping: maps the house with "
+              "its laser and plans its coverage, unfinished; bounce: the random-bounce baseline; PATH.so: a plugin; "
+              "PATH.py: a MyAlgorithm.py)");
   vacuumDuration(t);
   return t;
 }

@@ -79,6 +79,15 @@ class PlainRobot {
     sense(utime_after);
   }
 
+  // Puts the robot at a pose (not moved there: no contact check) and senses from it, for tests
+  // of what the sensors see from a chosen spot.
+  void place(double x_m, double y_m, double yaw_rad) {
+    x_m_ = x_m;
+    y_m_ = y_m;
+    yaw_rad_ = yaw_rad;
+    sense(0);
+  }
+
   bool touches(double x_m, double y_m, double yaw_rad) const {
     if (spec_.shape.kind == world::ShapeKind::Cylinder) {
       const double r = spec_.shape.radius_m;

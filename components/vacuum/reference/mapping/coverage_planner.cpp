@@ -1,0 +1,199 @@
+#include "coverage_planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+
+namespace aula::vacuum::mapping {
+namespace {
+constexpr int kMinUnsweptCells = 3;  // of a block's: fewer is a sliver, not worth a trip
+}  // namespace
+
+CoveragePlanner::CoveragePlanner(const ScanMap& map, const CoverageSettings& settings)
+    : map_(map), s_(settings), swept_(static_cast<size_t>(map.width()) * map.width(), 0) {
+  const int reach = static_cast<int>(std::ceil(s_.sweep_radius_m / map.cellM()));
+  for (int dj = -reach; dj <= reach; ++dj) {
+    for (int di = -reach; di <= reach; ++di) {
+      if (std::hypot(di, dj) * map.cellM() <= s_.sweep_radius_m) disc_.emplace_back(di, dj);
+    }
+  }
+}
+
+void CoveragePlanner::sweep(Point2 centre_m) {
+  const int i = map_.col(centre_m.x_m), j = map_.row(centre_m.y_m);
+  for (const auto& [di, dj] : disc_) {
+    if (map_.inside(i + di, j + dj)) swept_[static_cast<size_t>(j + dj) * map_.width() + i + di] = 1;
+  }
+}
+
+Point2 CoveragePlanner::nearestTraversable(Point2 from_m, double radius_m) const {
+  const int reach = static_cast<int>(std::ceil(radius_m / map_.cellM()));
+  const int i0 = map_.col(from_m.x_m), j0 = map_.row(from_m.y_m);
+  Point2 best = from_m;
+  double best_m = radius_m;
+  for (int j = j0 - reach; j <= j0 + reach; ++j) {
+    for (int i = i0 - reach; i <= i0 + reach; ++i) {
+      if (!traversable(i, j)) continue;
+      const Point2 c = map_.centre(i, j);
+      const double d_m = std::hypot(c.x_m - from_m.x_m, c.y_m - from_m.y_m);
+      if (d_m < best_m) {
+        best_m = d_m;
+        best = c;
+      }
+    }
+  }
+  return best;
+}
+
+void CoveragePlanner::forget(Point2 p_m) { sweep(p_m); }
+
+void CoveragePlanner::resetSwept() { std::fill(swept_.begin(), swept_.end(), 0); }
+
+bool CoveragePlanner::segmentClear(Point2 a_m, Point2 b_m, double skip_m) const {
+  const double length_m = std::hypot(b_m.x_m - a_m.x_m, b_m.y_m - a_m.y_m);
+  const double step_m = 0.5 * map_.cellM();
+  const int steps = static_cast<int>(std::ceil(length_m / step_m));
+  for (int k = 0; k <= steps; ++k) {
+    const double f = steps == 0 ? 1.0 : static_cast<double>(k) / steps;
+    if (f * length_m < skip_m) continue;
+    if (!traversable(Point2{a_m.x_m + f * (b_m.x_m - a_m.x_m), a_m.y_m + f * (b_m.y_m - a_m.y_m)})) return false;
+  }
+  return true;
+}
+
+Lane CoveragePlanner::lane(Point2 from_m, int dx, int dy) const {
+  Lane out;
+  out.end_m = from_m;
+  int i = map_.col(from_m.x_m), j = map_.row(from_m.y_m);
+  const double cell_m = map_.cellM();
+  for (int k = 1;; ++k) {
+    i += dx;
+    j += dy;
+    if (!traversable(i, j)) break;
+    if (!swept(i, j)) {
+      out.unswept_m += cell_m;
+      // Along the lane's own line (not snapped to the cells' centres).
+      out.end_m = {from_m.x_m + dx * k * cell_m, from_m.y_m + dy * k * cell_m};
+    }
+  }
+  return out;
+}
+
+std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) const {
+  // Blocks of k x k cells over what the map has seen. A block is traversable when any of its
+  // cells is (a narrow passage between furniture is narrower than a block), through the one
+  // farthest from walls; unswept when enough of its traversable cells are (not a sliver).
+  const int k = std::max(1, static_cast<int>(std::lround(s_.plan_cell_m / map_.cellM())));
+  const int i0 = map_.minCol(), j0 = map_.minRow();
+  const int w = (map_.maxCol() - i0) / k + 1, h = (map_.maxRow() - j0) / k + 1;
+  if (map_.maxCol() < i0 || w <= 0 || h <= 0) return {};
+  // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
+  // map has closed (a passage seen too narrow, a wall drawn a little off).
+  const auto passable = [&](int i, int j) {
+    if (!relaxed) return traversable(i, j);
+    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m;
+  };
+  struct Block {
+    int rep = -2;  // its cell (j * width + i) to go through; -1: not passable; -2: not looked at yet
+    int goal = -1;  // its traversable cell farthest from walls, if any
+    bool unswept = false, frontier = false;
+  };
+  std::vector<Block> blocks(static_cast<size_t>(w) * h);
+  const auto block = [&](int b) -> const Block& {
+    Block& out = blocks[b];
+    if (out.rep != -2) return out;
+    out.rep = -1;
+    double best_m = -1, best_goal_m = -1;
+    int unswept = 0;
+    const int bi = i0 + (b % w) * k, bj = j0 + (b / w) * k;
+    for (int j = bj; j < bj + k; ++j) {
+      for (int i = bi; i < bi + k; ++i) {
+        if (!passable(i, j)) continue;
+        const double c_m = map_.clearanceM(i, j);
+        if (c_m > best_m) {
+          best_m = c_m;
+          out.rep = j * map_.width() + i;
+        }
+        if (!traversable(i, j)) continue;
+        unswept += !swept(i, j);
+        if (c_m > best_goal_m) {
+          best_goal_m = c_m;
+          out.goal = j * map_.width() + i;
+        }
+        // A frontier: floor next to what the laser has not seen yet. Going there shows more.
+        if (!out.frontier) {
+          for (int dj = -k; dj <= k && !out.frontier; dj += k) {
+            for (int di = -k; di <= k; di += k) {
+              if (!map_.known(i + di, j + dj)) out.frontier = true;
+            }
+          }
+        }
+      }
+    }
+    out.unswept = unswept >= kMinUnsweptCells;
+    return out;
+  };
+  const auto point = [&](int cell) { return map_.centre(cell % map_.width(), cell / map_.width()); };
+  const int sx = std::clamp((map_.col(from_m.x_m) - i0) / k, 0, w - 1);
+  const int sy = std::clamp((map_.row(from_m.y_m) - j0) / k, 0, h - 1);
+  const int start = sy * w + sx;
+  std::vector<int> cost(blocks.size(), std::numeric_limits<int>::max());
+  std::vector<int> parent(blocks.size(), -1);
+  using Item = std::pair<int, int>;  // (cost, block)
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
+  cost[start] = 0;
+  open.push({0, start});
+  int goal = -1;
+  while (!open.empty()) {
+    const auto [c_cost, c] = open.top();
+    open.pop();
+    if (c_cost > cost[c]) continue;
+    const Block& here = block(c);
+    if (c != start && here.goal >= 0 && (here.unswept || here.frontier)) {
+      goal = c;
+      break;
+    }
+    const int cx = c % w, cy = c / w;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0) continue;
+        const int nx = cx + dx, ny = cy + dy;
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        const int n = ny * w + nx;
+        if (block(n).rep < 0) continue;
+        const int next = c_cost + (dx != 0 && dy != 0 ? 14 : 10);
+        if (next < cost[n]) {
+          cost[n] = next;
+          parent[n] = c;
+          open.push({next, n});
+        }
+      }
+    }
+  }
+  if (goal < 0) return {};
+  std::vector<Point2> chain;
+  chain.push_back(point(block(goal).goal));
+  for (int c = parent[goal]; c != -1 && c != start; c = parent[c]) chain.push_back(point(block(c).rep));
+  std::reverse(chain.begin(), chain.end());
+  // Cut it short: from each waypoint, straight to the farthest one in a clear line.
+  std::vector<Point2> out;
+  Point2 at = from_m;
+  size_t next = 0;
+  while (next < chain.size()) {
+    size_t far = next;
+    for (size_t m = chain.size(); m-- > next + 1;) {
+      if (segmentClear(at, chain[m], out.empty() ? 0.1 : 0.0)) {
+        far = m;
+        break;
+      }
+    }
+    out.push_back(chain[far]);
+    at = chain[far];
+    next = far + 1;
+  }
+  return out;
+}
+
+}  // namespace aula::vacuum::mapping

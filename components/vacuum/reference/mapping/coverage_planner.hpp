@@ -1,0 +1,62 @@
+#pragma once
+// The mapping reference's coverage, on its own map (scan_map.hpp): which floor its disc has
+// swept, straight lanes along the map's axes (boustrophedon), and the shortest way to the nearest
+// floor not swept yet.
+//
+// A place is traversable when the map has seen it free and no wall is within clearance_m (the
+// robot's radius and a margin). The nearest unswept place is found by Dijkstra on a coarser grid
+// (plan_cell_m) from the robot outwards: a search to the nearest of many goals, which the
+// TeleTaxi's gradient field (one goal, the whole field) is not; its path is then cut short
+// wherever a straight segment stays traversable.
+
+#include "scan_map.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace aula::vacuum::mapping {
+
+struct CoverageSettings {
+  double clearance_m = 0.175;     // the centre keeps this far from walls (radius 0.165 + margin)
+  double sweep_radius_m = 0.15;   // floor counted swept around the centre (the disc's is 0.165)
+  double plan_cell_m = 0.1;       // the nearest-unswept search's grid
+  double relaxed_clearance_m = 0.15;  // its relaxed search: near walls, and through floor not seen yet
+};
+
+struct Lane {
+  Point2 end_m;           // the last unswept place along it
+  double unswept_m = 0;   // how much of it is unswept
+};
+
+class CoveragePlanner {
+ public:
+  explicit CoveragePlanner(const ScanMap& map, const CoverageSettings& settings = {});
+
+  const CoverageSettings& settings() const { return s_; }
+
+  void sweep(Point2 centre_m);  // the robot's centre is here: its disc sweeps around it
+  void forget(Point2 p_m);      // give up on this place (unreachable): counted swept
+  void resetSwept();            // start a new pass over the whole floor
+  bool swept(int i, int j) const { return map_.inside(i, j) && swept_[static_cast<size_t>(j) * map_.width() + i] != 0; }
+  bool traversable(int i, int j) const { return map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.clearance_m; }
+  bool traversable(Point2 p_m) const { return traversable(map_.col(p_m.x_m), map_.row(p_m.y_m)); }
+  // Every cell along a -> b traversable, except within skip_m of a (the robot may start close to a wall).
+  bool segmentClear(Point2 a_m, Point2 b_m, double skip_m = 0) const;
+
+  // Straight from `from` along the axis (dx, dy) (one of +-x, +-y) while traversable.
+  Lane lane(Point2 from_m, int dx, int dy) const;
+  // Waypoints to the nearest traversable place that is unswept or next to floor not seen yet (a
+  // frontier), through traversable places (relaxed: see CoverageSettings); empty if there is none.
+  std::vector<Point2> pathToUnswept(Point2 from_m, bool relaxed = false) const;
+  // The traversable place nearest to `from` within radius_m (the robot pushed too close to a wall
+  // gets out that way); `from` itself if there is none.
+  Point2 nearestTraversable(Point2 from_m, double radius_m) const;
+
+ private:
+  const ScanMap& map_;
+  CoverageSettings s_;
+  std::vector<uint8_t> swept_;
+  std::vector<std::pair<int, int>> disc_;  // cell offsets within sweep_radius_m
+};
+
+}  // namespace aula::vacuum::mapping

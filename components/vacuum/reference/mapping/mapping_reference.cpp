@@ -1,0 +1,280 @@
+#include "mapping_reference.hpp"
+
+#include <aula/geometry/angles.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace aula::vacuum::mapping {
+namespace {
+
+using geometry::wrapAngle;
+
+Point2 along(Point2 p, double d_m, double yaw_rad) { return {p.x_m + d_m * std::cos(yaw_rad), p.y_m + d_m * std::sin(yaw_rad)}; }
+double distance(Point2 a, Point2 b) { return std::hypot(a.x_m - b.x_m, a.y_m - b.y_m); }
+
+}  // namespace
+
+MappingReference::MappingReference(uint64_t seed, const MappingSettings& settings)
+    : s_(settings), coverage_(map_), rng_(seed * 2654435761ull + 7) {}
+
+void MappingReference::execute(VacuumApi& api) {
+  const auto& scan = api.laser.getLaserData();
+  if (scan.numLaser == 0) return;  // no scan yet
+  ++n_;
+  period_s_ = api.period_s;
+  const double yaw = api.pose3d.getYaw();
+  scan_ = &scan;
+  yaw_ = yaw;
+  const bool bumped = api.bumper.getBumperData().state == 1;
+  localize(scan, yaw, bumped);
+  map_.markFree(est_, s_.footprint_m);
+  coverage_.sweep(est_);
+
+  // A bump while moving forward: back off. Unless the map already has a wall there (the pose or
+  // the steering was a little off), mark one: the laser missed it.
+  if (bumped && cmd_v_ > 0 && mode_ != Mode::Backoff) {
+    const Point2 ahead = along(est_, s_.bump_ahead_m, yaw);
+    if (map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) map_.markOccupied(ahead);
+    mode_ = Mode::Backoff;
+    mode_start_s_ = now_s_;
+  }
+  double v = 0, w = 0;
+  switch (mode_) {
+    case Mode::Spin: {
+      // A first look all round, a quarter turn at a time, each held still for a clean scan.
+      if (spin_quarters_ == 0) {
+        spin_target_ = yaw;
+        spin_quarters_ = 1;
+      }
+      const double error = wrapAngle(spin_target_ - yaw);
+      if (std::abs(error) > 0.05) {
+        w = std::copysign(std::clamp(s_.turn_gain_per_s * std::abs(error), 0.3, s_.turn_max_radps), error);
+      } else if (++spin_hold_ >= 3) {
+        spin_hold_ = 0;
+        if (spin_quarters_++ >= 4) {
+          decide();
+        } else {
+          spin_target_ = wrapAngle(spin_target_ + M_PI / 2);
+        }
+      }
+      break;
+    }
+    case Mode::Backoff:
+      v = -s_.backoff_mps;
+      if (now_s_ - mode_start_s_ > s_.backoff_s) {
+        on_lane_ = false;
+        decide();
+        v = 0;
+      }
+      break;
+    case Mode::Follow:
+      follow(yaw, v, w);
+      break;
+  }
+  api.motors.sendV(v);
+  api.motors.sendW(w);
+  prev_cmd_w_ = cmd_w_;
+  cmd_v_ = std::clamp(v, -s_.max_speed_mps, s_.max_speed_mps);
+  cmd_w_ = w;
+}
+
+void MappingReference::localize(const component::LaserData& scan, double yaw, bool bumped) {
+  // The executes come period_s apart, and the newest scan is never from the future: the scans'
+  // stamps place the executes on the simulated clock.
+  const double stamp_s = scan.timeStamp * 1e-6;
+  const double exec_s = n_ * period_s_;
+  if (!clock_started_) {
+    clock_started_ = true;
+    clock_offset_s_ = stamp_s - exec_s;
+    last_now_s_ = stamp_s;
+    last_yaw_ = yaw;
+  }
+  clock_offset_s_ = std::max(clock_offset_s_, stamp_s - exec_s);
+  now_s_ = clock_offset_s_ + exec_s;
+  const double dt = std::max(0.0, now_s_ - last_now_s_);
+  const double dyaw = wrapAngle(yaw - last_yaw_);
+  const bool blocked = bumped && cmd_v_ > 0;
+  if (!blocked) est_ = along(est_, cmd_v_ * dt, last_yaw_ + dyaw / 2);
+
+  if (scan.timeStamp != last_stamp_) {
+    // Where the laser was when it scanned: back along the last command, the yaw interpolated.
+    const double age_s = std::clamp(now_s_ - stamp_s, 0.0, dt > 0 ? dt : period_s_);
+    const double yaw_s = dt > 0 ? yaw - dyaw * age_s / dt : yaw;
+    const Point2 robot_s = blocked ? est_ : along(est_, -cmd_v_ * age_s, yaw_s);
+    const Point2 predicted = along(robot_s, s_.laser_forward_m, yaw_s);
+    const double w_max = std::max(std::abs(cmd_w_), std::abs(prev_cmd_w_));
+    if (!mapped_once_) {
+      map_.insert(scan, yaw_s, predicted);
+      mapped_once_ = true;
+      last_insert_ = predicted;
+      last_insert_yaw_ = yaw_s;
+    } else if (w_max <= s_.match_max_w_radps) {
+      const auto all = ScanMap::endpoints(scan, yaw_s, s_.match_range_m, s_.match_stride);
+      const auto points = map_.seen(all, predicted);
+      if (points.size() >= 10) {
+        const ScanMatch m = map_.match(points, predicted, poor_matches_ > 0 ? s_.lost_window_m : s_.track_window_m);
+        if (m.score >= s_.good_match) {
+          poor_matches_ = 0;
+          // Along a corridor the scan says nothing about the position along it: keep the
+          // prediction there, and draw nothing until it says where the laser is.
+          const bool sharp_x = m.sharpness_x >= s_.min_sharpness, sharp_y = m.sharpness_y >= s_.min_sharpness;
+          if (sharp_x) est_.x_m += m.laser_m.x_m - predicted.x_m;
+          if (sharp_y) est_.y_m += m.laser_m.y_m - predicted.y_m;
+          const bool moved = distance(m.laser_m, last_insert_) >= s_.map_every_m ||
+                             std::abs(wrapAngle(yaw_s - last_insert_yaw_)) >= s_.map_every_rad;
+          const bool enough = points.size() * 2 >= all.size();  // most of the scan is on the map already
+          if (sharp_x && sharp_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
+            map_.insert(scan, yaw_s, m.laser_m);
+            last_insert_ = m.laser_m;
+            last_insert_yaw_ = yaw_s;
+          }
+        } else {
+          ++poor_matches_;
+        }
+      }
+    }
+  }
+  last_now_s_ = now_s_;
+  last_yaw_ = yaw;
+  last_stamp_ = scan.timeStamp;
+}
+
+void MappingReference::enterFollow(std::vector<Point2> waypoints) {
+  waypoints_ = std::move(waypoints);
+  mode_ = Mode::Follow;
+  mode_start_s_ = now_s_;
+  double length_m = 0;
+  Point2 at = est_;
+  for (const Point2& p : waypoints_) {
+    length_m += distance(at, p);
+    at = p;
+  }
+  deadline_s_ = now_s_ + length_m / s_.follow_min_mps + s_.follow_slack_s;
+  progress_at_ = est_;
+  progress_s_ = now_s_;
+}
+
+void MappingReference::decide() {
+  const Point2 p = est_;
+  // 0. Too close to a wall (a bump, a push): out to the nearest place the plans may start from.
+  if (!coverage_.traversable(p)) {
+    const Point2 out = coverage_.nearestTraversable(p, s_.escape_radius_m);
+    if (distance(out, p) > 0) {
+      on_lane_ = false;
+      enterFollow({out});
+      return;
+    }
+  }
+  // 1. The boustrophedon: a sidestep, and a lane back beside the last one.
+  if (on_lane_) {
+    for (int side : {side_, -side_}) {
+      const Point2 q{p.x_m - side * lane_dy_ * s_.lane_spacing_m, p.y_m + side * lane_dx_ * s_.lane_spacing_m};
+      if (!coverage_.traversable(q) || !coverage_.segmentClear(p, q, 0.05)) continue;
+      const Lane back = coverage_.lane(q, -lane_dx_, -lane_dy_);
+      if (back.unswept_m < s_.min_lane_m) continue;
+      side_ = side;
+      lane_dx_ = -lane_dx_;
+      lane_dy_ = -lane_dy_;
+      enterFollow({q, back.end_m});
+      return;
+    }
+  }
+  // 2. A new lane from here: one of the ways with about the most unswept floor (seeded).
+  const std::pair<int, int> ways[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  Lane lanes[4];
+  double longest_m = 0;
+  for (int k = 0; k < 4; ++k) {
+    lanes[k] = coverage_.lane(p, ways[k].first, ways[k].second);
+    longest_m = std::max(longest_m, lanes[k].unswept_m);
+  }
+  if (longest_m >= s_.min_lane_m) {
+    std::vector<int> good;
+    for (int k = 0; k < 4; ++k) {
+      if (lanes[k].unswept_m >= s_.lane_choice * longest_m) good.push_back(k);
+    }
+    const int k = good[std::uniform_int_distribution<size_t>(0, good.size() - 1)(rng_)];
+    on_lane_ = true;
+    lane_dx_ = ways[k].first;
+    lane_dy_ = ways[k].second;
+    side_ = std::uniform_int_distribution<int>(0, 1)(rng_) ? 1 : -1;
+    enterFollow({lanes[k].end_m});
+    return;
+  }
+  // 3. The nearest unswept floor, then a lane from there.
+  on_lane_ = false;
+  std::vector<Point2> path = coverage_.pathToUnswept(p);
+  if (path.empty()) path = coverage_.pathToUnswept(p, true);
+  if (!path.empty()) {
+    enterFollow(std::move(path));
+    return;
+  }
+  // 4. All swept: a second pass catches what the first one missed (once: if that finds nothing
+  // either, the robot is boxed in; it looks round again).
+  if (now_s_ - last_reset_s_ < s_.escape_radius_m / s_.follow_min_mps + s_.follow_slack_s) {
+    escapeByLaser();
+    return;
+  }
+  last_reset_s_ = now_s_;
+  coverage_.resetSwept();
+  ++passes_;
+  coverage_.sweep(est_);
+  path = coverage_.pathToUnswept(p);
+  if (!path.empty()) {
+    enterFollow(std::move(path));
+  } else {
+    escapeByLaser();
+  }
+}
+
+// The map shows no way out (a passage drawn too narrow, a bump marked in a doorway): trust the
+// laser instead, and drive a little way into the most open direction it sees now.
+void MappingReference::escapeByLaser() {
+  const component::LaserData& scan = *scan_;
+  const int half = s_.escape_half_beams;
+  double best_m = -1, best_rad = 0;
+  for (int i = half; i + half < scan.numLaser; ++i) {
+    double clear_m = scan.maxRange;
+    for (int k = i - half; k <= i + half; ++k) clear_m = std::min<double>(clear_m, scan.values_m[k]);
+    if (clear_m > best_m) {
+      best_m = clear_m;
+      best_rad = scan.angle(i);
+    }
+  }
+  on_lane_ = false;
+  escaping_ = true;
+  const double go_m = std::clamp(best_m - s_.escape_margin_m, 0.0, s_.escape_run_m);
+  enterFollow({along(est_, go_m, yaw_ + best_rad)});
+}
+
+void MappingReference::follow(double yaw, double& v, double& w) {
+  // Arrived at a waypoint, or it is not reachable any more (the map grew a wall on it).
+  while (!waypoints_.empty() && distance(est_, waypoints_.front()) < s_.arrive_m) waypoints_.erase(waypoints_.begin());
+  const bool blocked = !escaping_ && !waypoints_.empty() && !coverage_.traversable(waypoints_.back());
+  if (distance(est_, progress_at_) > s_.stuck_m) {
+    progress_at_ = est_;
+    progress_s_ = now_s_;
+  }
+  const bool stuck = now_s_ - progress_s_ > s_.stuck_s || now_s_ > deadline_s_;
+  if (waypoints_.empty() || blocked || stuck) {
+    if (stuck && !waypoints_.empty()) coverage_.forget(waypoints_.back());
+    escaping_ = false;
+    if (blocked || stuck) on_lane_ = false;
+    waypoints_.clear();
+    decide();
+    if (mode_ != Mode::Follow || waypoints_.empty()) return;
+  }
+  const Point2 target = waypoints_.front();
+  const double error = wrapAngle(std::atan2(target.y_m - est_.y_m, target.x_m - est_.x_m) - yaw);
+  if (std::abs(error) > s_.turn_in_place_rad) {
+    w = std::copysign(std::clamp(s_.turn_gain_per_s * std::abs(error), s_.turn_min_radps, s_.turn_max_radps), error);
+    return;
+  }
+  const double d = distance(est_, target);
+  v = std::min(s_.max_speed_mps, s_.approach_min_mps + s_.approach_gain_per_s * d);
+  w = std::clamp(s_.turn_gain_per_s * error, -s_.steer_max_radps, s_.steer_max_radps);
+}
+
+std::unique_ptr<VacuumAlgorithm> makeMappingReferenceAlgorithm(uint64_t seed) { return std::make_unique<MappingReference>(seed); }
+
+}  // namespace aula::vacuum::mapping

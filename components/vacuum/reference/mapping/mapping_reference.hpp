@@ -1,0 +1,125 @@
+#pragma once
+// The vacuum's mapping cleaner (--algorithm=mapping; meant to become the reference): it maps the
+// house from its own laser and plans its coverage, with the student API alone (yaw, laser,
+// bumper, motors; no x, y):
+//   localize  predict from its own speed commands along the measured yaw, then match each scan
+//             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
+//   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
+//             (boustrophedon); where no lane is left, the way to the nearest unswept floor
+//             (CoveragePlanner); when all is swept, a second pass;
+//   recover   a bump backs off and marks the spot as a wall; a poor match keeps the prediction
+//             and widens the next search.
+// Not finished: in the simulator some runs get stuck (docs/performance.md, "Mapping cleaner").
+
+#include "coverage_planner.hpp"
+#include "scan_map.hpp"
+
+#include <aula/vacuum/vacuum_algorithm.hpp>
+
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace aula::vacuum::mapping {
+
+struct MappingSettings {
+  double max_speed_mps = 0.5;
+  double laser_forward_m = 0.139;     // the roomba's laser, ahead of its centre (worlds/models/roomba)
+  double footprint_m = 0.15;          // the floor under the robot, drawn free (a bit inside its 0.165 m)
+  // Localization.
+  double match_range_m = 9.0;         // beams beyond this are not matched
+  int match_stride = 3;               // every third beam
+  double track_window_m = 0.05;       // search half-width around the prediction
+  double lost_window_m = 0.3;         // ... after a poor match
+  double good_match = 0.75;           // mean match field a scan needs to correct the pose
+  double map_good_match = 0.85;       // ... and to be drawn into the map
+  double min_sharpness = 0.03;        // a match this much better than 5 cm off, along x (y), fixes x (y)
+  double match_max_w_radps = 0.5;     // turning faster than this: prediction only (the yaw's timing)
+  double map_max_w_radps = 0.25;
+  double map_every_m = 0.1;           // draw a scan after moving this far...
+  double map_every_rad = 0.3;         // ... or turning this much
+  // Coverage.
+  double lane_spacing_m = 0.28;       // the disc is 0.33 m: lanes overlap by 5 cm
+  double min_lane_m = 0.3;            // a shorter unswept run is not worth a lane
+  double lane_choice = 0.7;           // a new lane: any way with this share of the longest's unswept floor
+  double arrive_m = 0.04;
+  double turn_in_place_rad = 0.25;    // heading errors above this turn on the spot
+  double turn_gain_per_s = 3.0;
+  double turn_min_radps = 0.6;
+  double turn_max_radps = 2.5;
+  double steer_max_radps = 1.0;
+  double approach_gain_per_s = 1.5;
+  double approach_min_mps = 0.1;
+  double follow_min_mps = 0.2;        // the deadline assumes at least this speed, plus...
+  double follow_slack_s = 6.0;        // ... this long
+  // Recovery.
+  double backoff_mps = 0.12;
+  double backoff_s = 0.5;
+  double bump_ahead_m = 0.2;          // a bump marks a wall this far ahead of the centre...
+  double bump_known_m = 0.1;          // ... unless the map has one this close to that point
+  double stuck_s = 3.0;               // no progress this long while following: give up the goal
+  double stuck_m = 0.05;
+  double escape_radius_m = 0.5;       // too close to a wall: the nearest traversable place within this
+  int escape_half_beams = 8;          // no way out on the map: the laser's most open +-8 beams...
+  double escape_run_m = 0.8;          // ... this far at most...
+  double escape_margin_m = 0.4;       // ... stopping this short of what it sees there
+};
+
+class MappingReference : public VacuumAlgorithm {
+ public:
+  // seed: draws the lanes' directions where several are about as long (aula run --seed).
+  explicit MappingReference(uint64_t seed = 1, const MappingSettings& settings = {});
+  void execute(VacuumApi& api) override;
+
+  // For the window and the tests: the map, what is swept, and where it thinks it is (the map's
+  // frame: the start is the origin, axes the world's).
+  const ScanMap& map() const { return map_; }
+  const CoveragePlanner& coverage() const { return coverage_; }
+  Point2 estimate() const { return est_; }
+  const std::vector<Point2>& waypoints() const { return waypoints_; }
+  int passes() const { return passes_; }
+
+ private:
+  enum class Mode { Spin, Follow, Backoff };
+  void localize(const component::LaserData& scan, double yaw_rad, bool bumped);
+  void decide();
+  void follow(double yaw_rad, double& v, double& w);
+  void enterFollow(std::vector<Point2> waypoints);
+  void escapeByLaser();
+
+  MappingSettings s_;
+  ScanMap map_;
+  CoveragePlanner coverage_;
+  Mode mode_ = Mode::Spin;
+  // Localization.
+  Point2 est_;               // the robot's centre now
+  int64_t n_ = 0;            // execute() calls
+  double period_s_ = 0;
+  double clock_offset_s_ = 0, now_s_ = 0, last_now_s_ = 0;
+  bool clock_started_ = false;
+  int64_t last_stamp_ = -1;
+  double last_yaw_ = 0, cmd_v_ = 0, cmd_w_ = 0, prev_cmd_w_ = 0;
+  int poor_matches_ = 0;
+  bool mapped_once_ = false;
+  Point2 last_insert_;
+  double last_insert_yaw_ = 0;
+  // Coverage.
+  std::vector<Point2> waypoints_;
+  int lane_dx_ = 0, lane_dy_ = 0, side_ = 1;
+  bool on_lane_ = false;
+  double mode_start_s_ = 0, deadline_s_ = 0;
+  Point2 progress_at_;
+  double progress_s_ = 0;
+  int spin_quarters_ = 0, spin_hold_ = 0;
+  double spin_target_ = 0;
+  int passes_ = 1;
+  const component::LaserData* scan_ = nullptr;  // this execute()'s
+  double yaw_ = 0;
+  bool escaping_ = false;
+  double last_reset_s_ = -1e9;
+  std::mt19937_64 rng_;
+};
+
+std::unique_ptr<VacuumAlgorithm> makeMappingReferenceAlgorithm(uint64_t seed);
+
+}  // namespace aula::vacuum::mapping

@@ -1,0 +1,245 @@
+#include "scan_map.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace aula::vacuum::mapping {
+
+ScanMap::ScanMap(const ScanMapSettings& settings) : s_(settings) {
+  n_ = static_cast<int>(std::ceil(s_.size_m / s_.cell_m));
+  origin_m_ = -0.5 * n_ * s_.cell_m;
+  unit_m_ = s_.field_radius_m / 250.0;
+  const size_t cells = static_cast<size_t>(n_) * n_;
+  logodds_.assign(cells, 0);
+  occupied_.assign(cells, 0);
+  distance_.assign(cells, 255);
+  const int reach = static_cast<int>(std::ceil(s_.field_radius_m / s_.cell_m)) + 1;
+  for (int dj = -reach; dj <= reach; ++dj) {
+    for (int di = -reach; di <= reach; ++di) {
+      if ((std::hypot(di, dj) - 1) * s_.cell_m < s_.field_radius_m) stamp_.emplace_back(di, dj);
+    }
+  }
+  nearest_.assign(cells, {0, 0});
+  min_i_ = min_j_ = n_;
+  max_i_ = max_j_ = -1;
+}
+
+int ScanMap::col(double x_m) const { return static_cast<int>(std::floor((x_m - origin_m_) / s_.cell_m)); }
+int ScanMap::row(double y_m) const { return static_cast<int>(std::floor((y_m - origin_m_) / s_.cell_m)); }
+Point2 ScanMap::centre(int i, int j) const {
+  return {origin_m_ + (i + 0.5) * s_.cell_m, origin_m_ + (j + 0.5) * s_.cell_m};
+}
+
+double ScanMap::clearanceM(int i, int j) const {
+  if (!inside(i, j)) return 0.0;
+  const uint8_t d = distance_[idx(i, j)];
+  return d == 255 ? s_.field_radius_m : d * unit_m_;
+}
+
+namespace {
+
+// The beams' directions, by rotating the first one a beam at a time (one sincos per scan, not
+// one per beam: the largest cost of drawing a scan).
+class BeamDirections {
+ public:
+  BeamDirections(const component::LaserData& scan, double laser_yaw_rad)
+      : c_(std::cos(laser_yaw_rad + scan.minAngle)), s_(std::sin(laser_yaw_rad + scan.minAngle)),
+        dc_(std::cos(scan.angleIncrement)), ds_(std::sin(scan.angleIncrement)) {}
+  double cos() const { return c_; }
+  double sin() const { return s_; }
+  void next() {
+    const double c = c_ * dc_ - s_ * ds_;
+    s_ = s_ * dc_ + c_ * ds_;
+    c_ = c;
+  }
+
+ private:
+  double c_, s_, dc_, ds_;
+};
+
+}  // namespace
+
+std::vector<Point2> ScanMap::endpoints(const component::LaserData& scan, double laser_yaw_rad, double max_range_m,
+                                       int stride) {
+  std::vector<Point2> out;
+  stride = std::max(1, stride);
+  out.reserve(scan.numLaser / stride + 1);
+  const double limit_m = std::min(max_range_m, scan.maxRange - 1e-3);
+  BeamDirections beam(scan, laser_yaw_rad);
+  for (int i = 0; i < scan.numLaser; ++i, beam.next()) {
+    const double r = scan.values_m[i];
+    if (i % stride != 0 || !(r > scan.minRange) || r >= limit_m) continue;
+    out.push_back({r * beam.cos(), r * beam.sin()});
+  }
+  return out;
+}
+
+void ScanMap::touch(int i, int j) {
+  min_i_ = std::min(min_i_, i);
+  max_i_ = std::max(max_i_, i);
+  min_j_ = std::min(min_j_, j);
+  max_j_ = std::max(max_j_, j);
+}
+
+// The match field is stamped from the hit itself, not its cell's centre: a wall then sits where
+// the laser saw it, not up to half a cell off.
+void ScanMap::occupy(int i, int j, Point2 hit_m) {
+  if (occupied_[idx(i, j)]) return;
+  occupied_[idx(i, j)] = 1;
+  ++occupied_count_;
+  touch(i, j);
+  for (const auto& [di, dj] : stamp_) {
+    const int a = i + di, b = j + dj;
+    if (!inside(a, b)) continue;
+    const Point2 c = centre(a, b);
+    const double d_m = std::hypot(c.x_m - hit_m.x_m, c.y_m - hit_m.y_m);
+    if (d_m >= s_.field_radius_m) continue;
+    const uint8_t d = static_cast<uint8_t>(std::lround(d_m / unit_m_));
+    if (d < distance_[idx(a, b)]) {
+      distance_[idx(a, b)] = d;
+      nearest_[idx(a, b)] = {static_cast<int16_t>(std::lround((hit_m.x_m - c.x_m) / kOffsetUnitM)),
+                             static_cast<int16_t>(std::lround((hit_m.y_m - c.y_m) / kOffsetUnitM))};
+    }
+  }
+}
+
+void ScanMap::markFree(Point2 centre_m, double radius_m) {
+  const int reach = static_cast<int>(std::ceil(radius_m / s_.cell_m));
+  const int i0 = col(centre_m.x_m), j0 = row(centre_m.y_m);
+  for (int j = j0 - reach; j <= j0 + reach; ++j) {
+    for (int i = i0 - reach; i <= i0 + reach; ++i) {
+      if (!inside(i, j) || occupied_[idx(i, j)] || logodds_[idx(i, j)] < 0) continue;
+      const Point2 c = centre(i, j);
+      if ((c.x_m - centre_m.x_m) * (c.x_m - centre_m.x_m) + (c.y_m - centre_m.y_m) * (c.y_m - centre_m.y_m) > radius_m * radius_m) continue;
+      logodds_[idx(i, j)] = -1;
+      touch(i, j);
+    }
+  }
+}
+
+void ScanMap::markOccupied(Point2 p_m) {
+  const int i = col(p_m.x_m), j = row(p_m.y_m);
+  if (inside(i, j)) occupy(i, j, p_m);
+}
+
+// Bresenham from (i0, j0) to the cell of end_m: every cell but the last seen free; the last one
+// a wall if `hit`, free otherwise.
+void ScanMap::ray(int i0, int j0, Point2 end_m, bool hit) {
+  const int i1 = col(end_m.x_m), j1 = row(end_m.y_m);
+  const int di = std::abs(i1 - i0), dj = -std::abs(j1 - j0);
+  const int si = i0 < i1 ? 1 : -1, sj = j0 < j1 ? 1 : -1;
+  int err = di + dj;
+  int i = i0, j = j0;
+  while (true) {
+    if (!inside(i, j)) return;
+    const bool last = i == i1 && j == j1;
+    int8_t& l = logodds_[idx(i, j)];
+    if (last && hit) {
+      l = static_cast<int8_t>(std::min(100, l + s_.hit_logodds));
+      if (l >= s_.occupied_logodds) occupy(i, j, end_m);
+    } else {
+      l = static_cast<int8_t>(std::max(-100, l - s_.free_logodds));
+    }
+    touch(i, j);
+    if (last) return;
+    const int e2 = 2 * err;
+    if (e2 >= dj) {
+      err += dj;
+      i += si;
+    }
+    if (e2 <= di) {
+      err += di;
+      j += sj;
+    }
+  }
+}
+
+void ScanMap::insert(const component::LaserData& scan, double laser_yaw_rad, Point2 laser_m) {
+  const int i0 = col(laser_m.x_m), j0 = row(laser_m.y_m);
+  if (!inside(i0, j0)) return;
+  BeamDirections beam(scan, laser_yaw_rad);
+  for (int k = 0; k < scan.numLaser; ++k, beam.next()) {
+    const double r = scan.values_m[k];
+    if (!(r > scan.minRange)) continue;
+    const bool hit = r < scan.maxRange - 1e-3 && r <= s_.hit_max_m;
+    const double c = beam.cos(), s = beam.sin();
+    const double free_m = std::min(r, s_.free_max_m);
+    const bool hit_at_free_end = hit && r <= s_.free_max_m;
+    ray(i0, j0, {laser_m.x_m + free_m * c, laser_m.y_m + free_m * s}, hit_at_free_end);
+    if (hit && !hit_at_free_end) {
+      const Point2 end{laser_m.x_m + r * c, laser_m.y_m + r * s};
+      const int i = col(end.x_m), j = row(end.y_m);
+      if (!inside(i, j)) continue;
+      int8_t& l = logodds_[idx(i, j)];
+      l = static_cast<int8_t>(std::min(100, l + s_.hit_logodds));
+      if (l >= s_.occupied_logodds) occupy(i, j, end);
+    }
+  }
+}
+
+double ScanMap::field(double x_m, double y_m) const {
+  const int i = col(x_m), j = row(y_m);
+  if (!inside(i, j) || distance_[idx(i, j)] == 255) return 0.0;
+  const Point2 c = centre(i, j);
+  const auto& o = nearest_[idx(i, j)];
+  const double dx = c.x_m + o[0] * kOffsetUnitM - x_m, dy = c.y_m + o[1] * kOffsetUnitM - y_m;
+  const double d_m = std::sqrt(dx * dx + dy * dy);  // not std::hypot: 10x slower, and this is the hot loop
+  return std::max(0.0, 1.0 - d_m / s_.field_radius_m);
+}
+
+double ScanMap::score(const std::vector<Point2>& points, Point2 laser_m) const {
+  if (points.empty()) return 0.0;
+  double sum = 0;
+  for (const Point2& p : points) sum += field(laser_m.x_m + p.x_m, laser_m.y_m + p.y_m);
+  return sum / points.size();
+}
+
+std::vector<Point2> ScanMap::seen(const std::vector<Point2>& points, Point2 laser_m) const {
+  std::vector<Point2> out;
+  out.reserve(points.size());
+  for (const Point2& p : points) {
+    const double x = laser_m.x_m + p.x_m, y = laser_m.y_m + p.y_m;
+    const int i = col(x), j = row(y);
+    if (known(i, j) || (inside(i, j) && distance_[idx(i, j)] != 255)) out.push_back(p);
+  }
+  return out;
+}
+
+ScanMatch ScanMap::match(const std::vector<Point2>& points, Point2 predicted_m, double search_half_m) const {
+  ScanMatch best{predicted_m, score(points, predicted_m), static_cast<int>(points.size())};
+  // The window, on a grid of two cells: the field is 2 x field_radius_m wide, so a peak is never
+  // stepped over.
+  const double step_m = 2 * s_.cell_m;
+  const int k = static_cast<int>(std::ceil(search_half_m / step_m));
+  for (int b = -k; b <= k; ++b) {
+    for (int a = -k; a <= k; ++a) {
+      const Point2 p{predicted_m.x_m + a * step_m, predicted_m.y_m + b * step_m};
+      const double sc = score(points, p);
+      if (sc > best.score) best = {p, sc, best.points};
+    }
+  }
+  // Hill climb over the 8 neighbours, halving the step down to about 3 mm.
+  for (double h = std::min(s_.cell_m, std::max(search_half_m / 4, s_.cell_m / 2)); h >= 0.0025; h /= 2) {
+    for (int moves = 0; moves < 20; ++moves) {
+      ScanMatch step = best;
+      for (int b = -1; b <= 1; ++b) {
+        for (int a = -1; a <= 1; ++a) {
+          if (a == 0 && b == 0) continue;
+          const Point2 p{best.laser_m.x_m + a * h, best.laser_m.y_m + b * h};
+          const double sc = score(points, p);
+          if (sc > step.score) step = {p, sc, best.points};
+        }
+      }
+      if (step.score <= best.score) break;
+      best = step;
+    }
+  }
+  const double d = ScanMatch::kSharpnessStepM;
+  const Point2 p = best.laser_m;
+  best.sharpness_x = best.score - std::max(score(points, {p.x_m - d, p.y_m}), score(points, {p.x_m + d, p.y_m}));
+  best.sharpness_y = best.score - std::max(score(points, {p.x_m, p.y_m - d}), score(points, {p.x_m, p.y_m + d}));
+  return best;
+}
+
+}  // namespace aula::vacuum::mapping
