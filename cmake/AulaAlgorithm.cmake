@@ -62,3 +62,10 @@ function(aula_declare_algorithm_api)
     AULA_ALGORITHM_HEADER "${ARG_HEADER}" AULA_ALGORITHM_CLASS "${ARG_CLASS}" AULA_ALGORITHM_MAKE "${ARG_MAKE}"
     EXPORT_PROPERTIES "AULA_ALGORITHM_HEADER;AULA_ALGORITHM_CLASS;AULA_ALGORITHM_MAKE")
 endfunction()
+
+# A component exports to the plugins it loads only the student API (aula_plugin_exports.list),
+# not its own symbols (-rdynamic would give a plugin the references and everything else).
+function(aula_export_plugin_api target)
+  target_link_options(${target} PRIVATE "LINKER:--dynamic-list=${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list")
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list)
+endfunction()

@@ -9,7 +9,10 @@
 // - "memory": allocate and touch 3 GB;
 // - "fork": start processes until refused, and keep trying;
 // - "privilege": what a root sandbox once allowed (issue 28): unmount /proc, remount / read-write,
-//   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE.
+//   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE;
+// - "reference": drive with the component's own reference (makeReferenceAlgorithm, declared here
+//   since the API no longer does);
+// - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <arpa/inet.h>
@@ -27,6 +30,11 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
+
+namespace aula::vacuum {
+std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);
+}  // namespace aula::vacuum
 
 namespace exam {
 
@@ -89,9 +97,32 @@ inline void tryPrivileges() {
   say("write " + std::string(target != nullptr ? target : ""), static_cast<bool>(out), errno != 0 ? errno : ENOENT);
 }
 
+// The component's own command line, its algorithm made the reference, run in this process.
+inline void reexecAsReference() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::vector<std::string> args;
+  for (std::string arg; std::getline(in, arg, '\0');) {
+    args.push_back(arg.rfind("--Vacuum.Algorithm=", 0) == 0 ? "--Vacuum.Algorithm=reference" : arg);
+  }
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  ::execv("/proc/self/exe", argv.data());
+  say("re-execute the component", false, errno);
+}
+
 class ExamAttack : public aula::vacuum::VacuumAlgorithm {
  public:
+  explicit ExamAttack(uint64_t seed) {
+#ifdef AULA_EXAM_REFERENCE  // only the "reference" attack names it: the others must load
+    reference_ = aula::vacuum::makeReferenceAlgorithm(seed);
+#else
+    (void)seed;
+#endif
+  }
+
   void execute(aula::vacuum::VacuumApi& api) override {
+    if (reference_) return reference_->execute(api);
     api.motors.sendV(0.0);
     api.motors.sendW(0.0);
     if (done_) return;
@@ -102,14 +133,16 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (attack == "memory") useMemory();
     if (attack == "fork") forkForever();
     if (attack == "privilege") tryPrivileges();
+    if (attack == "reexec") reexecAsReference();
   }
 
  private:
   bool done_ = false;
+  std::unique_ptr<aula::vacuum::VacuumAlgorithm> reference_;
 };
 
 }  // namespace exam
 
 namespace aula::vacuum {
-std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t) { return std::make_unique<exam::ExamAttack>(); }
+std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return std::make_unique<exam::ExamAttack>(seed); }
 }  // namespace aula::vacuum

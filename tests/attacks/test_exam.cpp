@@ -80,7 +80,8 @@ std::map<std::string, std::map<std::string, std::string>> gradesOf(const std::st
 
 void writeSubmission(const fs::path& folder, const std::string& attack) {
   fs::create_directories(folder);
-  std::ofstream(folder / "MyAlgorithm.cpp") << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n#include \""
+  std::ofstream(folder / "MyAlgorithm.cpp") << (attack == "reference" ? "#define AULA_EXAM_REFERENCE 1\n" : "")
+                                            << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n#include \""
                                             << AULA_SOURCE_DIR << "/tests/attacks/exam_attack.hpp\"\n";
 }
 
@@ -95,7 +96,7 @@ int grade(const std::vector<std::string>& folders, const fs::path& out, const st
 TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const fs::path dir = aula::testing::privateDir();
   writeSubmission(dir / "class" / "quiet", "none");
-  for (const char* attack : {"read", "udp", "memory", "fork", "privilege"}) writeSubmission(dir / "class" / attack, attack);
+  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec"}) writeSubmission(dir / "class" / attack, attack);
   fs::create_directories(dir / "teacher");
   fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
   const std::string targets = (dir / "class" / "quiet" / "MyAlgorithm.cpp").string() + ":" +
@@ -112,18 +113,24 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
 
   std::vector<std::string> folders;
-  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege"}) {
+  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec"}) {
     folders.push_back((dir / "class" / name).string());
   }
   ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string()), 0) << readFile((dir / "class.log").string());
   const auto rows = gradesOf((dir / "out" / "grades.csv").string());
-  ASSERT_EQ(rows.size(), 6u) << readFile((dir / "out" / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 8u) << readFile((dir / "out" / "grades.csv").string());
   const std::string privilege_log = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.log").string());
   for (const std::string& attempt : {std::string("unmount /proc"), std::string("remount / read-write"),
                                      std::string("make a user namespace"), "write " + (dir / "out" / "grades.csv").string()}) {
     EXPECT_NE(privilege_log.find("exam: " + attempt + ": refused"), std::string::npos) << attempt << "\n" << privilege_log;
   }
   EXPECT_EQ(rows.at("privilege").at("runs_failed"), "0") << rows.at("privilege").at("line");
+  // The reference is out of a plugin's reach, whether called or re-executed: no 10, and why.
+  EXPECT_NE(rows.at("reference").at("line").find("undefined symbol"), std::string::npos) << rows.at("reference").at("line");
+  EXPECT_EQ(rows.at("reference").at("median"), "0.00") << rows.at("reference").at("line");
+  EXPECT_NE(rows.at("reexec").at("line").find("a graded run's component runs only the grade's algorithm"), std::string::npos)
+      << rows.at("reexec").at("line");
+  EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << rows.at("reexec").at("line");
   EXPECT_EQ(rows.at("quiet").at("line"), alone.at("quiet").at("line"));
 
   const std::string read_log = readFile((dir / "out" / "runs" / "read" / "vacuum-seed1.log").string());

@@ -15,6 +15,7 @@
 // The car model comes from the world through the API: its turning radius and the point it turns
 // about (rear axle for a car-like car, centre for one that turns in place).
 #include <aula/geometry/angles.hpp>
+#include <aula/autopark/references.hpp>
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/occupancy_grid.hpp>
 #include <aula/autopark/parking_planner.hpp>

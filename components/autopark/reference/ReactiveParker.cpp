@@ -24,6 +24,7 @@
 //   PARKED    stop: only when the car is in the slot, parallel; anywhere else it is
 //   FAILED    stop and say where it ended.
 #include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/autopark/references.hpp>
 #include <aula/autopark/car_geometry.hpp>
 #include <aula/autopark/street_search.hpp>
 #include <aula/autopark/two_arc_park.hpp>

@@ -1,4 +1,5 @@
 #include "aula/autopark/autopark_component.hpp"
+#include <aula/autopark/references.hpp>
 
 #include <aula/world/car_kinematics.hpp>
 

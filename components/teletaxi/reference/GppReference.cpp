@@ -3,6 +3,7 @@
 // written into the student's Grid, the steepest-descent path is marked on it.
 // execute(): a look-ahead pilot follows the path smoothly and stops at the destination.
 #include <aula/teletaxi/gradient_field.hpp>
+#include <aula/teletaxi/references.hpp>
 #include <aula/teletaxi/path_pilot.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
 

@@ -1,4 +1,5 @@
 #include "aula/teletaxi/taxi_component.hpp"
+#include <aula/teletaxi/references.hpp>
 
 #include <aula/teletaxi/gradient_field.hpp>
 #include <aula/geometry/map_transform.hpp>

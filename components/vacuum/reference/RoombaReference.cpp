@@ -9,6 +9,7 @@
 // speed commands along the measured yaw into a coarse memory of where it has been. That drifts
 // (wheels slip, pushes against furniture), so it only biases the random choice.
 #include <aula/vacuum/vacuum_algorithm.hpp>
+#include <aula/vacuum/references.hpp>
 
 #include <aula/geometry/angles.hpp>
 

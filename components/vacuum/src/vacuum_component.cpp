@@ -1,4 +1,5 @@
 #include "aula/vacuum/vacuum_component.hpp"
+#include <aula/vacuum/references.hpp>
 
 #include <mapping_reference.hpp>
 

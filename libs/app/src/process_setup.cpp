@@ -1,5 +1,9 @@
 #include "aula/app/process_setup.hpp"
 
+#include <aula/sandbox/sandbox.hpp>
+
+#include <fstream>
+
 #include <aula/config/paths.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/process/signal_watcher.hpp>
@@ -10,6 +14,22 @@
 #include <iostream>
 
 namespace aula::app {
+
+namespace {
+
+// In a graded run's sandbox the component runs only the grade's algorithm (sandbox.hpp).
+void requireGradedAlgorithm(const config::Config& cfg, const std::string& section) {
+  std::ifstream graded(sandbox::kGradedAlgorithmFile);
+  std::string algorithm;
+  if (!graded || !std::getline(graded, algorithm)) return;
+  const std::string key = section + ".Algorithm";
+  if (cfg.getString(key) != algorithm) {
+    throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) +
+                              ": a graded run's component runs only the grade's algorithm (" + algorithm + ")");
+  }
+}
+
+}  // namespace
 namespace {
 
 bool haveDisplay() {
@@ -69,6 +89,7 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
     }
   }
   setup.cfg = table.resolve(file, siblings);
+  if (exercise != nullptr && exercise->component == program) requireGradedAlgorithm(setup.cfg, exercise->section);
 
   if (exercise != nullptr) {
     const std::string key = exercise->section + ".World";

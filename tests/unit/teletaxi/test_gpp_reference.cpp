@@ -2,6 +2,7 @@
 // the component draws it, the taxi moving on planar kinematics against the buildings
 // (tests/unit/support/plain_robot.hpp), no LCM, no DART, no process.
 #include "../support/plain_robot.hpp"
+#include <aula/teletaxi/references.hpp>
 
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>

@@ -2,6 +2,7 @@
 // the shipped house's walls and furniture at the laser's height, the roomba's laser ray-cast and
 // its bumper pressed when its disc meets an obstacle (tests/unit/support/plain_robot.hpp).
 #include "../support/plain_robot.hpp"
+#include <aula/vacuum/references.hpp>
 
 #include <aula/vacuum/vacuum_algorithm.hpp>
 

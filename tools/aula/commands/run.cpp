@@ -150,19 +150,23 @@ process::Placement placementOf(const Arguments& args, bool headless) {
 }
 
 // What the sandboxed component may see and use: exactly its own inputs, within the run's limits.
-sandbox::Confinement confinementOf(const Exercise& ex, const RunSettings& run) {
+sandbox::Confinement confinementOf(const Exercise& ex, const RunSettings& run, supervision::TemporaryFile& graded_file) {
   const config::Config& component = run.component();
   sandbox::Limits limits;
   limits.memory_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.Memory") * (1 << 20));
   limits.processes = component.getInt("Component.Sandbox.Processes");
   limits.file_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.FileSize") * (1 << 20));
-  const auto files = supervision::componentFiles(binDir() + "/" + ex.component, run.cfg_path, run.world,
-                                                 component.getString(ex.section + ".Algorithm"));
-  return supervision::componentConfinement(files, limits);
+  const std::string algorithm = component.getString(ex.section + ".Algorithm");
+  const auto files = supervision::componentFiles(binDir() + "/" + ex.component, run.cfg_path, run.world, algorithm);
+  sandbox::Confinement confinement = supervision::componentConfinement(files, limits);
+  // The one algorithm the sandboxed component may run, in a file it cannot change.
+  confinement.read_only_at.emplace_back(graded_file.write(algorithm + "\n"), sandbox::kGradedAlgorithmFile);
+  return confinement;
 }
 
 supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args, const RunSettings& run, bool headless,
-                                       const std::string& lcm_url, const std::string& isolation) {
+                                       const std::string& lcm_url, const std::string& isolation,
+                                       supervision::TemporaryFile& graded_file) {
   supervision::Supervision s;
   s.exercise = ex.name;
   s.report_path = outputPath(args, "report");
@@ -174,7 +178,7 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
                     : headless && ex.referee_settings != nullptr ? supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0)
                                                                  : 0;
   s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
-  if (s.sandbox) s.confinement = confinementOf(ex, run);
+  if (s.sandbox) s.confinement = confinementOf(ex, run, graded_file);
   s.has_referee = ex.referee_settings != nullptr;
   if (s.has_referee) {
     s.algorithm = run.component().getString(ex.section + ".Algorithm");
@@ -217,7 +221,8 @@ int runExercise(const Arguments& args) {
   const std::string lcm_url = args.given("lcm-url") ? lcmbus::withFreePort(args.text("lcm-url")) : "";
   const std::string cfg = args.given("config") ? args.text("config") : config::dataPath(ex.config_file);
   const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless));
-  const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation);
+  supervision::TemporaryFile graded_file;
+  const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation, graded_file);
   std::unique_ptr<supervision::RunRecorder> recorder;
   if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url);
   const int code = supervision::supervise(supervision);

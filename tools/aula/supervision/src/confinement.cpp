@@ -4,9 +4,29 @@
 #include <aula/world/world_spec.hpp>
 
 #include <filesystem>
+#include <stdexcept>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace aula::supervision {
 namespace fs = std::filesystem;
+
+TemporaryFile::~TemporaryFile() {
+  if (!path_.empty()) ::unlink(path_.c_str());
+}
+
+std::string TemporaryFile::write(const std::string& content) {
+  std::string pattern = (fs::temp_directory_path() / "aula-run-XXXXXX").string();
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) throw std::runtime_error("cannot make a file in " + fs::temp_directory_path().string());
+  path_ = pattern;
+  const bool written = ::write(fd, content.data(), content.size()) == static_cast<ssize_t>(content.size());
+  ::fchmod(fd, 0644);
+  ::close(fd);
+  if (!written) throw std::runtime_error("cannot write " + path_);
+  return path_;
+}
 
 sandbox::Confinement componentConfinement(const ComponentFiles& files, const sandbox::Limits& limits) {
   sandbox::Confinement c;

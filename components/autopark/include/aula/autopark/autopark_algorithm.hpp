@@ -59,9 +59,5 @@ class AutoparkAlgorithm {
 };
 
 std::unique_ptr<AutoparkAlgorithm> makeStudentAlgorithm(uint64_t seed);
-// The thesis's reactive solution: find the slot, stop alongside the car ahead, reverse in two arcs, centre.
-std::unique_ptr<AutoparkAlgorithm> makeReactiveAlgorithm(uint64_t seed);
-// Maps the street from the lasers, plans a Reeds-Shepp path into the slot (OMPL), tracks it.
-std::unique_ptr<AutoparkAlgorithm> makePlannedAlgorithm(uint64_t seed);
 
 }  // namespace aula::autopark

@@ -15,6 +15,7 @@
 //   1: the first plugins.
 //   2: the first version checked against the hash (the API had changed under 1, issue 30).
 //   3: the Python hosts (the laser keeps its buffers, issue 31).
+//   4: the references left the API (issue 28).
 //
 // A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
 // Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
@@ -23,8 +24,8 @@
 //   const char* aula_python_set_file(const char* path);  // the .py its factory loads; error text or nullptr
 //   void        aula_python_interrupt(const char* why);  // raises inside a call that overran its budget
 
-#define AULA_ALGORITHM_ABI_VERSION 3
-#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "3cb36cbf89be7e9393509bd26ca2a1ef978a464ea34a5d7314c9af654f9eb067"
+#define AULA_ALGORITHM_ABI_VERSION 4
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "95ffd5461ca4b9516bb6868500cba98e86b5ce15a8f7c5b3ed7f6088d3e8fb2c"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 #include <stdexcept>

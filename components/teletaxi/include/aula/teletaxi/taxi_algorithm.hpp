@@ -30,8 +30,7 @@ class TaxiAlgorithm {
   virtual void execute(TaxiApi& api) = 0;
 };
 
-// "student" (student/MyAlgorithm.cpp) or "reference" (reference/GppReference.cpp).
+// The student's algorithm (student/MyAlgorithm.cpp; the reference is not part of the API).
 std::unique_ptr<TaxiAlgorithm> makeStudentAlgorithm();
-std::unique_ptr<TaxiAlgorithm> makeReferenceAlgorithm();
 
 }  // namespace aula::teletaxi

@@ -37,7 +37,5 @@ class VacuumAlgorithm {
 
 // seed: the run's seed (aula run --seed), for algorithms that draw random turns.
 std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed);
-std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);   // spiral, wall, bounce
-std::unique_ptr<VacuumAlgorithm> makeRandomBounceAlgorithm(uint64_t seed);  // the baseline
 
 }  // namespace aula::vacuum

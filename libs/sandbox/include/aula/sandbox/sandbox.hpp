@@ -57,6 +57,11 @@ std::vector<std::string> wrap(const std::vector<std::string>& argv, int seccomp_
 constexpr const char* kPrivateTmp = "/var/tmp";
 constexpr const char* kPrivateCache = "/var/tmp/cache";
 
+// In a graded run's sandbox, a read-only file holding the one algorithm the component may run
+// (the grade's plugin or .py): a component started there with any other (a student's plugin that
+// re-executes the component with --Vacuum.Algorithm=reference) refuses to start.
+constexpr const char* kGradedAlgorithmFile = "/run/aula/graded-algorithm";
+
 // Where bubblewrap is ("" when it is not installed: `aula run --sandbox` then refuses to run).
 std::string bubblewrapPath();
 

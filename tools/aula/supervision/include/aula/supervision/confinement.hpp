@@ -24,6 +24,20 @@ struct ComponentFiles {
   std::string algorithm;    // the student's plugin or .py ("" for a built-in)
 };
 
+// A file of the launcher's own for the run's length (bound into the sandbox), removed after it.
+class TemporaryFile {
+ public:
+  TemporaryFile() = default;
+  ~TemporaryFile();
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  // Writes `content` into a new file in $TMPDIR and returns its path. Throws std::runtime_error.
+  std::string write(const std::string& content);
+
+ private:
+  std::string path_;
+};
+
 sandbox::Confinement componentConfinement(const ComponentFiles& files, const sandbox::Limits& limits);
 
 // The files of the component of a run on `world` with settings file `cfg` and `algorithm`
