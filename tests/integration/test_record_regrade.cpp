@@ -181,10 +181,43 @@ TEST(RecordRegrade, ALogCutShortIsNotAFinishedRun) {
     }
   }
   const std::string report = cut + ".json", text = cut + ".txt";
-  aula::process::ChildProcess regrade({kAula, "regrade", cut, "--report=" + report}, text, text);
+  // A cut log is not what was signed: regraded only when told so.
+  aula::process::ChildProcess refused({kAula, "regrade", cut, "--report=" + report}, text, text);
+  EXPECT_EQ(refused.wait(60s).value_or(-1), 2) << readFile(text);
+  aula::process::ChildProcess regrade({kAula, "regrade", cut, "--unsigned", "--report=" + report}, text, text);
   EXPECT_EQ(regrade.wait(60s).value_or(-1), 1) << readFile(text);
   EXPECT_NE(readFile(text).find("the log ends before the end of the episode"), std::string::npos) << readFile(text);
   EXPECT_NE(readFile(report).find("\"finished\": false"), std::string::npos) << readFile(report);
+}
+
+// A graded run's log is signed: untouched it is regraded, with one pose changed it is refused
+// (naming the events that changed) unless told --unsigned.
+TEST(RecordRegrade, ATamperedLogIsRefusedTheUntouchedOneAccepted) {
+  const Graded g = recordAndRegrade("signed", {"vacuum", "--algorithm=reference", "--seed=2", "--Vacuum.Referee.Duration=20"});
+  EXPECT_EQ(g.live, g.regraded);
+  const std::string out = g.log_path + ".check.txt";
+  aula::process::ChildProcess check({kAula, "regrade", g.log_path}, out, out);
+  EXPECT_EQ(check.wait(60s).value_or(-1), 0) << readFile(out);
+  EXPECT_NE(readFile(out).find("signed and unaltered"), std::string::npos) << readFile(out);
+  // One pose moved by a millimetre's worth of bytes, the rest as it was.
+  const std::string tampered = g.log_path + ".tampered";
+  {
+    lcm::LogFile in(g.log_path, "r"), copy(tampered, "w");
+    int poses = 0;
+    for (const lcm::LogEvent* e = in.readNextEvent(); e != nullptr; e = in.readNextEvent()) {
+      lcm::LogEvent event = *e;
+      std::vector<uint8_t> bytes(static_cast<const uint8_t*>(e->data), static_cast<const uint8_t*>(e->data) + e->datalen);
+      if (e->channel == "ROOMBA_POSE" && ++poses == 500) bytes[bytes.size() / 2] ^= 0x01;
+      event.data = bytes.data();
+      copy.writeEvent(&event);
+    }
+  }
+  std::filesystem::copy_file(g.log_path + ".key", tampered + ".key");
+  aula::process::ChildProcess refused({kAula, "regrade", tampered}, out, out);
+  EXPECT_EQ(refused.wait(60s).value_or(-1), 2) << readFile(out);
+  EXPECT_NE(readFile(out).find("altered after it was signed: events "), std::string::npos) << readFile(out);
+  aula::process::ChildProcess anyway({kAula, "regrade", tampered, "--unsigned"}, out, out);
+  EXPECT_NE(anyway.wait(60s).value_or(-1), 2) << readFile(out);
 }
 
 TEST(RecordRegrade, RefusesWhatIsNotARecordedRun) {

@@ -180,6 +180,9 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
   s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
   if (s.sandbox) s.confinement = confinementOf(ex, run, graded_file);
   s.has_referee = ex.referee_settings != nullptr;
+  // A graded run's key, for the simulator and the referee only (never the component, which runs
+  // the student's code), and the recorder that signs the log with it.
+  if (headless && s.has_referee) s.key = auth::randomKey();
   if (s.has_referee) {
     s.algorithm = run.component().getString(ex.section + ".Algorithm");
     s.execute_budget_s = run.component().getDouble("Component.ExecuteBudget");
@@ -189,12 +192,13 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
 
 // --record: the logger listens and the log holds the run's record before the simulator starts.
 std::unique_ptr<supervision::RunRecorder> startRecording(const Exercise& ex, const std::string& path,
-                                                         const RunSettings& run, const std::string& lcm_url) {
+                                                         const RunSettings& run, const std::string& lcm_url,
+                                                         const std::optional<auth::Key>& key) {
   supervision::RunRecorder::checkPath(path);
   const auto record = supervision::runRecord(ex, run.world, run.effective.front().second.getInt64("Simulator.Seed"), run.referee());
   config::CommandLine url;  // the run's --lcm-url wins over the referee's Aula.LcmUrl, as in every process
   if (!lcm_url.empty()) url.options["lcm-url"] = lcm_url;
-  return std::make_unique<supervision::RunRecorder>(path, lcmbus::resolveUrl(url, run.referee()), record);
+  return std::make_unique<supervision::RunRecorder>(path, lcmbus::resolveUrl(url, run.referee()), record, key);
 }
 
 // A sandboxed run's own network (before this process has any thread): "full" isolation; where
@@ -224,7 +228,7 @@ int runExercise(const Arguments& args) {
   supervision::TemporaryFile graded_file;
   const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation, graded_file);
   std::unique_ptr<supervision::RunRecorder> recorder;
-  if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url);
+  if (args.given("record")) recorder = startRecording(ex, args.text("record"), run, lcm_url, supervision.key);
   const int code = supervision::supervise(supervision);
   if (recorder) recorder->stop();
   writePage(args);

@@ -142,7 +142,7 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
       const auto pa = paths.find(pair.a), pb = paths.find(pair.b);
       if (pa != paths.end() && pb != paths.end()) pair.behaviour_m = behaviourDistance(pa->second, pb->second, rules.moved_m, runs);
       pair.runs_compared = static_cast<int>(runs.size());
-      pair.flagged = pair.code_score >= rules.code_threshold ||
+      pair.flagged = (pair.code_score >= rules.code_threshold && code.shared >= rules.code_min_shared) ||
                      (pair.runs_compared > 0 && pair.behaviour_m <= rules.behaviour_threshold_m);
       pair.evidence = evidenceOf(code, students[i], students[j], runs);
       pairs.push_back(pair);

@@ -143,6 +143,7 @@ CodeMatch compareCode(const std::vector<Fingerprint>& a, const std::vector<Finge
     }
   }
   const size_t smaller = std::min(a_own.size(), b_own);
+  match.shared = shared.size();
   match.score = smaller == 0 ? 0.0 : static_cast<double>(shared.size()) / static_cast<double>(smaller);
   return match;
 }

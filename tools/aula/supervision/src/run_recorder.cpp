@@ -88,10 +88,15 @@ void RunRecorder::checkPath(const std::string& path) {
   if (fs::is_directory(file, error)) throw config::ConfigError("--record=" + path + ": is a folder, not a file");
 }
 
-RunRecorder::RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record)
+RunRecorder::RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record,
+                         const std::optional<auth::Key>& key)
     : path_(path) {
   log_ = std::make_unique<lcm::LogFile>(path_, "w");
   if (!log_->good()) throw config::ConfigError("--record=" + path_ + ": cannot write: " + std::strerror(errno));
+  if (key) {
+    writeKeyFile(path_ + ".key", *key);
+    signer_ = std::make_unique<LogSigner>(*key);
+  }
   bus_ = lcmbus::openBus(withLargeReceiveBuffer(url));
   bus_->subscribe(".*", &RunRecorder::onMessage, this);
   // A process hears what it publishes: the record is the log's first Aula message, and once it
@@ -114,6 +119,8 @@ RunRecorder::RunRecorder(const std::string& path, const std::string& url, const 
 void RunRecorder::onMessage(const lcm::ReceiveBuffer* message, const std::string& channel) {
   lcm::LogEvent event{0, message->recv_utime, channel, static_cast<int32_t>(message->data_size), message->data};
   if (log_->writeEvent(&event) != 0) write_failed_ = true;
+  if (signer_) signer_->add(event.timestamp, channel, message->data, message->data_size);
+  last_utime_ = event.timestamp;
   ++events_;
   if (channel == lcmbus::kRunChannel) record_written_ = true;
 }
@@ -125,6 +132,11 @@ void RunRecorder::stop() {
   std::this_thread::sleep_for(kDrain);
   stop_ = true;
   thread_.join();
+  if (signer_) {  // the last event: every event's tag, chunk by chunk
+    std::string signature = signer_->finish();
+    lcm::LogEvent event{0, last_utime_, kSignatureChannel, static_cast<int32_t>(signature.size()), signature.data()};
+    if (log_->writeEvent(&event) != 0) write_failed_ = true;
+  }
   log_.reset();  // flushes and closes the file
   std::error_code error;
   const auto bytes = std::filesystem::file_size(path_, error);
@@ -132,8 +144,9 @@ void RunRecorder::stop() {
     std::cerr << "aula: could not write every message to " << path_ << ": the log is incomplete\n";
     return;
   }
-  std::cerr << "aula: run recorded in " << path_ << " (" << events_ << " messages, " << bytes / 1024
-            << " KiB); grade it again with `aula regrade " << path_ << "`\n";
+  std::cerr << "aula: run recorded in " << path_ << " (" << events_ << " messages, " << bytes / 1024 << " KiB"
+            << (signer_ ? ", signed; its key in " + path_ + ".key" : "") << "); grade it again with `aula regrade " << path_
+            << "`\n";
 }
 
 }  // namespace aula::supervision

@@ -102,8 +102,7 @@ class RunSupervisor {
     }
     // A graded run's key, for the simulator and the referee only (never the component, which runs
     // the student's code): each reads it from a pipe of its own, not from its command line.
-    const std::optional<auth::Key> key =
-        run_.headless && run_.has_referee ? std::optional<auth::Key>(auth::randomKey()) : std::nullopt;
+    const std::optional<auth::Key>& key = run_.key;
     for (size_t i = 0; i < run_.lines.size(); ++i) {
       const Launch launch = launchOf(i, status[1], control[0], key);
       children_.push_back(std::make_unique<process::ChildProcess>(launch.args, "", "", launch.passed, run_.placement));

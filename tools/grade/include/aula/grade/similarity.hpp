@@ -37,6 +37,7 @@ std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k
 
 struct CodeMatch {
   double score = 0;  // shared fingerprints over the smaller set, 0-1
+  size_t shared = 0;  // how many
   std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> ranges;  // (a first, last) ~ (b first, last)
 };
 
@@ -70,7 +71,8 @@ struct PairSimilarity {
 };
 
 struct SimilarityRules {
-  double code_threshold = 0.6;        // flagged at or above this share of fingerprints
+  double code_threshold = 0.6;        // flagged at or above this share of fingerprints,
+  size_t code_min_shared = 25;        // and at least this many: a short program shares a few by chance
   double behaviour_threshold_m = 0.05;  // flagged at or below this mean distance, for paths that moved
   double moved_m = 1.0;               // paths shorter than this say nothing (a robot that stays still)
 };

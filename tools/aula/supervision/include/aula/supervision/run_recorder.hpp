@@ -11,6 +11,7 @@
 // queues kQueueCapacity like every Aula subscription.
 
 #include <aula/config/config.hpp>
+#include <aula/supervision/log_signature.hpp>
 #include <aula/run_record_t.hpp>
 #include <aula/settings/tables.hpp>
 
@@ -20,6 +21,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -44,7 +46,10 @@ class RunRecorder {
 
   // Listens to everything on the run's bus `url` and returns once the log holds `record`, so
   // it hears everything the simulator will say.
-  RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record);
+  // `key`: a graded run's key; the log is then signed (log_signature.hpp) and the key written
+  // beside it (PATH.key).
+  RunRecorder(const std::string& path, const std::string& url, const aula::run_record_t& record,
+              const std::optional<auth::Key>& key = std::nullopt);
   ~RunRecorder();
   RunRecorder(const RunRecorder&) = delete;
   RunRecorder& operator=(const RunRecorder&) = delete;
@@ -57,6 +62,8 @@ class RunRecorder {
 
   std::string path_;
   std::unique_ptr<lcm::LogFile> log_;
+  std::unique_ptr<LogSigner> signer_;  // a graded run's: every event, then the signature at stop()
+  int64_t last_utime_ = 0;
   std::unique_ptr<lcmbus::Bus> bus_;
   std::thread thread_;             // handles bus_ until stop_
   std::atomic<bool> stop_{false};

@@ -6,9 +6,11 @@
 // The rules it follows (budgets, exit codes, the reports it writes for a referee that cannot)
 // are plain functions in rules.hpp, unit-tested.
 
+#include <aula/auth/run_key.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/sandbox/sandbox.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +23,7 @@ struct Supervision {
   bool headless = false;
   bool sandbox = false;      // --sandbox: the component (the student's code) runs in aula_sandbox
   sandbox::Confinement confinement;  // what it sees there (componentConfinement)
+  std::optional<auth::Key> key;      // a graded run's (headless, with a referee): the simulator's and referee's
   double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
   std::string exercise, report_path;
   std::string algorithm;               // what the component runs ("student", "libmy_algorithm.so")
