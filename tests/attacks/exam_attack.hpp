@@ -12,11 +12,15 @@
 //   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE;
 // - "reference": drive with the component's own reference (makeReferenceAlgorithm, declared here
 //   since the API no longer does);
-// - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference.
+// - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference;
+// - "exit": exit(0) from inside execute();
+// - "flood": 64 MB to stdout;
+// - "detach": 20 children in sessions of their own, SIGTERM blocked, that would outlive the run.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <arpa/inet.h>
 #include <sched.h>
+#include <csignal>
 #include <sys/mount.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -111,6 +115,29 @@ inline void reexecAsReference() {
   say("re-execute the component", false, errno);
 }
 
+inline void flood() {
+  std::string line(1023, 'x');
+  line += '\n';
+  for (int i = 0; i < 64 * 1024; ++i) std::fwrite(line.data(), 1, line.size(), stdout);
+  std::fflush(stdout);
+}
+
+inline void detachChildren() {
+  for (int i = 0; i < 20; ++i) {
+    if (::fork() == 0) {
+      ::setsid();
+      sigset_t term;
+      sigemptyset(&term);
+      sigaddset(&term, SIGTERM);
+      sigprocmask(SIG_BLOCK, &term, nullptr);
+      const char* args[] = {"sleep", "1000", nullptr};
+      ::execvp("sleep", const_cast<char* const*>(args));
+      ::_exit(0);
+    }
+  }
+  say("detach 20 children", true);
+}
+
 class ExamAttack : public aula::vacuum::VacuumAlgorithm {
  public:
   explicit ExamAttack(uint64_t seed) {
@@ -134,6 +161,9 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (attack == "fork") forkForever();
     if (attack == "privilege") tryPrivileges();
     if (attack == "reexec") reexecAsReference();
+    if (attack == "exit") std::exit(0);
+    if (attack == "flood") flood();
+    if (attack == "detach") detachChildren();
   }
 
  private:

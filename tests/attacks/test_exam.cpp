@@ -96,7 +96,7 @@ int grade(const std::vector<std::string>& folders, const fs::path& out, const st
 TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const fs::path dir = aula::testing::privateDir();
   writeSubmission(dir / "class" / "quiet", "none");
-  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec"}) writeSubmission(dir / "class" / attack, attack);
+  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "flood"}) writeSubmission(dir / "class" / attack, attack);
   fs::create_directories(dir / "teacher");
   fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
   const std::string targets = (dir / "class" / "quiet" / "MyAlgorithm.cpp").string() + ":" +
@@ -113,12 +113,12 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
 
   std::vector<std::string> folders;
-  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec"}) {
+  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "flood"}) {
     folders.push_back((dir / "class" / name).string());
   }
   ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string()), 0) << readFile((dir / "class.log").string());
   const auto rows = gradesOf((dir / "out" / "grades.csv").string());
-  ASSERT_EQ(rows.size(), 8u) << readFile((dir / "out" / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 10u) << readFile((dir / "out" / "grades.csv").string());
   const std::string privilege_log = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.log").string());
   for (const std::string& attempt : {std::string("unmount /proc"), std::string("remount / read-write"),
                                      std::string("make a user namespace"), "write " + (dir / "out" / "grades.csv").string()}) {
@@ -131,6 +131,13 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   EXPECT_NE(rows.at("reexec").at("line").find("a graded run's component runs only the grade's algorithm"), std::string::npos)
       << rows.at("reexec").at("line");
   EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << rows.at("reexec").at("line");
+  EXPECT_NE(rows.at("exit").at("line").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
+      << rows.at("exit").at("line");
+  // A flood of output: that run's log is capped (its head, its tail and what was dropped).
+  const fs::path flood_log = dir / "out" / "runs" / "flood" / "vacuum-seed1.log";
+  EXPECT_LT(fs::file_size(flood_log), 1u << 20);
+  EXPECT_NE(readFile(flood_log.string()).find("bytes of the component's output dropped here"), std::string::npos);
+  EXPECT_EQ(rows.at("flood").at("runs_failed"), "0") << rows.at("flood").at("line");
   EXPECT_EQ(rows.at("quiet").at("line"), alone.at("quiet").at("line"));
 
   const std::string read_log = readFile((dir / "out" / "runs" / "read" / "vacuum-seed1.log").string());
@@ -164,6 +171,26 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   ::unsetenv("AULA_EXAM_READ");
   ::unsetenv("AULA_EXAM_WRITE");
   ::unsetenv("AULA_EXAM_PORT");
+  fs::remove_all(dir);
+}
+
+// Without the sandbox, a student's detached children (their own session, SIGTERM blocked) do not
+// outlive the run: the launcher is their subreaper and ends them.
+TEST(Exam, DetachedChildrenDoNotOutliveTheRun) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string log = dir + "/detach.log";
+  aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", std::string("--algorithm=") + AULA_EXAM_DETACH_PLUGIN,
+                                   kShortRun, "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                  log, log);
+  EXPECT_EQ(run.wait(120s).value_or(-1), 0) << readFile(log);
+  EXPECT_NE(readFile(log).find("exam: detach 20 children: done"), std::string::npos) << readFile(log);
+  int left = 0;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::ifstream cmdline(entry.path() / "cmdline");
+    std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
+    if (text == std::string("sleep\0" "1000\0", 11)) ++left;
+  }
+  EXPECT_EQ(left, 0) << "detached children outlived the run";
   fs::remove_all(dir);
 }
 

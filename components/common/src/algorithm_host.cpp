@@ -14,7 +14,12 @@
 #include <thread>
 #include <typeinfo>
 
+#include <aula/process/exit_codes.hpp>
+
+#include <cstdlib>
+
 #include <sys/resource.h>
+#include <unistd.h>
 
 namespace aula::component {
 namespace fs = std::filesystem;
@@ -23,8 +28,25 @@ namespace {
 
 std::string typeName(const std::type_info& type);
 
+// Whether this thread is inside a call into the student's code: an exit() from there is the
+// student's, said as such (the process's exit code kExitAlgorithmExited), not a silent client.
+thread_local bool in_student_call = false;
+
+void exitedInsideACall() {
+  if (!in_student_call) return;
+  static const char said[] = "the algorithm called exit() inside a call into it: the component ends\n";
+  (void)!::write(STDERR_FILENO, said, sizeof said - 1);
+  std::_Exit(process::kExitAlgorithmExited);
+}
+
 // Runs `call`; "" when it returned, else what it threw, and where in `plugin` (when it can tell).
 std::string faultOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin) {
+  static const bool watched = std::atexit(exitedInsideACall) == 0;
+  (void)watched;
+  struct InCall {
+    InCall() { in_student_call = true; }
+    ~InCall() { in_student_call = false; }
+  } in_call;
   try {
     call();
   } catch (const AlgorithmFault& e) {

@@ -36,6 +36,7 @@ TEST(SupervisionRules, ExitCodesInWords) {
   EXPECT_EQ(componentFault(128 + SIGSEGV, 2), "component crashed (SIGSEGV)");
   EXPECT_EQ(componentFault(aula::process::kExitAlgorithmHung, 2), "execute() did not return within 2 s");
   EXPECT_EQ(componentFault(0, 2), "");
+  EXPECT_EQ(componentFault(aula::process::kExitAlgorithmExited, 2), "the algorithm ended the component (exit() inside execute())");
   EXPECT_EQ(componentFault(128 + SIGXFSZ, 2), "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)");
 }
 

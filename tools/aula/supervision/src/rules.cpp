@@ -41,6 +41,7 @@ std::string componentFault(int code, double execute_budget_s) {
     text << "execute() did not return within " << execute_budget_s << " s";
     return text.str();
   }
+  if (code == process::kExitAlgorithmExited) return "the algorithm ended the component (exit() inside execute())";
   if (code == 128 + SIGXFSZ) return "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)";
   if (code > 128) return "component crashed (" + signalName(code) + ")";
   return "";

@@ -7,6 +7,7 @@
 #include <aula/process/process_tree.hpp>
 #include <aula/process/signal_watcher.hpp>
 #include <aula/sandbox/sandbox.hpp>
+#include <aula/supervision/capped_output.hpp>
 #include <aula/supervision/rules.hpp>
 
 #include <chrono>
@@ -19,6 +20,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace aula::supervision {
@@ -41,6 +44,9 @@ class RunSupervisor {
 
   int supervise() {
     process::SignalWatcher signals;  // before the children start: they unblock for themselves
+    // Orphans of the run (a student's detached children) come to the launcher, which ends them.
+    ::prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0);
+    if (run_.sandbox && run_.has_referee) output_ = std::make_unique<CappedOutput>();
     start();
     for (;;) {
       if (signals.stopRequested()) {
@@ -105,8 +111,11 @@ class RunSupervisor {
     const std::optional<auth::Key>& key = run_.key;
     for (size_t i = 0; i < run_.lines.size(); ++i) {
       const Launch launch = launchOf(i, status[1], control[0], key);
-      children_.push_back(std::make_unique<process::ChildProcess>(launch.args, "", "", launch.passed, run_.placement));
+      // The sandboxed component's output goes through the launcher, capped.
+      const std::string output = i == 1 && output_ ? output_->childPath() : "";
+      children_.push_back(std::make_unique<process::ChildProcess>(launch.args, output, output, launch.passed, run_.placement));
       if (launch.close_last) close(launch.passed.back());  // the child has its copy
+      if (i == 1 && output_) output_->childStarted();
     }
     if (control[0] >= 0) close(control[0]);
     if (status[1] >= 0) close(status[1]);
@@ -160,6 +169,10 @@ class RunSupervisor {
   // simulator's status line): the end of a run is seen when it happens.
   void awaitEvent(const process::SignalWatcher& signals) {
     std::vector<pollfd> watched{{signals.fd(), POLLIN, 0}};
+    if (output_) {
+      output_->drain();
+      watched.push_back({output_->readFd(), POLLIN, 0});
+    }
     for (const auto& child : children_) {
       if (child->exitFd() >= 0 && !child->poll()) watched.push_back({child->exitFd(), POLLIN, 0});
     }
@@ -210,6 +223,11 @@ class RunSupervisor {
         std::cerr << "aula: " << (*c)->name() << " stopped with code " << code << "\n";
       }
     }
+    // Whatever the run left behind (detached, SIGTERM blocked): gone with it.
+    for (const pid_t orphan : process::descendantsOf(::getpid())) ::kill(orphan, SIGKILL);
+    while (::waitpid(-1, nullptr, WNOHANG) > 0) {
+    }
+    if (output_) output_->finish();
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
       std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
@@ -227,6 +245,7 @@ class RunSupervisor {
   std::string abort_reason_;
   std::optional<std::chrono::steady_clock::time_point> ending_since_;
   std::chrono::steady_clock::time_point processes_checked_;
+  std::unique_ptr<CappedOutput> output_;
 };
 
 }  // namespace

@@ -7,6 +7,7 @@ constexpr int kExitFinished = 0;        // the run ended as it should
 constexpr int kExitFailed = 1;          // a process failed (or a run ended unfinished)
 constexpr int kExitUsage = 2;           // usage or configuration error: nothing ran
 constexpr int kExitAlgorithmHung = 3;   // a component: the student's code did not return in time
+constexpr int kExitAlgorithmExited = 4; // a component: the student's code called exit() inside a call
 constexpr int kExitInterrupted = 130;   // SIGINT
 constexpr int kExitTerminated = 143;    // SIGTERM
 
