@@ -103,6 +103,27 @@ TEST(Commands, CheckWorldExitsNonZeroWhenTheExerciseCannotRun) {
   EXPECT_NE(not_a_city.output.find("teletaxi: cannot run"), std::string::npos) << not_a_city.output;
 }
 
+// A plugin older than its sources (a failed build, or none) is refused, naming the file; the
+// component says which file and build it runs.
+TEST(Commands, AStaleBuildIsRefusedWithItsReason) {
+  const std::string dir = aula::testing::privateDir() + "/mine";
+  ASSERT_EQ(runToEnd({kBin + "/aula", "new", "vacuum", dir}, 20s).code.value_or(-1), 0);
+  ASSERT_EQ(runToEnd({"cmake", "-S", dir, "-B", dir + "/build"}, 120s).code.value_or(-1), 0);
+  ASSERT_EQ(runToEnd({"cmake", "--build", dir + "/build"}, 300s).code.value_or(-1), 0);
+  const std::string plugin = dir + "/build/libmy_algorithm.so";
+  const std::vector<std::string> run = {kBin + "/aula", "run", "vacuum", "--headless", "--duration=2", "--algorithm=" + plugin,
+                                        "--lcm-url=" + aula::testing::privateLcmUrl()};
+  const Outcome fresh = runToEnd(run, 60s);
+  EXPECT_EQ(fresh.code.value_or(-1), 0) << fresh.output;
+  EXPECT_NE(fresh.output.find("vacuum-cleaner: running " + plugin + " (libmy_algorithm.so (built "), std::string::npos)
+      << fresh.output;
+  std::filesystem::last_write_time(dir + "/MyAlgorithm.cpp",
+                                   std::filesystem::last_write_time(plugin) + std::chrono::seconds(5));
+  const Outcome stale = runToEnd(run, 60s);
+  EXPECT_EQ(stale.code.value_or(-1), 2) << stale.output;
+  EXPECT_NE(stale.output.find("MyAlgorithm.cpp changed after libmy_algorithm.so was built"), std::string::npos) << stale.output;
+}
+
 // --duration is the referee's episode length: each exercise's run ends there, in sim time.
 TEST(Commands, RunHonoursDurationForEveryExercise) {
   const std::string dir = aula::testing::privateDir();

@@ -110,6 +110,8 @@ void AlgorithmHostBase::loadPlugin() {
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
   watchdog_.setInterrupter(plugin_->interrupter());
   installCrashReport(program_, plugin_path_);
+  // Which file and which build runs, said once (a stale build is refused by `aula run`).
+  std::cerr << program_ << ": running " << plugin_path_ << " (" << label() << ")\n";
 }
 
 bool AlgorithmHostBase::reloadPlugin() {

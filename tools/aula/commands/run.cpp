@@ -132,6 +132,10 @@ void checkOptions(const Exercise& ex, const Arguments& args, bool headless) {
   if (args.flag("sandbox") && sandbox::bubblewrapPath().empty()) {
     throw ConfigError("--sandbox needs bubblewrap (/usr/bin/bwrap): apt install bubblewrap");
   }
+  if (args.given("algorithm") && !args.flag("stale")) {
+    const std::string stale = supervision::staleBuild(args.text("algorithm"));
+    if (!stale.empty()) throw ConfigError("--algorithm=" + args.text("algorithm") + ": " + stale + "; --stale runs it anyway");
+  }
   for (const char* option : {"record", "report", "picture", "trace", "report-html"}) {
     if (args.given(option) && ex.referee_settings == nullptr) {
       throw ConfigError(std::string("--") + option + ": '" + ex.name + "' has no referee");
@@ -250,6 +254,7 @@ cli::Command declare() {
       .add(cli::valueOption("report-html", "FILE.html", "the run's own page: a player in the browser, its events and the mark's breakdown"))
       .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
       .flag("3d", false, "also show the world in 3D (the simulator's OpenSceneGraph window)")
+      .flag("stale", false, "run a plugin even when its sources changed after it was built")
       .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
       .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,
                              "real-time factor (0: as fast as possible; default 1 with windows, 0 headless)"))

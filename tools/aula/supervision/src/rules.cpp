@@ -6,6 +6,8 @@
 #include <aula/version.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
@@ -80,6 +82,29 @@ ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::strin
   }
   v.run_over = (e.code != 0 && !faulted_component) || e.last_child || e.role == Role::Simulator;
   return v;
+}
+
+std::string staleBuild(const std::string& plugin_path) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path plugin(plugin_path);
+  if (plugin.extension() != ".so") return "";
+  std::ifstream cache(plugin.parent_path() / "CMakeCache.txt");
+  std::string line, project;
+  while (std::getline(cache, line)) {
+    if (line.rfind("CMAKE_HOME_DIRECTORY:INTERNAL=", 0) == 0) project = line.substr(line.find('=') + 1);
+  }
+  const auto built = fs::last_write_time(plugin, error);
+  if (project.empty() || error) return "";
+  for (const auto& entry : fs::directory_iterator(project, error)) {
+    const std::string ext = entry.path().extension().string();
+    const bool source = ext == ".cpp" || ext == ".hpp" || ext == ".h" || entry.path().filename() == "CMakeLists.txt";
+    if (source && entry.last_write_time(error) > built) {
+      return entry.path().string() + " changed after " + plugin.filename().string() +
+             " was built: the last build failed or did not run (cmake --build " + plugin.parent_path().string() + ")";
+    }
+  }
+  return "";
 }
 
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why) {

@@ -53,6 +53,11 @@ struct ExitVerdict {
 
 ExitVerdict onExit(const ExitEvent& event, double execute_budget_s, const std::string& program);
 
+// Why a student's plugin is older than its sources ("" when it is not, or when its build folder
+// names no sources): the build's CMakeCache.txt names the project; any of its C++ sources or its
+// CMakeLists.txt changed after the plugin was built means the build failed or was not run.
+std::string staleBuild(const std::string& plugin_path);
+
 // The report of a run whose referee cannot write one: no mark, and why.
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why);
 
