@@ -87,7 +87,7 @@ grade() {  # grade ENGINE OUT
 grade slurm "$work/slurm-out"
 grade local "$work/local-out"
 ls "$work/slurm-out/slurm/"task-*.out >/dev/null 2>&1 || fail "no Slurm task wrote its output: the runs did not go through Slurm"
-[ "$(ls "$work/slurm-out/runs"/*/*.json | grep -vc report)" = 8 ] || fail "the Slurm tasks did not write 8 results"
+[ "$(ls "$work/slurm-out/runs"/*/*.json | grep -vc "report\|trace")" = 8 ] || fail "the Slurm tasks did not write 8 results"
 if ! diff "$work/local-out/grades.csv" "$work/slurm-out/grades.csv"; then
   fail "grades.csv differs between the local engine and Slurm"
 fi
