@@ -130,10 +130,13 @@ int runSimulator(int argc, char** argv) {
     throw config::ConfigError("another simulator (instance " + std::to_string(other->instance) + ", world " +
                               other->world + ") is already running on " + bus->url());
   }
-  std::cerr << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
-            << simulator.spec().sha256.substr(0, 12) << ") with " << simulator.physics().robotCount()
-            << " robot(s), step " << options.step_s * 1e3 << " ms, " << (options.lockstep ? "lockstep" : "free-running")
-            << ", seed " << options.seed << (key ? ", graded (signed truth, signed SIM_CONTROL only)" : "") << std::endl;
+  // One write: the run's other processes write to the same terminal or log at the same moment.
+  std::ostringstream started;
+  started << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
+          << simulator.spec().sha256.substr(0, 12) << ") with " << simulator.physics().robotCount() << " robot(s), step "
+          << options.step_s * 1e3 << " ms, " << (options.lockstep ? "lockstep" : "free-running") << ", seed " << options.seed
+          << (key ? ", graded (signed truth, signed SIM_CONTROL only)" : "") << "\n";
+  std::cerr << started.str() << std::flush;
   if (cl.flag("gui")) {
     runWithView(simulator, cl.option("screenshot"), signals);
   } else {

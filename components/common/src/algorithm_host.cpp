@@ -111,7 +111,7 @@ void AlgorithmHostBase::loadPlugin() {
   watchdog_.setInterrupter(plugin_->interrupter());
   installCrashReport(program_, plugin_path_);
   // Which file and which build runs, said once (a stale build is refused by `aula run`).
-  std::cerr << program_ << ": running " << plugin_path_ << " (" << label() << ")\n";
+  std::cerr << (program_ + ": running " + plugin_path_ + " (" + label() + ")\n") << std::flush;  // one write
 }
 
 bool AlgorithmHostBase::reloadPlugin() {
