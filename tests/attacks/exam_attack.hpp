@@ -130,7 +130,9 @@ inline void detachChildren() {
       sigemptyset(&term);
       sigaddset(&term, SIGTERM);
       sigprocmask(SIG_BLOCK, &term, nullptr);
-      const char* args[] = {"sleep", "1000", nullptr};
+      // The test tells its own children from another test's by their length of sleep.
+      const char* length = std::getenv("AULA_EXAM_SLEEP");
+      const char* args[] = {"sleep", length != nullptr ? length : "1000", nullptr};
       ::execvp("sleep", const_cast<char* const*>(args));
       ::_exit(0);
     }

@@ -179,6 +179,8 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
 TEST(Exam, DetachedChildrenDoNotOutliveTheRun) {
   const std::string dir = aula::testing::privateDir();
   const std::string log = dir + "/detach.log";
+  const std::string length = "1000." + std::to_string(::getpid());  // this test's children, not another's
+  ::setenv("AULA_EXAM_SLEEP", length.c_str(), 1);
   aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", std::string("--algorithm=") + AULA_EXAM_DETACH_PLUGIN,
                                    kShortRun, "--lcm-url=" + aula::testing::privateLcmUrl()},
                                   log, log);
@@ -188,8 +190,9 @@ TEST(Exam, DetachedChildrenDoNotOutliveTheRun) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
     std::ifstream cmdline(entry.path() / "cmdline");
     std::string text((std::istreambuf_iterator<char>(cmdline)), std::istreambuf_iterator<char>());
-    if (text == std::string("sleep\0" "1000\0", 11)) ++left;
+    if (text == "sleep" + std::string(1, '\0') + length + std::string(1, '\0')) ++left;
   }
+  ::unsetenv("AULA_EXAM_SLEEP");
   EXPECT_EQ(left, 0) << "detached children outlived the run";
   fs::remove_all(dir);
 }

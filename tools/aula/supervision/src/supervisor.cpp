@@ -224,9 +224,9 @@ class RunSupervisor {
       }
     }
     // Whatever the run left behind (detached, SIGTERM blocked): gone with it.
-    for (const pid_t orphan : process::descendantsOf(::getpid())) ::kill(orphan, SIGKILL);
-    while (::waitpid(-1, nullptr, WNOHANG) > 0) {
-    }
+    const std::vector<pid_t> left = process::descendantsOf(::getpid());
+    for (const pid_t orphan : left) ::kill(orphan, SIGKILL);
+    for (const pid_t orphan : left) ::waitpid(orphan, nullptr, 0);  // ours once orphaned (the subreaper): reaped
     if (output_) output_->finish();
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
