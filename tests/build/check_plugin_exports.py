@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""A component exports to the plugins it loads only the student API (issue 28).
+
+Usage: check_plugin_exports.py NM EXPORTS_LIST COMPONENT...
+
+Each component's dynamic symbols (nm -D --defined-only, demangled) are checked against the
+linker dynamic list it is linked with (cmake/aula_plugin_exports.list): every symbol that names
+Aula must match one of the list's patterns (globs on demangled names, as ld reads them). The
+others are what any program exports for the shared libraries it links (libc's and libstdc++'s
+copy relocations, template instances of the standard library's or OMPL's that a library also
+defines, the linker's section marks). A component linked with -rdynamic (ENABLE_EXPORTS) exports
+its references and some 800 other symbols of Aula's, and fails here; so does a pattern that
+reaches past the API (Laser* also exports the LCM proxy LaserProxy).
+"""
+import fnmatch
+import re
+import subprocess
+import sys
+
+
+
+def patterns(list_path):
+    text = re.sub(r"/\*.*?\*/", "", open(list_path).read(), flags=re.S)
+    cxx = re.search(r'extern\s+"C\+\+"\s*\{(.*?)\}', text, flags=re.S)
+    plain = text.replace(cxx.group(0), "") if cxx else text
+    names = lambda block: [p.strip() for p in block.replace("{", "").replace("}", "").split(";") if p.strip()]
+    return names(plain), names(cxx.group(1)) if cxx else []
+
+
+def exports(nm, program):
+    out = subprocess.run([nm, "-D", "--defined-only", "-C", program], check=True, capture_output=True, text=True).stdout
+    # "0000000000012340 T name": the name is everything after the type letter.
+    return [line.split(" ", 2)[2] for line in out.splitlines() if line.count(" ") >= 2]
+
+
+def main():
+    nm, list_path, programs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    c_names, cxx_globs = patterns(list_path)
+    if not cxx_globs:
+        print(f"FAIL: no extern \"C++\" patterns in {list_path}")
+        return 1
+    failures = 0
+    for program in programs:
+        symbols = exports(nm, program)
+        api = [s for s in symbols if s in c_names or any(fnmatch.fnmatchcase(s, g) for g in cxx_globs)]
+        stray = [s for s in symbols if s not in api and "aula" in s.lower()]
+        name = program.rsplit("/", 1)[-1]
+        if stray:
+            failures += 1
+            print(f"FAIL: {name} exports {len(stray)} symbol(s) that are not the student API:")
+            for s in stray[:20]:
+                print(f"  {s[:160]}")
+        if not api:
+            failures += 1
+            print(f"FAIL: {name} exports nothing of the student API (is it linked with {list_path}?)")
+        if not stray and api:
+            print(f"{name}: {len(api)} API symbols exported, nothing else of Aula's ({len(symbols)} in all)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
