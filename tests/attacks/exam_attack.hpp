@@ -14,6 +14,8 @@
 //   since the API no longer does);
 // - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference;
 // - "exit": exit(0) from inside execute();
+// - "_exit": _exit(0) from inside execute() (no atexit handler runs: the component's exit() watch
+//   never sees it);
 // - "flood": 64 MB to stdout;
 // - "detach": 20 children in sessions of their own, SIGTERM blocked, that would outlive the run.
 #include <aula/vacuum/vacuum_algorithm.hpp>
@@ -164,6 +166,7 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (attack == "privilege") tryPrivileges();
     if (attack == "reexec") reexecAsReference();
     if (attack == "exit") std::exit(0);
+    if (attack == "_exit") ::_exit(0);
     if (attack == "flood") flood();
     if (attack == "detach") detachChildren();
   }

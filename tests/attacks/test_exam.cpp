@@ -96,7 +96,7 @@ int grade(const std::vector<std::string>& folders, const fs::path& out, const st
 TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const fs::path dir = aula::testing::privateDir();
   writeSubmission(dir / "class" / "quiet", "none");
-  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "flood"}) writeSubmission(dir / "class" / attack, attack);
+  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "_exit", "flood"}) writeSubmission(dir / "class" / attack, attack);
   fs::create_directories(dir / "teacher");
   fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
   const std::string targets = (dir / "class" / "quiet" / "MyAlgorithm.cpp").string() + ":" +
@@ -113,12 +113,12 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
 
   std::vector<std::string> folders;
-  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "flood"}) {
+  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "_exit", "flood"}) {
     folders.push_back((dir / "class" / name).string());
   }
   ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string()), 0) << readFile((dir / "class.log").string());
   const auto rows = gradesOf((dir / "out" / "grades.csv").string());
-  ASSERT_EQ(rows.size(), 10u) << readFile((dir / "out" / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 11u) << readFile((dir / "out" / "grades.csv").string());
   const std::string privilege_log = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.log").string());
   for (const std::string& attempt : {std::string("unmount /proc"), std::string("remount / read-write"),
                                      std::string("make a user namespace"), "write " + (dir / "out" / "grades.csv").string()}) {
@@ -133,6 +133,11 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << rows.at("reexec").at("line");
   EXPECT_NE(rows.at("exit").at("line").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
       << rows.at("exit").at("line");
+  // _exit(0) slips past the exit() watch: the launcher still says whose doing it was (not "silent").
+  EXPECT_NE(rows.at("_exit").at("line").find("the algorithm ended the component (exit code 0 in the middle of the run"),
+            std::string::npos)
+      << rows.at("_exit").at("line");
+  EXPECT_EQ(rows.at("_exit").at("line").find("silent"), std::string::npos) << rows.at("_exit").at("line");
   // A flood of output: that run's log is capped (its head, its tail and what was dropped).
   const fs::path flood_log = dir / "out" / "runs" / "flood" / "vacuum-seed1.log";
   EXPECT_LT(fs::file_size(flood_log), 1u << 20);

@@ -58,6 +58,25 @@ TEST(SupervisionRules, ACrashedComponentIsTheRefereesToGrade) {
   EXPECT_TRUE(onExit(told, 2, "vacuum-cleaner").message.empty());
 }
 
+// _exit(0) or quick_exit(0) in the student's code (no atexit handler runs), or exit(0) from a
+// thread of its own: a headless component never ends with 0 on its own in the middle of a run.
+TEST(SupervisionRules, AHeadlessComponentEndingWithZeroMidRunIsTheAlgorithms) {
+  const ExitVerdict v = onExit(exitOf(Role::Component, 0), 2, "vacuum-cleaner");
+  EXPECT_EQ(v.tell_referee, kAlgorithmEndedMidRun);
+  EXPECT_NE(v.tell_referee.find("the algorithm ended the component"), std::string::npos);
+  EXPECT_FALSE(v.run_over);  // the referee grades what there is and ends the run
+  EXPECT_EQ(v.result.value_or(-1), 1);
+  // Told to end (the run's end, the limits), its 0 is nobody's fault.
+  ExitEvent told = exitOf(Role::Component, 0);
+  told.referee_told = true;
+  EXPECT_TRUE(onExit(told, 2, "vacuum-cleaner").tell_referee.empty());
+  EXPECT_TRUE(onExit(told, 2, "vacuum-cleaner").message.empty());
+  // Without a referee (the demo) there is no run to grade.
+  ExitEvent demo = exitOf(Role::Component, 0);
+  demo.has_referee = false;
+  EXPECT_TRUE(onExit(demo, 2, "aula-demo-client").tell_referee.empty());
+}
+
 TEST(SupervisionRules, ADeadRefereeLeavesAReportWithNoMark) {
   const ExitVerdict v = onExit(exitOf(Role::Referee, 128 + SIGKILL), 2, "vacuum-cleaner-referee");
   EXPECT_EQ(v.aborted_report, "vacuum-cleaner-referee died (SIGKILL)");

@@ -49,6 +49,12 @@ std::string componentFault(int code, double execute_budget_s) {
   return "";
 }
 
+// A headless component ends only when it is told to, or with a code that says why: exit code 0
+// in the middle of a run is the algorithm's doing, by a way round the component's exit() watch.
+const char* const kAlgorithmEndedMidRun =
+    "the algorithm ended the component (exit code 0 in the middle of the run: _exit(), quick_exit() or exit() "
+    "outside a call into it)";
+
 ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::string& program) {
   ExitVerdict v;
   const bool component = e.role == Role::Component, referee = e.role == Role::Referee;
@@ -66,7 +72,8 @@ ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::strin
     v.run_over = true;
     return v;
   }
-  const std::string fault = e.has_referee && component ? componentFault(e.code, execute_budget_s) : "";
+  std::string fault = e.has_referee && component ? componentFault(e.code, execute_budget_s) : "";
+  if (e.has_referee && component && e.headless && e.code == 0) fault = kAlgorithmEndedMidRun;
   if (!fault.empty() && !e.referee_told) {
     v.tell_referee = fault;
     v.result = 1;

@@ -51,6 +51,10 @@ struct ExitVerdict {
   std::string message;            // one line for the terminal ("" for none)
 };
 
+// A graded (headless, refereed) component that exits 0 before the referee was told why the run
+// ends was ended by the algorithm (_exit(), quick_exit(), exit() from a thread of its own): the
+// referee is told so (kAlgorithmEndedMidRun), not left to find the component silent.
+extern const char* const kAlgorithmEndedMidRun;
 ExitVerdict onExit(const ExitEvent& event, double execute_budget_s, const std::string& program);
 
 // Why a student's plugin is older than its sources ("" when it is not, or when its build folder
