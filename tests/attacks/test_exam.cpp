@@ -210,7 +210,7 @@ uint64_t pagesOf(const fs::path& folder) {
 // grades of those. The class is graded twice, one run at once with --record (a 120 s vacuum run
 // records about 3 MB): first where there is room, to measure it, then on a tmpfs of its own
 // (mounted in a private mount namespace, with a user namespace when not root) with room for the
-// build, the first two runs and half of the third's recorded log.
+// build, the first two runs and half of the third's recorded log; then, given room, it resumes.
 TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
   const fs::path dir = aula::testing::privateDir();
   const std::string bounce = readFile(std::string(AULA_SOURCE_DIR) + "/tests/data/plugins/vacuum_bounce.cpp");
@@ -239,19 +239,24 @@ TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
                         pagesOf(dir / "roomy" / "runs" / "ben") + third_log / 2 + 4096 * 8;
 
   // The out folder on a tmpfs of `room` bytes; what it holds is copied out when the grade ends.
-  const fs::path out = dir / "full", kept = dir / "kept";
+  // Then the tmpfs is given room and the same command resumes (its exit code in resumed.code).
+  const fs::path out = dir / "full", kept = dir / "kept", resumed = dir / "resumed";
   fs::create_directories(out);
   std::vector<std::string> unshare = {"unshare", "--mount", "--propagation", "private"};
   if (::geteuid() != 0) unshare.push_back("--map-root-user");
   unshare.insert(unshare.end(), {"sh", "-c",
                                  "mount -t tmpfs -o size=" + std::to_string(room) + " aula-full \"$0\" || exit 99; "
-                                 "\"$@\"; code=$?; cp -r \"$0\" " + kept.string() + "; exit $code",
+                                 "\"$@\"; code=$?; cp -r \"$0\" " + kept.string() + "; "
+                                 "mount -o remount,size=64m aula-full \"$0\" || exit 99; echo '--- with room'; "
+                                 "\"$@\"; echo $? > " + (dir / "resumed.code").string() + "; cp -r \"$0\" " + resumed.string() +
+                                 "; exit $code",
                                  out.string()});
   const std::string log = (dir / "full.log").string();
   ASSERT_EQ(gradeInto(unshare, out, log), 1) << readFile(log);
-  const std::string said = readFile(log);
+  const std::string said = readFile(log).substr(0, readFile(log).find("--- with room"));
   EXPECT_NE(said.find("aula grade: stopped after 2 of 4 runs: "), std::string::npos) << said;
   EXPECT_NE(said.find("the run of cat on vacuum.world seed 1 ended without its report"), std::string::npos) << said;
+  EXPECT_NE(said.find("No space left on device"), std::string::npos) << said;
   EXPECT_NE(said.find("hold the 2 finished runs only"), std::string::npos) << said;
 
   // The finished runs' grades, as where there was room; the others not graded, and nothing left
@@ -266,6 +271,12 @@ TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
   for (const auto& entry : fs::recursive_directory_iterator(kept)) {
     EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
   }
+  // With room, the same command does the two runs left, and the class's grades are as if the
+  // folder had never been full.
+  const std::string again = readFile(log).substr(said.size());
+  EXPECT_EQ(readFile((dir / "resumed.code").string()), "0\n") << again;
+  EXPECT_NE(again.find("2 runs already done (same plugin, world and seed): skipped"), std::string::npos) << again;
+  EXPECT_EQ(readFile((resumed / "grades.csv").string()), readFile((dir / "roomy" / "grades.csv").string()));
   fs::remove_all(dir);
 }
 
