@@ -202,6 +202,89 @@ TEST(Exam, DetachedChildrenDoNotOutliveTheRun) {
   fs::remove_all(dir);
 }
 
+// What the files under `folder` take on a tmpfs (whole pages).
+uint64_t pagesOf(const fs::path& folder) {
+  uint64_t bytes = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(folder)) {
+    if (entry.is_regular_file()) bytes += (entry.file_size() + 4095) / 4096 * 4096;
+  }
+  return bytes;
+}
+
+// A full out folder ends the grade with that reason, keeps every finished run and gives the
+// grades of those. The class is graded twice, one run at once with --record (a 120 s vacuum run
+// records about 3 MB): first where there is room, to measure it, then on a tmpfs of its own
+// (mounted in a private mount namespace, with a user namespace when not root) with room for the
+// build, the first two runs and half of the third's recorded log; then, given room, it resumes.
+TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
+  const fs::path dir = aula::testing::privateDir();
+  const std::string bounce = readFile(std::string(AULA_SOURCE_DIR) + "/tests/data/plugins/vacuum_bounce.cpp");
+  const std::vector<std::string> students = {"ana", "ben", "cat", "dan"};
+  std::vector<std::string> argv = {kAula, "grade", "vacuum"};
+  for (const std::string& student : students) {
+    fs::create_directories(dir / "class" / student);
+    std::ofstream(dir / "class" / student / "MyAlgorithm.cpp") << bounce;
+    argv.push_back((dir / "class" / student).string());
+  }
+  argv.insert(argv.end(), {"--seeds=1", "--jobs=1", "--record", "--similarity=off", "--Vacuum.Referee.Duration=120"});
+  auto gradeInto = [&](const std::vector<std::string>& before, const fs::path& out, const std::string& log) {
+    std::vector<std::string> command = before;
+    command.insert(command.end(), argv.begin(), argv.end());
+    command.push_back("--out=" + out.string());
+    aula::process::ChildProcess child(command, log, log);
+    return child.wait(300s).value_or(-1);
+  };
+  ASSERT_EQ(gradeInto({}, dir / "roomy", (dir / "roomy.log").string()), 0) << readFile((dir / "roomy.log").string());
+  const auto roomy = gradesOf((dir / "roomy" / "grades.csv").string());
+  ASSERT_EQ(roomy.size(), 4u);
+  const uint64_t third_log = fs::file_size(dir / "roomy" / "runs" / "cat" / "vacuum-seed1.lcmlog");
+  ASSERT_GT(third_log, 2u << 20) << "the third run's recorded log must be what fills the folder";
+  const uint64_t room = pagesOf(dir / "roomy" / "build") + fs::file_size(dir / "roomy" / "manifest.json") +
+                        pagesOf(dir / "roomy" / "runs" / "ana") +
+                        pagesOf(dir / "roomy" / "runs" / "ben") + third_log / 2 + 4096 * 8;
+
+  // The out folder on a tmpfs of `room` bytes; what it holds is copied out when the grade ends.
+  // Then the tmpfs is given room and the same command resumes (its exit code in resumed.code).
+  const fs::path out = dir / "full", kept = dir / "kept", resumed = dir / "resumed";
+  fs::create_directories(out);
+  std::vector<std::string> unshare = {"unshare", "--mount", "--propagation", "private"};
+  if (::geteuid() != 0) unshare.push_back("--map-root-user");
+  unshare.insert(unshare.end(), {"sh", "-c",
+                                 "mount -t tmpfs -o size=" + std::to_string(room) + " aula-full \"$0\" || exit 99; "
+                                 "\"$@\"; code=$?; cp -r \"$0\" " + kept.string() + "; "
+                                 "mount -o remount,size=64m aula-full \"$0\" || exit 99; echo '--- with room'; "
+                                 "\"$@\"; echo $? > " + (dir / "resumed.code").string() + "; cp -r \"$0\" " + resumed.string() +
+                                 "; exit $code",
+                                 out.string()});
+  const std::string log = (dir / "full.log").string();
+  ASSERT_EQ(gradeInto(unshare, out, log), 1) << readFile(log);
+  const std::string said = readFile(log).substr(0, readFile(log).find("--- with room"));
+  EXPECT_NE(said.find("aula grade: stopped after 2 of 4 runs: "), std::string::npos) << said;
+  EXPECT_NE(said.find("the run of cat on vacuum.world seed 1 ended without its report"), std::string::npos) << said;
+  EXPECT_NE(said.find("No space left on device"), std::string::npos) << said;
+  EXPECT_NE(said.find("hold the 2 finished runs only"), std::string::npos) << said;
+
+  // The finished runs' grades, as where there was room; the others not graded, and nothing left
+  // of the run the full folder stopped (no partial log, report or temporary file).
+  const auto rows = gradesOf((kept / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 2u) << readFile((kept / "grades.csv").string());
+  EXPECT_EQ(rows.at("ana").at("line"), roomy.at("ana").at("line"));
+  EXPECT_EQ(rows.at("ben").at("line"), roomy.at("ben").at("line"));
+  EXPECT_TRUE(fs::exists(kept / "runs" / "ben" / "vacuum-seed1.lcmlog"));
+  EXPECT_TRUE(fs::is_empty(kept / "runs" / "cat"));
+  EXPECT_FALSE(fs::exists(kept / "runs" / "dan"));
+  for (const auto& entry : fs::recursive_directory_iterator(kept)) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp."), std::string::npos) << entry.path();
+  }
+  // With room, the same command does the two runs left, and the class's grades are as if the
+  // folder had never been full.
+  const std::string again = readFile(log).substr(said.size());
+  EXPECT_EQ(readFile((dir / "resumed.code").string()), "0\n") << again;
+  EXPECT_NE(again.find("2 runs already done (same plugin, world and seed): skipped"), std::string::npos) << again;
+  EXPECT_EQ(readFile((resumed / "grades.csv").string()), readFile((dir / "roomy" / "grades.csv").string()));
+  fs::remove_all(dir);
+}
+
 // Two sandboxed runs at once on the same LCM port: each its own network, so both grade as alone.
 TEST(Exam, TwoSandboxedRunsOnOnePortGradeAsAlone) {
   const std::string dir = aula::testing::privateDir();

@@ -4,6 +4,7 @@
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/grades.hpp>
 #include <aula/process/child_process.hpp>
+#include <aula/process/exit_codes.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -103,6 +104,26 @@ void runOnSlurm(const Manifest& manifest, const std::string& manifest_path, cons
   }
 }
 
+// The out folder took no more (GradeStopped): grades.csv from the runs that finished, if there is
+// room for it, and how to go on. Exit 1: the grade is not complete.
+int reportStopped(const GradeStopped& stop, const Manifest& manifest) {
+  const auto finished = std::count_if(manifest.runs.begin(), manifest.runs.end(), upToDate);
+  const auto total = static_cast<long>(manifest.runs.size());
+  std::cout << std::flush;
+  std::cerr << "\naula grade: stopped after " << finished << " of " << total << " runs: " << stop.what() << "\n"
+            << std::flush;
+  try {
+    printGrades(collect(manifest.out_dir), manifest.out_dir);
+    std::cerr << "aula grade: grades.csv and report.html hold the " << finished << " finished runs only\n";
+  } catch (const std::runtime_error& e) {
+    std::cerr << "aula grade: no grades.csv either: " << e.what() << "\n"
+              << "once there is room: aula grade --collect=" << manifest.out_dir << "\n";
+  }
+  std::cerr << "aula grade: every finished run keeps its result; once there is room, the same command does the other "
+            << total - finished << "\n";
+  return process::kExitFailed;
+}
+
 }  // namespace
 
 int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
@@ -123,7 +144,11 @@ int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
   if (request.engine == "slurm") {
     runOnSlurm(manifest, manifest_path, bin_dir);
   } else {
-    runLocally(manifest, request.jobs);
+    try {
+      runLocally(manifest, request.jobs);
+    } catch (const GradeStopped& stop) {
+      return reportStopped(stop, manifest);
+    }
   }
   printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise),
               request.out_dir);

@@ -50,7 +50,7 @@ std::string writeBuildProject(const Submission& s, const std::string& exercise, 
   }
   std::sort(sources.begin(), sources.end());
   fs::create_directories(project);
-  std::ofstream cmake(project / "CMakeLists.txt");
+  std::ostringstream cmake;
   cmake << "# " << s.student << "'s submission as a plugin (written by aula grade).\n"
         << "cmake_minimum_required(VERSION 3.16)\n"
         << "project(aula_submission CXX)\n"
@@ -58,7 +58,15 @@ std::string writeBuildProject(const Submission& s, const std::string& exercise, 
         << "aula_add_algorithm(NAME my_algorithm EXERCISE " << exercise << " SOURCES";
   for (const auto& source : sources) cmake << "\n  \"" << source << "\"";
   cmake << ")\n";
-  if (!cmake) throw ConfigError("aula grade: cannot write " + (project / "CMakeLists.txt").string());
+  // The same project is left as it is: a resumed grade does not make its plugin look older than
+  // its project (aula run refuses a stale build).
+  const fs::path path = project / "CMakeLists.txt";
+  std::ifstream before(path);
+  if (std::string((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>()) != cmake.str()) {
+    std::ofstream out(path);
+    out << cmake.str();
+    if (!out.flush()) throw ConfigError("aula grade: cannot write " + path.string());
+  }
   return (project / "build" / "libmy_algorithm.so").string();
 }
 

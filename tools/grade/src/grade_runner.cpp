@@ -94,6 +94,17 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   return result;
 }
 
+// A run that did not finish leaves nothing: its output, the referee's files, its recorded log
+// (with its key) and any result from an earlier try (another plugin's) are removed.
+void discardUnfinished(const PlannedRun& run) {
+  const fs::path result(run.result_path);
+  const std::string stem = result.stem().string() + ".";  // "vacuum-seed1.": not "vacuum-seed10."
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(result.parent_path(), error)) {
+    if (entry.path().filename().string().rfind(stem, 0) == 0) fs::remove(entry.path(), error);
+  }
+}
+
 // One run under way: `aula run ...` as a child, with the run's wall-time limit.
 class RunInProgress {
  public:
@@ -127,8 +138,22 @@ class RunInProgress {
     }
     const double wall_s = std::chrono::duration<double>(Clock::now() - started_).count();
     auto result = resultOf(run_, code, timed_out, wall_s);
-    std::filesystem::create_directories(std::filesystem::path(run_.result_path).parent_path());
-    config::writeFileAtomically(run_.result_path, result.dump(2) + "\n", "the run's result");
+    const fs::path folder = fs::path(run_.result_path).parent_path();
+    std::error_code error;
+    const uint64_t free_bytes = fs::space(folder, error).available;
+    if (!failureOf(result).empty() && !error && free_bytes < kRoomForARunBytes) {
+      discardUnfinished(run_);
+      throw GradeStopped(folder.string() + ": its file system is full (" + std::to_string(free_bytes / 1024) +
+                         " KiB free); the run of " + run_.student + " on " + run_.world_name + " seed " +
+                         std::to_string(run_.seed) + " ended without its report (" + failureOf(result) +
+                         "), which is not the student's failure");
+    }
+    try {
+      config::writeFileAtomically(run_.result_path, result.dump(2) + "\n", "the run's result");
+    } catch (const std::runtime_error& e) {
+      discardUnfinished(run_);
+      throw GradeStopped(e.what());
+    }
     return result;
   }
 
@@ -206,7 +231,16 @@ void runLocal(const Manifest& manifest, int jobs,
       ++next;
     }
     for (auto it = running.begin(); it != running.end();) {
-      const auto result = it->second->poll();
+      std::optional<nlohmann::ordered_json> result;
+      try {
+        result = it->second->poll();
+      } catch (const GradeStopped&) {
+        for (auto& [planned, under_way] : running) {
+          under_way.reset();  // stops the run's launcher, which stops its processes
+          discardUnfinished(*planned);
+        }
+        throw;
+      }
       if (!result) {
         ++it;
         continue;

@@ -199,8 +199,9 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
                                   const std::string& exercise) {
   const auto results = readResults(out_dir);
   const auto grades = gradeStudents(results);
-  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results);
+  // The grades first: on a disk with little room left, they are what matters most.
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
+  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results);
   config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results, similar), "the class report");
   // A page per run, beside its result, for the teacher to hand to that student alone.
   for (const auto& r : results) {

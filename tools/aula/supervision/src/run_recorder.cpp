@@ -118,7 +118,7 @@ RunRecorder::RunRecorder(const std::string& path, const std::string& url, const 
 
 void RunRecorder::onMessage(const lcm::ReceiveBuffer* message, const std::string& channel) {
   lcm::LogEvent event{0, message->recv_utime, channel, static_cast<int32_t>(message->data_size), message->data};
-  if (log_->writeEvent(&event) != 0) write_failed_ = true;
+  if (log_->writeEvent(&event) != 0 && write_error_ == 0) write_error_ = errno != 0 ? errno : EIO;
   if (signer_) signer_->add(event.timestamp, channel, message->data, message->data_size);
   last_utime_ = event.timestamp;
   ++events_;
@@ -135,13 +135,14 @@ void RunRecorder::stop() {
   if (signer_) {  // the last event: every event's tag, chunk by chunk
     std::string signature = signer_->finish();
     lcm::LogEvent event{0, last_utime_, kSignatureChannel, static_cast<int32_t>(signature.size()), signature.data()};
-    if (log_->writeEvent(&event) != 0) write_failed_ = true;
+    if (log_->writeEvent(&event) != 0 && write_error_ == 0) write_error_ = errno != 0 ? errno : EIO;
   }
   log_.reset();  // flushes and closes the file
   std::error_code error;
   const auto bytes = std::filesystem::file_size(path_, error);
-  if (write_failed_ || error) {
-    std::cerr << "aula: could not write every message to " << path_ << ": the log is incomplete\n";
+  if (write_error_ != 0 || error) {
+    std::cerr << "aula: could not write every message to " << path_ << " ("
+              << std::strerror(write_error_ != 0 ? write_error_ : error.value()) << "): the log is incomplete\n";
     return;
   }
   std::cerr << "aula: run recorded in " << path_ << " (" << events_ << " messages, " << bytes / 1024 << " KiB"

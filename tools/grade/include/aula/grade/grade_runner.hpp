@@ -2,23 +2,38 @@
 // Running manifest entries: each run is `aula run ... --headless` on its own LCM port, with a
 // wall-time limit; its result (the referee's report plus who, what and why it failed) goes to
 // runs/<student>/<world>-seed<k>.json. A run that crashes, hangs or runs out of time is
-// recorded with its reason and the batch goes on.
+// recorded with its reason and the batch goes on. An out folder that can take no more (a full
+// disk, a quota) stops the batch instead (GradeStopped): that is not any student's failure.
 
 #include <aula/grade/grade_plan.hpp>
 
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 namespace aula::grade {
 
+// The grade cannot go on: a run's result could not be written (the message names the file and
+// the system's reason), or a run failed while the out folder had less than kRoomForARunBytes free
+// (a report that could not be written is no verdict on the student). The runs under way are
+// stopped and leave no file; every run finished before keeps its result.
+struct GradeStopped : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// What a run needs in the out folder beyond its recorded log: its capped output (at most 320 KiB),
+// the referee's report, picture and trace, and its result.
+constexpr uint64_t kRoomForARunBytes = 1u << 20;
+
 // Is the run's result already there for the same plugin, world and seed (resume)?
 bool upToDate(const PlannedRun& run);
 
-// Runs one entry to its end (Slurm's `aula grade-task MANIFEST INDEX`). Returns the result.
+// Runs one entry to its end (Slurm's `aula grade-task MANIFEST INDEX`). Returns the result;
+// throws GradeStopped.
 nlohmann::ordered_json runOne(const PlannedRun& run);
 
 // Runs the entries that are not up to date, at most `jobs` at once. `on_done(run, result,
-// done, total)` after each.
+// done, total)` after each. Throws GradeStopped once every run under way is stopped.
 struct Progress {
   int done = 0, total = 0, failed = 0, skipped = 0;
 };

@@ -69,7 +69,7 @@ class RunRecorder {
   std::atomic<bool> stop_{false};
   bool record_written_ = false;    // the thread's, or the constructor's before it starts
   long long events_ = 0;
-  bool write_failed_ = false;
+  int write_error_ = 0;  // errno of the first event that could not be written
 };
 
 }  // namespace aula::supervision
