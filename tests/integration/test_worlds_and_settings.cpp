@@ -188,6 +188,51 @@ TEST(Worlds, ModelsResolveThroughAulaModelPathAndAWorldWithoutPhysicsStepsAtTheS
   EXPECT_NE(out.output.find("step 10 ms"), std::string::npos) << out.output;
 }
 
+TEST(Worlds, AStudentsRoombaFolderWhereTheRunStartsDoesNotShadowTheTeachersModel) {
+  // The teacher's roomba on AULA_MODEL_PATH; `aula run` started in the student's folder, which
+  // holds a roomba/ folder of the student's own (no model.config).
+  const std::string dir = aula::testing::privateDir();
+  fs::create_directories(dir + "/teacher/models");
+  fs::copy(kWorlds + "models/roomba", dir + "/teacher/models/roomba", fs::copy_options::recursive);
+  writeFile(dir + "/teacher/worlds/house.world", readFile(kWorlds + "vacuum.world"));
+  writeFile(dir + "/student/roomba/CMakeLists.txt", "# the student's own roomba\n");
+  const auto previous = fs::current_path();
+  fs::current_path(dir + "/student");
+  setenv("AULA_MODEL_PATH", (dir + "/teacher/models").c_str(), 1);
+  const Outcome out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--world=" + dir + "/teacher/worlds/house.world",
+                                "--algorithm=reference", "--Vacuum.Referee.Duration=5", "--report=" + dir + "/report.json",
+                                "--lcm-url=" + aula::testing::privateLcmUrl()},
+                               60s);
+  unsetenv("AULA_MODEL_PATH");
+  fs::current_path(previous);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_EQ(out.output.find("model.config"), std::string::npos) << out.output;
+  EXPECT_NE(readFile(dir + "/report.json").find("\"world\": \"house.world\""), std::string::npos);
+}
+
+TEST(Worlds, AWorldWhoseOnlyTaxiHasAnotherNameRunsWithIt) {
+  const std::string dir = aula::testing::privateDir();
+  std::string city = readFile(kWorlds + "cityLarge.world");
+  city = std::regex_replace(city, std::regex("<name>taxi_holo</name>"), "<name>taxi</name>");
+  writeFile(dir + "/city.world", city);
+  const std::string report = dir + "/report.json";
+  const Outcome out = runToEnd({kBin + "/aula", "run", "teletaxi", "--headless", "--world=" + dir + "/city.world",
+                                "--algorithm=reference", "--TeleTaxi.Referee.Timeout=20", "--report=" + report,
+                                "--lcm-url=" + aula::testing::privateLcmUrl()},
+                               90s);
+  EXPECT_EQ(out.code.value_or(-1), 0) << out.output;
+  EXPECT_NE(out.output.find("teletaxi: the world has no robot 'taxi_holo' (TeleTaxi.Robot); using its only robot with "
+                            "the exercise's plugins, 'taxi'\n"),
+            std::string::npos)
+      << out.output;
+  EXPECT_GT(aula::testing::jsonNumber(readFile(report), "path_length_m"), 20.0) << readFile(report);  // it drove
+  // check-world agrees, and says which robot.
+  const Outcome check = runToEnd({kBin + "/aula", "check-world", dir + "/city.world", "--exercise=teletaxi"}, 20s);
+  EXPECT_EQ(check.code.value_or(-1), 0) << check.output;
+  EXPECT_NE(check.output.find("teletaxi: the robot is 'taxi'"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("teletaxi: ok"), std::string::npos) << check.output;
+}
+
 TEST(Worlds, ARefereeGivenAnotherWorldThanTheSimulatorsRefusesToGrade) {
   const std::string dir = aula::testing::privateDir();
   const std::string other = dir + "/moved_roomba.world";
@@ -237,7 +282,12 @@ TEST(Worlds, CheckWorldSaysWhatEachExerciseWouldMiss) {
   EXPECT_NE(out.output.find("robot 'roomba' at (-1, 1.5)"), std::string::npos) << out.output;
   EXPECT_NE(out.output.find("  laser 'laser' on ROOMBA_LASER"), std::string::npos) << out.output;
   EXPECT_NE(out.output.find("vacuum: ok"), std::string::npos) << out.output;
-  EXPECT_NE(out.output.find("teletaxi: cannot run; the world needs a robot named 'taxi_holo' (TeleTaxi.Robot)"),
+  // The roomba is the house's only robot with a taxi's plugins, but the taxi's destination is off the map.
+  EXPECT_NE(out.output.find("teletaxi: cannot run; the world needs its points on free floor: default: "
+                            "TeleTaxi.Destination = 120, -40: (120.0, -40.0) is off the map"),
+            std::string::npos)
+      << out.output;
+  EXPECT_NE(out.output.find("autopark: cannot run; the world needs a robot named 'car' (Autopark.Robot)"),
             std::string::npos)
       << out.output;
   // A roomba without its laser: the vacuum exercise says so.

@@ -144,13 +144,92 @@ void addStatics(const sdf::Model& model, const Eigen::Isometry3d& model_pose, co
 }
 
 // Malformed XML: sdformat only says "Unable to read file"; tinyxml2 gives the line.
-void checkXml(const std::string& path) {
-  tinyxml2::XMLDocument doc;
+void loadXml(const std::string& path, tinyxml2::XMLDocument& doc) {
   if (doc.LoadFile(path.c_str()) != tinyxml2::XML_SUCCESS) {
     const char* detail = doc.ErrorStr();
     throw WorldError(path + ":" + std::to_string(doc.ErrorLineNum()) + ": malformed XML: " +
                      (detail != nullptr ? detail : "parse error"));
   }
+}
+
+// What an <include><uri> names, resolved as sdformat will resolve it once the model folders are
+// its URI paths: model://NAME[/REST] is FOLDER/NAME[/REST] for the first FOLDER holding NAME,
+// which must then be a model (model.config); any other URI must be an absolute path. Nothing is
+// looked up in the working directory (sdformat would look there first: a student's roomba/
+// folder beside `aula run` would shadow the teacher's model).
+std::string resolveInclude(const std::string& uri, const std::string& file, const std::vector<std::string>& folders) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (uri.rfind("model://", 0) == 0) {
+    const std::string rest = uri.substr(8);
+    const std::string name = rest.substr(0, rest.find('/'));
+    for (const auto& folder : folders) {
+      const std::string candidate = folder + "/" + name;
+      if (!fs::exists(candidate, error)) continue;
+      if (!fs::exists(candidate + "/model.config", error)) {
+        throw WorldError(file + ": " + uri + " is " + candidate + ", which has no model.config");
+      }
+      return folder + "/" + rest;
+    }
+    std::string text = file + ": model '" + name + "' not found: looked for " + name + "/model.config in";
+    for (const auto& folder : folders) text += " " + folder;
+    throw WorldError(text + " (add a folder with AULA_MODEL_PATH)");
+  }
+  const bool file_scheme = uri.rfind("file://", 0) == 0;
+  const std::string target = file_scheme ? uri.substr(7) : uri;
+  if ((!file_scheme && uri.find("://") != std::string::npos) || target.empty() || target[0] != '/') {
+    throw WorldError(file + ": <include><uri>" + uri +
+                     "</uri>: give model://NAME (found on the model path) or an absolute path");
+  }
+  if (!fs::exists(target, error)) throw WorldError(file + ": <include><uri>" + uri + "</uri>: no such file");
+  return target;
+}
+
+void collectIncludeUris(const tinyxml2::XMLElement* element, std::vector<std::string>& uris) {
+  for (const auto* child = element->FirstChildElement(); child != nullptr; child = child->NextSiblingElement()) {
+    if (std::string(child->Name()) == "include") {
+      const auto* uri = child->FirstChildElement("uri");
+      uris.push_back(uri != nullptr && uri->GetText() != nullptr ? trim(uri->GetText()) : "");
+    }
+    collectIncludeUris(child, uris);
+  }
+}
+
+// Every file `file` includes, depth first, before sdformat reads any of it: a world or model that
+// includes itself is refused here (sdformat would recurse until memory runs out). Fills
+// `model_dirs` with the model folders used.
+void walkIncludes(const std::string& file, const std::vector<std::string>& folders, std::vector<std::string>& chain,
+                  std::set<std::string>& model_dirs) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const std::string canonical = fs::weakly_canonical(file, error).string();
+  if (std::find(chain.begin(), chain.end(), canonical) != chain.end() || chain.size() >= 32) {
+    std::string cycle;
+    for (const auto& f : chain) cycle += f + " -> ";
+    throw WorldError(chain.front() + ": includes itself (" + cycle + canonical + ")");
+  }
+  chain.push_back(canonical);
+  tinyxml2::XMLDocument doc;
+  loadXml(file, doc);
+  std::vector<std::string> uris;
+  if (doc.RootElement() != nullptr) collectIncludeUris(doc.RootElement(), uris);
+  for (const auto& uri : uris) {
+    const std::string target = resolveInclude(uri, file, folders);
+    if (!fs::is_directory(target, error)) {
+      walkIncludes(target, folders, chain, model_dirs);
+      continue;
+    }
+    model_dirs.insert(target);
+    tinyxml2::XMLDocument config;
+    loadXml(target + "/model.config", config);
+    const auto* model = config.RootElement();
+    for (const auto* sdf = model != nullptr ? model->FirstChildElement("sdf") : nullptr; sdf != nullptr;
+         sdf = sdf->NextSiblingElement("sdf")) {
+      const std::string sdf_file = target + "/" + (sdf->GetText() != nullptr ? trim(sdf->GetText()) : "");
+      if (fs::is_regular_file(sdf_file, error)) walkIncludes(sdf_file, folders, chain, model_dirs);
+    }
+  }
+  chain.pop_back();
 }
 
 }  // namespace
@@ -160,23 +239,13 @@ void checkXml(const std::string& path) {
 extern "C" __attribute__((visibility("default"))) void aula_world_parse_sdf(const std::string& path, const std::vector<std::string>& folders,
                                      aula::world::WorldSpec& spec, std::vector<std::string>& inputs) {
   using namespace aula::world;
-  checkXml(path);
-  // model://NAME -> the first FOLDER/NAME with a model.config, Gazebo style (GAZEBO_MODEL_PATH).
+  std::vector<std::string> chain;
+  std::set<std::string> included;  // model folders used: the cache's inputs
+  walkIncludes(path, folders, chain, included);
+  // model://NAME -> the first FOLDER/NAME (every one checked above), Gazebo style
+  // (GAZEBO_MODEL_PATH). As URI paths they are searched before the working directory.
   sdf::ParserConfig config;
-  auto unresolved = std::make_shared<std::vector<std::string>>();
-  auto included = std::make_shared<std::vector<std::string>>();  // model folders used: the cache's inputs
-  config.SetFindCallback([folders, unresolved, included](const std::string& uri) -> std::string {
-    const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
-    for (const auto& folder : folders) {
-      const std::string candidate = folder + "/" + name;
-      if (std::ifstream(candidate + "/model.config").good()) {
-        included->push_back(candidate);
-        return candidate;
-      }
-    }
-    unresolved->push_back(uri);
-    return "";  // sdformat reports it; the message below says where we looked
-  });
+  for (const auto& folder : folders) config.AddURIPath("model://", folder);
   sdf::Root root;
   const sdf::Errors errors = root.Load(path, config);
   if (!errors.empty()) {
@@ -186,12 +255,6 @@ extern "C" __attribute__((visibility("default"))) void aula_world_parse_sdf(cons
       text += "\n  " + e.Message();
       if (e.FilePath().has_value() && *e.FilePath() != path) text += " [" + *e.FilePath() + "]";
       if (e.LineNumber().has_value()) text += " (line " + std::to_string(*e.LineNumber()) + ")";
-    }
-    for (const auto& uri : *unresolved) {
-      const std::string name = uri.rfind("model://", 0) == 0 ? uri.substr(8) : uri;
-      text += "\n  model '" + name + "' not found: looked for " + name + "/model.config in";
-      for (const auto& folder : folders) text += " " + folder;
-      text += " (add a folder with AULA_MODEL_PATH)";
     }
     throw WorldError(text);
   }
@@ -243,7 +306,7 @@ extern "C" __attribute__((visibility("default"))) void aula_world_parse_sdf(cons
   }
   // The cache's inputs: the world file and every file of each model it included.
   std::set<std::string> files = {path};
-  for (const auto& folder : *included) {
+  for (const auto& folder : included) {
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
       if (entry.is_regular_file(error)) files.insert(entry.path().string());

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sys/wait.h>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -153,6 +154,65 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
   const std::string robot_mesh = errorOf(kData + "robot_mesh.world");
   EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': only <box> and <cylinder>"))
       << robot_mesh;
+}
+
+namespace {
+std::string freshDir() {
+  char dir[] = "/tmp/aula_world_test_XXXXXX";
+  if (mkdtemp(dir) == nullptr) ADD_FAILURE() << "mkdtemp";
+  return dir;
+}
+void writeText(const std::string& path, const std::string& text) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream(path) << text;
+}
+}  // namespace
+
+TEST(LoadWorld, AWorldOrModelThatIncludesItselfIsRefusedAtOnce) {
+  const std::string dir = freshDir();
+  const std::string world = dir + "/loop.world";
+  writeText(world, "<?xml version=\"1.0\"?><sdf version=\"1.9\"><world name=\"loop\"><include><uri>file://" + world +
+                       "</uri></include></world></sdf>\n");
+  std::string error = errorOf(world);
+  EXPECT_TRUE(contains(error, "loop.world: includes itself (" + world + " -> " + world + ")")) << error;
+  // A model whose model.sdf includes the model again, one level down.
+  writeText(dir + "/models/echo/model.config", "<model><name>echo</name><sdf version=\"1.9\">model.sdf</sdf></model>");
+  writeText(dir + "/models/echo/model.sdf", "<sdf version=\"1.9\"><model name=\"echo\"><static>true</static>"
+                                            "<include><uri>model://echo</uri></include></model></sdf>");
+  writeText(world, "<sdf version=\"1.9\"><world name=\"w\"><include><uri>model://echo</uri></include></world></sdf>");
+  error = errorOf(world);
+  EXPECT_TRUE(contains(error, "includes itself (" + world + " -> " + dir + "/models/echo/model.sdf -> " + dir +
+                                  "/models/echo/model.sdf)"))
+      << error;
+  // A relative path would be looked up in the working directory first: refused with what to give.
+  writeText(world, "<sdf version=\"1.9\"><world name=\"w\"><include><uri>loop.world</uri></include></world></sdf>");
+  error = errorOf(world);
+  EXPECT_TRUE(contains(error, "<include><uri>loop.world</uri>: give model://NAME (found on the model path) or an "
+                              "absolute path"))
+      << error;
+}
+
+TEST(LoadWorld, ModelUrisNeverResolveInTheWorkingDirectory) {
+  // A student's roomba/ folder (no model.config) where the program starts, and an empty folder
+  // of the same name first on the model path: the first is ignored, the second named.
+  const std::string dir = freshDir();
+  writeText(dir + "/student/roomba/main.cpp", "int main() {}\n");
+  writeText(dir + "/house.world", "<sdf version=\"1.9\"><world name=\"h\"><include><uri>model://roomba</uri>"
+                                  "</include></world></sdf>");
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir + "/student");
+  const WorldSpec w = loadWorld(dir + "/house.world", {kWorlds + "models"});
+  ASSERT_EQ(w.robots.size(), 1u);
+  EXPECT_EQ(w.robots[0].name, "roomba");
+  std::filesystem::create_directories(dir + "/empty/roomba");
+  std::string error;
+  try {
+    loadWorld(dir + "/house.world", {dir + "/empty", kWorlds + "models"});
+  } catch (const WorldError& e) {
+    error = e.what();
+  }
+  std::filesystem::current_path(previous);
+  EXPECT_TRUE(contains(error, "model://roomba is " + dir + "/empty/roomba, which has no model.config")) << error;
 }
 
 TEST(LoadWorld, NestedStaticModelsGroundPlaneAndInlineRobot) {

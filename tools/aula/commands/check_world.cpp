@@ -1,6 +1,7 @@
 // aula check-world FILE: what a teacher runs on a new world: its facts, and what each exercise
 // would miss in it.
 #include "commands.hpp"
+#include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
 #include <aula/image/png.hpp>
@@ -42,17 +43,17 @@ void printWorld(const world::WorldSpec& spec) {
 std::vector<std::string> exerciseProblems(const settings::Exercise& ex, const world::WorldSpec& spec) {
   const Config cfg = ex.component_settings->resolve(Config());
   const std::string robot_key = ex.section + ".Robot";
-  const world::RobotSpec* robot = spec.findRobot(cfg.getString(robot_key));
+  const world::RobotSpec* robot = exerciseRobot(ex, spec, cfg.getString(robot_key));
   if (robot == nullptr) return {"a robot named '" + cfg.getString(robot_key) + "' (" + robot_key + ")"};
-  std::vector<std::string> missing;
-  for (const std::string& need : ex.required_plugins) {
-    const auto colon = need.find(':');
-    try {
-      world::channelOf(*robot, need.substr(0, colon), colon == std::string::npos ? "" : need.substr(colon + 1));
-    } catch (const world::WorldError&) {
-      missing.push_back("a " + need.substr(0, colon) + " plugin" +
-                        (colon == std::string::npos ? "" : " named '" + need.substr(colon + 1) + "'"));
-    }
+  if (robot->name != cfg.getString(robot_key)) {
+    std::cout << ex.name << ": the robot is '" << robot->name << "', the world's only one with the exercise's plugins ("
+              << robot_key << " = " << cfg.getString(robot_key) << " is not in the world)\n";
+  }
+  std::vector<std::string> missing = missingPlugins(ex, *robot);
+  try {
+    checkPointsOnTheMap(ex, cfg, spec.source_path);
+  } catch (const config::ConfigError& e) {
+    missing.push_back(std::string("its points on free floor: ") + e.what());
   }
   if (cfg.has(ex.section + ".Map.Resolution") && !spec.statics.empty()) {
     const auto z = cfg.getDoubleList(ex.section + ".Map.ZBand");

@@ -5,6 +5,7 @@
 #include <aula/world/world_spec.hpp>
 
 #include <filesystem>
+#include <iostream>
 #include <optional>
 
 namespace aula::commands {
@@ -13,24 +14,6 @@ using config::ConfigError;
 using config::SettingsTable;
 
 namespace {
-
-// Points the component will drive to must be free floor of the world's map: refused here, before
-// any process starts, with the reason (the component checks what needs its planner).
-void checkPointsOnTheMap(const settings::Exercise& ex, const Config& component, const std::string& world_path) {
-  std::optional<world::OccupancyMap> map;
-  for (const auto& spec : ex.component_settings->specs()) {
-    if (!spec.free_point) continue;
-    if (!map) {
-      const auto world = world::loadWorld(world_path);
-      const auto z_band = component.getDoubleList(ex.section + ".Map.ZBand");
-      map = world::occupancyMapOf(world, {component.getDouble(ex.section + ".Map.Resolution"), z_band[0], z_band[1]});
-    }
-    const auto xy = component.getDoubleList(spec.key);
-    if (const auto problem = world::pointProblem(*map, xy[0], xy[1])) {
-      throw ConfigError(component.origin(spec.key) + ": " + spec.key + " = " + component.getString(spec.key) + ": " + *problem);
-    }
-  }
-}
 
 // Every override must be some process's key; the "did you mean" comes from all of them.
 void requireDeclared(const settings::Exercise& ex, const Config& overrides, const std::vector<const SettingsTable*>& tables) {
@@ -48,7 +31,66 @@ void requireDeclared(const settings::Exercise& ex, const Config& overrides, cons
   }
 }
 
+// The world has no robot of the Robot setting's name but one the exercise can only have meant:
+// every process of the run is given it (as an override), and the run says so in one line.
+void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, RunSettings& run) {
+  const std::string key = ex.section + ".Robot";
+  if (!run.component().has(key)) return;
+  const std::string named = run.component().getString(key);
+  const world::WorldSpec world = world::loadWorld(run.world);
+  const world::RobotSpec* robot = exerciseRobot(ex, world, named);
+  if (robot == nullptr || robot->name == named) return;
+  const std::string origin = "the world's only robot with the exercise's plugins";
+  run.overrides.set(key, robot->name, origin);
+  for (auto& [table, cfg] : run.effective) {
+    if (table->declares(key)) cfg.set(key, robot->name, origin);
+  }
+  std::cerr << ex.name << ": the world has no robot '" << named << "' (" << key << "); using its only robot with the "
+            << "exercise's plugins, '" << robot->name << "'\n";
+}
+
 }  // namespace
+
+void checkPointsOnTheMap(const settings::Exercise& ex, const Config& component, const std::string& world_path) {
+  std::optional<world::OccupancyMap> map;
+  for (const auto& spec : ex.component_settings->specs()) {
+    if (!spec.free_point) continue;
+    if (!map) {
+      const auto world = world::loadWorld(world_path);
+      const auto z_band = component.getDoubleList(ex.section + ".Map.ZBand");
+      map = world::occupancyMapOf(world, {component.getDouble(ex.section + ".Map.Resolution"), z_band[0], z_band[1]});
+    }
+    const auto xy = component.getDoubleList(spec.key);
+    if (const auto problem = world::pointProblem(*map, xy[0], xy[1])) {
+      throw ConfigError(component.origin(spec.key) + ": " + spec.key + " = " + component.getString(spec.key) + ": " + *problem);
+    }
+  }
+}
+
+std::vector<std::string> missingPlugins(const settings::Exercise& ex, const world::RobotSpec& robot) {
+  std::vector<std::string> missing;
+  for (const std::string& need : ex.required_plugins) {
+    const auto colon = need.find(':');
+    try {
+      world::channelOf(robot, need.substr(0, colon), colon == std::string::npos ? "" : need.substr(colon + 1));
+    } catch (const world::WorldError&) {
+      missing.push_back("a " + need.substr(0, colon) + " plugin" +
+                        (colon == std::string::npos ? "" : " named '" + need.substr(colon + 1) + "'"));
+    }
+  }
+  return missing;
+}
+
+const world::RobotSpec* exerciseRobot(const settings::Exercise& ex, const world::WorldSpec& world, const std::string& named) {
+  if (const world::RobotSpec* robot = world.findRobot(named)) return robot;
+  const world::RobotSpec* only = nullptr;
+  for (const auto& robot : world.robots) {
+    if (!missingPlugins(ex, robot).empty()) continue;
+    if (only != nullptr) return nullptr;  // two: which one is for the teacher to say
+    only = &robot;
+  }
+  return only;
+}
 
 RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const Config& overrides) {
   RunSettings run;
@@ -73,6 +115,7 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   // The world, from the component's settings (the .cfg or --world): resolved once for all.
   const std::string world_key = ex.section + ".World";
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
+  adoptTheWorldsOnlyRobot(ex, run);
   checkPointsOnTheMap(ex, run.component(), run.world);
   return run;
 }

@@ -6,6 +6,7 @@
 #include <aula/cli/command.hpp>
 #include <aula/config/config.hpp>
 #include <aula/settings/tables.hpp>
+#include <aula/world/world_spec.hpp>
 
 #include <string>
 #include <utility>
@@ -26,6 +27,19 @@ struct RunSettings {
 // `overrides`: the --Key=value settings, plus what the command's options stand for (its caller
 // sets "Vacuum.Algorithm" for --algorithm, with the origin "command line --algorithm").
 RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const config::Config& overrides);
+
+// Points the component will drive to (free_point settings) must be free floor of the world's map:
+// a ConfigError naming the setting and the reason otherwise (the component checks what needs its
+// planner). `aula run` checks before any process starts, `aula check-world` with the defaults.
+void checkPointsOnTheMap(const settings::Exercise& ex, const config::Config& component, const std::string& world_path);
+
+// What `robot` lacks of the plugins `ex` needs ("a laser plugin named 'laser_front'"); empty if nothing.
+std::vector<std::string> missingPlugins(const settings::Exercise& ex, const world::RobotSpec& robot);
+
+// The robot `ex` drives in `world`: the one its Robot setting names (`named`), else the world's
+// only robot with every plugin the exercise needs (nothing else could have been meant); nullptr
+// when neither. `aula run` hands the one chosen to every process of the run.
+const world::RobotSpec* exerciseRobot(const settings::Exercise& ex, const world::WorldSpec& world, const std::string& named);
 
 // The command line's --Section.Key=value settings as a Config with their origins.
 config::Config settingsOf(const cli::Arguments& args);
