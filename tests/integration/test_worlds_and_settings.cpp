@@ -102,7 +102,8 @@ TEST(Settings, AulaConfigPrintsEachProcessWithWhereEachValueCameFrom) {
   EXPECT_NE(out.output.find("Vacuum.Referee.Duration = 60 s    [command line --Vacuum.Referee.Duration]"), std::string::npos)
       << out.output;
   EXPECT_NE(out.output.find("Vacuum.Robot = roomba    [default]"), std::string::npos) << out.output;
-  EXPECT_NE(out.output.find("Simulator.PhysicsStep = 0.005 s    ["), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("Simulator.PhysicsStep = 0.01 s    [the vacuum exercise's step]"), std::string::npos)
+      << out.output;
 }
 
 TEST(Worlds, AllThreeProcessesFollowTheRobotChannelsOfTheWorldGiven) {
@@ -181,11 +182,40 @@ TEST(Worlds, ModelsResolveThroughAulaModelPathAndAWorldWithoutPhysicsStepsAtTheS
   EXPECT_NE(out.output.find("step 4 ms"), std::string::npos) << out.output;
   unsetenv("AULA_MODEL_PATH");
 
-  // The shipped house states its own 10 ms step, and that wins over the setting.
+  // The shipped house states a 10 ms step: the setting wins, and the simulator says so.
   out = runToEnd({kBin + "/aula-sim", kWorlds + "vacuum.world", "--duration=0.2", "--rtf=0",
                   "--lcm-url=" + aula::testing::privateLcmUrl()},
                  20s);
-  EXPECT_NE(out.output.find("step 10 ms"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("step 5 ms"), std::string::npos) << out.output;
+  EXPECT_NE(out.output.find("vacuum.world states <max_step_size>0.01</max_step_size>; the step is "
+                            "Simulator.PhysicsStep, 5 ms"),
+            std::string::npos)
+      << out.output;
+}
+
+TEST(Worlds, AWorldsPhysicsDoesNotChangeTheExercisesStep) {
+  // The same house with and without <physics>: `aula run` steps both at the vacuum's 10 ms, and
+  // the two runs measure the same.
+  const std::string dir = aula::testing::privateDir();
+  std::string house = readFile(kWorlds + "vacuum.world");
+  house = std::regex_replace(house, std::regex("<physics[^>]*>.*</physics>"), "");
+  writeFile(dir + "/stated/house.world", readFile(kWorlds + "vacuum.world"));
+  writeFile(dir + "/unstated/house.world", house);
+  std::vector<std::string> reports;
+  for (const std::string which : {"stated", "unstated"}) {
+    const Outcome out = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--world=" + dir + "/" + which + "/house.world",
+                                  "--algorithm=reference", "--seed=1", "--Vacuum.Referee.Duration=30",
+                                  "--report=" + dir + "/" + which + ".json", "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                 90s);
+    ASSERT_EQ(out.code.value_or(-1), 0) << out.output;
+    EXPECT_NE(out.output.find("step 10 ms"), std::string::npos) << out.output;
+    std::string json = readFile(dir + "/" + which + ".json");
+    json = std::regex_replace(json, std::regex("\"world_sha256\": \"[0-9a-f]+\""), "");
+    json = std::regex_replace(json, std::regex("\"wall_[a-z_]+\": [0-9.e+-]+"), "");
+    reports.push_back(json);
+  }
+  EXPECT_EQ(aula::testing::jsonNumber(reports[0], "coverage_percent"), aula::testing::jsonNumber(reports[1], "coverage_percent"));
+  EXPECT_EQ(aula::testing::jsonNumber(reports[0], "mark"), aula::testing::jsonNumber(reports[1], "mark"));
 }
 
 TEST(Worlds, AStudentsRoombaFolderWhereTheRunStartsDoesNotShadowTheTeachersModel) {

@@ -242,16 +242,17 @@ const std::vector<Exercise>& exercises() {
   static const SettingsTable park = makeAutoparkComponent(), park_referee = makeAutoparkReferee();
   static const std::vector<Exercise> all = {
       {"teletaxi", "TeleTaxi", "config/teleTaxi.cfg", "teletaxi", "teletaxi-referee", &taxi, &taxi_referee,
-       {"pose3d", "motors", "bumper"}, "global navigation with Gradient Path Planning", "TeleTaxi.Referee.Timeout"},
+       {"pose3d", "motors", "bumper"}, "global navigation with Gradient Path Planning", "TeleTaxi.Referee.Timeout",
+       0.005},
       {"vacuum", "Vacuum", "config/vacuumCleaner.cfg", "vacuum-cleaner", "vacuum-cleaner-referee", &vacuum,
        &vacuum_referee, {"pose3d", "motors", "laser", "bumper"}, "clean the house without localization",
-       "Vacuum.Referee.Duration"},
+       "Vacuum.Referee.Duration", 0.010},
       {"autopark", "Autopark", "config/autopark.cfg", "autopark", "autopark-referee", &park, &park_referee,
        {"pose3d", "motors", "bumper", "laser:laser_front", "laser:laser_rear", "laser:laser_right"},
        "find the free slot and park in parallel (--world=autopark_ackermann_1.3L.world: a car-like car)",
-       "Autopark.Referee.Timeout"},
+       "Autopark.Referee.Timeout", 0.005},
       {"demo", "Demo", "config/demo.cfg", "aula-demo-client", "", &demo(), nullptr, {"pose3d", "motors", "laser", "bumper"},
-       "the roomba bouncing around the house (no referee)", ""},
+       "the roomba bouncing around the house (no referee)", "", 0.010},
   };
   return all;
 }

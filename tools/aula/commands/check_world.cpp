@@ -19,9 +19,8 @@ using config::Config;
 void printWorld(const world::WorldSpec& spec) {
   std::cout << "world '" << spec.name << "': " << spec.source_path << "\n  sha256 " << spec.sha256 << "\n";
   if (spec.physics_step_s > 0) {
-    std::cout << "  physics step " << spec.physics_step_s * 1e3 << " ms (<physics><max_step_size>)\n";
-  } else {
-    std::cout << "  physics step: not stated, so Simulator.PhysicsStep (default 5 ms)\n";
+    std::cout << "  <physics><max_step_size> " << spec.physics_step_s * 1e3
+              << " ms: not used; each exercise steps at its own (Simulator.PhysicsStep)\n";
   }
   if (!spec.statics.empty()) {
     const Eigen::Vector4d b = world::staticBounds(spec);

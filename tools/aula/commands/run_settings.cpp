@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <optional>
 
 namespace aula::commands {
@@ -100,6 +101,11 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   std::vector<const SettingsTable*> tables = {&settings::simulator()};
   for (const auto* t : ex.tables()) tables.push_back(t);
   requireDeclared(ex, run.overrides, tables);
+  if (!run.overrides.has("Simulator.PhysicsStep")) {
+    std::ostringstream step;
+    step << ex.physics_step_s;
+    run.overrides.set("Simulator.PhysicsStep", step.str(), "the " + ex.name + " exercise's step");
+  }
   for (const auto* t : tables) {
     // The simulator reads config/simulator.cfg (aula-sim does the same), the clients the exercise's.
     Config mine = t == tables.front() ? Config::fromFile(config::dataPath("config/simulator.cfg")) : file;

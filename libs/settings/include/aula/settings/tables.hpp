@@ -29,6 +29,10 @@ struct Exercise {
   // The referee's key for the episode's length in sim time (`aula run --duration`, the wall
   // budget): "Vacuum.Referee.Duration"; "" for an exercise with no referee.
   std::string episode_key;
+  // The physics step of every run of the exercise (`aula run` gives it to the simulator unless
+  // --Simulator.PhysicsStep says otherwise); a world's <physics> does not change it, so marks
+  // mean the same on every world. 10 ms for the house, 5 ms for the city and the street.
+  double physics_step_s = 0.005;
 
   std::vector<const config::SettingsTable*> tables() const;
 };
