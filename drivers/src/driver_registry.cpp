@@ -1,4 +1,4 @@
-// The one table of driver types, by the name used in <plugin filename="...">.
+// The drivers of the types world::pluginKeys declares, by the name used in <plugin filename="...">.
 #include "aula/drivers/driver.hpp"
 
 #include "bumper_driver.hpp"
@@ -8,7 +8,11 @@
 
 namespace aula::drivers {
 
-std::vector<std::string> driverTypes() { return {"pose3d", "motors", "laser", "bumper"}; }
+std::vector<std::string> driverTypes() {
+  std::vector<std::string> types;
+  for (const auto& [type, keys] : world::pluginKeys()) types.push_back(type);
+  return types;
+}
 
 std::unique_ptr<Driver> makeDriver(const std::string& type) {
   if (type == "pose3d") return std::make_unique<Pose3dDriver>();

@@ -263,6 +263,39 @@ TEST(Worlds, AWorldWhoseOnlyTaxiHasAnotherNameRunsWithIt) {
   EXPECT_NE(check.output.find("teletaxi: ok"), std::string::npos) << check.output;
 }
 
+TEST(Worlds, AMisspeltPluginKeyExitsTwoNamingIt) {
+  const std::string dir = aula::testing::privateDir();
+  std::string robot = inlineRoomba("roomba", "ROOMBA_", -1, 1.5);
+  robot = std::regex_replace(robot, std::regex("<samples>"), "<sampels>");
+  robot = std::regex_replace(robot, std::regex("</samples>"), "</sampels>");
+  writeFile(dir + "/typo.world", houseWith(robot));
+  const std::string said = "typo.world: model 'roomba', plugin 'laser': unknown key <sampels> (did you mean <samples>?)";
+  const Outcome run = runToEnd({kBin + "/aula", "run", "vacuum", "--headless", "--world=" + dir + "/typo.world",
+                                "--lcm-url=" + aula::testing::privateLcmUrl()},
+                               20s);
+  EXPECT_EQ(run.code.value_or(-1), 2) << run.output;
+  EXPECT_NE(run.output.find(said), std::string::npos) << run.output;
+  EXPECT_LT(run.wall_s, 3.0);
+  const Outcome check = runToEnd({kBin + "/aula", "check-world", dir + "/typo.world"}, 20s);
+  EXPECT_EQ(check.code.value_or(-1), 2) << check.output;
+  EXPECT_NE(check.output.find(said), std::string::npos) << check.output;
+}
+
+TEST(Worlds, AWorldThatIncludesItselfIsRefusedAtOnce) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = dir + "/loop.world";
+  writeFile(world, houseWith("<include><uri>file://" + world + "</uri></include>"));
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{kBin + "/aula", "check-world", world},
+        std::vector<std::string>{kBin + "/aula", "run", "vacuum", "--headless", "--world=" + world,
+                                 "--lcm-url=" + aula::testing::privateLcmUrl()}}) {
+    const Outcome out = runToEnd(args, 20s);
+    EXPECT_EQ(out.code.value_or(-1), 2) << out.output;
+    EXPECT_NE(out.output.find("loop.world: includes itself ("), std::string::npos) << out.output;
+    EXPECT_LT(out.wall_s, 3.0);
+  }
+}
+
 TEST(Worlds, ARefereeGivenAnotherWorldThanTheSimulatorsRefusesToGrade) {
   const std::string dir = aula::testing::privateDir();
   const std::string other = dir + "/moved_roomba.world";

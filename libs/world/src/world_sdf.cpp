@@ -31,11 +31,6 @@
 namespace aula::world {
 namespace {
 
-const std::set<std::string>& knownPluginTypes() {
-  static const std::set<std::string> types = {"pose3d", "motors", "laser", "bumper"};
-  return types;
-}
-
 Eigen::Isometry3d toEigen(const ignition::math::Pose3d& p) {
   Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
   out.translation() = Eigen::Vector3d(p.Pos().X(), p.Pos().Y(), p.Pos().Z());
@@ -94,11 +89,6 @@ std::vector<PluginSpec> pluginsOf(const sdf::Model& model, const std::string& fi
     spec.name = p->Get<std::string>("name");
     spec.type = p->Get<std::string>("filename");
     const std::string where = file + ": model '" + model.Name() + "', plugin '" + spec.name + "'";
-    if (knownPluginTypes().count(spec.type) == 0) {
-      std::string known;
-      for (const auto& t : knownPluginTypes()) known += (known.empty() ? "" : ", ") + t;
-      throw WorldError(where + ": unknown driver filename '" + spec.type + "' (known: " + known + ")");
-    }
     for (const auto& other : plugins) {
       if (other.name == spec.name) throw WorldError(where + ": duplicate plugin name");
     }

@@ -7,6 +7,7 @@
 
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/config/settings.hpp>
 
 
 #include <dlfcn.h>
@@ -17,11 +18,64 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <stdexcept>
+#include <algorithm>
 #include <sstream>
 
 namespace aula::world {
 
+const std::map<std::string, std::set<std::string>>& pluginKeys() {
+  static const std::map<std::string, std::set<std::string>> keys = {
+      {"pose3d", {"channel", "rate_hz"}},
+      {"motors", {"channel", "max_v", "max_w", "holonomic", "watchdog_s", "kinematics", "wheelbase", "max_steer_rad",
+                  "rear_axle_x"}},
+      {"laser", {"channel", "pose", "samples", "min_angle", "max_angle", "min_range", "max_range", "rate_hz",
+                 "noise_stddev"}},
+      {"bumper", {"channel", "rate_hz", "side_threshold_rad"}},
+  };
+  return keys;
+}
+
+namespace {
+// Each plugin's type and keys are declared (pluginKeys): a misspelt <max_vel> is named with the
+// key it is closest to, not silently left at its default.
+void checkPluginKeys(const WorldSpec& spec) {
+  for (const auto& robot : spec.robots) {
+    for (const auto& plugin : robot.plugins) {
+      const std::string where = spec.source_path + ": model '" + robot.name + "', plugin '" + plugin.name + "': ";
+      const auto declared = pluginKeys().find(plugin.type);
+      if (declared == pluginKeys().end()) {
+        std::string known;
+        for (const auto& [type, keys] : pluginKeys()) known += (known.empty() ? "" : ", ") + type;
+        throw WorldError(where + "unknown driver filename '" + plugin.type + "' (known: " + known + ")");
+      }
+      for (const auto& [key, value] : plugin.params) {
+        if (declared->second.count(key) != 0) continue;
+        std::string best, keys;
+        size_t best_distance = std::max<size_t>(3, key.size() / 3) + 1;
+        for (const auto& k : declared->second) {
+          keys += (keys.empty() ? "" : ", ") + k;
+          if (config::editDistance(key, k) < best_distance) best_distance = config::editDistance(key, k), best = k;
+        }
+        throw WorldError(where + "unknown key <" + key + ">" + (best.empty() ? "" : " (did you mean <" + best + ">?)") +
+                         "; a " + plugin.type + " plugin reads " + keys);
+      }
+    }
+  }
+}
+}  // namespace
+
+namespace {
+void requireDeclaredKey(const std::string& type, const std::string& key) {
+  const auto declared = pluginKeys().find(type);
+  if (declared != pluginKeys().end() && declared->second.count(key) == 0) {
+    throw std::logic_error("plugin type '" + type + "' reads undeclared key '" + key + "' (world::pluginKeys)");
+  }
+}
+}  // namespace
+
 std::string PluginSpec::getString(const std::string& key, const std::string& fallback) const {
+  requireDeclaredKey(type, key);
   const auto it = params.find(key);
   return it == params.end() ? fallback : it->second;
 }
@@ -34,6 +88,7 @@ namespace {
 }  // namespace
 
 double PluginSpec::getDouble(const std::string& key, double fallback) const {
+  requireDeclaredKey(type, key);
   if (!has(key)) return fallback;
   const std::string text = getString(key, "");
   errno = 0;
@@ -46,6 +101,7 @@ double PluginSpec::getDouble(const std::string& key, double fallback) const {
 }
 
 int PluginSpec::getInt(const std::string& key, int fallback) const {
+  requireDeclaredKey(type, key);
   if (!has(key)) return fallback;
   const std::string text = getString(key, "");
   errno = 0;
@@ -58,6 +114,7 @@ int PluginSpec::getInt(const std::string& key, int fallback) const {
 }
 
 bool PluginSpec::getBool(const std::string& key, bool fallback) const {
+  requireDeclaredKey(type, key);
   if (!has(key)) return fallback;
   const std::string v = getString(key, "");
   if (v == "true" || v == "1") return true;
@@ -66,6 +123,7 @@ bool PluginSpec::getBool(const std::string& key, bool fallback) const {
 }
 
 Eigen::Isometry3d PluginSpec::getPose(const std::string& key) const {
+  requireDeclaredKey(type, key);
   std::istringstream in(getString(key, ""));
   double v[6];
   for (double& x : v) {
@@ -144,11 +202,13 @@ WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& mod
   const std::string cache_key = worldCacheKey(path, folders);
   if (auto cached = readCachedWorld(cache_key)) {
     cached->source_path = path;  // as this caller named it
+    checkPluginKeys(*cached);
     return *cached;
   }
   WorldSpec spec;
   std::vector<std::string> inputs;
   parseSdfWorld(path, folders, spec, inputs);
+  checkPluginKeys(spec);
   spec.sha256 = sha256OfFile(path);
   writeCachedWorld(cache_key, spec, inputs);
   return spec;

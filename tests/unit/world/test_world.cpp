@@ -151,6 +151,11 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
   EXPECT_TRUE(contains(links, "model 'wobbly': a robot (non-static model) must have exactly one <link>")) << links;
   const std::string xml = errorOf(kData + "malformed.world");
   EXPECT_TRUE(contains(xml, "malformed.world:4: malformed XML")) << xml;
+  const std::string misspelt = errorOf(kData + "misspelt_key.world");
+  EXPECT_TRUE(contains(misspelt, "misspelt_key.world: model 'bot', plugin 'drive': unknown key <max_vel> (did you mean "
+                                 "<max_v>?); a motors plugin reads channel, holonomic, kinematics, max_steer_rad, "
+                                 "max_v, max_w, rear_axle_x, watchdog_s, wheelbase"))
+      << misspelt;
   const std::string robot_mesh = errorOf(kData + "robot_mesh.world");
   EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': only <box> and <cylinder>"))
       << robot_mesh;
@@ -270,6 +275,10 @@ TEST(PluginSpec, TypedParametersNameRobotPluginAndKey) {
     EXPECT_STREQ(e.what(), "robot 'roomba', plugin 'laser': <samples>18O</samples> is not an integer");
   }
   EXPECT_THROW(p.getPose("pose"), WorldError);
+  // A driver type's reads are declared in world::pluginKeys: an undeclared one is a bug of Aula's.
+  p.type = "laser";
+  EXPECT_DOUBLE_EQ(p.getDouble("max_range", 10.0), 10.0);
+  EXPECT_THROW(p.getDouble("max_rnge", 10.0), std::logic_error);
 }
 
 TEST(Occupancy, RotatedBoxIsRasterisedPixelExact) {

@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <map>
+#include <set>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,12 @@ struct PluginSpec {
 
   std::string owner;  // robot name, for error messages
 };
+
+// The one registry of driver types, by <plugin filename="TYPE">, and the SDF keys each reads
+// (drivers/ makes a driver of each type; each documents its keys at the top of its file).
+// loadWorld refuses any other type or key, naming it; reading an undeclared key is a
+// std::logic_error (a driver and this table disagree).
+const std::map<std::string, std::set<std::string>>& pluginKeys();
 
 // A mobile robot: one rigid body moving in the plane, driven by its motors plugin.
 struct RobotSpec {
