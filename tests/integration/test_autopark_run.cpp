@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -127,3 +128,28 @@ TEST(AutoparkRun, PlannerTurnsRoundFromAReversedStartParksAndItsPlanNeverLeavesT
   }
 }
 
+
+// A teacher's street whose curbs and parked cars have other names: the referee finds them from
+// the geometry, the run parks as on the shipped street; and a street whose curb a setting names.
+TEST(AutoparkRun, AStreetWhoseCurbAndCarsHaveOtherNamesRuns) {
+  std::string street = readFile(std::string(AULA_SOURCE_DIR) + "/worlds/autopark.world");
+  auto replaceAll = [&street](const std::string& from, const std::string& to) {
+    for (size_t at = street.find(from); at != std::string::npos; at = street.find(from, at + to.size())) {
+      street.replace(at, from.size(), to);
+    }
+  };
+  replaceAll("curb_parking_side", "kerb_south");
+  replaceAll("curb_far_side", "kerb_north");
+  replaceAll("parked_car_", "van_");
+  const std::string world = ::testing::TempDir() + "autopark_renamed.world";
+  std::ofstream(world) << street;
+  const std::string run = runAutopark("renamed", {"--algorithm=reactive", "--seed=1", "--world=" + world});
+  expectParkedWell(run);
+  EXPECT_NEAR(jsonNumber(run, "slot_length_m"), 9.0, 1e-6) << run;
+  // Named by settings instead: the same slot.
+  const std::string named = runAutopark("renamed_named", {"--algorithm=reactive", "--seed=1", "--world=" + world,
+                                                          "--Autopark.Referee.Curb=kerb_south",
+                                                          "--Autopark.Referee.CarPrefix=van_"});
+  expectParkedWell(named);
+  EXPECT_NEAR(jsonNumber(named, "slot_length_m"), 9.0, 1e-6) << named;
+}

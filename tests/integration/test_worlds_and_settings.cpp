@@ -362,6 +362,25 @@ TEST(Worlds, CheckWorldSaysWhatEachExerciseWouldMiss) {
   EXPECT_NE(blind.output.find("vacuum: cannot run; the world needs a laser plugin"), std::string::npos) << blind.output;
 }
 
+TEST(Worlds, CheckWorldOnAStreetWithoutACurbSaysWhatIsMissing) {
+  const std::string dir = aula::testing::privateDir();
+  std::string street = readFile(kWorlds + "autopark.world");
+  street = std::regex_replace(street, std::regex("<(collision|visual) name=\"curb_parking_side\">.*\n"), "");
+  ASSERT_EQ(street.find("curb_parking_side"), std::string::npos);
+  writeFile(dir + "/no_curb.world", street);
+  const Outcome out = runToEnd({kBin + "/aula", "check-world", dir + "/no_curb.world", "--exercise=autopark"}, 20s);
+  EXPECT_EQ(out.code.value_or(-1), 1) << out.output;
+  EXPECT_NE(out.output.find("autopark: cannot run; the world needs its street for the referee: " + dir +
+                            "/no_curb.world: no curb on the parking side (a static box along the street, x, below the "
+                            "car's start, y < 2.50 m; or name its collision with Autopark.Referee.Curb)"),
+            std::string::npos)
+      << out.output;
+  // The shipped street: ok.
+  const Outcome ok = runToEnd({kBin + "/aula", "check-world", kWorlds + "autopark.world", "--exercise=autopark"}, 20s);
+  EXPECT_EQ(ok.code.value_or(-1), 0) << ok.output;
+  EXPECT_NE(ok.output.find("autopark: ok"), std::string::npos) << ok.output;
+}
+
 TEST(Settings, TheRealTimeFactorIsHonouredInHeadlessLockstepRuns) {
   // 20 s of sim: at --rtf=4 five seconds or more, whatever the machine; as fast as possible,
   // well under that even beside other tests on a loaded 2-core machine (measured 1-4.4 s).

@@ -42,8 +42,9 @@ Usage:
     --free-curb M     a free curb M metres long beyond the last parked car before the east end
                       wall (default: the road's own end, 3.75 m at least); a car parked there
                       is not in the slot
-  The names the referee relies on stay: parked_car_<i> (static includes), the collision
-  curb_parking_side, the car model "car". A comment in the world lists the parameters used, as
+  The names stay those of the shipped streets: parked_car_<i> (static includes), the collision
+  curb_parking_side, the car model "car" (the referee finds the curb and the cars from the
+  geometry; the names are for people). A comment in the world lists the parameters used, as
   name=value (an XML comment cannot hold "--").
   A bad parameter: one line on stderr naming it, exit status 2.
 """

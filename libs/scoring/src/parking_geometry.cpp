@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <vector>
 
@@ -18,27 +19,96 @@ double ParkingScene::slotLengthM() const {
 
 double ParkingScene::idealGapM() const { return (slotLengthM() - car_length_m) / 2; }
 
-ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::string& robot_name) {
-  const std::string where = world.source_path.empty() ? world.name : world.source_path;
-  std::vector<OrientedBox> parked;
-  bool have_curb = false;
-  ParkingScene scene;
+namespace {
+
+OrientedBox footprintOf(const world::StaticObject& s) {
+  return OrientedBox{{s.pose.translation().x(), s.pose.translation().y(), world::yawOf(s.pose)}, s.shape.box_size_m.x(),
+                     s.shape.box_size_m.y()};
+}
+
+double lowestY(const world::StaticObject& s) {
+  double y = std::numeric_limits<double>::infinity();
+  for (const auto& p : footprintOf(s).corners()) y = std::min(y, p.y());
+  return y;
+}
+
+double highestY(const world::StaticObject& s) {
+  double y = -std::numeric_limits<double>::infinity();
+  for (const auto& p : footprintOf(s).corners()) y = std::max(y, p.y());
+  return y;
+}
+
+// A curb: a box along the street (x), at least three times as long as wide.
+bool alongTheStreet(const world::StaticObject& s) {
+  return std::abs(std::sin(world::yawOf(s.pose))) < 0.05 && s.shape.box_size_m.x() >= 3 * s.shape.box_size_m.y();
+}
+
+std::string yText(double y_m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", y_m);
+  return text;
+}
+
+bool named(const std::string& full, const std::string& name) {
+  return full == name || (full.size() > name.size() + 2 && full.compare(full.size() - name.size() - 2, std::string::npos, "::" + name) == 0);
+}
+
+// The parking-side curb (see fromWorld), or nullptr; also the far curb when there is one.
+const world::StaticObject* findCurbs(const world::WorldSpec& world, double start_y_m, const std::string& curb_name,
+                                     const world::StaticObject*& far_curb) {
+  const world::StaticObject* curb = nullptr;
   for (const auto& s : world.statics) {
     if (s.shape.kind != world::ShapeKind::Box) continue;
-    const double yaw = world::yawOf(s.pose);
-    if (s.name.rfind("parked_car", 0) == 0) {
-      parked.push_back(OrientedBox{{s.pose.translation().x(), s.pose.translation().y(), yaw}, s.shape.box_size_m.x(), s.shape.box_size_m.y()});
-    } else if (s.name.find("curb_parking_side") != std::string::npos) {
-      scene.curb_y_m = s.pose.translation().y() + s.shape.box_size_m.y() / 2;
-      scene.street_west_x_m = s.pose.translation().x() - s.shape.box_size_m.x() / 2;
-      scene.street_east_x_m = s.pose.translation().x() + s.shape.box_size_m.x() / 2;
-      have_curb = true;
-    } else if (s.name.find("curb_far_side") != std::string::npos) {
-      scene.far_curb_y_m = s.pose.translation().y() - s.shape.box_size_m.y() / 2;
+    if (!curb_name.empty()) {
+      if (named(s.name, curb_name)) curb = &s;
+    } else if (alongTheStreet(s) && highestY(s) < start_y_m && (curb == nullptr || highestY(s) > highestY(*curb))) {
+      curb = &s;
+    }
+    if (alongTheStreet(s) && lowestY(s) > start_y_m && (far_curb == nullptr || lowestY(s) < lowestY(*far_curb))) {
+      far_curb = &s;
     }
   }
-  if (!have_curb) throw world::WorldError(where + ": no collision named curb_parking_side (the parking-side curb)");
-  if (parked.size() < 2) throw world::WorldError(where + ": needs at least two static models named parked_car*");
+  return curb;
+}
+
+}  // namespace
+
+ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::string& robot_name, const SceneNames& names) {
+  const std::string where = world.source_path.empty() ? world.name : world.source_path;
+  const world::RobotSpec* car = world.findRobot(robot_name);
+  if (car == nullptr) throw world::WorldError(where + ": no robot named '" + robot_name + "'");
+  if (car->shape.kind != world::ShapeKind::Box) throw world::WorldError(where + ": robot '" + robot_name + "' must be a box");
+  const double start_y = car->pose.translation().y();
+  ParkingScene scene;
+  const world::StaticObject* far_curb = nullptr;
+  const world::StaticObject* curb = findCurbs(world, start_y, names.curb, far_curb);
+  if (curb == nullptr) {
+    throw world::WorldError(where + (names.curb.empty()
+                                         ? ": no curb on the parking side (a static box along the street, x, below the "
+                                           "car's start, y < " + yText(start_y) + " m; or name its collision "
+                                           "with Autopark.Referee.Curb)"
+                                         : ": no box collision named '" + names.curb + "' (Autopark.Referee.Curb)"));
+  }
+  scene.curb_name = curb->name;
+  scene.curb_y_m = highestY(*curb);
+  scene.street_west_x_m = curb->pose.translation().x() - curb->shape.box_size_m.x() / 2;
+  scene.street_east_x_m = curb->pose.translation().x() + curb->shape.box_size_m.x() / 2;
+  if (far_curb != nullptr) scene.far_curb_y_m = lowestY(*far_curb);
+  std::vector<OrientedBox> parked;
+  for (const auto& s : world.statics) {
+    if (s.shape.kind != world::ShapeKind::Box || &s == curb) continue;
+    const double x = s.pose.translation().x();
+    const bool between = !alongTheStreet(s) && lowestY(s) >= scene.curb_y_m - 0.05 && highestY(s) < start_y &&
+                         x > scene.street_west_x_m && x < scene.street_east_x_m;
+    if (names.car_prefix.empty() ? between : s.name.rfind(names.car_prefix, 0) == 0) parked.push_back(footprintOf(s));
+  }
+  if (parked.size() < 2) {
+    throw world::WorldError(where + (names.car_prefix.empty()
+                                         ? ": needs at least two parked cars (static boxes between the parking-side "
+                                           "curb and the car's start; or name them with Autopark.Referee.CarPrefix)"
+                                         : ": needs at least two static models named " + names.car_prefix +
+                                               "* (Autopark.Referee.CarPrefix)"));
+  }
   std::sort(parked.begin(), parked.end(), [](const OrientedBox& a, const OrientedBox& b) { return a.centre.x_m < b.centre.x_m; });
   scene.parked_cars = parked;
   double widest = -1;
@@ -50,15 +120,16 @@ ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::s
       scene.front_car = parked[i + 1];
     }
   }
-  const world::RobotSpec* car = world.findRobot(robot_name);
-  if (car == nullptr) throw world::WorldError(where + ": no robot named '" + robot_name + "'");
-  if (car->shape.kind != world::ShapeKind::Box) throw world::WorldError(where + ": robot '" + robot_name + "' must be a box");
   scene.car_length_m = car->shape.box_size_m.x();
   scene.car_width_m = car->shape.box_size_m.y();
   scene.ideal_x_m = (scene.rear_car.centre.x_m + scene.rear_car.length_m / 2 + scene.front_car.centre.x_m - scene.front_car.length_m / 2) / 2;
   scene.ideal_y_m = (scene.rear_car.centre.y_m + scene.front_car.centre.y_m) / 2;
   scene.ideal_yaw_rad = 0.0;
   return scene;
+}
+
+SceneNames sceneNamesOf(const config::Config& referee) {
+  return {referee.getString("Autopark.Referee.Curb"), referee.getString("Autopark.Referee.CarPrefix")};
 }
 
 ParkingMeasures measureParking(const ParkingScene& scene, double x_m, double y_m, double yaw_rad) {

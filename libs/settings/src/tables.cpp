@@ -182,6 +182,10 @@ SettingsTable makeAutoparkReferee() {
   SettingsTable t = common("autopark-referee");
   worldKeys(t, "Autopark", "worlds/autopark.world", "car");
   t.real("Autopark.Referee.Timeout", 300, "s", 0, 1e6, "the run ends 'not parked' this long after Run", true);
+  t.text("Autopark.Referee.Curb", "",
+         "the parking-side curb's collision name; empty: the static box along the street nearest below the car's start");
+  t.text("Autopark.Referee.CarPrefix", "",
+         "the parked cars' model names start with this; empty: every static box between that curb and the car's start");
   t.real("Autopark.Referee.StillHold", 3, "s", 0, 600, "parked = still inside the slot for this long", true);
   t.real("Autopark.Referee.Period", 0.1, "s", 0.005, 10, "how often the referee syncs with the simulator (simulated time)");
   t.real("Autopark.Referee.FullMarkTime", 170, "s", 0, 1e6, "parked in under this time: full time score", true);

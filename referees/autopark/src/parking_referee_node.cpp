@@ -16,7 +16,7 @@ ParkingRefereeNode::ParkingRefereeNode(lcmbus::Bus& bus, const config::Config& c
                                        const std::optional<auth::Key>& run_key)
     : RefereeNode(bus, cfg, world, run_key, "autopark"),
       world_(world) {
-  scene_ = ParkingScene::fromWorld(world, robotName());
+  scene_ = ParkingScene::fromWorld(world, robotName(), sceneNamesOf(cfg));
   settings_ = parkingRefereeSettings(cfg);
   referee_ = std::make_unique<ParkingReferee>(scene_, settings_);
 }
@@ -52,7 +52,7 @@ std::string touched(const world::WorldSpec& world, const ParkingScene& scene, do
     if (d >= nearest_m) continue;
     nearest_m = d;
     name = object.name.substr(0, object.name.find("::"));
-    if (object.name.find("curb_parking_side") != std::string::npos) name = "the curb";
+    if (object.name == scene.curb_name) name = "the curb";
     for (const auto& [parked, what] : {std::make_pair(&scene.rear_car, "the car behind the slot"),
                                        std::make_pair(&scene.front_car, "the car in front of the slot")}) {
       if (std::hypot(parked->centre.x_m - at.x(), parked->centre.y_m - at.y()) < 0.05) name = what;

@@ -70,6 +70,21 @@ TEST(ParkingGeometry, SceneFromTheWorlds) {
   EXPECT_NEAR(s.ideal_y_m, -3, 1e-9);
   EXPECT_NEAR(s.slotLengthM(), 9.0, 1e-9);
   EXPECT_NEAR(s.car_length_m, 4.0, 1e-9);
+  // Found from the geometry, not the names: the curbs nearest below and above the car's start,
+  // the seven parked cars between the parking-side curb and the car.
+  EXPECT_NE(s.curb_name.find("curb_parking_side"), std::string::npos) << s.curb_name;
+  EXPECT_NEAR(s.far_curb_y_m, 5.0, 1e-9);
+  EXPECT_EQ(s.parked_cars.size(), 7u);
+  EXPECT_NEAR(s.street_west_x_m, -25, 1e-9);
+  // Settings that name parts the world does not have: said, with the setting.
+  try {
+    ParkingScene::fromWorld(street, "car", {"kerb", ""});
+    ADD_FAILURE();
+  } catch (const aula::world::WorldError& e) {
+    EXPECT_NE(std::string(e.what()).find(": no box collision named 'kerb' (Autopark.Referee.Curb)"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(ParkingScene::fromWorld(street, "car", {"curb_parking_side", "parked_car"}).slotLengthM(), s.slotLengthM());
   // The variants' slots are what their names say, in car lengths.
   for (double k : {1.6, 1.4, 1.3, 1.2}) {
     char name[64];

@@ -5,6 +5,7 @@
 
 #include <aula/config/paths.hpp>
 #include <aula/image/png.hpp>
+#include <aula/scoring/parking_geometry.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -49,6 +50,13 @@ std::vector<std::string> exerciseProblems(const settings::Exercise& ex, const wo
               << robot_key << " = " << cfg.getString(robot_key) << " is not in the world)\n";
   }
   std::vector<std::string> missing = missingPlugins(ex, *robot);
+  if (ex.section == "Autopark") {  // the referee's street: its curb and parked cars
+    try {
+      autopark::ParkingScene::fromWorld(spec, robot->name, autopark::sceneNamesOf(ex.referee_settings->resolve(Config())));
+    } catch (const world::WorldError& e) {
+      missing.push_back(std::string("its street for the referee: ") + e.what());
+    }
+  }
   try {
     checkPointsOnTheMap(ex, cfg, spec.source_path);
   } catch (const config::ConfigError& e) {

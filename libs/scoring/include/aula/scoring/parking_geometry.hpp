@@ -4,6 +4,7 @@
 // about its own centre. Distances are minimum distances between footprints (the original used
 // corners rotated about the world origin and maximum distances).
 
+#include <aula/config/config.hpp>
 #include <aula/geometry/oriented_box.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -12,6 +13,14 @@
 #include <vector>
 
 namespace aula::autopark {
+
+// What names the street's parts when its geometry alone cannot say (Autopark.Referee.Curb: a
+// collision's name, last part or whole; Autopark.Referee.CarPrefix: the start of the parked cars'
+// model names); empty: found from the geometry (ParkingScene::fromWorld).
+struct SceneNames {
+  std::string curb;
+  std::string car_prefix;
+};
 
 // The slot as the world builds it.
 struct ParkingScene {
@@ -29,10 +38,18 @@ struct ParkingScene {
   double slotLengthM() const;  // free gap between the two parked cars
   double idealGapM() const;    // to each parked car from a car centred in the slot: (slot - car length) / 2
 
-  // Parked cars are static models named parked_car*; the curb is the collision named
-  // *curb_parking_side. Throws world::WorldError naming the world when one is missing.
-  static ParkingScene fromWorld(const world::WorldSpec& world, const std::string& robot_name);
+  // The street runs along x with its parking side at lower y than the car's start. Unless
+  // `names` says otherwise: the parking-side curb is the static box along the street (at least
+  // three times as long as wide) nearest below the car's start, the far curb the nearest above
+  // it, and the parked cars every other static box between the curb's face and the car's start.
+  // Throws world::WorldError naming the world and what is missing (and the setting that names it).
+  static ParkingScene fromWorld(const world::WorldSpec& world, const std::string& robot_name,
+                                const SceneNames& names = {});
+  std::string curb_name;  // the parking-side curb's collision, as the world names it
 };
+
+// Autopark.Referee.Curb and Autopark.Referee.CarPrefix of the referee's configuration.
+SceneNames sceneNamesOf(const config::Config& referee);
 
 struct ParkingMeasures {
   double front_gap_m = 0;      // car footprint to the front car
