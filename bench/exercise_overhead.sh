@@ -46,11 +46,15 @@ for exercise in $exercises; do
     whole=$(echo "$(now) - $start" | bc -l)
     cmp -s "$report" "$out/recorded.json" || echo "warning: $exercise seed $seed: the recorded run's report differs" >&2
     sim_s=$(field "$report" sim_time_s)
+    # The lone simulator steps as the exercise's run did (aula run gives it the exercise's step).
+    step_s=$("$build/bin/aula" config "$exercise" | awk '$1 == "Simulator.PhysicsStep" {print $3}')
     start=$(now)
-    "$build/bin/aula-sim" "$world" --duration "$sim_s" --rtf 0 --seed "$seed" --lcm-url "$url" >/dev/null 2>&1
+    "$build/bin/aula-sim" "$world" --duration "$sim_s" --rtf 0 --seed "$seed" --Simulator.PhysicsStep="$step_s" \
+      --lcm-url "$url" >/dev/null 2>&1
     still=$(echo "$(now) - $start" | bc -l)
     start=$(now)
-    "$build/bin/aula-sim" "$world" --duration "$sim_s" --rtf 0 --seed "$seed" --lcm-url "$url" --commands="$record" >/dev/null 2>&1
+    "$build/bin/aula-sim" "$world" --duration "$sim_s" --rtf 0 --seed "$seed" --Simulator.PhysicsStep="$step_s" \
+      --lcm-url "$url" --commands="$record" >/dev/null 2>&1
     moving=$(echo "$(now) - $start" | bc -l)
     ratio_still=$(echo "$whole / $still" | bc -l)
     ratio_moving=$(echo "$whole / $moving" | bc -l)

@@ -124,7 +124,8 @@ TEST(RecordRegrade, ALoneSimulatorDrivenByTheRecordedCommandsRetracesTheRun) {
   bus->subscribe("ROOMBA_POSE", &Collect::on, &collect);
   const std::string out = g.log_path + ".sim.txt";
   aula::process::ChildProcess sim({AULA_SIM_PATH, std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", "--rtf=20",
-                                   "--duration=20", "--seed=2", "--lcm-url=" + url, "--commands=" + g.log_path},
+                                   "--duration=20", "--seed=2", "--Simulator.PhysicsStep=0.01",  // the vacuum exercise's step, as aula run gives it
+                                   "--lcm-url=" + url, "--commands=" + g.log_path},
                                   out, out);
   const auto deadline = std::chrono::steady_clock::now() + 60s;
   std::optional<int> code;
