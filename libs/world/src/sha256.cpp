@@ -2,6 +2,8 @@
 
 #include <glib.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -21,6 +23,20 @@ std::string sha256OfFile(const std::string& path) {
   std::stringstream content;
   content << in.rdbuf();
   return sha256Hex(content.str());
+}
+
+std::string worldSha256(const std::string& world_path, const std::vector<std::string>& inputs) {
+  const std::string world = sha256OfFile(world_path);
+  std::vector<std::string> included;
+  const auto canonical = std::filesystem::weakly_canonical(world_path);
+  for (const auto& input : inputs) {
+    if (std::filesystem::weakly_canonical(input) != canonical) included.push_back(sha256OfFile(input));
+  }
+  if (included.empty()) return world;
+  std::sort(included.begin(), included.end());
+  std::string all = world + "\n";
+  for (const auto& hash : included) all += hash + "\n";
+  return sha256Hex(all);
 }
 
 }  // namespace aula::world

@@ -12,7 +12,7 @@
 namespace aula::world {
 namespace {
 
-constexpr const char* kHeader = "aula-world-cache-v1";
+constexpr const char* kHeader = "aula-world-cache-v2";
 
 std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 

@@ -209,7 +209,7 @@ WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& mod
   std::vector<std::string> inputs;
   parseSdfWorld(path, folders, spec, inputs);
   checkPluginKeys(spec);
-  spec.sha256 = sha256OfFile(path);
+  spec.sha256 = worldSha256(path, inputs);
   writeCachedWorld(cache_key, spec, inputs);
   return spec;
 }

@@ -62,3 +62,48 @@ TEST(GradePlan, APythonFolderIsNotCompiledAndItsRunsLoadACopyOfItsFile) {
   }
   fs::remove_all(root);
 }
+
+// Two different worlds with one file name (a teacher's house_b.world in two folders) are both
+// graded, under names told apart by their content; a world's hash covers its models, so a fixed
+// model plans the runs anew (a result with the old hash is not up to date).
+TEST(GradePlan, TwoWorldsWithOneFileNameAreNamedApartAndAModelChangesTheHash) {
+  const fs::path root = scratch();
+  const std::string house = std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world";
+  for (const char* folder : {"a", "b"}) {
+    fs::create_directories(root / folder);
+    fs::copy(fs::path(AULA_SOURCE_DIR) / "worlds" / "models", root / folder / "models", fs::copy_options::recursive);
+    fs::copy_file(house, root / folder / "house.world");
+  }
+  {  // b's sofa box moved: another world under the same name
+    std::ifstream in(root / "b" / "house.world");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("</world>");
+    ASSERT_NE(at, std::string::npos);
+    text.insert(at, "<model name='extra_box'><static>true</static><pose>0.3 -1.2 0.2 0 0 0</pose><link name='l'>"
+                    "<collision name='c'><geometry><box><size>0.2 0.2 0.4</size></box></geometry></collision>"
+                    "</link></model>");
+    std::ofstream(root / "b" / "house.world") << text;
+  }
+  aula::grade::GradeRequest request;
+  request.exercise = "vacuum";
+  request.worlds = {(root / "a" / "house.world").string(), (root / "b" / "house.world").string()};
+  request.seeds = {1};
+  request.out_dir = (root / "out").string();
+  aula::grade::Submission ana;
+  ana.student = "ana";
+  ana.plugin = "bounce";
+  const auto plan = aula::grade::planRuns(request, {ana}, "/bin-of-aula");
+  ASSERT_EQ(plan.runs.size(), 2u);
+  EXPECT_NE(plan.runs[0].world_name, plan.runs[1].world_name);
+  EXPECT_NE(plan.runs[0].result_path, plan.runs[1].result_path);
+  EXPECT_EQ(plan.runs[0].world_name, "house-" + plan.runs[0].world_sha256.substr(0, 8) + ".world");
+
+  // A fixed model (the roomba's model.sdf gains a comment) changes a's hash.
+  std::ofstream(root / "a" / "models" / "roomba" / "model.sdf", std::ios::app) << "<!-- fixed -->\n";
+  request.worlds = {(root / "a" / "house.world").string()};
+  const auto again = aula::grade::planRuns(request, {ana}, "/bin-of-aula");
+  ASSERT_EQ(again.runs.size(), 1u);
+  EXPECT_EQ(again.runs[0].world_name, "house.world");
+  EXPECT_NE(again.runs[0].world_sha256, plan.runs[0].world_sha256);
+  fs::remove_all(root);
+}

@@ -103,22 +103,28 @@ TEST_F(WorldCache, AnEditedWorldOrModelFileIsParsedAgain) {
   write(world, head + "<include><uri>model://crate</uri><pose>3 0 0.5 0 0 0</pose></include></world></sdf>");
 
   EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 1.0);
+  const WorldSpec first = loadWorld(world.string(), {models.string()});
   EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 1.0);  // cached
+  EXPECT_NE(first.sha256, sha256OfFile(world.string())) << "the world's hash covers the models it includes";
 
   write(models / "crate" / "model.sdf", boxModel(2.0));
-  EXPECT_EQ(loadWorld(world.string(), {models.string()}).statics.at(0).shape.box_size_m.x(), 2.0) << "an edited model";
+  const WorldSpec edited = loadWorld(world.string(), {models.string()});
+  EXPECT_EQ(edited.statics.at(0).shape.box_size_m.x(), 2.0) << "an edited model";
+  EXPECT_NE(edited.sha256, first.sha256) << "an edited model changes the world's hash";
 
   write(world, head + "<include><uri>model://crate</uri><pose>7 0 0.5 0 0 0</pose></include></world></sdf>");
   const WorldSpec moved = loadWorld(world.string(), {models.string()});
   EXPECT_EQ(moved.statics.at(0).pose.translation().x(), 7.0) << "an edited world";
-  EXPECT_EQ(moved.sha256, sha256OfFile(world.string()));
+  EXPECT_NE(moved.sha256, edited.sha256) << "an edited world changes its hash";
+  EXPECT_EQ(moved.sha256, worldSha256(world.string(), {(models / "crate" / "model.config").string(),
+                                                       (models / "crate" / "model.sdf").string(), world.string()}));
 }
 
 TEST_F(WorldCache, ADamagedEntryIsIgnored) {
   const std::string path = std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world";
   const WorldSpec parsed = loadWorld(path);
   for (const auto& e : fs::directory_iterator(root_ / "cache" / "aula" / "worlds")) {
-    std::ofstream(e.path(), std::ios::trunc) << "aula-world-cache-v1\nworld\tvacuum\n";  // cut short
+    std::ofstream(e.path(), std::ios::trunc) << "aula-world-cache-v2\nworld\tvacuum\n";  // cut short
   }
   const WorldSpec again = loadWorld(path);
   EXPECT_EQ(again.statics.size(), parsed.statics.size());

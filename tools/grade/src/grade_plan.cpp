@@ -161,6 +161,34 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
   return out;
 }
 
+namespace {
+
+struct GradedWorld {
+  std::string path, name, sha256;  // name: the file's, or "house-1a2b3c4d.world" when two share one
+};
+
+// Worlds are told apart by their content (every file they are read from: a fixed model reruns
+// the world); two different worlds with one file name get their hash's first 8 digits in their
+// names, so that neither's runs overwrite the other's.
+std::vector<GradedWorld> gradedWorlds(const std::vector<std::string>& paths) {
+  std::vector<GradedWorld> worlds;
+  for (const std::string& path : paths) {
+    worlds.push_back({path, fs::path(path).filename().string(), world::loadWorld(path).sha256});
+  }
+  for (GradedWorld& w : worlds) {
+    const auto shared = std::count_if(worlds.begin(), worlds.end(), [&](const GradedWorld& other) {
+      return fs::path(other.path).filename() == fs::path(w.path).filename() && other.sha256 != w.sha256;
+    });
+    if (shared > 0) {
+      const fs::path file(w.path);
+      w.name = file.stem().string() + "-" + w.sha256.substr(0, 8) + file.extension().string();
+    }
+  }
+  return worlds;
+}
+
+}  // namespace
+
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir) {
   Manifest m;
   m.exercise = request.exercise;
@@ -168,15 +196,17 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
   // Each run on its own port, so runs at once never hear each other (a group alone is not
   // enough: engineering.md). A random base keeps two batches on one machine apart too.
   std::random_device random;
+  const std::vector<GradedWorld> worlds = gradedWorlds(request.worlds);
   int index = 0;
   for (const Submission& s : submissions) {
-    for (const std::string& world_path : request.worlds) {
+    for (const GradedWorld& world : worlds) {
+      const std::string& world_path = world.path;
       for (long long seed : request.seeds) {
         PlannedRun r;
         r.index = index;
         r.student = s.student;
-        r.world_name = fs::path(world_path).filename().string();
-        r.world_sha256 = world::sha256OfFile(world_path);
+        r.world_name = world.name;
+        r.world_sha256 = world.sha256;
         r.seed = seed;
         r.plugin = s.plugin;
         r.plugin_sha256 = s.plugin_sha256;
@@ -184,7 +214,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.language = s.language;
         r.wall_limit_s = request.wall_limit_s;
         const fs::path stem = fs::path(request.out_dir) / "runs" / s.student /
-                              (fs::path(world_path).stem().string() + "-seed" + std::to_string(seed));
+                              (fs::path(world.name).stem().string() + "-seed" + std::to_string(seed));
         r.result_path = stem.string() + ".json";
         r.report_path = stem.string() + ".report.json";
         r.log_path = stem.string() + ".log";

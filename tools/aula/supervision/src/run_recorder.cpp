@@ -40,7 +40,7 @@ aula::run_record_t runRecord(const settings::Exercise& exercise, const std::stri
   record.referee = exercise.referee;
   record.world = fs::path(world_path).filename().string();
   record.world_path = fs::absolute(world_path).string();
-  record.world_sha256 = world::sha256OfFile(world_path);
+  record.world_sha256 = world::loadWorld(world_path).sha256;  // every file the world is read from
   record.seed = seed;
   for (const std::string& key : referee_settings.keys()) {
     // The world and the bus are the run's, not the grading's: regrade names its own.

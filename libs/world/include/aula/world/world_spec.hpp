@@ -80,7 +80,7 @@ struct RobotSpec {
 struct WorldSpec {
   std::string name;
   std::string source_path;
-  std::string sha256;           // of the world file's bytes: reports name exactly what was run
+  std::string sha256;           // of every file the world is read from (worldSha256): reports name exactly what ran
   double physics_step_s = 0.0;  // <physics><max_step_size>; 0 when the world does not say
   std::vector<StaticObject> statics;
   std::vector<RobotSpec> robots;
@@ -115,6 +115,10 @@ WorldFiles worldFilesOf(const std::string& path);
 // SHA-256 in lowercase hex, of bytes and of a file's content (WorldError if unreadable).
 std::string sha256Hex(const std::string& bytes);
 std::string sha256OfFile(const std::string& path);
+// A world's identity: the SHA-256 of the world file alone when it includes nothing, else of the
+// world file's hash followed by every included file's (model.config, model.sdf, ...), sorted, so
+// that a fixed model changes the hash wherever the files lie. `inputs`: every file read.
+std::string worldSha256(const std::string& world_path, const std::vector<std::string>& inputs);
 
 // The robot `name` of a world, or a WorldError naming the world and the robots it has.
 const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name);
