@@ -132,7 +132,9 @@ void VacuumWindow::refresh() {
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
+  // The panel too: its own timer (250 ms of wall time) may not have shown a fault yet.
+  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); algorithm_->refresh(); },
+                           png_path, sim_us);
 }
 
 }  // namespace aula::vacuum
