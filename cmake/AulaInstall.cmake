@@ -80,7 +80,8 @@ install(FILES ${PROJECT_BINARY_DIR}/changelog.Debian.gz DESTINATION ${CMAKE_INST
 
 # cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps (libpython3.11
 # too); a student's plugin build needs a compiler, CMake and the headers the API includes; a
-# student's MyAlgorithm.py, Debian's python3 with numpy and cv2 (the embedded interpreter's).
+# student's MyAlgorithm.py, Debian's python3 with numpy and cv2 (the embedded interpreter's); a
+# component names a crash's lines in the student's plugin with /usr/bin/addr2line (binutils).
 set(CPACK_PACKAGE_NAME aula)
 set(CPACK_PACKAGE_VENDOR "Aula")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "Robotics teaching environment: TeleTaxi, Vacuum cleaner and Autopark exercises")
@@ -98,7 +99,7 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "cmake, g++, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap, python3, python3-numpy, python3-opencv")
+    "cmake, g++, binutils, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap, python3, python3-numpy, python3-opencv")
 # aula grade --engine=slurm submits with sbatch; report.html screenshots use a browser.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "slurm-client")
 include(CPack)

@@ -37,4 +37,10 @@ shoot autopark Autopark autopark.world autopark autopark-referee --Autopark.Algo
 shoot vacuum_python_fault Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee \
   --Vacuum.Algorithm="$root/tests/data/python/raises/MyAlgorithm.py" --screenshot-at=6
 rm -f "$out/vacuum_python_fault_referee.png"  # the component's fault panel is the point
-echo "written: $out/{vacuum,teletaxi,autopark}_{component,referee}.png, $out/vacuum_python_fault_component.png: look at each"
+# A student's C++ plugin that writes through a null pointer on its 6th call: with windows the
+# crash is the fault, named at its line, and the window stays.
+shoot crash_fault_panel Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee \
+  --Vacuum.Algorithm="$build/tests/integration/plugins/libaula_test_fault_segfault.so" --screenshot-at=3
+mv "$out/crash_fault_panel_component.png" "$out/crash-fault-panel.png"
+rm -f "$out/crash_fault_panel_referee.png"
+echo "written: $out/{vacuum,teletaxi,autopark}_{component,referee}.png, $out/vacuum_python_fault_component.png, $out/crash-fault-panel.png: look at each"

@@ -166,30 +166,60 @@ TEST(StudentFaults, LibraryExceptionNamesTheStudentsLine) {
   EXPECT_NO_AULA_PROCESS_LEFT();
 }
 
-// 2. execute() crashes the component: the launcher says who, how and running what; the referee
-// still writes its report.
-TEST(StudentFaults, CrashIsNamedByTheLauncherAndAbortsTheReport) {
-  const RunResult run = runVacuum(AULA_PLUGIN_SEGFAULT, "segfault");
+namespace {
+
+// The 1-based line of `file` that holds `text`: a test names the real line of a statement, read
+// from the source (0 when it is not there).
+int lineOf(const std::string& file, const std::string& text) {
+  std::istringstream in(readFile(file));
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++n;
+    if (line.find(text) != std::string::npos) return n;
+  }
+  return 0;
+}
+
+// 2. execute() crashes the component: it names the student's line, the launcher says who, how,
+// where and running what; the referee still writes its report, the line as its algorithm_error.
+void expectCrashNamedAtItsLine(const RunResult& run) {
   ASSERT_TRUE(run.code.has_value()) << describe(run);
   EXPECT_NE(*run.code, 0) << describe(run);
+  const int line = lineOf(std::string(AULA_TEST_DATA_DIR) + "/plugins/segfault.cpp", "*nowhere = calls_;");
+  ASSERT_GT(line, 0);
+  const std::string where = "segfault.cpp:" + std::to_string(line) + " (Segfault::execute)";
   const std::string plugin_name = fs::path(AULA_PLUGIN_SEGFAULT).filename().string();
   EXPECT_EQ(countLines(run.err, "ended the run"), 1u) << describe(run);
-  std::smatch line;
-  ASSERT_TRUE(std::regex_search(run.err, line, std::regex("aula: [^\n]*ended the run[^\n]*"))) << describe(run);
-  EXPECT_NE(line.str().find("vacuum-cleaner"), std::string::npos) << line.str();
-  EXPECT_NE(line.str().find("SIGSEGV"), std::string::npos) << line.str();
-  EXPECT_NE(line.str().find(plugin_name), std::string::npos) << line.str();
-  // The student's stack: the component prints it, frames in the plugin included, and says how
-  // to name their lines.
-  EXPECT_NE(run.err.find("vacuum-cleaner: crashed (SIGSEGV); the stack, innermost first:"), std::string::npos)
+  std::smatch said;
+  ASSERT_TRUE(std::regex_search(run.err, said, std::regex("aula: [^\n]*ended the run[^\n]*"))) << describe(run);
+  EXPECT_NE(said.str().find("vacuum-cleaner"), std::string::npos) << said.str();
+  EXPECT_NE(said.str().find(plugin_name), std::string::npos) << said.str();
+  EXPECT_NE(said.str().find("ended the run: component crashed (SIGSEGV) at " + where), std::string::npos) << said.str();
+  // The student's frames, resolved: no raw stack, no addr2line to run by hand.
+  EXPECT_NE(run.err.find("vacuum-cleaner: crashed (SIGSEGV) in your algorithm at " + where + "\n"), std::string::npos)
       << describe(run);
-  EXPECT_NE(run.err.find("addr2line -f -C -e " + std::string(AULA_PLUGIN_SEGFAULT)), std::string::npos) << describe(run);
+  EXPECT_EQ(run.err.find("addr2line"), std::string::npos) << describe(run);
   ASSERT_FALSE(run.report.empty()) << describe(run);
   EXPECT_EQ(jsonString(run.report, "aborted").value_or("(no \"aborted\")"), "component crashed (SIGSEGV)")
+      << describe(run);
+  EXPECT_EQ(jsonString(run.report, "algorithm_error").value_or("(no \"algorithm_error\")"),
+            "component crashed (SIGSEGV) at " + where)
       << describe(run);
   EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
   EXPECT_GE(jsonNumber(run.report, "mark"), 0.0) << describe(run);
   EXPECT_NO_AULA_PROCESS_LEFT();
+}
+
+}  // namespace
+
+TEST(StudentFaults, CrashNamesTheStudentsLineAndAbortsTheReport) {
+  expectCrashNamedAtItsLine(runVacuum(AULA_PLUGIN_SEGFAULT, "segfault"));
+}
+
+// The same in the grading sandbox: addr2line and the plugin are visible inside, and the line
+// reaches the launcher through its private pipe.
+TEST(StudentFaults, CrashNamesTheStudentsLineInTheSandbox) {
+  expectCrashNamedAtItsLine(runVacuum(AULA_PLUGIN_SEGFAULT, "segfault_sandboxed", {"--sandbox"}));
 }
 
 // 3. execute() never returns: the watchdog ends the component after its budget, the run ends in

@@ -62,7 +62,9 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
   referee_->setMaximumWidth(360);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
+  // Reload puts the robot back at its start: the teleoperator lets go of it too.
+  algorithm_ = new component::AlgorithmPanel(
+      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
   side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);

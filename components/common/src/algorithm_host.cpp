@@ -39,6 +39,17 @@ void exitedInsideACall() {
   std::_Exit(process::kExitAlgorithmExited);
 }
 
+// What a call into the student's code came to: "" when it returned, else what it threw and
+// where in the plugin (when it can tell), or where it crashed.
+struct CallOutcome {
+  std::string fault;
+  bool crashed = false;  // what the call owned is left as the crash left it
+};
+
+// Runs `call`, surviving a crash in it when `survive_crashes` (crash_report.hpp).
+CallOutcome outcomeOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin,
+                      bool survive_crashes);
+
 // Runs `call`; "" when it returned, else what it threw, and where in `plugin` (when it can tell).
 std::string faultOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin) {
   static const bool watched = std::atexit(exitedInsideACall) == 0;
@@ -69,6 +80,15 @@ std::string faultOf(const char* what, const std::function<void()>& call, const P
   return "";
 }
 
+CallOutcome outcomeOf(const char* what, const std::function<void()>& call, const PluginLibrary* plugin,
+                      bool survive_crashes) {
+  if (!survive_crashes) return {faultOf(what, call, plugin)};
+  std::string crash;
+  CallOutcome outcome{faultOf(what, [&] { crash = callSurvivingCrashes(call); }, plugin)};
+  if (!crash.empty()) outcome = {std::string(what) + " " + crash, true};
+  return outcome;
+}
+
 std::string typeName(const std::type_info& type) {
   int status = 0;
   char* demangled = abi::__cxa_demangle(type.name(), nullptr, nullptr, &status);
@@ -95,7 +115,7 @@ AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, 
       choice_(std::move(choice)),
       motors_(motors),
       watchdog_(program_, execute_budget_s) {
-  installCrashReport(program_, "");
+  installCrashReport(program_, PluginImage{});
 }
 
 void AlgorithmHostBase::loadPlugin() {
@@ -109,7 +129,7 @@ void AlgorithmHostBase::loadPlugin() {
   }
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
   watchdog_.setInterrupter(plugin_->interrupter());
-  installCrashReport(program_, plugin_path_);
+  installCrashReport(program_, plugin_->image());
   // Which file and which build runs, said once (a stale build is refused by `aula run`).
   std::cerr << (program_ + ": running " + plugin_path_ + " (" + label() + ")\n") << std::flush;  // one write
 }
@@ -154,11 +174,15 @@ void AlgorithmHostBase::containHangs() {
 bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
   if (hung_) return false;
   if (thread_) {
-    // The outcome is shared with the job: an abandoned call may still write it.
-    auto fault = std::make_shared<std::string>();
-    bool returned =
-        thread_->run([what, fault, call = std::move(call), plugin = plugin_.get()] { *fault = faultOf(what, call, plugin); },
-                     watchdog_.budgetS());
+    // The outcome is shared with the job: an abandoned call may still write it. A crash in a C++
+    // algorithm comes back as its fault (a Python one may hold the interpreter's lock: it ends the process).
+    auto outcome = std::make_shared<CallOutcome>();
+    const bool survive = !PluginLibrary::isPythonFile(plugin_path_);
+    bool returned = thread_->run(
+        [what, outcome, survive, call = std::move(call), plugin = plugin_.get()] {
+          *outcome = outcomeOf(what, call, plugin, survive);
+        },
+        watchdog_.budgetS());
     if (!returned && plugin_ != nullptr && plugin_->interrupter()) {
       // Raise inside the call (see ExecuteWatchdog), from a thread of its own: it may block.
       std::thread(plugin_->interrupter(), ExecuteWatchdog::overrunText(what, watchdog_.budgetS())).detach();
@@ -168,7 +192,8 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
       abandonHungCall(what);
       return false;
     }
-    fault_ = *fault;
+    fault_ = outcome->fault;
+    crashed_ = outcome->crashed;
   } else {
     watchdog_.arm(what);
     fault_ = faultOf(what, call, plugin_.get());

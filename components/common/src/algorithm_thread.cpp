@@ -1,5 +1,7 @@
 #include "aula/component/algorithm_thread.hpp"
 
+#include <aula/component/crash_report.hpp>
+
 #include <chrono>
 #include <csignal>
 
@@ -37,6 +39,7 @@ void AlgorithmThread::loop() {
   sigset_t all;
   sigfillset(&all);
   pthread_sigmask(SIG_BLOCK, &all, nullptr);
+  prepareThreadForCrashes();  // a crash inside a call comes back to it (callSurvivingCrashes)
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return has_job_ || stopping_; });

@@ -4,6 +4,7 @@
 #include <aula/component/throw_site.hpp>
 #include <aula/config/paths.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -105,6 +106,7 @@ PluginLibrary::PluginLibrary(const std::string& path, const std::string& exercis
     throw PluginError(path + ": cannot load this shared library: " + why);
   }
   bindEntryPoints(exercise);
+  findImage();
 }
 
 void PluginLibrary::openPython(const std::string& exercise) {
@@ -156,36 +158,45 @@ void PluginLibrary::bindEntryPoints(const std::string& exercise) {
 }
 
 std::string PluginLibrary::throwSite(const void* thrown) const {
-  // The lines are read from the file on disk: not from a rebuild that is not what runs, nor
-  // from a Python file (its host says its own lines).
-  if (isPythonFile(path_) || changedOnDisk()) return "";
+  // Not from a Python file (its host says its own lines); frame 0 is __cxa_throw's own.
   const ThrowStack& stack = lastThrowOnThisThread();
+  if (stack.object != thrown || stack.count < 2) return "";
+  StudentLine line;
+  return studentLines(image_, stack.frames + 1, stack.count - 1, nullptr, &line, 1) == 1 ? line.where : "";
+}
+
+namespace {
+
+struct Segments {
+  uintptr_t load_address = 0, begin = 0, end = 0;
+};
+
+int spanOfLoadedSegments(dl_phdr_info* info, size_t, void* data) {
+  auto* span = static_cast<Segments*>(data);
+  if (info->dlpi_addr != span->load_address) return 0;
+  for (int i = 0; i < info->dlpi_phnum; ++i) {
+    const ElfW(Phdr)& segment = info->dlpi_phdr[i];
+    if (segment.p_type != PT_LOAD) continue;
+    const uintptr_t from = info->dlpi_addr + segment.p_vaddr, to = from + segment.p_memsz;
+    span->begin = span->begin == 0 ? from : std::min(span->begin, from);
+    span->end = std::max(span->end, to);
+  }
+  return span->end != 0 ? 1 : 0;
+}
+
+}  // namespace
+
+void PluginLibrary::findImage() {
   const link_map* map = nullptr;
-  if (stack.object != thrown || handle_ == nullptr || dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr) {
-    return "";
-  }
-  for (int i = 1; i < stack.count; ++i) {
-    Dl_info info{};
-    if (dladdr(stack.frames[i], &info) == 0 || reinterpret_cast<uintptr_t>(info.dli_fbase) != map->l_addr) continue;
-    // The call instruction before the return address; -i: the inlined frames too, innermost
-    // first, so that vector::at's header gives way to the student's line that called it.
-    char offset[32];
-    std::snprintf(offset, sizeof offset, "0x%zx",
-                  static_cast<size_t>(reinterpret_cast<uintptr_t>(stack.frames[i]) - map->l_addr - 1));
-    const std::string command = "addr2line -i -e '" + path_ + "' " + offset + " 2>/dev/null";
-    FILE* pipe = path_.find('\'') == std::string::npos ? ::popen(command.c_str(), "r") : nullptr;
-    if (pipe == nullptr) return "";
-    std::string site;
-    std::array<char, 1024> line{};
-    while (std::fgets(line.data(), line.size(), pipe) != nullptr) {
-      std::string where(line.data());
-      where = where.substr(0, where.find_first_of(" \n"));  // drops " (discriminator N)"
-      if (site.empty() && where.rfind("??", 0) != 0 && where.rfind("/usr/", 0) != 0) site = where;
-    }
-    ::pclose(pipe);
-    if (!site.empty()) return fs::path(site).filename().string();
-  }
-  return "";
+  if (dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr || path_.size() >= sizeof image_.path) return;
+  Segments span;
+  span.load_address = map->l_addr;
+  dl_iterate_phdr(spanOfLoadedSegments, &span);
+  std::memcpy(image_.path, path_.c_str(), path_.size() + 1);
+  image_.load_address = span.load_address;
+  image_.begin = span.begin;
+  image_.end = span.end;
+  image_.mtime_ns = mtime_ns_;
 }
 
 std::function<void(const std::string&)> PluginLibrary::interrupter() const {

@@ -53,7 +53,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   side->addWidget(generate);
   side->addWidget(go);
   side->addWidget(stop);
-  auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
+  auto* teleop = teleop_ = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
   side->addWidget(teleop);
   side->addStretch(1);
   layout->addLayout(side);
@@ -104,6 +104,7 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
 }
 
 bool TaxiWindow::reloadAlgorithm() {
+  teleop_->stop();  // the taxi is put back at its start: the teleoperator lets go of it too
   const bool loaded = component_.reloadAlgorithm();
   map_->setPath({});
   status_label_->setText(loaded ? "Algorithm reloaded, taxi back at its start: press Generate Path" : "The reload failed: see below");

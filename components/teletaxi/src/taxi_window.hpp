@@ -32,6 +32,7 @@ class TaxiWindow : public QMainWindow {
 
   TaxiComponent& component_;
   gui::MapView* map_ = nullptr;
+  gui::Teleoperator* teleop_ = nullptr;
   QLabel* destination_label_ = nullptr;
   QLabel* position_label_ = nullptr;
   QLabel* velocity_label_ = nullptr;

@@ -35,7 +35,9 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   status_->setWordWrap(true);
   status_->setMinimumWidth(260);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  algorithm_ = new component::AlgorithmPanel(component_.algorithm(), [this] { return component_.reloadAlgorithm(); }, central);
+  // Reload puts the robot back at its start: the teleoperator lets go of it too.
+  algorithm_ = new component::AlgorithmPanel(
+      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
   side->addWidget(run_);
   side->addWidget(new component::SimControlPanel(component_.bus(), central));
   side->addWidget(algorithm_);
@@ -130,7 +132,9 @@ void VacuumWindow::refresh() {
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
-  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); }, png_path, sim_us);
+  // The panel too: its own timer (250 ms of wall time) may not have shown a fault yet.
+  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); algorithm_->refresh(); },
+                           png_path, sim_us);
 }
 
 }  // namespace aula::vacuum

@@ -53,6 +53,8 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   if (exercise != nullptr && exercise->referee == program) known.insert(known.end(), {"replay", "key-fd", "isolation"});
   // aula replay's windows: the component's shows and cannot act; neither watches its peers.
   if (exercise != nullptr && (exercise->component == program || exercise->referee == program)) known.push_back("view-only");
+  // The launcher's private line for a crash's one line (crash_report.hpp).
+  if (exercise != nullptr && exercise->component == program) known.push_back("crash-fd");
   ProcessSetup setup;
   setup.program = program;
   setup.command_line = config::CommandLine::parse(argc, argv, takes_value);

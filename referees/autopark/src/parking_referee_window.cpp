@@ -1,6 +1,7 @@
 #include "parking_referee_window.hpp"
 
 #include <aula/gui/screenshot.hpp>
+#include <aula/gui/shown_text.hpp>
 
 #include <QApplication>
 #include <QGridLayout>
@@ -49,7 +50,12 @@ ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(nod
 void ParkingRefereeWindow::refresh() {
   const ParkingReferee& r = node_.referee();
   const double t = r.elapsedS();
-  clock_->setText(QString("%1:%2").arg(static_cast<int>(t) / 60, 2, 10, QChar('0')).arg(std::fmod(t, 60.0), 4, 'f', 1, QChar('0')));
+  clock_->setText(QString::fromStdString(node_.clockText(t)));  // stopped where the grading stopped
+  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
+    marked_episode_ = node_.episode();
+    mark_->setText("Mark: -");
+    gui::sayShown(*this, {clock_, mark_});
+  }
   const ParkingMeasures& m = r.measures();
   distances_->setText(QString("Front car: %1 m\nRear car:  %2 m  (centred: %6 m each)\nCurb:      %3 m\nTo the ideal pose: %4 m\n%5")
                           .arg(m.front_gap_m, 5, 'f', 2)
@@ -66,13 +72,18 @@ void ParkingRefereeWindow::refresh() {
 void ParkingRefereeWindow::showMark() {
   const ParkingReferee& r = node_.referee();
   const ParkingScores s = r.scores();
+  const auto& end = node_.episodeEnd();  // ended: the report's mark, final
   mark_->setText(QString("Mark: %1 / 10%2\nangle %3 + time %4 + distances %5 + collisions %6 (x 0.025)")
-                     .arg(s.mark, 0, 'f', 2)
-                     .arg(r.finished() ? "" : " (so far)")
+                     .arg(end ? end->mark : s.mark, 0, 'f', 2)
+                     .arg(end ? "" : " (so far)")
                      .arg(s.angle, 0, 'f', 0)
                      .arg(s.time, 0, 'f', 0)
                      .arg(s.distance, 0, 'f', 1)
                      .arg(s.collision, 0, 'f', 0));
+  if (end) {
+    refresh();
+    gui::sayShown(*this, {clock_, mark_});
+  }
 }
 
 void ParkingRefereeWindow::screenshotWhenFinished(const QString& png_path) {

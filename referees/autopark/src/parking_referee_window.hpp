@@ -27,6 +27,7 @@ class ParkingRefereeWindow : public QWidget {
   QLabel* clock_ = nullptr;
   QLabel* distances_ = nullptr;
   QLabel* mark_ = nullptr;
+  int marked_episode_ = 0;  // a hot reload clears the mark
   QProgressBar* collisions_ = nullptr;
   gui::Gauge* orientation_ = nullptr;
   QTimer timer_;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace aula::referee {
@@ -68,18 +69,49 @@ void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string&
   if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
+    end_.reset();
     startNewEpisode(msg->utime);
   }
   onEpisode(*msg);
-  if (!had_fault && !outcome_.fault().empty()) {
-    trace_.addEvent(msg->utime, "fault", "the student's algorithm failed: " + outcome_.fault(),
-                    "grading stops here: the mark is what was earned so far");
-  }
+  if (!had_fault && !outcome_.fault().empty()) traceFault(msg->utime);
   announce(msg->utime);
 }
 
+void RefereeNode::announceEnd() {
+  outcome_.announceOnce(finished(), [this] {
+    const EpisodeStatus s = status();
+    end_ = EpisodeEnd{gradedTimeS(), mark(), s.finished ? s.ending : "Stopped",
+                      outcome_.fault().empty() ? outcome_.aborted() : outcome_.fault()};
+    if (on_finished_) on_finished_();
+  });
+}
+
+std::string RefereeNode::endedAt(const EpisodeEnd& end) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s at %.2f s of sim time", end.how.c_str(), end.graded_s);
+  return text;
+}
+
+std::string RefereeNode::clockText(double elapsed_s) const {
+  if (end_) return endedAt(*end_);
+  char text[32];
+  std::snprintf(text, sizeof text, "%02d:%04.1f", static_cast<int>(elapsed_s) / 60, std::fmod(elapsed_s, 60.0));
+  return text;
+}
+
+void RefereeNode::traceFault(int64_t utime) {
+  trace_.addEvent(utime, "fault", "the student's algorithm failed: " + outcome_.fault(),
+                  "grading stops here: the mark is what was earned so far");
+}
+
+void RefereeNode::algorithmFailed(const std::string& fault) {
+  if (!outcome_.fault().empty()) return;
+  outcome_.algorithmFailed(fault);
+  traceFault(simTimeUs());
+}
+
 void RefereeNode::announce(int64_t utime) {
-  outcome_.announceOnce(finished(), on_finished_);
+  announceEnd();
   status_->tick(utime, status());
 }
 
@@ -100,7 +132,7 @@ void RefereeNode::abort(const std::string& reason) {
                     "grading stops here: the mark is what was earned so far");
   }
   outcome_.abort(reason);
-  outcome_.announceOnce(finished(), on_finished_);
+  announceEnd();
   status_->send(simTimeUs(), status());
 }
 

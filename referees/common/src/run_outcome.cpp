@@ -18,6 +18,10 @@ bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& faul
   return new_episode;
 }
 
+void RunOutcome::algorithmFailed(const std::string& fault) {
+  if (fault_.empty()) fault_ = fault;
+}
+
 void RunOutcome::abort(const std::string& reason) {
   if (aborted_.empty()) aborted_ = reason;
 }

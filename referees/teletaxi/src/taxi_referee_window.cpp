@@ -2,6 +2,7 @@
 
 #include <aula/geometry/angles.hpp>
 #include <aula/gui/screenshot.hpp>
+#include <aula/gui/shown_text.hpp>
 
 #include <QApplication>
 #include <QGridLayout>
@@ -45,7 +46,12 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
 void TaxiRefereeWindow::refresh() {
   const TaxiReferee& r = node_.referee();
   const double t = r.elapsedS();
-  clock_->setText(QString("%1:%2").arg(static_cast<int>(t) / 60, 2, 10, QChar('0')).arg(std::fmod(t, 60.0), 4, 'f', 1, QChar('0')));
+  clock_->setText(QString::fromStdString(node_.clockText(t)));  // stopped where the grading stopped
+  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
+    marked_episode_ = node_.episode();
+    mark_->setText("Mark: -");
+    gui::sayShown(*this, {clock_, mark_});
+  }
   distances_->setText(r.hasGoal() ? QString("Straight line start -> destination: %1 m\nTravelled: %2 m\nTo the destination: %3 m")
                                         .arg(r.straightDistanceM(), 0, 'f', 1)
                                         .arg(r.pathLengthM(), 0, 'f', 1)
@@ -58,10 +64,15 @@ void TaxiRefereeWindow::refresh() {
 void TaxiRefereeWindow::showMark() {
   const TaxiReferee& r = node_.referee();
   const TaxiGrade g = r.finished() ? r.grade() : r.provisionalGrade();
+  const auto& end = node_.episodeEnd();  // ended: the report's mark, final
   mark_->setText(QString("Mark: %1 / 10%2\n%3")
-                     .arg(g.mark, 0, 'f', 2)
-                     .arg(r.finished() ? "" : " (so far)")
-                     .arg(QString::fromStdString(g.verdict)));
+                     .arg(end ? end->mark : g.mark, 0, 'f', 2)
+                     .arg(end ? "" : " (so far)")
+                     .arg(QString::fromStdString(end && end->how == "Stopped" ? end->why : g.verdict)));
+  if (end) {
+    refresh();
+    gui::sayShown(*this, {clock_, mark_});
+  }
 }
 
 void TaxiRefereeWindow::screenshotWhenFinished(const QString& png_path) {

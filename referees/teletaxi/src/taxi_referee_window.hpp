@@ -25,6 +25,7 @@ class TaxiRefereeWindow : public QWidget {
   QLabel* clock_ = nullptr;
   QLabel* distances_ = nullptr;
   QLabel* mark_ = nullptr;
+  int marked_episode_ = 0;  // a hot reload clears the mark
   gui::Gauge* speed_ = nullptr;
   gui::Gauge* heading_ = nullptr;
   QTimer timer_;

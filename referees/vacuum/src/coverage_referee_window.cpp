@@ -1,6 +1,7 @@
 #include "coverage_referee_window.hpp"
 
 #include <aula/gui/screenshot.hpp>
+#include <aula/gui/shown_text.hpp>
 
 #include <aula/geometry/map_transform.hpp>
 
@@ -61,21 +62,33 @@ void CoverageRefereeWindow::refresh() {
   percent_->setText(QString("%1 % cleaned").arg(r.coveragePercent(), 0, 'f', 2));
   bar_->setValue(static_cast<int>(std::lround(100.0 * r.mark())));  // the bar fills as the mark rises
   const double left = r.remainingS();
-  countdown_->setText(!node_.started() ? QString("waiting for Run")
-                                       : QString("%1:%2 left")
-                                             .arg(static_cast<int>(left) / 60, 2, 10, QChar('0'))
-                                             .arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
-  clock_->setValue(r.elapsedS());
+  const auto& end = node_.episodeEnd();  // the clock stops where the grading stopped
+  countdown_->setText(end                 ? QString::fromStdString(referee::RefereeNode::endedAt(*end))
+                      : !node_.started() ? QString("waiting for Run")
+                                         : QString("%1:%2 left")
+                                               .arg(static_cast<int>(left) / 60, 2, 10, QChar('0'))
+                                               .arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
+  clock_->setValue(end ? end->graded_s : r.elapsedS());
+  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
+    marked_episode_ = node_.episode();
+    mark_->setText("Mark: -");
+    gui::sayShown(*this, {countdown_, mark_});
+  }
 }
 
 void CoverageRefereeWindow::showMark() {
   const CoverageReferee& r = node_.referee();
+  const auto& end = node_.episodeEnd();  // ended: the report's mark, final
   mark_->setText(QString("Mark: %1 / 10%2   (coverage %3 %, bumps %4; %5)")
-                     .arg(r.mark(), 0, 'f', 2)
-                     .arg(r.finished() ? "" : " so far")
+                     .arg(end ? end->mark : r.mark(), 0, 'f', 2)
+                     .arg(end ? "" : " so far")
                      .arg(r.coveragePercent(), 0, 'f', 1)
                      .arg(r.bumps())
                      .arg(QString::fromStdString(scaleText(r.settings()))));
+  if (end) {
+    refresh();
+    gui::sayShown(*this, {countdown_, mark_});
+  }
 }
 
 void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {

@@ -25,7 +25,8 @@ class CoverageRefereeWindow : public QWidget {
   void refresh();
   CoverageRefereeNode& node_;
   gui::MapView* map_ = nullptr;
-  int shown_episode_ = 0;  // a hot reload clears the painted area
+  int shown_episode_ = 0;   // a hot reload clears the painted area
+  int marked_episode_ = 0;  // and the mark
   QLabel* percent_ = nullptr;
   QProgressBar* bar_ = nullptr;
   QLabel* countdown_ = nullptr;

@@ -58,6 +58,23 @@ TEST(SupervisionRules, ACrashedComponentIsTheRefereesToGrade) {
   EXPECT_TRUE(onExit(told, 2, "vacuum-cleaner").message.empty());
 }
 
+// The component's own line says where its crash struck, in the student's lines: the launcher
+// says it and hands it to the referee as the algorithm's fault; the abort's reason stays the
+// exit code's. The line is the student's process's: believed only for the signal it died of.
+TEST(SupervisionRules, ACrashInTheStudentsLinesIsSaidWhereItStruck) {
+  ExitEvent e = exitOf(Role::Component, 128 + SIGSEGV);
+  e.crash_line = "crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)";
+  const ExitVerdict v = onExit(e, 2, "vacuum-cleaner");
+  EXPECT_EQ(v.tell_referee, "component crashed (SIGSEGV)");
+  EXPECT_EQ(v.algorithm_fault, "component crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)");
+  EXPECT_EQ(crashInStudentLines("component crashed (SIGBUS)", e.crash_line), "");  // another signal
+  EXPECT_EQ(crashInStudentLines("component crashed (SIGSEGV)", "crashed (SIGSEGV)"), "");  // no line found
+  EXPECT_EQ(crashInStudentLines("execute() did not return within 2 s", e.crash_line), "");
+  EXPECT_EQ(crashInStudentLines("component crashed (SIGSEGV)", "crashed (SIGSEGV) at " + std::string(1000, 'x')).size(),
+            std::string("component ").size() + 300);
+  EXPECT_EQ(onExit(exitOf(Role::Component, 128 + SIGSEGV), 2, "vacuum-cleaner").algorithm_fault, "");
+}
+
 // _exit(0) or quick_exit(0) in the student's code (no atexit handler runs), or exit(0) from a
 // thread of its own: a headless component never ends with 0 on its own in the middle of a run.
 TEST(SupervisionRules, AHeadlessComponentEndingWithZeroMidRunIsTheAlgorithms) {

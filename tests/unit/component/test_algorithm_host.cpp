@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <memory>
 #include <regex>
 #include <thread>
@@ -28,6 +29,16 @@ void replaceFile(const fs::path& from, const fs::path& to) {
   fs::copy_file(from, to, fs::copy_options::overwrite_existing);
   fs::last_write_time(to, std::max(fs::last_write_time(to), before + std::chrono::seconds(1)));
 }
+
+// A vacuum's devices and API, owned by the calls too: one could outlive the test.
+struct Devices {
+  aula::component::Pose3d pose;
+  aula::vacuum::YawSensor yaw{pose};
+  aula::component::Laser laser;
+  aula::component::Bumper bumper;
+  Motors motors{1.0, 1.0};
+  aula::vacuum::VacuumApi api{yaw, laser, bumper, motors, 0.08};
+};
 
 class AlgorithmHostReload : public ::testing::Test {
  protected:
@@ -97,14 +108,6 @@ TEST(AlgorithmHost, ReloadingABuiltInCreatesAFreshAlgorithm) {
 // the call returns as a fault naming the loop's line, the algorithm is not abandoned (no hang),
 // and a fixed file runs after Reload.
 TEST_F(AlgorithmHostReload, APythonLoopWithWindowsIsInterruptedAtItsLineAndReloadWorks) {
-  struct Devices {
-    aula::component::Pose3d pose;
-    aula::vacuum::YawSensor yaw{pose};
-    aula::component::Laser laser;
-    aula::component::Bumper bumper;
-    Motors motors{1.0, 1.0};
-    aula::vacuum::VacuumApi api{yaw, laser, bumper, motors, 0.08};
-  };
   auto devices = std::make_shared<Devices>();  // owned by the calls too: one could outlive the test
   const fs::path file = dir_ / "MyAlgorithm.py";
   replaceFile(std::string(AULA_TEST_DATA_DIR) + "/python/endless_loop/MyAlgorithm.py", file);
@@ -127,4 +130,65 @@ TEST_F(AlgorithmHostReload, APythonLoopWithWindowsIsInterruptedAtItsLineAndReloa
   EXPECT_TRUE(host.reload()) << host.fault();
   EXPECT_TRUE(run()) << host.fault();
   EXPECT_EQ(devices->motors.nonFiniteV(), 1);  // the new file ran: it sends NaN
+}
+
+namespace {
+
+int lineOf(const std::string& file, const std::string& text) {
+  std::ifstream in(file);
+  int n = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++n;
+    if (line.find(text) != std::string::npos) return n;
+  }
+  return 0;
+}
+
+// Deep enough to overflow any stack: each frame keeps a buffer the compiler cannot drop.
+__attribute__((noinline)) int recurse(int depth) {
+  volatile char frame[4096];
+  frame[0] = static_cast<char>(depth);
+  return depth < 0 ? 0 : recurse(depth + 1) + frame[0];
+}
+
+}  // namespace
+
+// With windows (containHangs), a C++ algorithm that crashes inside execute() does not end the
+// process: the call comes back as a fault naming the student's line (from the plugin's source,
+// not a constant), and a fixed build runs after Reload.
+TEST_F(AlgorithmHostReload, ACrashWithWindowsBecomesTheFaultAtItsLineAndReloadWorks) {
+  replaceFile(AULA_PLUGIN_SEGFAULT, plugin_);
+  auto devices = std::make_shared<Devices>();
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, plugin_.string(), devices->motors, 5);
+  host.containHangs();
+  auto run = [&] { return host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
+  for (int call = 1; call <= 5; ++call) EXPECT_TRUE(run()) << call << ": " << host.fault();
+  EXPECT_FALSE(run());  // the 6th call writes through a null pointer
+  const int line = lineOf(std::string(AULA_TEST_DATA_DIR) + "/plugins/segfault.cpp", "*nowhere = calls_;");
+  EXPECT_EQ(host.fault(), "execute() crashed (SIGSEGV) at segfault.cpp:" + std::to_string(line) + " (Segfault::execute)");
+  EXPECT_TRUE(host.crashed());
+  EXPECT_FALSE(host.hung());
+  EXPECT_FALSE(run());  // halted until a reload
+
+  replaceFile(AULA_PLUGIN_DOES_NOTHING, plugin_);  // fixed and rebuilt
+  EXPECT_TRUE(host.reload()) << host.fault();
+  EXPECT_FALSE(host.crashed());
+  for (int call = 1; call <= 10; ++call) EXPECT_TRUE(run()) << call << ": " << host.fault();
+}
+
+// A stack overflow inside the call is caught too (the handler runs on an alternate stack).
+TEST(AlgorithmHost, AStackOverflowWithWindowsBecomesTheFault) {
+  struct Recursive : VacuumAlgorithm {
+    void execute(aula::vacuum::VacuumApi&) override { result = recurse(1); }
+    int result = 0;
+  };
+  Motors motors(1.0, 1.0);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {{"recursive", [](uint64_t) { return std::make_unique<Recursive>(); }}},
+                                      "recursive", motors, 5);
+  host.containHangs();
+  auto devices = std::make_shared<Devices>();
+  EXPECT_FALSE(host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }));
+  EXPECT_EQ(host.fault().rfind("execute() crashed (SIGSEGV)", 0), 0u) << host.fault();
+  EXPECT_TRUE(host.reload());  // the crashed algorithm is left as it was, a fresh one made
+  EXPECT_EQ(host.fault(), "");
 }

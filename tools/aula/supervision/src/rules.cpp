@@ -49,6 +49,15 @@ std::string componentFault(int code, double execute_budget_s) {
   return "";
 }
 
+std::string crashInStudentLines(const std::string& fault, const std::string& crash_line) {
+  const std::string component = "component ";
+  if (fault.rfind(component + "crashed (", 0) != 0) return "";
+  const std::string said = fault.substr(component.size()) + " at ";
+  // The line is the student's process's: it is believed for the same signal only, and kept short.
+  if (crash_line.rfind(said, 0) != 0 || crash_line.size() == said.size()) return "";
+  return component + crash_line.substr(0, 300);
+}
+
 // A headless component ends only when it is told to, or with a code that says why: exit code 0
 // in the middle of a run is the algorithm's doing, by a way round the component's exit() watch.
 const char* const kAlgorithmEndedMidRun =
@@ -76,6 +85,7 @@ ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::strin
   if (e.has_referee && component && e.headless && e.code == 0) fault = kAlgorithmEndedMidRun;
   if (!fault.empty() && !e.referee_told) {
     v.tell_referee = fault;
+    v.algorithm_fault = crashInStudentLines(fault, e.crash_line);
     v.result = 1;
     return v;  // the referee grades what there is and ends the run
   }

@@ -75,50 +75,57 @@ class RunSupervisor {
   struct Launch {
     std::vector<std::string> args;
     std::vector<int> passed;
-    bool close_last = false;  // the last passed descriptor is ours to close once the child has it
+    std::vector<int> ours_to_close;  // passed descriptors to close once the child has them
   };
 
-  Launch launchOf(size_t i, int status_write, int control_read, const std::optional<auth::Key>& key) const {
+  Launch launchOf(size_t i, int status_write, int control_read, int crash_write, const std::optional<auth::Key>& key) const {
     const bool referee = run_.has_referee && i == 2;
     const bool keyed = key && (i == 0 || referee);
-    Launch launch{run_.lines[i], {}, false};
+    Launch launch{run_.lines[i], {}, {}};
     auto pass = [&](const std::string& option, int fd) {
       launch.args.push_back("--" + option + "=" + std::to_string(process::ChildProcess::passedFd(launch.passed.size())));
       launch.passed.push_back(fd);
     };
     if (i == 0 && status_write >= 0) pass("status-fd", status_write);  // why the simulator ended a graded run
     if (referee) pass("control-fd", control_read);
-    if (keyed) pass("key-fd", auth::keyPipe(*key));
+    if (keyed) {
+      pass("key-fd", auth::keyPipe(*key));
+      launch.ours_to_close.push_back(launch.passed.back());
+    }
+    if (i == 1 && crash_write >= 0) pass("crash-fd", crash_write);  // where a crash struck, in the student's lines
     const bool sandboxed = run_.sandbox && run_.has_referee && i == 1;
     if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
       const int seccomp_child_fd = process::ChildProcess::passedFd(launch.passed.size());
       launch.passed.push_back(sandbox::seccompProgram());
+      launch.ours_to_close.push_back(launch.passed.back());
       launch.args = sandbox::wrap(launch.args, seccomp_child_fd, run_.confinement);
     }
-    launch.close_last = keyed || sandboxed;
     return launch;
   }
 
   // Starts the simulator, the component (sandboxed if asked) and the referee, each with its
   // private lines: the simulator's status pipe, the referee's control pipe, a graded run's key.
   void start() {
-    int control[2] = {-1, -1}, status[2] = {-1, -1};
-    if (run_.has_referee && (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0)) {
+    int control[2] = {-1, -1}, status[2] = {-1, -1}, crash[2] = {-1, -1};
+    if (run_.has_referee &&
+        (pipe2(control, O_CLOEXEC) != 0 || pipe2(status, O_CLOEXEC) != 0 || pipe2(crash, O_CLOEXEC) != 0)) {
       throw std::runtime_error("pipe2 failed");
     }
     // A graded run's key, for the simulator and the referee only (never the component, which runs
     // the student's code): each reads it from a pipe of its own, not from its command line.
     const std::optional<auth::Key>& key = run_.key;
     for (size_t i = 0; i < run_.lines.size(); ++i) {
-      const Launch launch = launchOf(i, status[1], control[0], key);
+      const Launch launch = launchOf(i, status[1], control[0], crash[1], key);
       // The sandboxed component's output goes through the launcher, capped.
       const std::string output = i == 1 && output_ ? output_->childPath() : "";
       children_.push_back(std::make_unique<process::ChildProcess>(launch.args, output, output, launch.passed, run_.placement));
-      if (launch.close_last) close(launch.passed.back());  // the child has its copy
+      for (const int fd : launch.ours_to_close) close(fd);  // the child has its copy
       if (i == 1 && output_) output_->childStarted();
     }
     if (control[0] >= 0) close(control[0]);
     if (status[1] >= 0) close(status[1]);
+    if (crash[1] >= 0) close(crash[1]);
+    crash_line_ = std::make_unique<process::LinePipe>(crash[0]);
     control_fd_ = control[1];
     simulator_status_ = std::make_unique<process::LinePipe>(status[0]);
   }
@@ -200,14 +207,21 @@ class RunSupervisor {
     event.referee_told = told_referee_;
     event.simulator_ended_run = simulator_ended_run_;
     event.last_child = i + 1 == children_.size();
+    if (i == 1 && crash_line_) {
+      for (const std::string& line : crash_line_->lines()) event.crash_line = line;
+    }
     const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
     const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);
     if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
     if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";
     if (!verdict.aborted_report.empty()) writeAbortedReport(run_, verdict.aborted_report);
     if (!verdict.tell_referee.empty()) {
-      std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: "
-                << verdict.tell_referee << "\n";
+      const std::string& said = verdict.algorithm_fault.empty() ? verdict.tell_referee : verdict.algorithm_fault;
+      std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: " << said << "\n";
+      if (!verdict.algorithm_fault.empty()) {
+        const std::string line = "fault " + verdict.algorithm_fault + "\n";
+        (void)!write(control_fd_, line.data(), line.size());
+      }
       tellReferee(verdict.tell_referee);
     }
     if (verdict.result) result_ = *verdict.result;
@@ -240,6 +254,7 @@ class RunSupervisor {
   std::vector<std::unique_ptr<process::ChildProcess>> children_;
   int control_fd_ = -1;  // the referee's control pipe, our end
   std::unique_ptr<process::LinePipe> simulator_status_;
+  std::unique_ptr<process::LinePipe> crash_line_;  // the component's crash, in the student's lines
   int result_ = 0;
   bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
   std::string abort_reason_;

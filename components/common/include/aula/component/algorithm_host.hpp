@@ -5,6 +5,8 @@
 // (.so, built with aula_add_algorithm) or of a student's Python file (.py, run by the exercise's
 // Python host behind the same entry points). Around every call into the algorithm:
 // - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
+//   with windows (containHangs), so is a crash (SIGSEGV...) inside a C++ algorithm's call
+//   (crash_report.hpp: its text names the student's line); headless, a crash ends the process;
 // - a call that does not return within the execute budget (wall seconds) ends the process
 //   (ExecuteWatchdog) with its own exit code, which the launcher explains; with windows
 //   (containHangs) the calls run on an AlgorithmThread instead, and a call that does not return
@@ -59,6 +61,9 @@ class AlgorithmHostBase {
   // (the algorithm, the plugin, the devices) is never touched or freed again; end the process
   // with std::_Exit. `hook` runs once, when it happens (the component freezes its devices).
   bool hung() const { return hung_; }
+  // A call crashed (with windows, where a crash inside a call is survived): the algorithm it
+  // ran in is left as the crash left it, never destroyed (its destructor could crash again).
+  bool crashed() const { return crashed_; }
   void setOnHung(std::function<void()> hook) { on_hung_ = std::move(hook); }
 
  protected:
@@ -77,6 +82,7 @@ class AlgorithmHostBase {
   std::unique_ptr<PluginLibrary> plugin_;
   int64_t refused_mtime_ns_ = -1;  // the build a reload could not use: not offered again
   std::string fault_;
+  bool crashed_ = false;
 
  private:
   void noteNonFinite();
@@ -100,7 +106,7 @@ class AlgorithmHost : public AlgorithmHostBase {
         builtins_(std::move(builtins)) {
     if (builtins_.count(choice_) == 0) loadPlugin();
   }
-  ~AlgorithmHost() { algorithm_.reset(); }  // the algorithm's code lives in the plugin
+  ~AlgorithmHost() { dropAlgorithm(); }  // the algorithm's code lives in the plugin
 
   // Calls `use(algorithm)` (creating it with `seed` on first use) with faults contained.
   // Does nothing once halted by a fault. False when it threw now.
@@ -117,13 +123,18 @@ class AlgorithmHost : public AlgorithmHostBase {
   // nothing runs (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
   bool reload() {
     if (hung()) return false;  // the abandoned call may still be running in the algorithm
-    algorithm_.reset();
+    dropAlgorithm();
     fault_.clear();
     if (plugin_ == nullptr && builtins_.count(choice_) != 0) return true;
     return reloadPlugin();
   }
 
  private:
+  void dropAlgorithm() {
+    if (crashed_) (void)algorithm_.release();  // left as the crash left it
+    algorithm_.reset();
+    crashed_ = false;
+  }
   std::unique_ptr<Algorithm> create(uint64_t seed) {
     const auto builtin = builtins_.find(choice_);
     if (builtin == builtins_.end() && plugin_ == nullptr) throw std::runtime_error("no algorithm is loaded");

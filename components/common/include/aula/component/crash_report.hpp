@@ -1,16 +1,42 @@
 #pragma once
 // When the student's code crashes the component (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT), the
-// stack is printed before the process dies of the same signal (the launcher still sees it and
-// names it): the frames in the plugin show as lib<name>.so(+0xOFFSET), and the last line says
-// how to turn an offset into a file and line (addr2line on the plugin, built with -g by
-// aula_add_algorithm).
+// student is told where, in their own lines (plugin_lines.hpp: addr2line on the plugin, built
+// with -g by aula_add_algorithm), innermost first:
+//   vacuum-cleaner: crashed (SIGSEGV) in your algorithm at MyAlgorithm.cpp:14 (MyAlgorithm::execute)
+//     called from MyAlgorithm.cpp:30 (MyAlgorithm::turn)
+// A crash with no frame in the plugin (a built-in, the component itself) prints the raw stack.
+// Then the process dies of the same signal (the launcher still sees it and names it), having
+// written one line, "crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)", on the
+// launcher's private line when it has one (reportCrashesTo).
+//
+// With windows, a crash inside a call into the algorithm need not end the process:
+// callSurvivingCrashes runs the call so that SIGSEGV, SIGBUS, SIGFPE or SIGILL returns there with
+// that line instead (the handler jumps back, on an alternate stack, so a stack overflow too).
+// Everything the handler needs is prepared beforehand, in fixed buffers: it allocates nothing.
 
+#include <aula/component/plugin_lines.hpp>
+
+#include <functional>
 #include <string>
 
 namespace aula::component {
 
-// Once per process, before student code runs. `plugin_path` may be "" (a built-in) and is
-// updated by a later call (hot reload).
-void installCrashReport(const std::string& program, const std::string& plugin_path);
+// Once per process, before student code runs; again with the plugin's image after each load
+// (hot reload). `plugin` has an empty path for a built-in or a Python file. Gives the calling
+// thread an alternate signal stack.
+void installCrashReport(const std::string& program, const PluginImage& plugin);
+
+// The launcher's private line for the crash's one line (a descriptor of this process), or -1.
+void reportCrashesTo(int fd);
+
+// For a thread that runs student calls under callSurvivingCrashes: an alternate signal stack,
+// and the fault signals unblocked (a blocked SIGSEGV would kill the process whatever the handler).
+void prepareThreadForCrashes();
+
+// Runs `call` on this thread (prepared with prepareThreadForCrashes); "" when it returned, or
+// the crash that ended it ("crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)").
+// What `call` throws passes through. Whatever the crashed call owned is left as it was: never
+// destroy or call into the algorithm again.
+std::string callSurvivingCrashes(const std::function<void()>& call);
 
 }  // namespace aula::component

@@ -10,6 +10,7 @@
 
 #include <aula/component/algorithm_host.hpp>
 #include <aula/component/control_loop.hpp>
+#include <aula/component/crash_report.hpp>
 #include <aula/component/episode_sender.hpp>
 #include <aula/component/proxies.hpp>
 #include <aula/component/referee_status.hpp>
@@ -73,6 +74,8 @@ class ExerciseComponent {
   }
   // With windows: a hung execute() halts the algorithm instead of ending the process.
   void containHangs() { host_->containHangs(); }
+  // A crash's one line goes to this descriptor (the launcher's private line) before the process dies.
+  void reportCrashesTo(int fd) { component::reportCrashesTo(fd); }
   void poll() { loop_->poll(); }  // housekeeping (lockstep registration)
   void leave() { loop_->leave(); }
   // Why the simulator is gone (it ended the run, or its clock stopped), or "" (LockstepClient's).

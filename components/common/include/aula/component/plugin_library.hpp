@@ -11,6 +11,7 @@
 // (the interpreter is never shut down: numpy cannot start twice), and gives it the file; the
 // host reads the file afresh every time the factory makes an algorithm (hot reload again).
 
+#include <aula/component/plugin_lines.hpp>
 #include <aula/config/config.hpp>
 
 #include <cstdint>
@@ -51,6 +52,9 @@ class PluginLibrary {
   // "MyAlgorithm.cpp:14" (addr2line on the plugin's debug info, inlined library frames skipped),
   // or "" when it was not thrown from here or the line cannot be told.
   std::string throwSite(const void* thrown) const;
+  // Where a C++ plugin is mapped and its file, for naming its lines (a crash's handler reads it);
+  // an empty path for a Python file.
+  const PluginImage& image() const { return image_; }
 
   const std::string& path() const { return path_; }
   // A student's Python file rather than a shared library.
@@ -68,11 +72,13 @@ class PluginLibrary {
   std::string path_, built_at_;
   void openPython(const std::string& exercise);
   void bindEntryPoints(const std::string& exercise);
+  void findImage();
 
   int64_t mtime_ns_ = 0;
   void* handle_ = nullptr;
   void* factory_ = nullptr;
   void (*interrupt_)(const char*) = nullptr;
+  PluginImage image_;
 };
 
 }  // namespace aula::component

@@ -7,8 +7,9 @@
 // component says why and ends, exit code 1, windows or not; a replay's viewer (--view-only) does
 // not watch, since a replay pauses and ends.
 //
-// Component needs poll(), leave(), containHangs(), algorithm().hung(), simulatorGone(); Window needs
-// Window(Component&).
+// Component needs poll(), leave(), containHangs(), reportCrashesTo(fd), algorithm().hung(),
+// simulatorGone(); Window needs Window(Component&). The launcher's `--crash-fd` pipe gets a
+// crash's one line before the component dies of it.
 // A component that can find once running that its task is impossible (TeleTaxi: a destination the
 // taxi cannot reach from where it stands) also has `std::optional<std::string> refusal() const`:
 // headless, the process then ends with the reason as a ConfigError (exit code 2); the window
@@ -62,6 +63,9 @@ inline int endWithoutSimulator(const ProcessSetup& setup, const std::string& why
 
 template <class Window, class Component, class Screenshot>
 int runComponent(ProcessSetup& setup, Component& component, int argc, char** argv, Screenshot screenshot) {
+  if (setup.command_line.flag("crash-fd")) {
+    component.reportCrashesTo(static_cast<int>(setup.command_line.optionDouble("crash-fd", -1)));
+  }
   if (setup.headless) {
     std::string gone;
     runHeadless(*setup.bus, [&] { return refusalOf(component).has_value() || !gone.empty(); }, [&] {

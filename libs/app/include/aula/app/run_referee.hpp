@@ -61,6 +61,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   bool discard = false;
   auto readControl = [&] {
     for (const std::string& line : control.lines()) {
+      if (line.rfind("fault ", 0) == 0) node.algorithmFailed(line.substr(6));
       if (line.rfind("abort ", 0) == 0) node.abort(line.substr(6));
       if (line == "discard") discard = true;
     }

@@ -41,6 +41,8 @@ class RefereeNode {
   bool endedEarly() const { return outcome_.ended(); }
   // The launcher says the run cannot go on (a process died...): grade what there is, and end.
   void abort(const std::string& reason);
+  // The launcher tells the algorithm's fault the component could not (it crashed: the line).
+  void algorithmFailed(const std::string& fault);
   bool aborted() const { return !outcome_.aborted().empty(); }
   Report report() const;
   std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
@@ -62,6 +64,21 @@ class RefereeNode {
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
   // What the windows are told (referee_status_t): the time left, and how the episode ended.
   virtual EpisodeStatus status() const = 0;
+  // The current episode's end as the referee's window shows it, kept as it was when the episode
+  // ended (graded to its end, or stopped by a fault or an abort: the grading stopped there, the
+  // simulator did not): the sim time graded, the final mark (the report's) and how it ended.
+  struct EpisodeEnd {
+    double graded_s = 0;
+    double mark = 0;
+    std::string how;  // "Time's up", "Arrived", "Parked", "Stopped"
+    std::string why;  // for "Stopped": the fault or the abort
+  };
+  // nullopt while the episode runs (a hot reload starts a new one: nullopt again).
+  const std::optional<EpisodeEnd>& episodeEnd() const { return end_; }
+  // The window's line for it: "Stopped at 19.62 s of sim time", "Time's up at 900.00 s of sim time".
+  static std::string endedAt(const EpisodeEnd& end);
+  // A window's episode clock: "01:05.3" of `elapsed_s` while it runs, endedAt once it ended.
+  std::string clockText(double elapsed_s) const;
 
  protected:
   // `exercise`: its name in the settings' table of exercises ("vacuum"), which gives the keys'
@@ -103,6 +120,8 @@ class RefereeNode {
   void onBumperMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::bumper_t* msg);
   void onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg);
   void announce(int64_t utime);  // the end once to the window, the status to the component
+  void traceFault(int64_t utime);  // the fault just learnt, in the trace
+  void announceEnd();              // the end, once: kept (episodeEnd) and told to the window
 
   std::string exercise_, robot_name_;
   std::string component_client_;  // the component's lockstep client ("teletaxi")
@@ -116,6 +135,7 @@ class RefereeNode {
   std::unique_ptr<StatusSender> status_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
+  std::optional<EpisodeEnd> end_;
 };
 
 }  // namespace aula::referee

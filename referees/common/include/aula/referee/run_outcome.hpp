@@ -24,6 +24,8 @@ class RunOutcome {
   // True when `generation` starts a new episode: the caller then resets its grading.
   bool onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands, int generation);
   void abort(const std::string& reason);  // the first reason wins
+  // The algorithm's fault told by the launcher (a crash's line), as if the episode had said it.
+  void algorithmFailed(const std::string& fault);
 
   bool ended() const { return !fault_.empty() || !aborted_.empty(); }
   // Calls `hook` once: the first time `over` holds (graded to the end, or ended early).

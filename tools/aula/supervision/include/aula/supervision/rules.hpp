@@ -27,6 +27,11 @@ std::string signalName(int code);
 // component's exit is not the student's doing.
 std::string componentFault(int code, double execute_budget_s);
 
+// "component crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)": the `fault` the
+// exit code gives, where the component's own crash line (its --crash-fd) says where the same
+// signal struck; "" when it does not (no line, another signal, no student's line found).
+std::string crashInStudentLines(const std::string& fault, const std::string& crash_line);
+
 // The three processes of a run, by their place in Supervision::lines.
 enum class Role { Simulator = 0, Component = 1, Referee = 2 };
 
@@ -39,6 +44,7 @@ struct ExitEvent {
   bool referee_told = false;     // the referee was already told why the run ends
   bool simulator_ended_run = false;  // the simulator said why it ended a graded run
   bool last_child = false;
+  std::string crash_line;            // what a component said of its crash (crash_report.hpp)
 };
 
 // What it does about it.
@@ -46,6 +52,7 @@ struct ExitVerdict {
   bool run_over = false;
   std::optional<int> result;      // the launcher's exit code, when this exit sets it
   std::string tell_referee;       // a fault to hand the referee (it grades what there is)
+  std::string algorithm_fault;    // and before it, the fault in the student's lines ("" when unknown)
   std::string aborted_report;     // the referee died: write a report with this reason, no mark
   bool discard = false;           // the run never started: the referee gives no mark
   std::string message;            // one line for the terminal ("" for none)
