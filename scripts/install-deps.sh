@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs Aula's dependencies with apt (Debian 12), by set, so each command installs only its own:
 #   scripts/install-deps.sh build   to build and run Aula (what `./aula run` and `./aula build` need)
-#   scripts/install-deps.sh test    the above, plus what the tests drive: Xvfb, Chromium, lintian,
+#   scripts/install-deps.sh test    the above, plus what the tests drive: Xvfb, openbox, Chromium, lintian,
 #                                   the python-lcm wheel, and a single-node Slurm (the Slurm tests)
 #   scripts/install-deps.sh slurm   the above's Slurm part alone: to grade with --engine=slurm
 #   scripts/install-deps.sh all     every set (the default)
@@ -25,7 +25,7 @@ build_packages=(
   # the embedded Python of a student's MyAlgorithm.py
   python3-dev pybind11-dev python3-numpy python3-opencv
 )
-test_packages=(xvfb xauth xdotool bc python3-pip chromium lintian)
+test_packages=(xvfb xauth xdotool openbox bc python3-pip chromium lintian)
 slurm_packages=(slurmctld slurmd slurm-client munge)
 
 set_name="${1:-all}"

@@ -68,14 +68,14 @@ void sayWorldStepIgnored(const aula::world::WorldSpec& spec, const aula::sim::Si
 
 // --gui: runs with a 3D view looking at the first robot, from a distance that fits the world.
 void runWithView(aula::sim::Simulator& simulator, const std::string& screenshot,
-                 aula::process::SignalWatcher& signals) {
+                 const aula::desktop::Placement& window, aula::process::SignalWatcher& signals) {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
   if (simulator.physics().robotCount() > 0) center = simulator.physics().robotState(0).position_m;
   double size_m = 10.0;
   for (const auto& o : simulator.spec().statics) {
     size_m = std::max(size_m, 0.5 * (o.pose.translation().head<2>() - center.head<2>()).norm());
   }
-  aula::sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0));
+  aula::sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0), window);
   int frames = 0;
   simulator.run([&] { return signals.stopRequested(); }, [&] {
     if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
@@ -134,7 +134,7 @@ int runSimulator(int argc, char** argv) {
           << (key ? ", graded (signed truth, signed SIM_CONTROL only)" : "") << "\n";
   std::cerr << started.str() << std::flush;
   if (cl.flag("gui")) {
-    runWithView(simulator, cl.option("screenshot"), signals);
+    runWithView(simulator, cl.option("screenshot"), aula::desktop::placementOf(cfg, "Simulator.Window"), signals);
   } else {
     simulator.run([&] { return signals.stopRequested(); });
   }

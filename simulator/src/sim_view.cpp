@@ -11,7 +11,7 @@ namespace aula::sim {
 
 // The view's code is a module (sim_view_osg.cpp): its functions, found once it is opened.
 struct SimView::Module {
-  void* (*open)(const dart::simulation::WorldPtr&, const Eigen::Vector3d&, double) = nullptr;
+  void* (*open)(const dart::simulation::WorldPtr&, const Eigen::Vector3d&, double, const int (&)[4]) = nullptr;
   bool (*frame)(void*) = nullptr;
   void (*capture)(void*, const std::string&) = nullptr;
   void (*close)(void*) = nullptr;
@@ -27,7 +27,8 @@ void resolve(void* library, const char* name, const std::string& module, Functio
 
 }  // namespace
 
-SimView::SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m)
+SimView::SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m,
+                 const desktop::Placement& window)
     : module_(std::make_unique<Module>()) {
   const std::string module = config::libDir() + "/libaula_sim_view.so";
   void* library = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);  // kept open: OpenSceneGraph's globals live on
@@ -36,7 +37,10 @@ SimView::SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d&
   resolve(library, "aula_sim_view_frame", module, module_->frame);
   resolve(library, "aula_sim_view_capture", module, module_->capture);
   resolve(library, "aula_sim_view_close", module, module_->close);
-  view_ = module_->open(world, center_m, size_m);
+  // Without a place from the launcher, the view's old corner (the window manager may move it).
+  const desktop::Point corner = window.frame_corner.value_or(desktop::Point{50, 50});
+  const int frame[4] = {corner.x_px, corner.y_px, window.size.width_px, window.size.height_px};
+  view_ = module_->open(world, center_m, size_m, frame);
 }
 
 SimView::~SimView() {

@@ -4,6 +4,8 @@
 // is the module lib/aula/libaula_sim_view.so, opened only here: a headless simulator never loads
 // OpenSceneGraph.
 
+#include <aula/desktop/window_layout.hpp>
+
 #include <dart/simulation/World.hpp>
 
 #include <Eigen/Core>
@@ -14,9 +16,11 @@ namespace aula::sim {
 
 class SimView {
  public:
-  // Opens a window looking at `center_m` from a distance fitting `size_m`. Throws
-  // config::ConfigError when the module cannot be loaded.
-  SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m);
+  // Opens a window ("Aula 3D view", of `window`'s size and place: Simulator.Window.*) looking at
+  // `center_m` from a distance fitting `size_m`. Throws config::ConfigError when the module
+  // cannot be loaded.
+  SimView(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m, double size_m,
+          const desktop::Placement& window);
   ~SimView();
   SimView(const SimView&) = delete;
   SimView& operator=(const SimView&) = delete;

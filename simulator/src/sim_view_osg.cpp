@@ -9,6 +9,7 @@
 #include <dart/simulation/World.hpp>
 
 #include <osgGA/TrackballManipulator>
+#include <osgViewer/GraphicsWindow>
 
 #include <Eigen/Core>
 
@@ -23,8 +24,9 @@ struct View {
 
 #define AULA_MODULE_API extern "C" __attribute__((visibility("default")))
 
+// `window`: x, y of the frame's top-left corner, width, height (px).
 AULA_MODULE_API void* aula_sim_view_open(const dart::simulation::WorldPtr& world, const Eigen::Vector3d& center_m,
-                                         double size_m) {
+                                         double size_m, const int (&window)[4]) {
   // Colours: buildings and furniture light grey, robots orange.
   for (std::size_t i = 0; i < world->getNumSkeletons(); ++i) {
     auto skeleton = world->getSkeleton(i);
@@ -42,12 +44,15 @@ AULA_MODULE_API void* aula_sim_view_open(const dart::simulation::WorldPtr& world
   view->viewer = new dart::gui::osg::Viewer;
   view->viewer->allowSimulation(false);
   view->viewer->addWorldNode(view->node);
-  view->viewer->setUpViewInWindow(50, 50, 1024, 768);
+  view->viewer->setUpViewInWindow(window[0], window[1], window[2], window[3]);
   view->viewer->getCameraManipulator()->setHomePosition(
       ::osg::Vec3d(center_m.x(), center_m.y() - 0.9 * size_m, 0.8 * size_m),
       ::osg::Vec3d(center_m.x(), center_m.y(), 0.0), ::osg::Vec3d(0, 0, 1));
   view->viewer->setCameraManipulator(view->viewer->getCameraManipulator());
   view->viewer->realize();
+  ::osgViewer::ViewerBase::Windows windows;
+  view->viewer->getWindows(windows);
+  for (auto* shown : windows) shown->setWindowName("Aula 3D view");  // found by its title, like the others
   return view;
 }
 

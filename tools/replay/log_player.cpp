@@ -2,6 +2,7 @@
 
 #include <aula/lcm/bus.hpp>
 #include <aula/lcm/log_replay.hpp>
+#include <aula/episode_t.hpp>
 #include <aula/sim_clock_t.hpp>
 
 #include <algorithm>
@@ -20,12 +21,18 @@ int64_t tickUs(const lcm::LogEvent& event) {
 
 }  // namespace
 
-LogPlayer::LogPlayer(std::string path, Publish publish) : path_(std::move(path)), publish_(std::move(publish)) {
+LogPlayer::LogPlayer(std::string path, Publish publish, const std::string& episode_channel)
+    : path_(std::move(path)), publish_(std::move(publish)) {
   lcmbus::requireLog(path_);
-  // One pass for the length of the run, then back to the start.
+  // One pass for the length of the run and its algorithm, then back to the start.
   lcm::LogFile scan(path_, "r");
   for (const lcm::LogEvent* e = scan.readNextEvent(); e != nullptr; e = scan.readNextEvent()) {
     duration_us_ = std::max(duration_us_, tickUs(*e));
+    aula::episode_t episode;
+    if (algorithm_.empty() && e->channel == episode_channel &&
+        episode.decode(e->data, 0, static_cast<int>(e->datalen)) >= 0) {
+      algorithm_ = episode.algorithm;
+    }
   }
   rewind();
 }

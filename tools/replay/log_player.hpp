@@ -16,12 +16,16 @@ namespace aula::replay {
 class LogPlayer {
  public:
   using Publish = std::function<void(const lcm::LogEvent&)>;
-  // Throws config::ConfigError naming `path` when it is not a readable LCM log.
-  LogPlayer(std::string path, Publish publish);
+  // Throws config::ConfigError naming `path` when it is not a readable LCM log. `episode_channel`:
+  // where the recorded component said which algorithm ran (episode_t).
+  LogPlayer(std::string path, Publish publish, const std::string& episode_channel);
 
   int64_t durationUs() const { return duration_us_; }  // the last tick's sim time
   int64_t positionUs() const { return position_us_; }  // sim time of what has been published
   bool atEnd() const { return next_ == nullptr; }
+  // The recorded run's algorithm ("reference", "libmy_algorithm.so"), or "" when the log has no
+  // episode message (the component never started).
+  const std::string& algorithm() const { return algorithm_; }
 
   // Publishes the events up to sim time `target_us`, at most `max_events` of them (a bound per
   // call keeps UDP from overflowing the viewers' buffers). Returns how many it published.
@@ -40,6 +44,7 @@ class LogPlayer {
   int64_t clock_us_ = 0;     // the last tick read
   int64_t position_us_ = 0;
   int64_t duration_us_ = 0;
+  std::string algorithm_;
 };
 
 }  // namespace aula::replay

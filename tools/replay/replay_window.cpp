@@ -20,11 +20,16 @@ constexpr int kViewerStartMs = 2500;
 constexpr double kAsFastAsPossible = 1e9;
 }  // namespace
 
-ReplayWindow::ReplayWindow(LogPlayer& player, std::function<void()> restart_viewers, const QString& title, double speed)
+ReplayWindow::ReplayWindow(LogPlayer& player, std::function<void()> restart_viewers, const QString& title,
+                           const QString& recorded, double speed)
     : player_(player), restart_viewers_(std::move(restart_viewers)) {
   setWindowTitle("Aula replay: " + title);
   auto* central = new QWidget(this);
   auto* layout = new QVBoxLayout(central);
+  auto* what = new QLabel(recorded, central);
+  what->setStyleSheet("font-weight: bold;");
+  what->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  layout->addWidget(what);
   auto* controls = new QHBoxLayout;
   play_ = new QPushButton("Play", central);
   speed_ = new QComboBox(central);
@@ -55,7 +60,6 @@ ReplayWindow::ReplayWindow(LogPlayer& player, std::function<void()> restart_view
   note->setWordWrap(true);
   layout->addWidget(note);
   setCentralWidget(central);
-  resize(720, 150);
 
   connect(play_, &QPushButton::clicked, this, [this] {
     playing_ = !playing_;

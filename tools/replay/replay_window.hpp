@@ -19,8 +19,14 @@ namespace aula::replay {
 
 class ReplayWindow : public QMainWindow {
  public:
-  // `restart_viewers`: stops and starts the component and referee windows again.
-  ReplayWindow(LogPlayer& player, std::function<void()> restart_viewers, const QString& title, double speed);
+  // Its fixed size, in the launcher's layout with the viewers' windows (aula/desktop).
+  static constexpr int kWidthPx = 760;
+  static constexpr int kHeightPx = 170;
+
+  // `restart_viewers`: stops and starts the component and referee windows again. `recorded`:
+  // what was recorded (exercise, world, seed, algorithm), shown above the controls.
+  ReplayWindow(LogPlayer& player, std::function<void()> restart_viewers, const QString& title, const QString& recorded,
+               double speed);
   // Grabs the whole screen (all three windows) to `png_path` once the replay reaches `sim_s`,
   // then quits.
   void screenshotAt(const QString& png_path, double sim_s);

@@ -19,6 +19,7 @@ TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const 
   grid_ = std::make_unique<Grid>(map.image, map.transform);
   map_ = std::move(map);
   start_xy_m_ = {startPose().x_m, startPose().y_m};
+  grid_window_ = desktop::placementOf(cfg, "TeleTaxi.GridWindow");
   // The configured destination must be one the taxi can reach: refused at once, with the reason.
   const auto d = cfg.getDoubleList("TeleTaxi.Destination");
   if (const auto problem = destinationProblem(d[0], d[1])) {

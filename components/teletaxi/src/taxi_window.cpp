@@ -1,5 +1,6 @@
 #include "taxi_window.hpp"
 
+#include <aula/app/main_window.hpp>
 #include <aula/geometry/angles.hpp>
 #include <aula/gui/screenshot.hpp>
 
@@ -35,6 +36,9 @@ TaxiWindow::TaxiWindow(TaxiComponent& component) : component_(component) {
   velocity_label_ = new QLabel(info);
   status_label_ = new QLabel(info);
   status_label_->setWordWrap(true);
+  // Four lines, whatever it says: GO! and Stop below it stay where the student clicks.
+  status_label_->setFixedHeight(4 * status_label_->fontMetrics().lineSpacing());
+  status_label_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   velocity_label_->setWordWrap(true);
   info->setMinimumWidth(330);
   referee_ = new component::RefereeStatusLabel("GO!", info);
@@ -172,9 +176,13 @@ void TaxiWindow::showGridField() {
   if (grid_window_ == nullptr) {
     grid_window_ = new QLabel(this, Qt::Window);  // a window of its own, owned by the main one
     grid_window_->setWindowTitle("Grid Field");
+    grid_window_->setAlignment(Qt::AlignCenter);
+    app::placeWindow(*grid_window_, component_.gridWindow(), "teletaxi");
   }
+  // The field fills the window's fixed size, whatever the map's shape.
   const QImage field = toQImage(component_.grid().fieldImage());
-  grid_window_->setPixmap(QPixmap::fromImage(field.scaled(600, 600, Qt::KeepAspectRatio, Qt::FastTransformation)));
+  grid_window_->setPixmap(
+      QPixmap::fromImage(field.scaled(grid_window_->size(), Qt::KeepAspectRatio, Qt::FastTransformation)));
   grid_window_->show();
 }
 

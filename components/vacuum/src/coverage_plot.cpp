@@ -55,7 +55,7 @@ CoveragePlot::CoveragePlot(double duration_s, QWidget* parent) : QChartView(pare
 
   setChart(chart);
   setRenderHint(QPainter::Antialiasing);
-  setMinimumSize(360, 280);
+  setMinimumSize(320, 180);
 }
 
 void CoveragePlot::addSample(double t_s, double percent) {

@@ -26,7 +26,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   auto* central = new QWidget(this);
   auto* layout = new QHBoxLayout(central);
   map_ = new gui::MapView(map.copy(), transform, central);
-  map_->setMinimumSize(560, 560);
+  map_->setMinimumSize(480, 480);  // the window's size is Vacuum.Window.Size; the map takes what is left
   layout->addWidget(map_, 1);
   auto* side = new QVBoxLayout;
   run_ = new gui::RunToggle(central);

@@ -28,6 +28,16 @@ void worldKeys(SettingsTable& t, const std::string& section, const std::string& 
          "channel of the referee's status (time left, how the episode ended) to the component's window");
 }
 
+// A window of the process: its fixed size, and where `aula run` / `aula replay` put it (one layout
+// of the run's windows, aula/desktop/window_layout.hpp). The sizes fit side by side on 1920x1080.
+void windowKeys(SettingsTable& t, const std::string& prefix, const std::string& size_px, const std::string& what) {
+  t.reals(prefix + ".Size", size_px, 2, "px", 160, 16384,
+          "width, height of " + what + ", fixed while it runs (text that grows wraps or is cut, never the window)");
+  t.reals(prefix + ".Position", "-1, -1", 2, "px", -1, 65535,
+          "where the top-left corner of " + what + "'s frame goes on the screen; `aula run` and `aula replay` set it "
+          "from one layout of the run's windows; -1, -1: where the window manager puts it");
+}
+
 // The occupancy map both the component and the referee draw from the world.
 void mapKeys(SettingsTable& t, const std::string& section, double resolution_m, const std::string& z_band) {
   t.real(section + ".Map.Resolution", resolution_m, "m/px", 0.001, 100, "occupancy map resolution", true);
@@ -65,6 +75,7 @@ SettingsTable makeSimulator() {
   t.integer("Simulator.Seed", 0, "", -9223372036854775807LL, 9223372036854775807LL, "seed of every random process (sensor noise)");
   t.real("Simulator.Duration", 0, "s", 0, 1e9, "stop after this much simulated time (0: run until stopped)");
   t.flag("Simulator.StartPaused", false, "start paused (resume from SIM_CONTROL)");
+  windowKeys(t, "Simulator.Window", "544, 306", "the 3D view (aula-sim --gui, `aula run --3d`)");
   config::SettingSpec start;
   start.key = "Simulator.StartPose.*";
   start.type = config::SettingType::DoubleList;
@@ -107,12 +118,15 @@ SettingsTable makeTaxiComponent() {
   destination.free_point = true;  // the launcher refuses one off the map or in a building at once
   destination.help = "destination x, y: pre-selected in the window, the one headless runs drive to";
   t.add(destination);
+  windowKeys(t, "TeleTaxi.Window", "1000, 690", "the TeleTaxi window");
+  windowKeys(t, "TeleTaxi.GridWindow", "420, 420", "the \"Grid Field\" window (api.grid.showGrid())");
   return t;
 }
 
 SettingsTable makeTaxiReferee() {
   SettingsTable t = common("teletaxi-referee");
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
+  windowKeys(t, "TeleTaxi.RefereeWindow", "460, 640", "the referee's window");
   mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");  // the picture shows the component's map
   t.real("TeleTaxi.Referee.Timeout", 600, "s", 0, 1e6, "give up this long after GO! (simulated time)", true);
   t.real("TeleTaxi.Referee.StopSpeed", 0.05, "m/s", 0, 10, "'stopped' means slower than this...", true);
@@ -138,6 +152,7 @@ void vacuumDuration(SettingsTable& t) {
 SettingsTable makeVacuumComponent() {
   SettingsTable t = common("vacuum-cleaner");
   worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
+  windowKeys(t, "Vacuum.Window", "880, 690", "the vacuum cleaner's window");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
   t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "mapping", "bounce"},
@@ -151,6 +166,7 @@ SettingsTable makeVacuumComponent() {
 SettingsTable makeVacuumReferee() {
   SettingsTable t = common("vacuum-cleaner-referee");
   worldKeys(t, "Vacuum", "worlds/vacuum.world", "roomba");
+  windowKeys(t, "Vacuum.RefereeWindow", "720, 690", "the referee's window");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   vacuumDuration(t);
   t.real("Vacuum.Referee.RobotRadius", 0.165, "m", 0, 10, "radius of the footprint that cleans", true);
@@ -171,6 +187,7 @@ SettingsTable makeVacuumReferee() {
 SettingsTable makeAutoparkComponent() {
   SettingsTable t = common("autopark");
   worldKeys(t, "Autopark", "worlds/autopark.world", "car");
+  windowKeys(t, "Autopark.Window", "1120, 550", "the Autopark window");
   motionKeys(t, "Autopark", 3, 1, 0.05, 10, 5);
   t.algorithm("Autopark.Algorithm", "student", {"student", "reactive", "planner"},
               "PATH.so: a plugin; PATH.py: a MyAlgorithm.py; reactive: the thesis's two arcs; planner: laser map + OMPL "
@@ -181,6 +198,7 @@ SettingsTable makeAutoparkComponent() {
 SettingsTable makeAutoparkReferee() {
   SettingsTable t = common("autopark-referee");
   worldKeys(t, "Autopark", "worlds/autopark.world", "car");
+  windowKeys(t, "Autopark.RefereeWindow", "560, 460", "the referee's window");
   t.real("Autopark.Referee.Timeout", 300, "s", 0, 1e6, "the run ends 'not parked' this long after Run", true);
   t.text("Autopark.Referee.Curb", "",
          "the parking-side curb's collision name; empty: the static box along the street nearest below the car's start");

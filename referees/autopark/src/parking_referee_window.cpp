@@ -40,7 +40,6 @@ ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(nod
   layout->addWidget(collisions_, 3, 1);
   layout->addWidget(mark_, 4, 0, 1, 2);
   mark_->setMinimumHeight(90);
-  resize(560, 460);
   connect(show, &QPushButton::clicked, this, &ParkingRefereeWindow::showMark);
   connect(&timer_, &QTimer::timeout, this, &ParkingRefereeWindow::refresh);
   timer_.start(50);

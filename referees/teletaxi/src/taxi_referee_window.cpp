@@ -36,7 +36,6 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
   speed_->setMinimumSize(190, 190);
   heading_->setMinimumSize(190, 190);
   mark_->setMinimumHeight(110);
-  resize(460, 640);
   connect(show, &QPushButton::clicked, this, &TaxiRefereeWindow::showMark);
   connect(&timer_, &QTimer::timeout, this, &TaxiRefereeWindow::refresh);
   timer_.start(50);

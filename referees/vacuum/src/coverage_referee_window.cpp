@@ -6,6 +6,7 @@
 #include <aula/geometry/map_transform.hpp>
 
 #include <QApplication>
+#include <QFontMetrics>
 #include <QGridLayout>
 #include <QPushButton>
 
@@ -41,7 +42,15 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   clock_ = new gui::Gauge("episode", "s", 0, node_.referee().settings().duration_s, 270, this);
   clock_->setMinimumSize(170, 170);
   mark_ = new QLabel("Mark: -", this);
-  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
+  QFont mark_font = mark_->font();  // a font, not a style sheet: its height is known now
+  mark_font.setPixelSize(22);
+  mark_font.setBold(true);
+  mark_->setFont(mark_font);
+  // The mark's line (coverage, bumps, the scale) is wider than the window: it wraps within two
+  // lines kept from the start, so the window neither widens (820 -> 1076 px) nor reflows.
+  mark_->setWordWrap(true);
+  mark_->setFixedHeight(2 * QFontMetrics(mark_->font()).lineSpacing() + 8);
+  mark_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   auto* show = new QPushButton("Show me my mark", this);
   layout->addWidget(percent_, 0, 0);
   layout->addWidget(countdown_, 0, 1);
@@ -50,7 +59,6 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   layout->addWidget(clock_, 2, 1, Qt::AlignTop);
   layout->addWidget(show, 3, 0, 1, 2);
   layout->addWidget(mark_, 4, 0, 1, 2);
-  resize(820, 760);
   connect(show, &QPushButton::clicked, this, &CoverageRefereeWindow::showMark);
   connect(&timer_, &QTimer::timeout, this, &CoverageRefereeWindow::refresh);
   timer_.start(50);

@@ -97,6 +97,10 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arg
     if (ex.referee_settings != nullptr && !path.empty()) lines[2].push_back(std::string("--") + output + "=" + path);
   }
   if (ex.referee_settings != nullptr && !isolation.empty()) lines[2].push_back("--isolation=" + isolation);
+  if (!headless) {
+    const auto places = windowPlaces(run, args.flag("3d"));
+    for (size_t i = 0; i < lines.size(); ++i) lines[i].insert(lines[i].end(), places[i].begin(), places[i].end());
+  }
   return lines;
 }
 

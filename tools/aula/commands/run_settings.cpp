@@ -1,6 +1,8 @@
 #include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/desktop/window_layout.hpp>
+#include <aula/desktop/work_area.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -124,6 +126,20 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   adoptTheWorldsOnlyRobot(ex, run);
   checkPointsOnTheMap(ex, run.component(), run.world);
   return run;
+}
+
+std::vector<std::vector<std::string>> windowPlaces(const RunSettings& run, bool view_3d) {
+  std::vector<std::vector<std::string>> places(run.effective.size());
+  const auto work_area = desktop::workArea();
+  if (!work_area) return places;
+  std::vector<desktop::WindowedProcess> processes;  // the clients, then the simulator (effective[0])
+  for (size_t i = 1; i <= run.effective.size(); ++i) {
+    const size_t process = i % run.effective.size();
+    if (process != 0 || view_3d) processes.push_back({run.effective[process].first, run.effective[process].second});
+  }
+  const desktop::RunLayout layout = desktop::layOutRun(*work_area, processes, {});
+  for (size_t i = 0; i < processes.size(); ++i) places[(i + 1) % run.effective.size()] = layout.arguments[i];
+  return places;
 }
 
 Config settingsOf(const cli::Arguments& args) {

@@ -41,6 +41,13 @@ std::vector<std::string> missingPlugins(const settings::Exercise& ex, const worl
 // when neither. `aula run` hands the one chosen to every process of the run.
 const world::RobotSpec* exerciseRobot(const settings::Exercise& ex, const world::WorldSpec& world, const std::string& named);
 
+// With windows: where each process's windows go, as settings for its command line
+// ("--Vacuum.Window.Position=0, 0"), one list per process of `run.effective` (the simulator's 3D
+// view only with `view_3d`), from one layout on the screen's work area (aula/desktop): the
+// component's windows first, then the referee's, then the 3D view. A window whose position the
+// .cfg or the command line sets keeps it; without a display, every list is empty.
+std::vector<std::vector<std::string>> windowPlaces(const RunSettings& run, bool view_3d);
+
 // The command line's --Section.Key=value settings as a Config with their origins.
 config::Config settingsOf(const cli::Arguments& args);
 

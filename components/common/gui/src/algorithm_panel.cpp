@@ -8,6 +8,7 @@ namespace aula::component {
 
 AlgorithmPanel::AlgorithmPanel(const AlgorithmHostBase& host, std::function<bool()> reload_algorithm, QWidget* parent)
     : QWidget(parent), host_(host), reload_(std::move(reload_algorithm)) {
+  setObjectName("AlgorithmPanel");  // a replay's view-only window hides it (app::runComponent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   build_ = new QLabel(this);

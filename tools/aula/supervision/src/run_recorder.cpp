@@ -3,10 +3,12 @@
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/desktop/window_layout.hpp>
 #include <aula/lcm/log_replay.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -42,9 +44,14 @@ aula::run_record_t runRecord(const settings::Exercise& exercise, const std::stri
   record.world_path = fs::absolute(world_path).string();
   record.world_sha256 = world::loadWorld(world_path).sha256;  // every file the world is read from
   record.seed = seed;
+  std::vector<std::string> windows_keys;  // where the windows were is the desktop's, not the grading's
+  for (const std::string& window : desktop::windowsOf(*exercise.referee_settings)) {
+    windows_keys.insert(windows_keys.end(), {window + ".Size", window + ".Position"});
+  }
   for (const std::string& key : referee_settings.keys()) {
     // The world and the bus are the run's, not the grading's: regrade names its own.
     if (key == exercise.section + ".World" || key == "Aula.LcmUrl") continue;
+    if (std::find(windows_keys.begin(), windows_keys.end(), key) != windows_keys.end()) continue;
     if (exercise.referee_settings->declares(key)) record.settings.push_back(key + "=" + referee_settings.getString(key));
   }
   record.num_settings = static_cast<int32_t>(record.settings.size());

@@ -4,6 +4,7 @@
 // hot reload). The Qt window (taxi_window.hpp) and the headless main both drive this one object.
 
 #include <aula/component/exercise_component.hpp>
+#include <aula/desktop/window_layout.hpp>
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -42,6 +43,8 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   const component::Pose3dProxy& pose() const { return truePose(); }  // the taxi's API has it too
   bool pathGenerated() const { return path_generated_; }
   std::optional<std::pair<double, double>> destination() const { return destination_; }
+  // The "Grid Field" window's size and place (TeleTaxi.GridWindow.*), for the window to open it.
+  const desktop::Placement& gridWindow() const { return grid_window_; }
 
  private:
   void execute(TaxiAlgorithm& algorithm) override { algorithm.execute(*api_); }
@@ -64,6 +67,7 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   std::optional<std::pair<double, double>> destination_;
   bool path_generated_ = false;
   std::optional<std::string> refusal_;
+  desktop::Placement grid_window_;
 };
 
 }  // namespace aula::teletaxi

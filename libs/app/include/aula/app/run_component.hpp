@@ -85,14 +85,20 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     if (gone.empty() && !(gone = simulatorGoneFor(setup, component)).empty()) QCoreApplication::exit(process::kExitFailed);
   });
   if (setup.command_line.flag("view-only")) {
-    // A replay (aula replay): the window shows what it is sent, and nothing in it can act.
+    // A replay (aula replay): the window shows what it is sent, and nothing in it can act. It
+    // names the recorded algorithm (--view-only=NAME), not the one this process loaded to
+    // start, which the panel would show.
     for (QWidget* w : window.template findChildren<QWidget*>()) {
       const bool control = qobject_cast<QAbstractButton*>(w) != nullptr || qobject_cast<QComboBox*>(w) != nullptr ||
                            std::strcmp(w->metaObject()->className(), "aula::gui::Teleoperator") == 0;
       if (control) w->setEnabled(false);
+      if (w->objectName() == "AlgorithmPanel") w->hide();
     }
-    window.setWindowTitle(window.windowTitle() + " - replay, view only");
+    const std::string recorded = setup.command_line.option("view-only");
+    window.setWindowTitle(window.windowTitle() + QString::fromStdString(" - replay of " + (recorded.empty() ? "a run" : recorded)) +
+                          ", view only");
   }
+  placeMainWindow(window, setup.program, setup.cfg);
   quitWhenClosed(window);
   window.show();
   int code = 1;

@@ -130,6 +130,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
     window.showMark();
     finish();
   });
+  placeMainWindow(window, setup.program, setup.cfg);
   quitWhenClosed(window);
   window.show();
   if (setup.command_line.flag("screenshot")) {
