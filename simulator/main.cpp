@@ -81,6 +81,11 @@ void runWithView(aula::sim::Simulator& simulator, const std::string& screenshot,
     if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
     return view.frame();
   });
+  // A loaded machine may draw fewer than 30 frames in a short run: the screenshot is still taken.
+  if (frames < 30 && !screenshot.empty()) {
+    view.captureNextFrame(screenshot);
+    view.frame();
+  }
 }
 
 int runSimulator(int argc, char** argv) {
