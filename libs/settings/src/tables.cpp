@@ -140,6 +140,7 @@ SettingsTable makeTaxiReferee() {
   t.presets("TeleTaxi.Referee.Rubric", "default",
             {"TeleTaxi.Referee.ArrivalRadius", "TeleTaxi.Referee.FullMarkSpeed", "TeleTaxi.Referee.MinTravel"},
             {{"default", "a taxi that did not drive gets no distance mark", {}},
+             {"fixed", "the same as default (the TeleTaxi rubric is not calibrated per world yet)", {}},
              {"original", "the thesis's scale: arriving without driving is worth 8", {{"TeleTaxi.Referee.MinTravel", "0"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");
   return t;
@@ -176,8 +177,13 @@ SettingsTable makeVacuumReferee() {
   // baseline's median coverage is about 39 % (a 4.9), the reference's about 66 % (a 10).
   t.real("Vacuum.Referee.HalfMarkCoverage", 40, "%", 0, 100, "coverage worth a 5 (the mark rises linearly from 0 %)", true);
   t.real("Vacuum.Referee.FullMarkCoverage", 60, "%", 0, 100, "coverage worth a 10 (linearly from the half mark's)", true);
+  t.text("Vacuum.Referee.Calibration", "",
+         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
   t.presets("Vacuum.Referee.Rubric", "default", {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"},
-            {{"default", "the random-bounce baseline is worth about a 5, the reference a 10", {}},
+            {{"default", "the world's calibration when it has one (W.rubric.cfg, written by aula calibrate: the random-bounce "
+                         "baseline's median is worth a 5, the reference's a 10), else fixed", {}},
+             {"fixed", "the shipped house's scale on every world: the baseline is worth about a 5 there, the reference a 10",
+              {}},
              {"original", "the thesis's scale: 10 x coverage / 30 %",
               {{"Vacuum.Referee.HalfMarkCoverage", "15"}, {"Vacuum.Referee.FullMarkCoverage", "30"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");
@@ -234,6 +240,7 @@ SettingsTable makeAutoparkReferee() {
             {{"default", "gaps relative to the slot: a centred car gets full marks in any slot of 1.2 L or more; not "
                          "parked is worth NotParkedMark; a contact costs a share of the mark",
               {}},
+             {"fixed", "the same as default (the Autopark rubric is not calibrated per world yet)", {}},
              {"original", "the thesis's scale: gaps of [1.5, 3.5) m to each car; any contact loses a quarter",
               {{"Autopark.Referee.GapRule", "absolute"}, {"Autopark.Referee.Scale", "thesis"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");

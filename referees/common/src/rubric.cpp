@@ -26,6 +26,11 @@ Report rubricReport(const config::Config& effective, const config::SettingsTable
     if (!table.isPresetValue(key, preset, effective.getString(key))) overridden.push_back(key);
   }
   if (!overridden.empty()) out.set("overridden", overridden);
+  // The world's calibration file the launcher applied (its keys are among the overridden).
+  const std::string calibration_key = preset_key.substr(0, preset_key.rfind('.')) + ".Calibration";
+  if (table.declares(calibration_key) && !effective.getString(calibration_key).empty()) {
+    out.set("calibration", effective.getString(calibration_key));
+  }
   return out;
 }
 

@@ -15,6 +15,7 @@ cli::Command grade();
 cli::Command gradeTask();
 cli::Command regrade();
 cli::Command replay();
+cli::Command calibrate();
 
 // Every command, in the order `aula --help` lists them.
 cli::CommandTable table();

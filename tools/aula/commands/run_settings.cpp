@@ -1,6 +1,7 @@
 #include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/grade/calibration.hpp>
 #include <aula/desktop/window_layout.hpp>
 #include <aula/desktop/work_area.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -50,6 +51,31 @@ void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, RunSettings& run) {
   }
   std::cerr << ex.name << ": the world has no robot '" << named << "' (" << key << "); using its only robot with the "
             << "exercise's plugins, '" << robot->name << "'\n";
+}
+
+// With the default rubric, the world's calibration file (W.rubric.cfg, `aula calibrate`) sets the
+// rubric settings the .cfg and the command line leave alone, for every process that reads them;
+// the referee is told which file it was, for its report.
+void applyCalibration(const settings::Exercise& ex, const Config& file, RunSettings& run) {
+  const std::string preset_key = ex.section + ".Referee.Rubric";
+  if (ex.referee_settings == nullptr || !ex.referee_settings->declares(preset_key) ||
+      run.referee().getString(preset_key) != "default") {
+    return;
+  }
+  Config calibrated = grade::readCalibration(ex.name, run.world, world::loadWorld(run.world).sha256);
+  if (calibrated.keys().empty()) return;
+  const std::string calibration_key = ex.section + ".Referee.Calibration";
+  if (ex.referee_settings->declares(calibration_key)) {
+    const std::string file_name = std::filesystem::path(grade::calibrationPathOf(run.world)).filename().string();
+    calibrated.set(calibration_key, file_name, "the world's calibration");  // a report the same on every machine
+  }
+  for (const std::string& key : calibrated.keys()) {
+    if (run.overrides.has(key) || file.has(key)) continue;  // what the teacher set wins
+    run.overrides.set(key, calibrated.getString(key), calibrated.origin(key));
+    for (auto& [table, cfg] : run.effective) {
+      if (table->declares(key)) cfg.set(key, calibrated.getString(key), calibrated.origin(key));
+    }
+  }
 }
 
 }  // namespace
@@ -124,6 +150,7 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   const std::string world_key = ex.section + ".World";
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
   adoptTheWorldsOnlyRobot(ex, run);
+  applyCalibration(ex, file, run);
   checkPointsOnTheMap(ex, run.component(), run.world);
   return run;
 }

@@ -15,6 +15,7 @@ cli::CommandTable table() {
   commands.add(newProject());
   commands.add(grade());
   commands.add(gradeTask());
+  commands.add(calibrate());
   commands.add(regrade());
   commands.add(replay());
   return commands;

@@ -167,9 +167,8 @@ struct GradedWorld {
   std::string path, name, sha256;  // name: the file's, or "house-1a2b3c4d.world" when two share one
 };
 
-// Worlds are told apart by their content (every file they are read from: a fixed model reruns
-// the world); two different worlds with one file name get their hash's first 8 digits in their
-// names, so that neither's runs overwrite the other's.
+// Worlds told apart by content (a fixed model reruns the world); two with one file name get
+// their hash's first 8 digits in their names, so that neither's runs overwrite the other's.
 std::vector<GradedWorld> gradedWorlds(const std::vector<std::string>& paths) {
   std::vector<GradedWorld> worlds;
   for (const std::string& path : paths) {
@@ -179,10 +178,8 @@ std::vector<GradedWorld> gradedWorlds(const std::vector<std::string>& paths) {
     const auto shared = std::count_if(worlds.begin(), worlds.end(), [&](const GradedWorld& other) {
       return fs::path(other.path).filename() == fs::path(w.path).filename() && other.sha256 != w.sha256;
     });
-    if (shared > 0) {
-      const fs::path file(w.path);
-      w.name = file.stem().string() + "-" + w.sha256.substr(0, 8) + file.extension().string();
-    }
+    const fs::path file(w.path);
+    if (shared > 0) w.name = file.stem().string() + "-" + w.sha256.substr(0, 8) + file.extension().string();
   }
   return worlds;
 }

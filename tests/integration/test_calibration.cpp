@@ -1,0 +1,112 @@
+// aula calibrate (issue 27): on a generated house, the rubric it writes beside the world puts the
+// random-bounce baseline's median at a 5 and the reference's at a 10, and aula run applies it
+// (unless told the fixed rubric); a calibration for another version of the world is refused.
+#include "test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+using namespace std::chrono_literals;
+using aula::testing::jsonNumber;
+using aula::testing::readFile;
+using aula::testing::runToEnd;
+
+namespace {
+
+const std::string kAula = std::string(AULA_BIN_DIR) + "/aula";
+
+std::string makeHouse(const std::string& dir, std::vector<std::string> args) {
+  std::vector<std::string> command = {AULA_PYTHON, std::string(AULA_SOURCE_DIR) + "/worlds/tools/make_house.py", "--out",
+                                      dir + "/house.world"};
+  command.insert(command.end(), args.begin(), args.end());
+  const auto made = runToEnd(command, 30s);
+  EXPECT_EQ(made.code.value_or(-1), 0) << made.output;
+  return dir + "/house.world";
+}
+
+double medianMark(const std::string& dir, const std::string& world, const std::string& algorithm) {
+  std::vector<double> marks;
+  for (int seed = 1; seed <= 5; ++seed) {
+    const std::string report = dir + "/" + algorithm + "-" + std::to_string(seed) + ".json";
+    const auto run = runToEnd({kAula, "run", "vacuum", "--headless", "--world=" + world, "--algorithm=" + algorithm,
+                               "--seed=" + std::to_string(seed), "--report=" + report,
+                               "--lcm-url=" + aula::testing::privateLcmUrl()},
+                              120s);
+    EXPECT_EQ(run.code.value_or(-1), 0) << run.output;
+    const std::string json = readFile(report);
+    EXPECT_NE(json.find("\"calibration\": \"house.rubric.cfg\""), std::string::npos) << json;
+    marks.push_back(jsonNumber(json, "mark"));
+  }
+  std::sort(marks.begin(), marks.end());
+  return marks[2];
+}
+
+struct House {
+  const char* name;
+  std::vector<std::string> args;
+};
+
+void PrintTo(const House& house, std::ostream* out) { *out << house.name; }  // ctest's name, not its bytes
+
+class CalibratedHouse : public ::testing::TestWithParam<House> {};
+
+}  // namespace
+
+TEST_P(CalibratedHouse, TheBaselineIsWorthAFiveAndTheReferenceATen) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = makeHouse(dir, GetParam().args);
+  const auto calibrated = runToEnd({kAula, "calibrate", "vacuum", "--world=" + world, "--seeds=1-5", "--jobs=1",
+                                    "--out=" + dir + "/calibration"},
+                                   300s);
+  ASSERT_EQ(calibrated.code.value_or(-1), 0) << calibrated.output;
+  const std::string file = readFile(dir + "/house.rubric.cfg");
+  EXPECT_NE(file.find("Calibration.Baseline = bounce"), std::string::npos) << file;
+  EXPECT_NE(file.find("Calibration.Anchor = reference"), std::string::npos) << file;
+  EXPECT_NE(file.find("Vacuum.Referee.HalfMarkCoverage = "), std::string::npos) << file;
+  const double baseline = medianMark(dir, world, "bounce"), reference = medianMark(dir, world, "reference");
+  EXPECT_NEAR(baseline, 5.0, 0.5) << file;
+  EXPECT_GE(reference, 9.5) << file;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    GeneratedHouses, CalibratedHouse,
+    ::testing::Values(House{"ThreeByTwo", {"--seed", "7"}},
+                      House{"FourRoomsOtherStart", {"--seed", "11", "--rooms-x", "2", "--rooms-y", "2", "--room-size", "3.6",
+                                                    "--start=1.5,1.5,1.0"}},
+                      House{"FourInARowFurnished", {"--seed", "3", "--rooms-x", "4", "--rooms-y", "1", "--furniture", "3"}},
+                      House{"TwoByThreeNarrowDoors", {"--seed", "21", "--rooms-x", "2", "--rooms-y", "3", "--door-width", "0.8"}}),
+    [](const ::testing::TestParamInfo<House>& info) { return std::string(info.param.name); });
+
+// The calibration file is the world's: aula config names it as the rubric's origin; the fixed
+// preset ignores it; a changed world (its hash) or a key that is not the calibrated rubric is
+// refused with exit 2, naming the file.
+TEST(Calibration, IsAppliedNamedAndRefusedForAnotherVersionOfTheWorld) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = makeHouse(dir, {"--seed", "5", "--rooms-x", "2", "--rooms-y", "1"});
+  const auto calibrated = runToEnd({kAula, "calibrate", "vacuum", "--world=" + world, "--seeds=1", "--jobs=1",
+                                    "--out=" + dir + "/calibration"}, 120s);
+  ASSERT_EQ(calibrated.code.value_or(-1), 0) << calibrated.output;
+  const std::string rubric_file = dir + "/house.rubric.cfg";
+  const auto config = runToEnd({kAula, "config", "vacuum", "--world=" + world});
+  ASSERT_EQ(config.code.value_or(-1), 0) << config.output;
+  EXPECT_NE(config.output.find("[calibration " + rubric_file + ":"), std::string::npos) << config.output;
+  EXPECT_EQ(config.output.find("HalfMarkCoverage = 40 %"), std::string::npos) << config.output;
+  const auto fixed = runToEnd({kAula, "config", "vacuum", "--world=" + world, "--Vacuum.Referee.Rubric=fixed"});
+  EXPECT_NE(fixed.output.find("HalfMarkCoverage = 40 %"), std::string::npos) << fixed.output;
+
+  const std::string text = readFile(rubric_file);
+  std::ofstream(rubric_file, std::ios::app) << "Vacuum.MaxV = 0.7\n";
+  const auto foreign_key = runToEnd({kAula, "config", "vacuum", "--world=" + world});
+  EXPECT_EQ(foreign_key.code.value_or(-1), 2) << foreign_key.output;
+  EXPECT_NE(foreign_key.output.find(rubric_file + ":"), std::string::npos) << foreign_key.output;
+  EXPECT_NE(foreign_key.output.find("'Vacuum.MaxV' is not a calibrated rubric setting"), std::string::npos)
+      << foreign_key.output;
+
+  std::ofstream(rubric_file, std::ios::trunc) << text;
+  std::ofstream(world, std::ios::app) << "<!-- a wall moved -->\n";
+  const auto stale = runToEnd({kAula, "run", "vacuum", "--headless", "--world=" + world, "--algorithm=bounce"});
+  EXPECT_EQ(stale.code.value_or(-1), 2) << stale.output;
+  EXPECT_NE(stale.output.find("calibrated for another version of " + world), std::string::npos) << stale.output;
+}

@@ -1,0 +1,68 @@
+// aula calibrate EXERCISE --world=W: the rubric that gives the same mark the same meaning on W
+// (the baseline's median at a 5, the anchor's at a 10), written to W.rubric.cfg beside the world,
+// which `aula run` and `aula grade` then apply (tools/grade/calibration).
+#include "commands.hpp"
+#include "run_settings.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/grade/calibration.hpp>
+#include <aula/grade/grade_plan.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace aula::commands {
+namespace {
+
+std::string commandLine(const cli::Arguments& args, const std::string& world) {
+  std::string line = "aula calibrate " + args.positional(0) + " --world=" + std::filesystem::path(world).filename().string() +
+                     " --seeds=" + args.text("seeds");
+  for (const char* option : {"baseline", "anchor"}) {
+    if (args.given(option)) line += std::string(" --") + option + "=" + args.text(option);
+  }
+  return line;
+}
+
+int calibrateWorld(const cli::Arguments& args) {
+  const settings::Exercise& ex = exerciseArgument(args.positional(0), "calibrate");
+  if (!args.given("world")) throw config::ConfigError("aula calibrate: --world=FILE is required (the world to calibrate)");
+  grade::CalibrationRequest request;
+  request.exercise = ex.name;
+  request.world = config::resolveWorldPath(args.text("world"), "command line --world");
+  request.seeds = grade::parseSeeds(args.text("seeds"));
+  request.baseline = args.given("baseline") ? args.text("baseline") : "";
+  request.anchor = args.given("anchor") ? args.text("anchor") : "";
+  request.jobs = args.given("jobs") ? static_cast<int>(args.integer("jobs"))
+                                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  request.out_dir = std::filesystem::absolute(args.text("out")).string();
+  const grade::Calibration calibration = grade::calibrate(request, binDir());
+  const std::string path = args.given("output") ? args.text("output") : grade::calibrationPathOf(request.world);
+  config::writeFileAtomically(path, grade::calibrationText(calibration, commandLine(args, request.world)),
+                              "the calibration");
+  std::cout << ex.name << " on " << request.world << ": " << calibration.spec.measure << " median "
+            << calibration.baseline.median << " (" << calibration.baseline.algorithm << ", a 5) and "
+            << calibration.anchor.median << " (" << calibration.anchor.algorithm << ", a 10) over "
+            << request.seeds.size() << " seeds\nwrote " << path << "\n";
+  return 0;
+}
+
+}  // namespace
+
+cli::Command calibrate() {
+  cli::Command c("calibrate", "calibrate an exercise's rubric for a world: the baseline's median a 5, the anchor's a 10");
+  c.positionals = {{"EXERCISE", "vacuum (its coverage scale)"}};
+  c.options.add(cli::valueOption("world", "FILE", "the world to calibrate (a .world file or a shipped world's name); required"))
+      .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")
+      .add(cli::valueOption("baseline", "ALGORITHM", "the algorithm worth a 5 (default: the exercise's baseline, bounce)"))
+      .add(cli::valueOption("anchor", "ALGORITHM",
+                            "the algorithm worth a 10 (default: the exercise's reference; e.g. mapping, or a plugin PATH.so)"))
+      .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
+      .text("out", "calibration", "the folder of the calibration's runs (reports, pictures; run again to resume)")
+      .add(cli::valueOption("output", "FILE.cfg", "where to write the rubric (default: W.rubric.cfg beside the world)"));
+  c.details = "aula run and aula grade apply W.rubric.cfg when the rubric preset is default; see docs/grading.md\n";
+  c.run = calibrateWorld;
+  return c;
+}
+
+}  // namespace aula::commands

@@ -1,0 +1,68 @@
+#pragma once
+// Marks that mean the same on every world: `aula calibrate` runs a baseline and an anchor
+// algorithm on a world over seeds, and writes the rubric that puts the baseline's median at a 5
+// and the anchor's at a 10 into W.rubric.cfg beside the world (docs/grading.md, "Calibration").
+// `aula run` (and so `aula grade`) applies that file when the exercise's Rubric preset is
+// "default"; "fixed" and "original" never look at it.
+
+#include <aula/config/config.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace aula::grade {
+
+// What one exercise calibrates: the report's measure that depends on the world, and the rubric
+// settings computed from the baseline's and the anchor's medians of it.
+struct CalibrationSpec {
+  std::string exercise;
+  std::string measure;               // a report field: "coverage_percent"
+  std::string baseline, anchor;      // default algorithms
+  std::vector<std::string> rubric_keys;  // the referee's settings it writes
+};
+// The spec of `exercise`; nullopt when it has none (the message says what it calibrates instead).
+std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise);
+
+struct CalibrationRequest {
+  std::string exercise, world;  // world: a path
+  std::vector<long long> seeds;
+  std::string baseline, anchor;  // "" for the spec's
+  int jobs = 1;
+  std::string out_dir;           // the runs go to OUT/runs/{baseline,anchor}/
+  std::string command;           // how it was asked, for the file's header
+};
+
+struct MeasuredAlgorithm {
+  std::string algorithm;
+  std::vector<double> values;  // per seed, in the request's order
+  double median = 0, p10 = 0, p90 = 0;
+};
+
+struct Calibration {
+  CalibrationSpec spec;
+  std::string world, world_sha256;
+  std::vector<long long> seeds;
+  MeasuredAlgorithm baseline, anchor;
+  std::vector<std::pair<std::string, std::string>> rubric;  // key, value
+};
+
+// Runs both algorithms (headless, sandboxed, with the fixed rubric so that an older calibration
+// plays no part), measures, and computes the rubric. Throws config::ConfigError when a run
+// failed or the anchor does not beat the baseline on this world (no scale can be drawn).
+Calibration calibrate(const CalibrationRequest& request, const std::string& bin_dir);
+
+// The calibration file: the rubric settings, what was measured (as Calibration.* keys), the
+// world's SHA-256 and the Aula version.
+std::string calibrationText(const Calibration& calibration, const std::string& command);
+// W.rubric.cfg beside W.world.
+std::string calibrationPathOf(const std::string& world_path);
+
+// The rubric settings of the world's calibration file, each with its origin (file:line), or
+// nothing when the world has none. Throws config::ConfigError naming the file and what is wrong
+// when the file is for another exercise or another version of the world (its SHA-256), or holds
+// a key that is not the exercise's calibrated rubric.
+config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256);
+
+}  // namespace aula::grade

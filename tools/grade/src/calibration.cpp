@@ -1,0 +1,184 @@
+#include "aula/grade/calibration.hpp"
+
+#include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grade_runner.hpp>
+#include <aula/grade/grades.hpp>
+#include <aula/settings/tables.hpp>
+#include <aula/version.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+namespace {
+
+// Six significant digits: enough for a mark's scale, and the same text on every machine.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+std::string numbers(const std::vector<double>& values) {
+  std::string out;
+  for (double v : values) out += (out.empty() ? "" : ", ") + number(v);
+  return out;
+}
+
+// The nearest-rank percentile of `values` (q in 0..1).
+double percentile(std::vector<double> values, double q) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const auto rank = static_cast<size_t>(std::ceil(q * static_cast<double>(values.size())));
+  return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
+}
+
+// Each seed's measure for one algorithm's runs; a failed run stops the calibration, naming its log.
+MeasuredAlgorithm measure(const Manifest& manifest, const std::string& who, const std::string& algorithm,
+                          const std::string& field) {
+  MeasuredAlgorithm m;
+  m.algorithm = algorithm;
+  for (const PlannedRun& run : manifest.runs) {
+    if (run.student != who) continue;
+    std::ifstream in(run.result_path);
+    const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+    const std::string failure = result.is_discarded() ? "no result" : failureOf(result);
+    if (!failure.empty() || !result.contains(field) || !result[field].is_number()) {
+      throw ConfigError("aula calibrate: the " + algorithm + " run of seed " + std::to_string(run.seed) + " on " +
+                        run.world_name + " gave no " + field + (failure.empty() ? "" : " (" + failure + ")") + "; see " +
+                        run.log_path);
+    }
+    m.values.push_back(result[field].get<double>());
+  }
+  m.median = median(m.values);
+  m.p10 = percentile(m.values, 0.1);
+  m.p90 = percentile(m.values, 0.9);
+  return m;
+}
+
+std::vector<std::pair<std::string, std::string>> rubricOf(const CalibrationSpec& spec, const MeasuredAlgorithm& baseline,
+                                                          const MeasuredAlgorithm& anchor) {
+  // Every spec so far draws a line through two points: the baseline's median at a 5, the
+  // anchor's at a 10 (vacuum: HalfMarkCoverage, FullMarkCoverage).
+  return {{spec.rubric_keys.at(0), number(baseline.median)}, {spec.rubric_keys.at(1), number(anchor.median)}};
+}
+
+}  // namespace
+
+std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise) {
+  if (exercise == "vacuum") {
+    return CalibrationSpec{"vacuum", "coverage_percent", "bounce", "reference",
+                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}};
+  }
+  return std::nullopt;
+}
+
+Calibration calibrate(const CalibrationRequest& request, const std::string& bin_dir) {
+  const auto spec = calibrationSpecOf(request.exercise);
+  const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
+  if (!spec || ex == nullptr) {
+    throw ConfigError("aula calibrate: the " + request.exercise +
+                      " exercise has no world-dependent scale to calibrate yet (vacuum has: its coverage scale)");
+  }
+  Calibration c;
+  c.spec = *spec;
+  c.world = fs::absolute(request.world).string();
+  c.world_sha256 = world::loadWorld(c.world).sha256;
+  c.seeds = request.seeds;
+  const std::string baseline = request.baseline.empty() ? spec->baseline : request.baseline;
+  const std::string anchor = request.anchor.empty() ? spec->anchor : request.anchor;
+  GradeRequest runs;
+  runs.exercise = request.exercise;
+  runs.worlds = {c.world};
+  runs.seeds = request.seeds;
+  runs.jobs = request.jobs;
+  runs.out_dir = request.out_dir;
+  runs.overrides = {{ex->section + ".Referee.Rubric", "fixed"}};  // an older calibration plays no part
+  Submission b, a;
+  b.student = "baseline";
+  b.plugin = baseline;
+  a.student = "anchor";
+  a.plugin = anchor;
+  const Manifest manifest = planRuns(runs, {b, a}, bin_dir);
+  runLocal(manifest, request.jobs, [](const PlannedRun& run, const nlohmann::ordered_json& result, const Progress& p) {
+    std::cout << "[" << p.done << "/" << p.total << "] " << run.plugin << " seed " << run.seed << ": "
+              << number(result.value("mark", 0.0)) << "\n" << std::flush;
+  });
+  c.baseline = measure(manifest, "baseline", baseline, spec->measure);
+  c.anchor = measure(manifest, "anchor", anchor, spec->measure);
+  if (!(c.anchor.median > c.baseline.median)) {
+    throw ConfigError("aula calibrate: on " + request.world + " the anchor (" + anchor + ", median " + spec->measure + " " +
+                      number(c.anchor.median) + ") does not beat the baseline (" + baseline + ", " +
+                      number(c.baseline.median) + "): no scale can put one at a 5 and the other at a 10");
+  }
+  c.rubric = rubricOf(*spec, c.baseline, c.anchor);
+  return c;
+}
+
+std::string calibrationText(const Calibration& c, const std::string& command) {
+  std::ostringstream out;
+  out << "# The " << c.spec.exercise << " rubric calibrated for " << fs::path(c.world).filename().string()
+      << ": the baseline's median " << c.spec.measure << " is worth a 5, the anchor's a 10.\n"
+      << "# Written by `" << command << "`; aula run and aula grade apply it with the default rubric\n"
+      << "# (--" << settings::exerciseNamed(c.spec.exercise)->section
+      << ".Referee.Rubric=fixed or =original ignore it). docs/grading.md, \"Calibration\".\n";
+  std::string seeds;
+  for (long long s : c.seeds) seeds += (seeds.empty() ? "" : ", ") + std::to_string(s);
+  out << "Calibration.Exercise = " << c.spec.exercise << "\n"
+      << "Calibration.WorldSha256 = " << c.world_sha256 << "\n"
+      << "Calibration.AulaVersion = " << kVersion << "\n"
+      << "Calibration.Seeds = " << seeds << "\n"
+      << "Calibration.Measure = " << c.spec.measure << "\n";
+  for (const auto& [role, m] : {std::pair<std::string, const MeasuredAlgorithm*>{"Baseline", &c.baseline},
+                                {"Anchor", &c.anchor}}) {
+    out << "Calibration." << role << " = " << m->algorithm << "\n"
+        << "Calibration." << role << "Values = " << numbers(m->values) << "\n"
+        << "Calibration." << role << "Median = " << number(m->median) << "\n"
+        << "Calibration." << role << "P10P90 = " << number(m->p10) << ", " << number(m->p90) << "\n";
+  }
+  for (const auto& [key, value] : c.rubric) out << key << " = " << value << "\n";
+  return out.str();
+}
+
+std::string calibrationPathOf(const std::string& world_path) {
+  return (fs::path(world_path).parent_path() / (fs::path(world_path).stem().string() + ".rubric.cfg")).string();
+}
+
+config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256) {
+  config::Config rubric;
+  const std::string path = calibrationPathOf(world_path);
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return rubric;
+  const config::Config file = config::Config::fromFile(path);
+  const auto spec = calibrationSpecOf(exercise);
+  const std::string of = file.getString("Calibration.Exercise", "");
+  if (!spec || of != exercise) {
+    throw ConfigError(path + ": a calibration for " + (of.empty() ? "no exercise" : "the " + of + " exercise") +
+                      ", beside a world the " + exercise + " exercise runs on; `aula calibrate " + exercise +
+                      " --world=" + world_path + "` writes the right one");
+  }
+  if (file.getString("Calibration.WorldSha256", "") != world_sha256) {
+    throw ConfigError((file.has("Calibration.WorldSha256") ? file.origin("Calibration.WorldSha256") : path) +
+                      ": calibrated for another version of " + world_path + " (its files changed since): run `aula calibrate " +
+                      exercise + " --world=" + world_path + "` again, or delete the file for the fixed rubric");
+  }
+  for (const std::string& key : file.keys()) {
+    if (key.rfind("Calibration.", 0) == 0) continue;
+    if (std::find(spec->rubric_keys.begin(), spec->rubric_keys.end(), key) == spec->rubric_keys.end()) {
+      throw ConfigError(file.origin(key) + ": '" + key + "' is not a calibrated rubric setting of " + exercise);
+    }
+    rubric.set(key, file.getString(key), "calibration " + file.origin(key));
+  }
+  return rubric;
+}
+
+}  // namespace aula::grade
