@@ -65,10 +65,9 @@ CleanerRun drive(const std::string& world_file, double seconds) {
 
 }  // namespace
 
-// Measured, seed 1: vacuum.world p95 0.011 m, max 0.197 m (a moment after a bump), 83.7 %, 6
-// contacts; house_3x2.world p95 0.015 m, max 0.201 m, 82.0 %, 133 contacts (its escapes by the
-// laser, where the map shows no way out, drive into furniture again and again: not finished). In
-// the simulator it does worse (docs/performance.md, "Mapping cleaner").
+// Measured, seed 1: vacuum.world p95 0.009 m, max 0.017 m, 83.8 %, 3 contacts; house_3x2.world
+// p95 0.017 m, max 0.273 m (a moment after a bump), 80.8 %, 46 contacts. In the simulator it
+// does worse in one house (docs/performance.md, "Mapping cleaner").
 TEST(MappingReference, KnowsWhereItIsAndCoversTwoHousesIn900s) {
   for (const auto& [world, min_coverage_percent, max_contacts] :
        {std::tuple{"vacuum.world", 80.0, 15}, std::tuple{"house_3x2.world", 78.0, 200}}) {

@@ -2,6 +2,7 @@
 // (tests/unit/support/plain_robot.hpp): a map drawn from a spin at one spot, then a scan from a
 // known translation away (up to 0.3 m), matched from a prediction at the first spot.
 #include "../support/plain_robot.hpp"
+#include "../support/synthetic_scan.hpp"
 
 #include <scan_map.hpp>
 
@@ -56,10 +57,9 @@ double worstRecovery(const std::string& world, const std::string& robot_name, co
   for (const Spot& t : translations) {
     const double x = from.x_m + t.x_m, y = from.y_m + t.y_m;
     robot.place(x, y, yaw_rad);
-    // As the reference does: only the points that end where the map has seen something.
-    const auto points =
-        map.seen(ScanMap::endpoints(robot.laser(laser).getLaserData(), laserYaw(robot, laser, yaw_rad), 9.0, 2), predicted);
-    const auto found = map.match(points, predicted, 0.35);
+    // As the reference does: only the points that end near walls seen from their side.
+    const auto points = ScanMap::endpoints(robot.laser(laser).getLaserData(), laserYaw(robot, laser, yaw_rad), 9.0, 2);
+    const auto found = map.matchSeen(points, predicted, 0.35);
     const Point2 truth = local(laserAt(robot, laser, x, y, yaw_rad));
     const double error_m = std::hypot(found.laser_m.x_m - truth.x_m, found.laser_m.y_m - truth.y_m);
     std::printf("%s from (%.2f, %.2f) by (%+.2f, %+.2f): error %.4f m, score %.3f (at the prediction %.3f)\n",
@@ -117,4 +117,18 @@ TEST(ScanMap, DrawsWallsOccupiedAndTheFloorFree) {
   EXPECT_TRUE(map.knownFree(map.col(ahead_m / 2), row));
   EXPECT_FALSE(map.known(map.col(-1.0), row)) << "behind the laser nothing is seen";
   EXPECT_NEAR(map.clearanceM(map.col(ahead_m - 0.1), row), 0.1, 0.03);
+}
+
+// A thin wall seen from one side only: a scan of its other face (0.2 m behind) is new, never
+// matched to the face drawn, where it would pull the estimate 0.2 m through the wall.
+TEST(ScanMap, AWallsOtherFaceIsNotMatchedToTheFaceSeen) {
+  const auto scan = aula::test::syntheticScan(181, -0.5, 0.5, [](double a) { return 1.0 / std::cos(a); });
+  ScanMap map;
+  map.insert(scan, 0, {-1.0, 0});  // facing +x, the wall's face at x = 0
+  const auto same_face = ScanMap::endpoints(scan, 0, 9.0);
+  EXPECT_EQ(map.seen(same_face, {-1.0, 0}).size(), same_face.size());
+  // From x = 1.2 facing -x: the wall's other face, at x = 0.2.
+  const auto other_face = ScanMap::endpoints(scan, M_PI, 9.0);
+  EXPECT_TRUE(map.seen(other_face, {1.2, 0}).empty());
+  EXPECT_LT(map.score(other_face, {1.0, 0}), 0.05) << "shifted onto the face seen, it must not fit";
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -12,19 +13,60 @@ constexpr int kMinUnsweptCells = 3;  // of a block's: fewer is a sliver, not wor
 }  // namespace
 
 CoveragePlanner::CoveragePlanner(const ScanMap& map, const CoverageSettings& settings)
-    : map_(map), s_(settings), swept_(static_cast<size_t>(map.width()) * map.width(), 0) {
-  const int reach = static_cast<int>(std::ceil(s_.sweep_radius_m / map.cellM()));
-  for (int dj = -reach; dj <= reach; ++dj) {
-    for (int di = -reach; di <= reach; ++di) {
-      if (std::hypot(di, dj) * map.cellM() <= s_.sweep_radius_m) disc_.emplace_back(di, dj);
+    : map_(map), s_(settings), swept_(static_cast<size_t>(map.width()) * map.width(), 0),
+      bump_count_(swept_.size(), 0) {
+  const auto disc = [&](double radius_m) {
+    std::vector<std::pair<int, int>> out;
+    const int reach = static_cast<int>(std::ceil(radius_m / map.cellM()));
+    for (int dj = -reach; dj <= reach; ++dj) {
+      for (int di = -reach; di <= reach; ++di) {
+        if (std::hypot(di, dj) * map.cellM() <= radius_m) out.emplace_back(di, dj);
+      }
     }
+    return out;
+  };
+  disc_ = disc(s_.sweep_radius_m);
+  bump_disc_ = disc(s_.clearance_m);
+}
+
+int CoveragePlanner::sweep(Point2 centre_m) {
+  const int i = map_.col(centre_m.x_m), j = map_.row(centre_m.y_m);
+  int fresh = 0;
+  for (const auto& [di, dj] : disc_) {
+    if (!map_.inside(i + di, j + dj)) continue;
+    uint8_t& cell = swept_[static_cast<size_t>(j + dj) * map_.width() + i + di];
+    fresh += cell == 0;
+    cell = 1;
+  }
+  return fresh;
+}
+
+void CoveragePlanner::stampBump(const Bump& b, int delta) {
+  for (const auto& [di, dj] : bump_disc_) {
+    if (!map_.inside(b.i + di, b.j + dj)) continue;
+    uint8_t& count = bump_count_[static_cast<size_t>(b.j + dj) * map_.width() + b.i + di];
+    count = static_cast<uint8_t>(std::clamp(count + delta, 0, 255));
   }
 }
 
-void CoveragePlanner::sweep(Point2 centre_m) {
-  const int i = map_.col(centre_m.x_m), j = map_.row(centre_m.y_m);
-  for (const auto& [di, dj] : disc_) {
-    if (map_.inside(i + di, j + dj)) swept_[static_cast<size_t>(j + dj) * map_.width() + i + di] = 1;
+void CoveragePlanner::addBump(Point2 p_m, double until_s) {
+  constexpr size_t kMaxBumps = 200;  // the oldest goes first
+  if (bumps_.size() >= kMaxBumps) {
+    stampBump(bumps_.front(), -1);
+    bumps_.erase(bumps_.begin());
+  }
+  bumps_.push_back({map_.col(p_m.x_m), map_.row(p_m.y_m), until_s});
+  stampBump(bumps_.back(), +1);
+}
+
+void CoveragePlanner::expireBumps(double now_s) {
+  for (size_t k = 0; k < bumps_.size();) {
+    if (bumps_[k].until_s > now_s) {
+      ++k;
+      continue;
+    }
+    stampBump(bumps_[k], -1);
+    bumps_.erase(bumps_.begin() + static_cast<std::ptrdiff_t>(k));
   }
 }
 
@@ -122,8 +164,10 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
           best_goal_m = c_m;
           out.goal = j * map_.width() + i;
         }
-        // A frontier: floor next to what the laser has not seen yet. Going there shows more.
-        if (!out.frontier) {
+        // A frontier: floor next to what the laser has not seen yet. Going there shows more,
+        // unless the robot has been there already: what it did not see then (under furniture,
+        // behind it where the laser does not look) it will not see by going back.
+        if (!out.frontier && !swept(i, j)) {
           for (int dj = -k; dj <= k && !out.frontier; dj += k) {
             for (int di = -k; di <= k; di += k) {
               if (!map_.known(i + di, j + dj)) out.frontier = true;

@@ -20,7 +20,9 @@ struct CoverageSettings {
   double clearance_m = 0.175;     // the centre keeps this far from walls (radius 0.165 + margin)
   double sweep_radius_m = 0.15;   // floor counted swept around the centre (the disc's is 0.165)
   double plan_cell_m = 0.1;       // the nearest-unswept search's grid
-  double relaxed_clearance_m = 0.15;  // its relaxed search: near walls, and through floor not seen yet
+  // Its relaxed search: through floor not seen yet, and nearer walls, but never a gap narrower
+  // than the disc (0.33 m): a robot that went in there was wedged between both sides.
+  double relaxed_clearance_m = 0.17;
 };
 
 struct Lane {
@@ -34,14 +36,24 @@ class CoveragePlanner {
 
   const CoverageSettings& settings() const { return s_; }
 
-  void sweep(Point2 centre_m);  // the robot's centre is here: its disc sweeps around it
+  // The robot's centre is here: its disc sweeps around it. Returns the cells newly swept.
+  int sweep(Point2 centre_m);
   void forget(Point2 p_m);      // give up on this place (unreachable): counted swept
   void resetSwept();            // start a new pass over the whole floor
   bool swept(int i, int j) const { return map_.inside(i, j) && swept_[static_cast<size_t>(j) * map_.width() + i] != 0; }
-  bool traversable(int i, int j) const { return map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.clearance_m; }
+  bool traversable(int i, int j) const {
+    return map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.clearance_m && !bumped(i, j);
+  }
   bool traversable(Point2 p_m) const { return traversable(map_.col(p_m.x_m), map_.row(p_m.y_m)); }
   // Every cell along a -> b traversable, except within skip_m of a (the robot may start close to a wall).
   bool segmentClear(Point2 a_m, Point2 b_m, double skip_m = 0) const;
+
+  // Something the laser does not see was bumped at p_m: no plan goes within clearance_m of it
+  // until until_s. Not a wall on the map: a bump placed wrong (a side contact, a pose a little
+  // off) would close a passage for good, and the scans would be matched against it.
+  void addBump(Point2 p_m, double until_s);
+  void expireBumps(double now_s);
+  bool bumped(int i, int j) const { return map_.inside(i, j) && bump_count_[static_cast<size_t>(j) * map_.width() + i] != 0; }
 
   // Straight from `from` along the axis (dx, dy) (one of +-x, +-y) while traversable.
   Lane lane(Point2 from_m, int dx, int dy) const;
@@ -57,6 +69,14 @@ class CoveragePlanner {
   CoverageSettings s_;
   std::vector<uint8_t> swept_;
   std::vector<std::pair<int, int>> disc_;  // cell offsets within sweep_radius_m
+  struct Bump {
+    int i, j;
+    double until_s;
+  };
+  void stampBump(const Bump& b, int delta);
+  std::vector<Bump> bumps_;
+  std::vector<uint8_t> bump_count_;        // how many bumps' discs cover each cell
+  std::vector<std::pair<int, int>> bump_disc_;  // cell offsets within clearance_m
 };
 
 }  // namespace aula::vacuum::mapping

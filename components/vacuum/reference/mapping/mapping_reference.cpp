@@ -29,15 +29,36 @@ void MappingReference::execute(VacuumApi& api) {
   const bool bumped = api.bumper.getBumperData().state == 1;
   localize(scan, yaw, bumped);
   map_.markFree(est_, s_.footprint_m);
-  coverage_.sweep(est_);
+  if (coverage_.sweep(est_) >= s_.fresh_cells || mode_ == Mode::Spin) fresh_s_ = now_s_;
+  coverage_.expireBumps(now_s_);
 
   // A bump while moving forward: back off. Unless the map already has a wall there (the pose or
-  // the steering was a little off), mark one: the laser missed it.
-  if (bumped && cmd_v_ > 0 && mode_ != Mode::Backoff) {
-    const Point2 ahead = along(est_, s_.bump_ahead_m, yaw);
-    if (map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) map_.markOccupied(ahead);
+  // the steering was a little off), the plans keep away from it for a while: the laser missed
+  // something there. A bump while turning on the
+  // spot: a disc pressed against a wall may not turn at all (the contact's friction holds it),
+  // so it moves off too; back, or forward if backing off is what pressed it.
+  const bool turning_on_spot = cmd_v_ == 0 && cmd_w_ != 0;
+  if (bumped && mode_ != Mode::Backoff && (cmd_v_ > 0 || turning_on_spot)) {
+    if (cmd_v_ > 0 && api.bumper.getBumperData().bumper == 1) {  // straight ahead (not a side's glance)
+      const Point2 ahead = along(est_, s_.bump_ahead_m, yaw);
+      if (map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) {
+        coverage_.addBump(ahead, now_s_ + s_.bump_memory_s);
+      }
+    }
+    const bool again = now_s_ - backoff_end_s_ < s_.backoff_s;  // the last backoff ended pressed
+    backoff_v_ = cmd_v_ > 0 || !again ? -s_.backoff_mps : -backoff_v_;
     mode_ = Mode::Backoff;
     mode_start_s_ = now_s_;
+  } else if (bumped && mode_ == Mode::Backoff && cmd_v_ < 0 && backoff_v_ < 0 && now_s_ - mode_start_s_ > 2 * period_s_) {
+    backoff_v_ = s_.backoff_mps;  // backing off pressed something behind: forward instead
+    mode_start_s_ = now_s_;
+  }
+  // Nothing new swept for long, whatever the plans said (a goal it cannot reach and keeps
+  // choosing, a spot it cannot leave): give up what it was doing and drive out by the laser.
+  if (mode_ == Mode::Follow && now_s_ - fresh_s_ > s_.no_fresh_s) {
+    fresh_s_ = now_s_;
+    if (!waypoints_.empty()) coverage_.forget(waypoints_.back());
+    escapeByLaser();
   }
   double v = 0, w = 0;
   switch (mode_) {
@@ -61,8 +82,9 @@ void MappingReference::execute(VacuumApi& api) {
       break;
     }
     case Mode::Backoff:
-      v = -s_.backoff_mps;
+      v = backoff_v_;
       if (now_s_ - mode_start_s_ > s_.backoff_s) {
+        backoff_end_s_ = now_s_;
         on_lane_ = false;
         decide();
         v = 0;
@@ -111,10 +133,12 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
       last_insert_yaw_ = yaw_s;
     } else if (w_max <= s_.match_max_w_radps) {
       const auto all = ScanMap::endpoints(scan, yaw_s, s_.match_range_m, s_.match_stride);
-      const auto points = map_.seen(all, predicted);
-      if (points.size() >= 10) {
-        const ScanMatch m = map_.match(points, predicted, poor_matches_ > 0 ? s_.lost_window_m : s_.track_window_m);
-        if (m.score >= s_.good_match) {
+      const ScanMatch m = map_.matchSeen(all, predicted, poor_matches_ > 0 ? s_.lost_window_m : s_.track_window_m);
+      if (m.points >= 10) {
+        // A correction wider than tracking ever needs must fit better: a scan half explained
+        // at the wrong place (a corridor's end, a room like another) scores about as well.
+        const bool far = distance(m.laser_m, predicted) > s_.track_window_m;
+        if (far ? m.score >= s_.map_good_match && w_max <= s_.jump_max_w_radps : m.score >= s_.good_match) {
           poor_matches_ = 0;
           // Along a corridor the scan says nothing about the position along it: keep the
           // prediction there, and draw nothing until it says where the laser is.
@@ -123,7 +147,9 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
           if (sharp_y) est_.y_m += m.laser_m.y_m - predicted.y_m;
           const bool moved = distance(m.laser_m, last_insert_) >= s_.map_every_m ||
                              std::abs(wrapAngle(yaw_s - last_insert_yaw_)) >= s_.map_every_rad;
-          const bool enough = points.size() * 2 >= all.size();  // most of the scan is on the map already
+          // Enough of the scan on walls the map has (a face seen for the first time is not, and
+          // must be drawn from a scan placed by the rest).
+          const bool enough = m.points * 4 >= static_cast<int>(all.size());
           if (sharp_x && sharp_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
             map_.insert(scan, yaw_s, m.laser_m);
             last_insert_ = m.laser_m;
@@ -242,8 +268,14 @@ void MappingReference::escapeByLaser() {
     }
   }
   on_lane_ = false;
-  escaping_ = true;
   const double go_m = std::clamp(best_m - s_.escape_margin_m, 0.0, s_.escape_run_m);
+  if (go_m < s_.escape_min_m) {  // walls close all round ahead: back out the way it came
+    backoff_v_ = -s_.backoff_mps;
+    mode_ = Mode::Backoff;
+    mode_start_s_ = now_s_ + s_.backoff_s;  // twice as long as after a bump
+    return;
+  }
+  escaping_ = true;
   enterFollow({along(est_, go_m, yaw_ + best_rad)});
 }
 

@@ -7,9 +7,12 @@
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
 //             (boustrophedon); where no lane is left, the way to the nearest unswept floor
 //             (CoveragePlanner); when all is swept, a second pass;
-//   recover   a bump backs off and marks the spot as a wall; a poor match keeps the prediction
-//             and widens the next search.
-// Not finished: in the simulator some runs get stuck (docs/performance.md, "Mapping cleaner").
+//   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
+//             spot for a while; a poor match keeps the prediction and widens the next search,
+//             where only a clearly better fit, driving straight, may move the estimate far;
+//             nothing new swept for no_fresh_s: out by the laser.
+// Not finished: its coverage goal is met in some houses only (docs/performance.md, "Mapping
+// cleaner").
 
 #include "coverage_planner.hpp"
 #include "scan_map.hpp"
@@ -34,8 +37,11 @@ struct MappingSettings {
   double good_match = 0.75;           // mean match field a scan needs to correct the pose
   double map_good_match = 0.85;       // ... and to be drawn into the map
   double min_sharpness = 0.03;        // a match this much better than 5 cm off, along x (y), fixes x (y)
-  double match_max_w_radps = 0.5;     // turning faster than this: prediction only (the yaw's timing)
-  double map_max_w_radps = 0.25;
+  // Turning, a scan's yaw is known only as well as its timing: a few hundredths of a radian
+  // turn it about the laser, and a turned scan fits a wall nearby better shifted.
+  double match_max_w_radps = 0.25;    // turning faster than this: prediction only
+  double map_max_w_radps = 0.15;      // ... and drawn into the map only below this
+  double jump_max_w_radps = 0.05;     // a correction beyond track_window_m only when this straight
   double map_every_m = 0.1;           // draw a scan after moving this far...
   double map_every_rad = 0.3;         // ... or turning this much
   // Coverage.
@@ -55,14 +61,18 @@ struct MappingSettings {
   // Recovery.
   double backoff_mps = 0.12;
   double backoff_s = 0.5;
-  double bump_ahead_m = 0.2;          // a bump marks a wall this far ahead of the centre...
-  double bump_known_m = 0.1;          // ... unless the map has one this close to that point
+  double bump_ahead_m = 0.2;          // a bump straight ahead blocks the plans this far ahead of the centre...
+  double bump_known_m = 0.1;          // ... unless the map has a wall this close to that point...
+  double bump_memory_s = 60;          // ... for this long
   double stuck_s = 3.0;               // no progress this long while following: give up the goal
   double stuck_m = 0.05;
   double escape_radius_m = 0.5;       // too close to a wall: the nearest traversable place within this
   int escape_half_beams = 8;          // no way out on the map: the laser's most open +-8 beams...
   double escape_run_m = 0.8;          // ... this far at most...
-  double escape_margin_m = 0.4;       // ... stopping this short of what it sees there
+  double escape_margin_m = 0.4;       // ... stopping this short of what it sees there;
+  double escape_min_m = 0.1;          // shorter than this: it backs out instead
+  int fresh_cells = 4;                // an execute() sweeping this many new cells (2.5 cm) is progress...
+  double no_fresh_s = 40;             // ... and none for this long, while following plans, is not
 };
 
 class MappingReference : public VacuumAlgorithm {
@@ -116,6 +126,8 @@ class MappingReference : public VacuumAlgorithm {
   const component::LaserData* scan_ = nullptr;  // this execute()'s
   double yaw_ = 0;
   bool escaping_ = false;
+  double backoff_v_ = 0, backoff_end_s_ = -1e9;
+  double fresh_s_ = 0;  // when the last execute() swept new floor
   double last_reset_s_ = -1e9;
   std::mt19937_64 rng_;
 };

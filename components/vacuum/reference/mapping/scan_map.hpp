@@ -6,7 +6,8 @@
 // absolute), so only x and y are unknown. With the yaw exact, matching a scan is a search over
 // translations only: correlative (a grid of candidates over the window, then a hill climb down
 // to millimetres) on a match field that is 1 on every hit drawn into the map and falls linearly
-// to 0 at field_radius_m from it.
+// to 0 at field_radius_m from it. One field per way the beams look (side()): a scan's point
+// counts only against walls seen from its own side, never a thin wall's other face.
 //
 // Plain data on the standard library and the API's devices (aula/component/devices.hpp), so it
 // builds in a student's plugin against an installed Aula.
@@ -29,6 +30,7 @@ struct ScanMapSettings {
   double field_radius_m = 0.3;    // the match field falls to 0 this far from an occupied cell
   double free_max_m = 6.0;        // free space is carved along each beam up to this range
   double hit_max_m = 8.0;         // a beam longer than this marks no wall (grazing, far)
+  double hit_margin_m = 0.05;     // a hit's beam carves free space only up to this short of it
   int hit_logodds = 4, free_logodds = 1, occupied_logodds = 4;  // per beam; clamped to +-100
 };
 
@@ -59,9 +61,13 @@ class ScanMap {
   // The laser's position that best fits `points` (endpoints()) to the map, searched within
   // +-search_half_m of `predicted_m` (then refined by a hill climb that may leave the window).
   ScanMatch match(const std::vector<Point2>& points, Point2 predicted_m, double search_half_m) const;
+  // match() on the points seen(): chosen at the prediction first, then again from where they
+  // fit (a prediction 0.3 m off keeps the points that happen to land near walls from there).
+  // ScanMatch::points: how many were matched.
+  ScanMatch matchSeen(const std::vector<Point2>& points, Point2 predicted_m, double search_half_m) const;
   double score(const std::vector<Point2>& points, Point2 laser_m) const;
-  // The points that, from laser_m, end where the map has seen something (a cell seen free or
-  // occupied, or near a wall): only they can say where the laser is; the rest is new floor.
+  // The points that, from laser_m, end near a wall the map has seen from their side: only they
+  // can say where the laser is; the rest is new (a wall's other face, a room not seen yet).
   std::vector<Point2> seen(const std::vector<Point2>& points, Point2 laser_m) const;
 
   // Cells: (i, j) = (column along x, row along y).
@@ -78,8 +84,6 @@ class ScanMap {
   double clearanceM(int i, int j) const;
   // The robot stands here: its footprint is floor (the laser, ahead of the centre, never sees it).
   void markFree(Point2 centre_m, double radius_m);
-  // Marks a cell occupied though the laser did not see it (a bump the laser could not explain).
-  void markOccupied(Point2 p_m);
   // The cells ever observed, as a box (for the window and the planner's searches).
   int minCol() const { return min_i_; }
   int maxCol() const { return max_i_; }
@@ -89,10 +93,17 @@ class ScanMap {
 
  private:
   size_t idx(int i, int j) const { return static_cast<size_t>(j) * n_ + i; }
-  void occupy(int i, int j, Point2 hit_m);
-  void ray(int i0, int j0, Point2 end_m, bool hit);
+  // Which way a beam (dx, dy) looks: 0 +x, 1 +y, 2 -x, 3 -y, by its larger component. A
+  // scan's point is matched only to hits seen looking the same way: a wall's two faces are
+  // 0.2 m apart, and a scan of a face not drawn yet fits the other one otherwise.
+  static int side(double dx, double dy);
+  static constexpr int kSides = 4;
+  static constexpr uint8_t kOccupiedBit = 0x10;  // occupied_: this bit, and one bit per side stamped
+  void occupy(int i, int j, Point2 hit_m, double beam_x, double beam_y);
+  void stamp(int i, int j, Point2 hit_m, int side_index);
+  void ray(int i0, int j0, Point2 end_m);
   void touch(int i, int j);
-  double field(double x_m, double y_m) const;  // 1 on a hit, 0 from field_radius_m away
+  double field(double x_m, double y_m, int side_index) const;  // 1 on a hit, 0 from field_radius_m away
 
   ScanMapSettings s_;
   int n_ = 0;
@@ -100,13 +111,14 @@ class ScanMap {
   double unit_m_ = 0;
   std::vector<int8_t> logodds_;
   std::vector<uint8_t> occupied_;
-  std::vector<uint8_t> distance_;  // to the nearest occupied centre, in units of unit_m_ (field_radius_m / 250); 255 = beyond
+  std::vector<uint8_t> distance_;  // to the nearest hit, in units of unit_m_ (field_radius_m / 250); 255 = beyond
+  std::array<std::vector<uint8_t>, kSides> side_distance_;  // the same, per side: hits seen looking that way
   std::vector<std::pair<int, int>> stamp_;  // cell offsets a hit in the centre cell may reach
   // The nearest hit itself, from the cell's centre (units of kOffsetUnitM): the match field is the
   // distance to it, exact where bilinear interpolation of cell values would pull every wall onto
   // the cells' centres, up to half a cell off.
   static constexpr double kOffsetUnitM = 0.0005;
-  std::vector<std::array<int16_t, 2>> nearest_;
+  std::array<std::vector<std::array<int16_t, 2>>, kSides> side_nearest_;
   int min_i_, max_i_, min_j_, max_j_;
   int occupied_count_ = 0;
 };
