@@ -1,7 +1,8 @@
-// An exam under `aula grade` (issue 28): a class of a quiet student and four attackers, each a
-// submission folder whose MyAlgorithm.cpp attacks from inside execute() (exam_attack.hpp). Every
-// attacker's own row says what it earned and why; the quiet student's row is what she gets when
-// graded alone. The same attacks without the sandbox succeed, which shows the test can fail.
+// An exam under `aula grade` (issue 28), in C++ and in Python: a class of a quiet student and an
+// attacker per attack, each a submission folder whose MyAlgorithm.cpp (exam_attack.hpp) or
+// MyAlgorithm.py (python/exam_attack.py) attacks from inside execute(). Every attacker's own row
+// says what it earned and why; the quiet student's row is what she gets when graded alone. The
+// same reads and datagrams without the sandbox succeed, which shows the test can fail.
 #include "test_support.hpp"
 
 #include <aula/process/child_process.hpp>
@@ -78,8 +79,23 @@ std::map<std::string, std::map<std::string, std::string>> gradesOf(const std::st
   return rows;
 }
 
-void writeSubmission(const fs::path& folder, const std::string& attack) {
+// The attacks tried in each language: the C++ ones include exam_attack.hpp, the Python ones are
+// python/exam_attack.py (sys.exit() in Python is an exception like any other, not the exit()
+// that C++'s "exit" tries).
+std::vector<std::string> attacksIn(const std::string& language) {
+  std::vector<std::string> attacks = {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "_exit", "flood"};
+  if (language == "cpp") attacks.push_back("exit");
+  return attacks;
+}
+
+// A student's folder whose algorithm tries `attack` ("none": a quiet student) in `language`.
+void writeSubmission(const fs::path& folder, const std::string& attack, const std::string& language) {
   fs::create_directories(folder);
+  if (language == "python") {
+    std::ofstream(folder / "MyAlgorithm.py") << "AULA_EXAM_ATTACK = \"" << attack << "\"\n"
+                                             << readFile(std::string(AULA_SOURCE_DIR) + "/tests/attacks/python/exam_attack.py");
+    return;
+  }
   std::ofstream(folder / "MyAlgorithm.cpp") << (attack == "reference" ? "#define AULA_EXAM_REFERENCE 1\n" : "")
                                             << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n#include \""
                                             << AULA_SOURCE_DIR << "/tests/attacks/exam_attack.hpp\"\n";
@@ -93,16 +109,57 @@ int grade(const std::vector<std::string>& folders, const fs::path& out, const st
   return child.wait(300s).value_or(-1);
 }
 
-TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
+// Each `attempts` is said refused in `student`'s run log.
+void expectRefused(const fs::path& out, const std::string& student, const std::vector<std::string>& attempts) {
+  const std::string log = readFile((out / "runs" / student / "vacuum-seed1.log").string());
+  for (const std::string& attempt : attempts) {
+    EXPECT_NE(log.find("exam: " + attempt + ": refused"), std::string::npos) << student << ": " << attempt << "\n" << log;
+  }
+}
+
+// The rows of the attackers whose attack ends their own run, each with its reason.
+void expectEndedWithTheirReason(const std::map<std::string, std::map<std::string, std::string>>& rows,
+                                const std::string& language) {
+  auto line = [&](const std::string& student) { return rows.at(student).at("line"); };
+  if (language == "cpp") {
+    // The reference is out of a plugin's reach: no 10, and why.
+    EXPECT_NE(line("reference").find("undefined symbol"), std::string::npos) << line("reference");
+    EXPECT_EQ(rows.at("reference").at("median"), "0.00") << line("reference");
+    EXPECT_NE(line("exit").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
+        << line("exit");
+  } else {
+    EXPECT_EQ(rows.at("reference").at("runs_failed"), "0") << line("reference");
+    EXPECT_LT(std::stod(rows.at("reference").at("median")), 1.0) << line("reference");
+  }
+  EXPECT_NE(line("reexec").find("a graded run's component runs only the grade's algorithm"), std::string::npos)
+      << line("reexec");
+  EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << line("reexec");
+  // _exit(0) slips past the exit() watch: the launcher still says whose doing it was (not "silent").
+  EXPECT_NE(line("_exit").find("the algorithm ended the component (exit code 0 in the middle of the run"), std::string::npos)
+      << line("_exit");
+  EXPECT_EQ(line("_exit").find("silent"), std::string::npos) << line("_exit");
+  // The sandbox's limits, said as such (in Python too: not a MemoryError's traceback alone).
+  EXPECT_NE(line("memory").find("the algorithm used more than 2048 MB of memory"), std::string::npos) << line("memory");
+  EXPECT_NE(line("fork").find("the algorithm started more than 64 processes"), std::string::npos) << line("fork");
+}
+
+// An exam in `language` (GetParam()): a quiet student and an attacker per attack, in one class.
+class ExamIn : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
+  const std::string language = GetParam();
   const fs::path dir = aula::testing::privateDir();
-  writeSubmission(dir / "class" / "quiet", "none");
-  for (const char* attack : {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "_exit", "flood"}) writeSubmission(dir / "class" / attack, attack);
+  const std::vector<std::string> attacks = attacksIn(language);
+  writeSubmission(dir / "class" / "quiet", "none", language);
+  for (const std::string& attack : attacks) writeSubmission(dir / "class" / attack, attack, language);
   fs::create_directories(dir / "teacher");
   fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
-  const std::string targets = (dir / "class" / "quiet" / "MyAlgorithm.cpp").string() + ":" +
-                              (dir / "out" / "manifest.json").string() + ":" + (dir / "teacher" / "held_out.world").string() +
-                              ":/home";
-  ::setenv("AULA_EXAM_READ", targets.c_str(), 1);
+  const std::string classmate = (dir / "class" / "quiet" / (language == "python" ? "MyAlgorithm.py" : "MyAlgorithm.cpp")).string();
+  const std::vector<std::string> targets = {classmate, (dir / "out" / "manifest.json").string(),
+                                            (dir / "teacher" / "held_out.world").string(), "/home"};
+  std::string joined;
+  for (const std::string& target : targets) joined += (joined.empty() ? "" : ":") + target;
+  ::setenv("AULA_EXAM_READ", joined.c_str(), 1);
   ::setenv("AULA_EXAM_WRITE", (dir / "out" / "grades.csv").c_str(), 1);
   Listener listener;
   ::setenv("AULA_EXAM_PORT", std::to_string(listener.port()).c_str(), 1);
@@ -112,60 +169,41 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
       << readFile((dir / "alone.log").string());
   const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
 
-  std::vector<std::string> folders;
-  for (const char* name : {"quiet", "read", "udp", "memory", "fork", "privilege", "reference", "reexec", "exit", "_exit", "flood"}) {
-    folders.push_back((dir / "class" / name).string());
-  }
+  std::vector<std::string> folders = {(dir / "class" / "quiet").string()};
+  for (const std::string& attack : attacks) folders.push_back((dir / "class" / attack).string());
   ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string()), 0) << readFile((dir / "class.log").string());
   const auto rows = gradesOf((dir / "out" / "grades.csv").string());
-  ASSERT_EQ(rows.size(), 11u) << readFile((dir / "out" / "grades.csv").string());
-  const std::string privilege_log = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.log").string());
-  for (const std::string& attempt : {std::string("unmount /proc"), std::string("remount / read-write"),
-                                     std::string("make a user namespace"), "write " + (dir / "out" / "grades.csv").string()}) {
-    EXPECT_NE(privilege_log.find("exam: " + attempt + ": refused"), std::string::npos) << attempt << "\n" << privilege_log;
+  ASSERT_EQ(rows.size(), attacks.size() + 1) << readFile((dir / "out" / "grades.csv").string());
+  EXPECT_EQ(rows.at("quiet").at("line"), alone.at("quiet").at("line"));
+
+  // Tries that fail and leave the run graded as its robot's behaviour earned.
+  std::vector<std::string> reads;
+  for (const std::string& target : targets) reads.push_back("read " + target);
+  expectRefused(dir / "out", "read", reads);
+  expectRefused(dir / "out", "privilege", {"unmount /proc", "remount / read-write", "make a user namespace",
+                                          "write " + (dir / "out" / "grades.csv").string()});
+  if (language == "python") expectRefused(dir / "out", "reference", {"find makeReferenceAlgorithm"});
+  for (const char* student : {"read", "udp", "privilege", "flood"}) {
+    EXPECT_EQ(rows.at(student).at("runs_failed"), "0") << rows.at(student).at("line");
+    EXPECT_EQ(rows.at(student).at("median"), alone.at("quiet").at("median")) << rows.at(student).at("line");
   }
-  EXPECT_EQ(rows.at("privilege").at("runs_failed"), "0") << rows.at("privilege").at("line");
-  // The reference is out of a plugin's reach, whether called or re-executed: no 10, and why.
-  EXPECT_NE(rows.at("reference").at("line").find("undefined symbol"), std::string::npos) << rows.at("reference").at("line");
-  EXPECT_EQ(rows.at("reference").at("median"), "0.00") << rows.at("reference").at("line");
-  EXPECT_NE(rows.at("reexec").at("line").find("a graded run's component runs only the grade's algorithm"), std::string::npos)
-      << rows.at("reexec").at("line");
-  EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << rows.at("reexec").at("line");
-  EXPECT_NE(rows.at("exit").at("line").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
-      << rows.at("exit").at("line");
-  // _exit(0) slips past the exit() watch: the launcher still says whose doing it was (not "silent").
-  EXPECT_NE(rows.at("_exit").at("line").find("the algorithm ended the component (exit code 0 in the middle of the run"),
-            std::string::npos)
-      << rows.at("_exit").at("line");
-  EXPECT_EQ(rows.at("_exit").at("line").find("silent"), std::string::npos) << rows.at("_exit").at("line");
+  EXPECT_EQ(listener.received(), 0) << "a datagram left a graded run";
+  const std::string udp_log = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.log").string());
+  EXPECT_NE(udp_log.find("exam: send to 127.0.0.1"), std::string::npos) << udp_log;
   // A flood of output: that run's log is capped (its head, its tail and what was dropped).
   const fs::path flood_log = dir / "out" / "runs" / "flood" / "vacuum-seed1.log";
   EXPECT_LT(fs::file_size(flood_log), 1u << 20);
   EXPECT_NE(readFile(flood_log.string()).find("bytes of the component's output dropped here"), std::string::npos);
-  EXPECT_EQ(rows.at("flood").at("runs_failed"), "0") << rows.at("flood").at("line");
-  EXPECT_EQ(rows.at("quiet").at("line"), alone.at("quiet").at("line"));
-
-  const std::string read_log = readFile((dir / "out" / "runs" / "read" / "vacuum-seed1.log").string());
-  for (const std::string& target : {(dir / "class" / "quiet" / "MyAlgorithm.cpp").string(),
-                                    (dir / "out" / "manifest.json").string(), (dir / "teacher" / "held_out.world").string(),
-                                    std::string("/home")}) {
-    EXPECT_NE(read_log.find("exam: read " + target + ": refused"), std::string::npos) << target << "\n" << read_log;
-  }
-  EXPECT_EQ(rows.at("read").at("runs_failed"), "0") << rows.at("read").at("line");
-  EXPECT_EQ(listener.received(), 0) << "a datagram left a graded run";
-  const std::string udp_log = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.log").string());
-  EXPECT_NE(udp_log.find("exam: send to 127.0.0.1"), std::string::npos) << udp_log;
-  EXPECT_NE(rows.at("memory").at("line").find("the algorithm used more than 2048 MB of memory"), std::string::npos)
-      << rows.at("memory").at("line");
-  EXPECT_NE(rows.at("fork").at("line").find("the algorithm started more than 64 processes"), std::string::npos)
-      << rows.at("fork").at("line");
+  expectEndedWithTheirReason(rows, language);
 
   // Without the sandbox the same reads and datagrams get through: the test can fail.
   for (const std::string attack : {"read", "udp"}) {
     const std::string log = (dir / ("open-" + attack + ".log")).string();
-    aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", std::string("--algorithm=") +
-                                     (attack == "read" ? AULA_EXAM_READ_PLUGIN : AULA_EXAM_UDP_PLUGIN),
-                                     kShortRun, "--lcm-url=" + aula::testing::privateLcmUrl()},
+    const std::string algorithm = language == "python" ? (dir / "class" / attack / "MyAlgorithm.py").string()
+                                  : attack == "read"   ? AULA_EXAM_READ_PLUGIN
+                                                       : AULA_EXAM_UDP_PLUGIN;
+    aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", "--algorithm=" + algorithm, kShortRun,
+                                     "--lcm-url=" + aula::testing::privateLcmUrl()},
                                     log, log);
     EXPECT_EQ(run.wait(120s).value_or(-1), 0) << readFile(log);
   }
@@ -178,6 +216,9 @@ TEST(Exam, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   ::unsetenv("AULA_EXAM_PORT");
   fs::remove_all(dir);
 }
+
+INSTANTIATE_TEST_SUITE_P(Exam, ExamIn, ::testing::Values("cpp", "python"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 // Without the sandbox, a student's detached children (their own session, SIGTERM blocked) do not
 // outlive the run: the launcher is their subreaper and ends them.

@@ -294,6 +294,18 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   }
   const std::string html = readFile((dir / "out" / "report.html").string());
   EXPECT_NE(html.find("<b>ana ~ ben</b>"), std::string::npos);
+  EXPECT_NE(html.find("Flagged: a code score of 0.60 or more with 25 shared fingerprints or more"), std::string::npos);
+  EXPECT_NE(html.find("paths 0.050 m apart or less"), std::string::npos);
+
+  // The thresholds are the teacher's: the same class again (every run already done), its robots
+  // "similar" when their paths are 100 m apart or less on average, and the code rule out of reach.
+  grade.insert(grade.end(), {"--similarity-path=100", "--similarity-shared=1000000"});
+  ASSERT_EQ(runToEnd(grade, (dir / "again.txt").string(), 300), 0) << readFile((dir / "again.txt").string());
+  const std::string again = readFile((dir / "out" / "similarity.csv").string());
+  EXPECT_NE(again.find("dani,eli,yes,"), std::string::npos) << again;
+  const std::string rules = readFile((dir / "out" / "report.html").string());
+  EXPECT_NE(rules.find("with 1000000 shared fingerprints or more"), std::string::npos);
+  EXPECT_NE(rules.find("paths 100.000 m apart or less"), std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -2,6 +2,7 @@
 
 #include <aula/component/algorithm_plugin.hpp>
 #include <aula/component/crash_report.hpp>
+#include <aula/component/memory_limit.hpp>
 #include <aula/config/paths.hpp>
 
 #include <cxxabi.h>
@@ -18,7 +19,6 @@
 
 #include <cstdlib>
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 namespace aula::component {
@@ -63,12 +63,8 @@ std::string faultOf(const char* what, const std::function<void()>& call, const P
   } catch (const AlgorithmFault& e) {
     return e.what();  // already in the student's lines (a Python traceback)
   } catch (const std::bad_alloc& e) {
-    // In a sandboxed run the memory limit (RLIMIT_DATA, Component.Sandbox.Memory) is why.
-    rlimit limit{};
-    if (::getrlimit(RLIMIT_DATA, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-      return "the algorithm used more than " + std::to_string(limit.rlim_cur >> 20) + " MB of memory (" + what +
-             " threw std::bad_alloc)";
-    }
+    const std::string limit = memoryLimitReason();  // a sandboxed run's memory limit is why
+    if (!limit.empty()) return limit + " (" + what + " threw std::bad_alloc)";
     return std::string(what) + " threw std::bad_alloc: " + e.what();
   } catch (const std::exception& e) {
     const std::string site = plugin != nullptr ? plugin->throwSite(dynamic_cast<const void*>(&e)) : "";

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
 namespace {
 using namespace aula::grade;
 
@@ -83,6 +88,25 @@ TEST(Similarity, WinnowingKeepsAFingerprintOfEveryLongSharedRun) {
   const auto a = fingerprints(tokenize("int a; if (b) c(); " + shared, false), 5, 4);
   const auto b = fingerprints(tokenize(shared + " while (q) { r--; }", false), 5, 4);
   EXPECT_GT(compareCode(a, b, {}).score, 0.0);
+}
+
+// The rules (aula grade's --similarity-code and --similarity-shared) decide the flag: the same pair
+// of identical files, flagged or not.
+TEST(Similarity, TheRulesDecideTheFlag) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("aula-similarity-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string program = std::string(kOriginal) + kOther + kDisguised;
+  for (const char* student : {"ana", "ben"}) std::ofstream(dir / (std::string(student) + ".cpp")) << program;
+  const std::vector<Submitted> students = {{"ana", (dir / "ana.cpp").string()}, {"ben", (dir / "ben.cpp").string()}};
+  const size_t shared = compareCode(fingerprints(tokenize(program, false)), fingerprints(tokenize(program, false)), {}).shared;
+  ASSERT_GE(shared, SimilarityRules{}.code_min_shared);
+  EXPECT_TRUE(compareClass(students, {}, {}).at(0).flagged);
+  SimilarityRules rules;
+  rules.code_threshold = 1.0;  // "or more": a score of 1 still flags
+  EXPECT_TRUE(compareClass(students, {}, {}, rules).at(0).flagged);
+  rules.code_min_shared = shared + 1;
+  EXPECT_FALSE(compareClass(students, {}, {}, rules).at(0).flagged);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Similarity, PathsAreComparedAtTheSameSimTimes) {

@@ -27,6 +27,9 @@ int gradeSubmissions(const cli::Arguments& args) {
   options.wall_limit_s = args.real("wall-limit");
   options.record = args.flag("record");
   options.similarity = args.text("similarity");
+  options.similarity_rules.code_threshold = args.real("similarity-code");
+  options.similarity_rules.code_min_shared = static_cast<size_t>(args.integer("similarity-shared"));
+  options.similarity_rules.behaviour_threshold_m = args.real("similarity-path");
   options.overrides = args.settings();
   return grade::gradeClass(grade::parseRequest(options), binDir());
 }
@@ -34,6 +37,7 @@ int gradeSubmissions(const cli::Arguments& args) {
 }  // namespace
 
 cli::Command grade() {
+  const grade::SimilarityRules defaults;  // the similarity rules' defaults are declared once, there
   cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp) x world x seed, headless");
   c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark", false, true},
                    {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
@@ -48,6 +52,13 @@ cli::Command grade() {
       .choice("similarity", "auto", {"auto", "on", "off"},
               "compare the submissions' code and their robots' paths (similarity.csv, flagged pairs in report.html); "
               "auto: for a class of 3 or more")
+      .real("similarity-code", defaults.code_threshold, "", 0, 1,
+            "a pair is flagged on code when this share of the smaller submission's fingerprints is in the other, or more")
+      .integer("similarity-shared", static_cast<long long>(defaults.code_min_shared), "fingerprints", 1, 1000000,
+               "a pair flagged on code shares this many fingerprints or more too (two short programs share a few by chance)")
+      .real("similarity-path", defaults.behaviour_threshold_m, "m", 0, 1000,
+            "a pair is flagged on behaviour when their robots' paths (same world and seed, at the same sim times) are "
+            "this far apart or less, on average")
       .add(cli::valueOption("collect", "DIR", "only collect: grades.csv and report.html from DIR's runs (after a Slurm job)"));
   c.details = "out: DIR/grades.csv (median, min, max per student; failures with reasons), DIR/report.html, DIR/runs/\n"
               "see docs/grading.md\n";

@@ -150,7 +150,8 @@ int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
       return reportStopped(stop, manifest);
     }
   }
-  printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise),
+  printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise,
+                      request.similarity_rules),
               request.out_dir);
   if (request.similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", request.out_dir.c_str());
   return 0;

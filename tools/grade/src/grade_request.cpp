@@ -103,6 +103,7 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.overrides = options.overrides;
   r.record = options.record;
   r.similarity = options.similarity == "on" || (options.similarity == "auto" && r.submissions.size() >= 3);
+  r.similarity_rules = options.similarity_rules;
   return r;
 }
 

@@ -171,7 +171,7 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
 
 // Similar work in the class (similarity.hpp): similarity.csv, and the section for report.html.
 std::string compareSubmissions(const std::string& out_dir, const std::vector<std::string>& folders, const std::string& exercise,
-                               const std::vector<nlohmann::json>& results) {
+                               const std::vector<nlohmann::json>& results, const SimilarityRules& rules) {
   std::vector<Submitted> students;
   for (const std::string& folder : folders) {
     for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
@@ -190,18 +190,18 @@ std::string compareSubmissions(const std::string& out_dir, const std::vector<std
     const auto prints = fingerprints(tokenize(text, fs::path(file).extension() == ".py"));
     starter.insert(starter.end(), prints.begin(), prints.end());
   }
-  const auto pairs = compareClass(students, results, starter);
+  const auto pairs = compareClass(students, results, starter, rules);
   config::writeFileAtomically((fs::path(out_dir) / "similarity.csv").string(), similarityCsv(pairs), "similarity");
-  return similarityHtml(pairs, students);
+  return similarityHtml(pairs, students, rules);
 }
 
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions,
-                                  const std::string& exercise) {
+                                  const std::string& exercise, const SimilarityRules& rules) {
   const auto results = readResults(out_dir);
   const auto grades = gradeStudents(results);
   // The grades first: on a disk with little room left, they are what matters most.
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
-  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results);
+  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results, rules);
   config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results, similar), "the class report");
   // A page per run, beside its result, for the teacher to hand to that student alone.
   for (const auto& r : results) {

@@ -166,7 +166,8 @@ std::string similarityCsv(const std::vector<PairSimilarity>& pairs) {
   return csv;
 }
 
-std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students) {
+std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students,
+                           const SimilarityRules& rules) {
   std::map<std::string, std::string> source;
   for (const Submitted& s : students) source[s.student] = readText(s.source_path);
   std::ostringstream html;
@@ -174,7 +175,11 @@ std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::
   for (const PairSimilarity& p : pairs) flagged += p.flagged ? 1 : 0;
   html << "<h2 id='similarity'>Similar work (" << flagged << " pairs to look at)</h2>\n<p>Pairs whose code shares "
        << "fingerprints that renaming and reordering do not hide, or whose robots drove the same path on the same world "
-       << "and seed. For a teacher to look at: no mark changes. All pairs: similarity.csv.</p>\n";
+       << "and seed. For a teacher to look at: no mark changes. All pairs: similarity.csv.</p>\n<p class='rules'>Flagged: "
+       << "a code score of " << number(rules.code_threshold, 2) << " or more with " << rules.code_min_shared
+       << " shared fingerprints or more (aula grade --similarity-code, --similarity-shared), or paths "
+       << number(rules.behaviour_threshold_m, 3) << " m apart or less for robots that moved " << number(rules.moved_m, 1)
+       << " m or more (--similarity-path).</p>\n";
   for (const PairSimilarity& p : pairs) {
     if (!p.flagged) continue;
     html << "<details class='pair'><summary><b>" << escapeHtml(p.a) << " ~ " << escapeHtml(p.b) << "</b>: code "

@@ -1,5 +1,7 @@
 #include "aula/python/python_host.hpp"
 
+#include <aula/component/memory_limit.hpp>
+
 #include <pybind11/embed.h>
 
 #include <dlfcn.h>
@@ -178,11 +180,15 @@ PythonAlgorithm::~PythonAlgorithm() {
 }
 
 std::string PythonAlgorithm::describe(py::error_already_set& e) {
+  std::string text;
   try {
-    return interpreter().helpers["describe"](e.value(), e.trace(), interpreter().file).cast<std::string>();
+    text = interpreter().helpers["describe"](e.value(), e.trace(), interpreter().file).cast<std::string>();
   } catch (py::error_already_set& inner) {
-    return std::string(e.what()) + " (and describing it failed: " + inner.what() + ")";
+    text = std::string(e.what()) + " (and describing it failed: " + inner.what() + ")";
   }
+  // A MemoryError in a sandboxed run is the sandbox's limit, said as for C++ (where it was raised after it).
+  const std::string limit = e.matches(PyExc_MemoryError) ? component::memoryLimitReason() : "";
+  return limit.empty() ? text : limit + " (" + text + ")";
 }
 
 }  // namespace aula::python

@@ -5,6 +5,7 @@
 // never depends on where it ran.
 
 #include <aula/config/config.hpp>
+#include <aula/grade/similarity.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@ struct GradeRequest {
   std::string engine = "local";  // local | slurm
   double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
   bool similarity = false;       // compare the submissions (similarity.csv, report.html's section)
+  SimilarityRules similarity_rules;  // what flags a pair
   bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
@@ -40,6 +42,7 @@ struct GradeOptions {
   double wall_limit_s = 600;
   bool record = false;
   std::string similarity = "auto";       // on, off, or auto: on for a class of 3 or more
+  SimilarityRules similarity_rules;
   std::vector<std::pair<std::string, std::string>> overrides;
 };
 

@@ -4,6 +4,8 @@
 // names in "measures" (coverage %, gaps, time), the failed runs and why. Deterministic: the same
 // results give byte-identical files, whichever engine ran them.
 
+#include <aula/grade/similarity.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -32,8 +34,9 @@ double median(std::vector<double> values);
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 // `similarity`: compare the class's submissions too (similarity.csv and report.html's section);
-// the submissions' folders are those of `submissions` (empty: none, no comparison).
+// the submissions' folders are those of `submissions` (empty: none, no comparison), a pair
+// flagged by `rules`.
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions = {},
-                                  const std::string& exercise = "");
+                                  const std::string& exercise = "", const SimilarityRules& rules = {});
 
 }  // namespace aula::grade

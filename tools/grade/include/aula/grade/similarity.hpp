@@ -70,6 +70,8 @@ struct PairSimilarity {
   std::string evidence;     // "MyAlgorithm.cpp:10-24 ~ MyAlgorithm.cpp:40-54; ..." and the runs compared
 };
 
+// What flags a pair; the defaults are `aula grade`'s (its --similarity-code, --similarity-shared
+// and --similarity-path options).
 struct SimilarityRules {
   double code_threshold = 0.6;        // flagged at or above this share of fingerprints,
   size_t code_min_shared = 25;        // and at least this many: a short program shares a few by chance
@@ -83,7 +85,8 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
                                          const std::vector<Fingerprint>& starter, const SimilarityRules& rules = {});
 
 std::string similarityCsv(const std::vector<PairSimilarity>& pairs);
-// The report's section: the flagged pairs, each with its two files side by side.
-std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students);
+// The report's section: the rules that flagged, and the flagged pairs, each with its two files side by side.
+std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students,
+                           const SimilarityRules& rules);
 
 }  // namespace aula::grade
