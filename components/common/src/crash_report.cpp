@@ -34,7 +34,17 @@ CrashReportState& crashState() {
 // The call under callSurvivingCrashes on this thread, and what ended it.
 thread_local sigjmp_buf* recover_to = nullptr;
 thread_local char crash_text[600];
-thread_local std::unique_ptr<char[]> alt_stack;
+// This thread's alternate signal stack while it runs algorithms; the one it had before is given
+// back when the thread ends (before AddressSanitizer's own thread teardown, which unmaps the
+// stack it finds installed and cannot unmap ours).
+struct AltStack {
+  std::unique_ptr<char[]> bytes;
+  stack_t previous{};
+  ~AltStack() {
+    if (bytes) ::sigaltstack(&previous, nullptr);
+  }
+};
+thread_local AltStack alt_stack;
 
 // Text built in a fixed buffer, truncated at its end.
 struct Text {
@@ -132,12 +142,12 @@ void copyInto(char* buffer, size_t size, const std::string& text) {
 }
 
 void giveThisThreadAnAltStack() {
-  if (alt_stack) return;
-  alt_stack = std::make_unique<char[]>(kAltStackBytes);
+  if (alt_stack.bytes) return;
+  auto bytes = std::make_unique<char[]>(kAltStackBytes);
   stack_t stack{};
-  stack.ss_sp = alt_stack.get();
+  stack.ss_sp = bytes.get();
   stack.ss_size = kAltStackBytes;
-  ::sigaltstack(&stack, nullptr);
+  if (::sigaltstack(&stack, &alt_stack.previous) == 0) alt_stack.bytes = std::move(bytes);
 }
 
 // Runs the call armed; disarmed when it returns or throws (a crash disarms in the caller).
@@ -150,6 +160,13 @@ void armedCall(const std::function<void()>& call, sigjmp_buf* here) {
 }
 
 }  // namespace
+
+// LeakSanitizer's interface, present only in a sanitizer build (weak: null otherwise).
+extern "C" void __lsan_ignore_object(const void* object) __attribute__((weak));
+
+void abandonAfterCrash(const void* object) {
+  if (__lsan_ignore_object != nullptr && object != nullptr) __lsan_ignore_object(object);
+}
 
 void installCrashReport(const std::string& program, const PluginImage& plugin) {
   CrashReportState& s = crashState();

@@ -17,6 +17,7 @@
 
 #include <aula/component/devices.hpp>
 #include <aula/component/algorithm_thread.hpp>
+#include <aula/component/crash_report.hpp>
 #include <aula/component/execute_watchdog.hpp>
 #include <aula/component/plugin_library.hpp>
 
@@ -131,7 +132,7 @@ class AlgorithmHost : public AlgorithmHostBase {
 
  private:
   void dropAlgorithm() {
-    if (crashed_) (void)algorithm_.release();  // left as the crash left it
+    if (crashed_) abandonAfterCrash(algorithm_.release());  // left as the crash left it
     algorithm_.reset();
     crashed_ = false;
   }

@@ -29,6 +29,10 @@ void installCrashReport(const std::string& program, const PluginImage& plugin);
 // The launcher's private line for the crash's one line (a descriptor of this process), or -1.
 void reportCrashesTo(int fd);
 
+// An object a crash left behind (a crashed algorithm) is never destroyed, since its destructor
+// could crash again; this says so to LeakSanitizer in a sanitizer build (nothing otherwise).
+void abandonAfterCrash(const void* object);
+
 // For a thread that runs student calls under callSurvivingCrashes: an alternate signal stack,
 // and the fault signals unblocked (a blocked SIGSEGV would kill the process whatever the handler).
 void prepareThreadForCrashes();
