@@ -58,7 +58,7 @@ std::vector<std::string> exerciseProblems(const settings::Exercise& ex, const wo
     }
   }
   try {
-    checkPointsOnTheMap(ex, cfg, spec.source_path);
+    checkPointsOnTheMap(ex, cfg, spec);
   } catch (const config::ConfigError& e) {
     missing.push_back(std::string("its points on free floor: ") + e.what());
   }

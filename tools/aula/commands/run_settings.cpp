@@ -37,11 +37,10 @@ void requireDeclared(const settings::Exercise& ex, const Config& overrides, cons
 
 // The world has no robot of the Robot setting's name but one the exercise can only have meant:
 // every process of the run is given it (as an override), and the run says so in one line.
-void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, RunSettings& run) {
+void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, const world::WorldSpec& world, RunSettings& run) {
   const std::string key = ex.section + ".Robot";
   if (!run.component().has(key)) return;
   const std::string named = run.component().getString(key);
-  const world::WorldSpec world = world::loadWorld(run.world);
   const world::RobotSpec* robot = exerciseRobot(ex, world, named);
   if (robot == nullptr || robot->name == named) return;
   const std::string origin = "the world's only robot with the exercise's plugins";
@@ -56,13 +55,13 @@ void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, RunSettings& run) {
 // With the default rubric, the world's calibration file (W.rubric.cfg, `aula calibrate`) sets the
 // rubric settings the .cfg and the command line leave alone, for every process that reads them;
 // the referee is told which file it was, for its report.
-void applyCalibration(const settings::Exercise& ex, const Config& file, RunSettings& run) {
+void applyCalibration(const settings::Exercise& ex, const Config& file, const world::WorldSpec& world, RunSettings& run) {
   const std::string preset_key = ex.section + ".Referee.Rubric";
   if (ex.referee_settings == nullptr || !ex.referee_settings->declares(preset_key) ||
       run.referee().getString(preset_key) != "default") {
     return;
   }
-  Config calibrated = grade::readCalibration(ex.name, run.world, world::loadWorld(run.world).sha256);
+  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256);
   if (calibrated.keys().empty()) return;
   const std::string calibration_key = ex.section + ".Referee.Calibration";
   if (ex.referee_settings->declares(calibration_key)) {
@@ -80,12 +79,11 @@ void applyCalibration(const settings::Exercise& ex, const Config& file, RunSetti
 
 }  // namespace
 
-void checkPointsOnTheMap(const settings::Exercise& ex, const Config& component, const std::string& world_path) {
+void checkPointsOnTheMap(const settings::Exercise& ex, const Config& component, const world::WorldSpec& world) {
   std::optional<world::OccupancyMap> map;
   for (const auto& spec : ex.component_settings->specs()) {
     if (!spec.free_point) continue;
     if (!map) {
-      const auto world = world::loadWorld(world_path);
       const auto z_band = component.getDoubleList(ex.section + ".Map.ZBand");
       map = world::occupancyMapOf(world, {component.getDouble(ex.section + ".Map.Resolution"), z_band[0], z_band[1]});
     }
@@ -149,9 +147,10 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   // The world, from the component's settings (the .cfg or --world): resolved once for all.
   const std::string world_key = ex.section + ".World";
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
-  adoptTheWorldsOnlyRobot(ex, run);
-  applyCalibration(ex, file, run);
-  checkPointsOnTheMap(ex, run.component(), run.world);
+  const world::WorldSpec world = world::loadWorld(run.world);  // read once for the checks below
+  adoptTheWorldsOnlyRobot(ex, world, run);
+  applyCalibration(ex, file, world, run);
+  checkPointsOnTheMap(ex, run.component(), world);
   return run;
 }
 

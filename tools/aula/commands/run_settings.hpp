@@ -28,10 +28,10 @@ struct RunSettings {
 // sets "Vacuum.Algorithm" for --algorithm, with the origin "command line --algorithm").
 RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const config::Config& overrides);
 
-// Points the component will drive to (free_point settings) must be free floor of the world's map:
+// Points the component will drive to (free_point settings) must be free floor of `world`'s map:
 // a ConfigError naming the setting and the reason otherwise (the component checks what needs its
 // planner). `aula run` checks before any process starts, `aula check-world` with the defaults.
-void checkPointsOnTheMap(const settings::Exercise& ex, const config::Config& component, const std::string& world_path);
+void checkPointsOnTheMap(const settings::Exercise& ex, const config::Config& component, const world::WorldSpec& world);
 
 // What `robot` lacks of the plugins `ex` needs ("a laser plugin named 'laser_front'"); empty if nothing.
 std::vector<std::string> missingPlugins(const settings::Exercise& ex, const world::RobotSpec& robot);

@@ -24,13 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "";  // no run measured it
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return text;
-}
-
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
   std::string quoted = "\"";
@@ -44,6 +37,13 @@ std::string csvField(const std::string& text) {
 std::string worldStem(const std::string& world) { return fs::path(world).stem().string(); }
 
 }  // namespace
+
+std::string twoDecimals(double value) {
+  if (!std::isfinite(value)) return "";  // no run measured it
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  return text;
+}
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -161,9 +161,9 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
   }
   csv += ",runs,runs_failed,runs_tampered,failures,language,aula_version\n";
   for (const StudentGrade& g : grades) {
-    csv += csvField(g.student) + "," + number(g.median) + "," + number(g.min) + "," + number(g.max);
-    for (const auto& [world, value] : g.world_medians) csv += "," + number(value);
-    for (const auto& [measure, value] : g.measure_medians) csv += "," + number(value);
+    csv += csvField(g.student) + "," + twoDecimals(g.median) + "," + twoDecimals(g.min) + "," + twoDecimals(g.max);
+    for (const auto& [world, value] : g.world_medians) csv += "," + twoDecimals(value);
+    for (const auto& [measure, value] : g.measure_medians) csv += "," + twoDecimals(value);
     csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "," + csvField(g.language) + "," + kVersion + "\n";
   }
   return csv;

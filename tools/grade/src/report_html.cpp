@@ -19,13 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "";  // no run measured it
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return text;
-}
-
 // "coverage_percent 63.21, ..." for one run: the raw measures its report names.
 std::string measuresOf(const nlohmann::json& result) {
   std::string out;
@@ -34,7 +27,7 @@ std::string measuresOf(const nlohmann::json& result) {
     if (!name.is_string() || !result.contains(name.get<std::string>())) continue;
     const auto& value = result[name.get<std::string>()];
     if (!value.is_number()) continue;
-    out += (out.empty() ? "" : ", ") + name.get<std::string>() + " " + number(value.get<double>());
+    out += (out.empty() ? "" : ", ") + name.get<std::string>() + " " + twoDecimals(value.get<double>());
   }
   return out;
 }
@@ -176,7 +169,7 @@ void writeOverview(std::ostringstream& html, const std::vector<StudentGrade>& gr
   html << "<h2>Overview</h2>\n<div class='worlds'><div><b>the class</b><br>" << histogramSvg(medians, "median mark of a student")
        << "</div>";
   for (const auto& [world, marks] : by_world) {
-    html << "<div><b>" << escapeHtml(world) << "</b>: " << marks.size() << " runs, median " << number(median(marks)) << "<br>"
+    html << "<div><b>" << escapeHtml(world) << "</b>: " << marks.size() << " runs, median " << twoDecimals(median(marks)) << "<br>"
          << histogramSvg(marks, "mark of a run") << "</div>";
   }
   html << "</div>\n";
@@ -196,10 +189,10 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
     const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0;
     html << "<tr data-student='" << escapeHtml(g.student) << "'" << (is_flagged ? " class='flagged'" : "")
          << "><td class='name'><a href='#" << escapeHtml(g.student) << "'>" << escapeHtml(g.student) << "</a></td><td>"
-         << number(g.median) << "</td><td>" << number(g.max - g.min) << "</td><td>" << number(g.min) << "</td><td>"
-         << number(g.max) << "</td>";
-    for (const auto& [world, value] : g.world_medians) html << "<td>" << number(value) << "</td>";
-    for (const auto& [measure, value] : g.measure_medians) html << "<td>" << number(value) << "</td>";
+         << twoDecimals(g.median) << "</td><td>" << twoDecimals(g.max - g.min) << "</td><td>" << twoDecimals(g.min) << "</td><td>"
+         << twoDecimals(g.max) << "</td>";
+    for (const auto& [world, value] : g.world_medians) html << "<td>" << twoDecimals(value) << "</td>";
+    for (const auto& [measure, value] : g.measure_medians) html << "<td>" << twoDecimals(value) << "</td>";
     html << "<td>" << escapeHtml(g.language) << "</td><td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
          << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
   }
@@ -226,7 +219,7 @@ void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const RunFiles files = runFilesOf(r);
   const std::string failure = failureOf(r);
   html << "<div class='run' id='card-" << escapeHtml(id) << "'><b>" << escapeHtml(fs::path(r.value("world", "?")).stem().string())
-       << ", seed " << r.value("seed", 0LL) << ": " << number(r.value("mark", 0.0)) << "</b>";
+       << ", seed " << r.value("seed", 0LL) << ": " << twoDecimals(r.value("mark", 0.0)) << "</b>";
   const std::string measures = measuresOf(r);
   if (!measures.empty()) html << "<div>" << escapeHtml(measures) << "</div>";
   if (!failure.empty()) html << "<div class='failed'>" << escapeHtml(failure) << "</div>";

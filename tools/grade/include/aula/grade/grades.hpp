@@ -29,6 +29,8 @@ struct StudentGrade {
 std::vector<nlohmann::json> readResults(const std::string& out_dir);
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
 double median(std::vector<double> values);
+// A mark or measure as grades.csv and report.html show it: two decimals, "" when no run measured it.
+std::string twoDecimals(double value);
 // grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
 // runs_tampered, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
