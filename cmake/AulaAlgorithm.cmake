@@ -8,12 +8,16 @@
 # everything of its own stays hidden, so two plugins (or a plugin and the component) never
 # mix each other's functions.
 #
+# Optional, for Aula's own built-in algorithms (the references, built as plugins so that a
+# component never contains them: components/CMakeLists.txt): HEADER and MAKE instead of the API's
+# (the header declaring the maker, the expression making it from `seed`), LIBS linked privately.
+#
 # Used in Aula's own tree (the in-tree templates) and, installed, through find_package(Aula).
 set(_AULA_ALGORITHM_DIR "${CMAKE_CURRENT_LIST_DIR}")
 
 function(aula_add_algorithm)
-  cmake_parse_arguments(ARG "" "NAME;EXERCISE;OUTPUT_DIRECTORY" "SOURCES" ${ARGN})
-  if(NOT ARG_NAME OR NOT ARG_EXERCISE OR NOT ARG_SOURCES)
+  cmake_parse_arguments(ARG "" "NAME;EXERCISE;OUTPUT_DIRECTORY;HEADER;MAKE" "SOURCES;LIBS" ${ARGN})
+  if(NOT ARG_NAME OR NOT ARG_EXERCISE OR (NOT ARG_SOURCES AND NOT ARG_LIBS))
     message(FATAL_ERROR "aula_add_algorithm(NAME name EXERCISE vacuum|teletaxi|autopark SOURCES ...): "
                         "NAME, EXERCISE and SOURCES are required")
   endif()
@@ -29,12 +33,18 @@ function(aula_add_algorithm)
   get_target_property(AULA_HEADER ${_api} AULA_ALGORITHM_HEADER)
   get_target_property(AULA_CLASS ${_api} AULA_ALGORITHM_CLASS)
   get_target_property(AULA_MAKE ${_api} AULA_ALGORITHM_MAKE)
+  if(ARG_HEADER)
+    set(AULA_HEADER "${ARG_HEADER}")
+  endif()
+  if(ARG_MAKE)
+    set(AULA_MAKE "${ARG_MAKE}")
+  endif()
   set(AULA_EXERCISE "${ARG_EXERCISE}")
   set(_entry "${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_aula_entry.cpp")
   configure_file("${_AULA_ALGORITHM_DIR}/aula_algorithm_entry.cpp.in" "${_entry}" @ONLY)
 
   add_library(${ARG_NAME} MODULE ${ARG_SOURCES} "${_entry}")
-  target_link_libraries(${ARG_NAME} PRIVATE ${_api})
+  target_link_libraries(${ARG_NAME} PRIVATE ${_api} ${ARG_LIBS})
   # A plugin that calls nothing of libc's directly still names it (Debian's policy for every
   # shared object, lintian's library-not-linked-against-libc).
   target_link_options(${ARG_NAME} PRIVATE "LINKER:--push-state,--no-as-needed,-lc,--pop-state")
@@ -65,7 +75,15 @@ endfunction()
 
 # A component exports to the plugins it loads only the student API (aula_plugin_exports.list),
 # not its own symbols (-rdynamic would give a plugin the references and everything else).
+# API_LIBS: the static libraries holding the API's code, linked whole: the component itself may
+# not call every API function (only the references, plugins of their own, called some), and a
+# student's plugin must find each one (build.ComponentsExportOnlyTheStudentApi checks it).
 function(aula_export_plugin_api target)
+  cmake_parse_arguments(ARG "" "" "API_LIBS" ${ARGN})
   target_link_options(${target} PRIVATE "LINKER:--dynamic-list=${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list")
+  foreach(_lib ${ARG_API_LIBS})
+    target_link_options(${target} PRIVATE "LINKER:--whole-archive,$<TARGET_FILE:${_lib}>,--no-whole-archive")
+    target_link_libraries(${target} PRIVATE ${_lib})
+  endforeach()
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list)
 endfunction()

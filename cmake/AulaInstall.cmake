@@ -1,6 +1,7 @@
 # What `cmake --install` puts in a prefix, and the .deb CPack makes of it:
 #   bin/                     every program (aula, aula-sim, the components and referees, tools)
 #   lib/aula/algorithms/     the in-tree templates, built as plugins (--algorithm=student)
+#   lib/aula/references/     the built-in algorithms, a plugin each (--algorithm=reference...)
 #   lib/aula/libaula_world_sdf.so  the SDF reader, opened on a miss of the parsed-world cache
 #   lib/aula/libaula_sim_view.so   aula-sim --gui's 3D view, opened only with --gui
 #   lib/aula/python/         the Python hosts, one per exercise (--algorithm=PATH.py)
@@ -22,6 +23,8 @@ set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client aula-replay
 install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
         LIBRARY DESTINATION lib/aula/algorithms)
+get_property(_builtins GLOBAL PROPERTY AULA_BUILTIN_ALGORITHMS)
+install(TARGETS ${_builtins} LIBRARY DESTINATION lib/aula/references)
 install(TARGETS aula_world_sdf aula_sim_view LIBRARY DESTINATION lib/aula)
 install(TARGETS aula_teletaxi_python aula_vacuum_python aula_autopark_python LIBRARY DESTINATION lib/aula/python)
 

@@ -12,6 +12,10 @@
 //   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE;
 // - "reference": drive with the component's own reference (makeReferenceAlgorithm, declared here
 //   since the API no longer does);
+// - "find-reference": find the reference anyway: makeReferenceAlgorithm in the component's own
+//   symbol tables (read from /proc/self/exe, called at the program's load address), else the
+//   reference's plugin beside the component (<bin>/../lib/aula/references), opened with dlopen;
+//   drive with whichever it found;
 // - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference;
 // - "exit": exit(0) from inside execute();
 // - "_exit": _exit(0) from inside execute() (no atexit handler runs: the component's exit() watch
@@ -21,6 +25,9 @@
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <arpa/inet.h>
+#include <dlfcn.h>
+#include <elf.h>
+#include <link.h>
 #include <sched.h>
 #include <csignal>
 #include <sys/mount.h>
@@ -32,7 +39,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -103,6 +112,56 @@ inline void tryPrivileges() {
   say("write " + std::string(target != nullptr ? target : ""), static_cast<bool>(out), errno != 0 ? errno : ENOENT);
 }
 
+using MakeReference = std::unique_ptr<aula::vacuum::VacuumAlgorithm> (*)(uint64_t);
+
+// The program's load address (a PIE): dl_iterate_phdr's first object is the program itself.
+inline uintptr_t programBias() {
+  uintptr_t bias = 0;
+  dl_iterate_phdr([](dl_phdr_info* info, size_t, void* out) {
+    *static_cast<uintptr_t*>(out) = info->dlpi_addr;
+    return 1;
+  }, &bias);
+  return bias;
+}
+
+// `name`'s address from the program file's own symbol tables (.symtab, .dynsym), or nullptr.
+inline void* symbolInProgram(const char* name) {
+  std::ifstream in("/proc/self/exe", std::ios::binary);
+  const std::string elf((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (elf.size() < sizeof(Elf64_Ehdr)) return nullptr;
+  const auto* header = reinterpret_cast<const Elf64_Ehdr*>(elf.data());
+  if (header->e_shoff == 0 || header->e_shoff + header->e_shnum * sizeof(Elf64_Shdr) > elf.size()) return nullptr;
+  const auto* sections = reinterpret_cast<const Elf64_Shdr*>(elf.data() + header->e_shoff);
+  for (int i = 0; i < header->e_shnum; ++i) {
+    if (sections[i].sh_type != SHT_SYMTAB && sections[i].sh_type != SHT_DYNSYM) continue;
+    const char* names = elf.data() + sections[sections[i].sh_link].sh_offset;
+    const auto* symbols = reinterpret_cast<const Elf64_Sym*>(elf.data() + sections[i].sh_offset);
+    for (size_t k = 0; k < sections[i].sh_size / sizeof(Elf64_Sym); ++k) {
+      if (symbols[k].st_value != 0 && std::strcmp(names + symbols[k].st_name, name) == 0) {
+        return reinterpret_cast<void*>(programBias() + symbols[k].st_value);
+      }
+    }
+  }
+  return nullptr;
+}
+
+// The reference, found in the component or beside it: nullptr when neither could be had.
+inline std::unique_ptr<aula::vacuum::VacuumAlgorithm> findReference(uint64_t seed) {
+  if (void* make = symbolInProgram("_ZN4aula6vacuum22makeReferenceAlgorithmEm")) {
+    say("find makeReferenceAlgorithm in the component", true);
+    return reinterpret_cast<MakeReference>(make)(seed);
+  }
+  say("find makeReferenceAlgorithm in the component", false, ENOENT);
+  std::error_code error;
+  const auto bin = std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
+  const std::string plugin = (bin.parent_path() / "lib/aula/references/libaula_vacuum_reference.so").string();
+  void* handle = ::dlopen(plugin.c_str(), RTLD_NOW | RTLD_LOCAL);
+  using Factory = aula::vacuum::VacuumAlgorithm* (*)(uint64_t);
+  auto factory = handle != nullptr ? reinterpret_cast<Factory>(::dlsym(handle, "aula_vacuum_algorithm_v1")) : nullptr;
+  say("load the reference's plugin", factory != nullptr, ENOENT);
+  return factory != nullptr ? std::unique_ptr<aula::vacuum::VacuumAlgorithm>(factory(seed)) : nullptr;
+}
+
 // The component's own command line, its algorithm made the reference, run in this process.
 inline void reexecAsReference() {
   std::ifstream in("/proc/self/cmdline", std::ios::binary);
@@ -148,7 +207,7 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
 #ifdef AULA_EXAM_REFERENCE  // only the "reference" attack names it: the others must load
     reference_ = aula::vacuum::makeReferenceAlgorithm(seed);
 #else
-    (void)seed;
+    if (std::string(AULA_EXAM_ATTACK) == "find-reference") reference_ = findReference(seed);
 #endif
   }
 

@@ -84,7 +84,7 @@ std::map<std::string, std::map<std::string, std::string>> gradesOf(const std::st
 // that C++'s "exit" tries).
 std::vector<std::string> attacksIn(const std::string& language) {
   std::vector<std::string> attacks = {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "_exit", "flood"};
-  if (language == "cpp") attacks.push_back("exit");
+  if (language == "cpp") attacks.insert(attacks.end(), {"exit", "find-reference"});
   return attacks;
 }
 
@@ -127,6 +127,8 @@ void expectEndedWithTheirReason(const std::map<std::string, std::map<std::string
     EXPECT_EQ(rows.at("reference").at("median"), "0.00") << line("reference");
     EXPECT_NE(line("exit").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
         << line("exit");
+    EXPECT_EQ(rows.at("find-reference").at("runs_failed"), "0") << line("find-reference");
+    EXPECT_LT(std::stod(rows.at("find-reference").at("median")), 1.0) << line("find-reference");
   } else {
     EXPECT_EQ(rows.at("reference").at("runs_failed"), "0") << line("reference");
     EXPECT_LT(std::stod(rows.at("reference").at("median")), 1.0) << line("reference");
@@ -182,7 +184,24 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   expectRefused(dir / "out", "read", reads);
   expectRefused(dir / "out", "privilege", {"unmount /proc", "remount / read-write", "make a user namespace",
                                           "write " + (dir / "out" / "grades.csv").string()});
-  if (language == "python") expectRefused(dir / "out", "reference", {"find makeReferenceAlgorithm"});
+  if (language == "python") expectRefused(dir / "out", "reference", {"find makeReferenceAlgorithm", "load the reference's plugin"});
+  // The reference is in no component, and its plugin is not in a student's sandbox.
+  if (language == "cpp") {
+    expectRefused(dir / "out", "find-reference", {"find makeReferenceAlgorithm in the component", "load the reference's plugin"});
+  }
+  // A datagram out of the run went nowhere, and flagged its run; the quiet student is not flagged.
+  EXPECT_EQ(rows.at("udp").at("runs_tampered"), "1") << rows.at("udp").at("line");
+  const std::string udp_result = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.json").string());
+  EXPECT_NE(udp_result.find("\"datagram to 127.0.0.1:" + std::to_string(listener.port()) + "\""), std::string::npos)
+      << udp_result;
+  EXPECT_EQ(rows.at("quiet").at("runs_tampered"), "0") << rows.at("quiet").at("line");
+  // The tries that only an escape needs are refused and flagged, the mark left as earned.
+  EXPECT_EQ(rows.at("privilege").at("runs_tampered"), "1") << rows.at("privilege").at("line");
+  const std::string privilege_report = readFile((dir / "out" / "runs" / "privilege" / "vacuum-seed1.json").string());
+  for (const char* call : {"\"umount2\"", "\"mount\"", "\"unshare\""}) {
+    EXPECT_NE(privilege_report.find(call), std::string::npos) << call << "\n" << privilege_report;
+  }
+  EXPECT_NE(privilege_report.find("\"escape_attempts\""), std::string::npos) << privilege_report;
   for (const char* student : {"read", "udp", "privilege", "flood"}) {
     EXPECT_EQ(rows.at(student).at("runs_failed"), "0") << rows.at(student).at("line");
     EXPECT_EQ(rows.at(student).at("median"), alone.at("quiet").at("median")) << rows.at(student).at("line");
@@ -197,11 +216,13 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   expectEndedWithTheirReason(rows, language);
 
   // Without the sandbox the same reads and datagrams get through: the test can fail.
-  for (const std::string attack : {"read", "udp"}) {
+  for (const std::string attack : {"read", "udp", "find-reference"}) {
+    if (attack == "find-reference" && language == "python") continue;
     const std::string log = (dir / ("open-" + attack + ".log")).string();
-    const std::string algorithm = language == "python" ? (dir / "class" / attack / "MyAlgorithm.py").string()
-                                  : attack == "read"   ? AULA_EXAM_READ_PLUGIN
-                                                       : AULA_EXAM_UDP_PLUGIN;
+    const std::string algorithm = language == "python"  ? (dir / "class" / attack / "MyAlgorithm.py").string()
+                                  : attack == "read"    ? AULA_EXAM_READ_PLUGIN
+                                  : attack == "udp"     ? AULA_EXAM_UDP_PLUGIN
+                                                        : AULA_EXAM_FIND_REFERENCE_PLUGIN;
     aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", "--algorithm=" + algorithm, kShortRun,
                                      "--lcm-url=" + aula::testing::privateLcmUrl()},
                                     log, log);
@@ -211,6 +232,10 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   EXPECT_NE(open_log.find("exam: read " + (dir / "teacher" / "held_out.world").string() + ": done"), std::string::npos)
       << open_log;
   EXPECT_GT(listener.received(), 0) << "without the sandbox the datagrams should have arrived";
+  if (language == "cpp") {
+    const std::string found = readFile((dir / "open-find-reference.log").string());
+    EXPECT_NE(found.find("exam: load the reference's plugin: done"), std::string::npos) << found;
+  }
   ::unsetenv("AULA_EXAM_READ");
   ::unsetenv("AULA_EXAM_WRITE");
   ::unsetenv("AULA_EXAM_PORT");

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A component exports to the plugins it loads only the student API (issue 28).
 
-Usage: check_plugin_exports.py NM EXPORTS_LIST COMPONENT...
+Usage: check_plugin_exports.py NM EXPORTS_LIST COMPONENT[=PLUGIN,PLUGIN...]...
 
 Each component's dynamic symbols (nm -D --defined-only, demangled) are checked against the
 linker dynamic list it is linked with (cmake/aula_plugin_exports.list): every symbol that names
@@ -11,6 +11,10 @@ copy relocations, template instances of the standard library's or OMPL's that a 
 defines, the linker's section marks). A component linked with -rdynamic (ENABLE_EXPORTS) exports
 its references and some 800 other symbols of Aula's, and fails here; so does a pattern that
 reaches past the API (Laser* also exports the LCM proxy LaserProxy).
+
+The PLUGINs after a component are its exercise's built-in algorithms (the references, plugins of
+their own since no component contains them): every symbol of the API they call must be one the
+component exports, or they (and a student's plugin calling the same) would fail to load.
 """
 import fnmatch
 import re
@@ -33,8 +37,15 @@ def exports(nm, program):
     return [line.split(" ", 2)[2] for line in out.splitlines() if line.count(" ") >= 2]
 
 
+def imports(nm, plugin):
+    out = subprocess.run([nm, "-D", "--undefined-only", "-C", plugin], check=True, capture_output=True, text=True).stdout
+    return [line.strip().split(" ", 1)[1] for line in out.splitlines() if line.strip().startswith("U ")]
+
+
 def main():
-    nm, list_path, programs = sys.argv[1], sys.argv[2], sys.argv[3:]
+    nm, list_path, arguments = sys.argv[1], sys.argv[2], sys.argv[3:]
+    programs = [a.split("=", 1)[0] for a in arguments]
+    plugins_of = {a.split("=", 1)[0]: a.split("=", 1)[1].split(",") for a in arguments if "=" in a}
     c_names, cxx_globs = patterns(list_path)
     if not cxx_globs:
         print(f"FAIL: no extern \"C++\" patterns in {list_path}")
@@ -53,6 +64,16 @@ def main():
         if not api:
             failures += 1
             print(f"FAIL: {name} exports nothing of the student API (is it linked with {list_path}?)")
+        for plugin in plugins_of.get(program, []):
+            wanted = [s for s in imports(nm, plugin) if "aula" in s.lower()]
+            missing = [s for s in wanted if s not in api]
+            if missing:
+                failures += 1
+                print(f"FAIL: {plugin.rsplit('/', 1)[-1]} calls {len(missing)} symbol(s) {name} does not export:")
+                for s in missing[:20]:
+                    print(f"  {s[:160]}")
+            else:
+                print(f"{plugin.rsplit('/', 1)[-1]}: the {len(wanted)} API symbols it calls are exported by {name}")
         if not stray and api:
             print(f"{name}: {len(api)} API symbols exported, nothing else of Aula's ({len(symbols)} in all)")
     return 1 if failures else 0

@@ -306,6 +306,14 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   const std::string rules = readFile((dir / "out" / "report.html").string());
   EXPECT_NE(rules.find("with 1000000 shared fingerprints or more"), std::string::npos);
   EXPECT_NE(rules.find("paths 100.000 m apart or less"), std::string::npos);
+
+  // Collecting alone (after a Slurm job) compares the class as the grade did: the manifest keeps
+  // the folders and the rules.
+  fs::remove(dir / "out" / "similarity.csv");
+  ASSERT_EQ(runToEnd({std::string(AULA_BIN_DIR) + "/aula", "grade", "--collect=" + (dir / "out").string()},
+                     (dir / "collect.txt").string(), 120), 0)
+      << readFile((dir / "collect.txt").string());
+  EXPECT_EQ(readFile((dir / "out" / "similarity.csv").string()), again);
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,4 @@
 #include "aula/autopark/autopark_component.hpp"
-#include <aula/autopark/references.hpp>
 
 #include <aula/world/car_kinematics.hpp>
 
@@ -18,8 +17,7 @@ LaserMount mountOf(const world::RobotSpec& car, const std::string& plugin_name) 
 }  // namespace
 
 AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "autopark",
-                        {{"reactive", makeReactiveAlgorithm}, {"planner", makePlannedAlgorithm}}),
+    : ExerciseComponent(bus, cfg, world, "autopark"),
       world_(world) {
   const world::RobotSpec* car = &world::requireRobot(world_, cfg.getString("Autopark.Robot"));
   // The car's three lasers are its plugins named laser_front, laser_rear and laser_right.

@@ -119,9 +119,12 @@ void AlgorithmHostBase::loadPlugin() {
     plugin_path_ = studentPluginPath(exercise_);
   } else if (namesPlugin(choice_)) {
     plugin_path_ = fs::absolute(choice_).lexically_normal().string();
+  } else if (const std::string builtin = config::builtinAlgorithmPath(exercise_, choice_); fs::exists(builtin)) {
+    plugin_path_ = builtin;
+    builtin_ = true;
   } else {
-    throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ +
-                      " and not a plugin file (PATH.so) or a Python file (PATH.py)");
+    throw PluginError("algorithm '" + choice_ + "': not a built-in algorithm of " + exercise_ + " (no " + builtin +
+                      ") and not a plugin file (PATH.so) or a Python file (PATH.py)");
   }
   plugin_ = std::make_unique<PluginLibrary>(plugin_path_, exercise_);
   watchdog_.setInterrupter(plugin_->interrupter());
@@ -148,16 +151,18 @@ bool AlgorithmHostBase::reloadPlugin() {
 }
 
 bool AlgorithmHostBase::pluginChanged() const {
+  if (builtin_) return false;  // Aula's own build, not the student's
   if (plugin_ != nullptr) return plugin_->changedOnDisk();
   const int64_t now = isPlugin() ? PluginLibrary::mtimeNs(plugin_path_) : -1;
   return now >= 0 && now != refused_mtime_ns_;
 }
 
 std::string AlgorithmHostBase::name() const {
-  return plugin_ == nullptr || choice_ == "student" ? choice_ : fs::path(plugin_->path()).filename().string();
+  return plugin_ == nullptr || choice_ == "student" || builtin_ ? choice_ : fs::path(plugin_->path()).filename().string();
 }
 
 std::string AlgorithmHostBase::label() const {
+  if (builtin_) return choice_;
   if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
   const char* when = PluginLibrary::isPythonFile(plugin_->path()) ? " (saved " : " (built ";
   return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";

@@ -1,5 +1,4 @@
 #include "aula/teletaxi/taxi_component.hpp"
-#include <aula/teletaxi/references.hpp>
 
 #include <aula/teletaxi/gradient_field.hpp>
 #include <aula/geometry/map_transform.hpp>
@@ -12,8 +11,7 @@
 
 namespace aula::teletaxi {
 TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "teletaxi",
-                        {{"reference", [](uint64_t) { return makeReferenceAlgorithm(); }}}) {
+    : ExerciseComponent(bus, cfg, world, "teletaxi") {
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});
   grid_ = std::make_unique<Grid>(map.image, map.transform);

@@ -1,15 +1,9 @@
 #include "aula/vacuum/vacuum_component.hpp"
-#include <aula/vacuum/references.hpp>
-
-#include <mapping_reference.hpp>
 
 namespace aula::vacuum {
 
 VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "vacuum",
-                        {{"reference", makeReferenceAlgorithm},
-                         {"mapping", mapping::makeMappingReferenceAlgorithm},
-                         {"bounce", makeRandomBounceAlgorithm}}) {
+    : ExerciseComponent(bus, cfg, world, "vacuum") {
   run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration");
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
   map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});

@@ -1,5 +1,6 @@
 #include "aula/app/process_setup.hpp"
 
+#include <aula/sandbox/forbidden_calls.hpp>
 #include <aula/sandbox/sandbox.hpp>
 
 #include <fstream>
@@ -17,16 +18,26 @@ namespace aula::app {
 
 namespace {
 
-// In a graded run's sandbox the component runs only the grade's algorithm (sandbox.hpp).
-void requireGradedAlgorithm(const config::Config& cfg, const std::string& section) {
+// In a graded run's sandbox the component runs only the grade's algorithm (sandbox.hpp). True in
+// a graded run's sandbox.
+bool requireGradedAlgorithm(const config::Config& cfg, const std::string& section) {
   std::ifstream graded(sandbox::kGradedAlgorithmFile);
   std::string algorithm;
-  if (!graded || !std::getline(graded, algorithm)) return;
+  if (!graded || !std::getline(graded, algorithm)) return false;
   const std::string key = section + ".Algorithm";
   if (cfg.getString(key) != algorithm) {
     throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) +
                               ": a graded run's component runs only the grade's algorithm (" + algorithm + ")");
   }
+  return true;
+}
+
+// A graded component's watch on the system calls only an escape needs, said on the launcher's
+// private line (forbidden_calls.hpp), from before the student's plugin is loaded.
+void watchForbiddenCalls(const config::CommandLine& command_line, const std::string& program) {
+  if (!command_line.flag("crash-fd")) return;
+  const std::string why = sandbox::watchForbiddenCalls(static_cast<int>(command_line.optionDouble("crash-fd", -1)));
+  if (!why.empty()) std::cerr << program << ": " << why << ": forbidden system calls are refused, not flagged" << std::endl;
 }
 
 }  // namespace
@@ -91,7 +102,9 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
     }
   }
   setup.cfg = table.resolve(file, siblings);
-  if (exercise != nullptr && exercise->component == program) requireGradedAlgorithm(setup.cfg, exercise->section);
+  if (exercise != nullptr && exercise->component == program && requireGradedAlgorithm(setup.cfg, exercise->section)) {
+    watchForbiddenCalls(setup.command_line, program);
+  }
 
   if (exercise != nullptr) {
     const std::string key = exercise->section + ".World";

@@ -47,6 +47,10 @@ std::string libDir() {
   return (bin.parent_path() / "lib" / "aula").lexically_normal().string();
 }
 
+std::string builtinAlgorithmPath(const std::string& exercise, const std::string& name) {
+  return (fs::path(libDir()) / kReferencesFolder / ("libaula_" + exercise + "_" + name + ".so")).string();
+}
+
 std::string docDir() {
   std::error_code error;
   const fs::path self = fs::read_symlink("/proc/self/exe", error);

@@ -110,6 +110,14 @@ void RefereeNode::algorithmFailed(const std::string& fault) {
   traceFault(simTimeUs());
 }
 
+void RefereeNode::escapeAttempt(const std::string& what) {
+  if (outcome_.truth().escapeAttempts().count(what) == 0) {  // traced once per kind: a loop is one event
+    trace_.addEvent(simTimeUs(), "tampering", "the algorithm tried to get out of the run: " + what,
+                    "it went nowhere: the mark is the true behaviour's; the run is flagged").placed = false;
+  }
+  outcome_.truth().escapeAttempt(what);
+}
+
 void RefereeNode::announce(int64_t utime) {
   announceEnd();
   status_->tick(utime, status());

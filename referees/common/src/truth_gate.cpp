@@ -54,7 +54,8 @@ std::map<std::string, long long> TruthGate::tampering() const {
 }
 
 void TruthGate::addTo(Report& report) const {
-  if (tampered()) report.set("tampering", tampering());
+  if (!tampering().empty()) report.set("tampering", tampering());
+  if (!escapes_.empty()) report.set("escape_attempts", escapes_);
   if (!gaps_.empty()) report.set("truth_gaps", gaps_);
 }
 
@@ -62,6 +63,9 @@ std::string TruthGate::summary() const {
   std::string out;
   for (const auto& [channel, count] : tampering()) {
     out += "  TAMPERING: " + std::to_string(count) + " forged or refused messages on " + channel + "\n";
+  }
+  for (const auto& [what, count] : escapes_) {
+    out += "  TAMPERING: the algorithm tried to get out of the run: " + what + " (" + std::to_string(count) + " times)\n";
   }
   for (const auto& [channel, count] : gaps_) {
     out += "  " + std::to_string(count) + " messages of " + channel + " were lost before the referee saw them\n";

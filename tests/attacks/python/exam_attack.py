@@ -87,6 +87,14 @@ def find_reference():
         say("find makeReferenceAlgorithm", True)
     except AttributeError:
         say("find makeReferenceAlgorithm", False, 2)  # ENOENT
+    # The reference's own plugin, beside the component.
+    bin_dir = os.path.dirname(os.readlink("/proc/self/exe"))
+    plugin = os.path.join(bin_dir, "..", "lib", "aula", "references", "libaula_vacuum_reference.so")
+    try:
+        ctypes.CDLL(plugin).aula_vacuum_algorithm_v1
+        say("load the reference's plugin", True)
+    except (OSError, AttributeError):
+        say("load the reference's plugin", False, 2)
 
 
 def reexec_as_reference():

@@ -2,6 +2,7 @@
 // cannot be used becomes the fault (nothing runs, nothing crashes) and is not offered again,
 // and the next good build runs a fresh algorithm.
 #include <aula/component/algorithm_host.hpp>
+#include <aula/config/paths.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <gtest/gtest.h>
@@ -58,7 +59,7 @@ class AlgorithmHostReload : public ::testing::Test {
 
 TEST_F(AlgorithmHostReload, ABadBuildBecomesTheFaultAndTheNextGoodOneRuns) {
   Motors motors(1.0, 1.0);
-  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, plugin_.string(), motors, 0);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", plugin_.string(), motors, 0);
   auto run = [&] { return host.call(1, "execute()", [](VacuumAlgorithm&) {}); };
   EXPECT_TRUE(run());
   EXPECT_FALSE(host.pluginChanged());
@@ -83,25 +84,28 @@ TEST_F(AlgorithmHostReload, ABadBuildBecomesTheFaultAndTheNextGoodOneRuns) {
   EXPECT_NE(host.label().find("libmy_algorithm.so (built "), std::string::npos) << host.label();
 }
 
-TEST(AlgorithmHost, ReloadingABuiltInCreatesAFreshAlgorithm) {
-  int created = 0;
-  struct Counted : VacuumAlgorithm {
-    void execute(aula::vacuum::VacuumApi&) override {}
-  };
-  Motors motors(1.0, 1.0);
-  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum",
-                                      {{"counted", [&](uint64_t) {
-                                          ++created;
-                                          return std::make_unique<Counted>();
-                                        }}},
-                                      "counted", motors, 0);
-  host.call(1, "execute()", [](VacuumAlgorithm&) {});
-  host.call(1, "execute()", [](VacuumAlgorithm&) {});
-  EXPECT_EQ(created, 1);
-  EXPECT_TRUE(host.reload());
-  host.call(1, "execute()", [](VacuumAlgorithm&) {});
-  EXPECT_EQ(created, 2);
+// A built-in (the reference) is a plugin of its own under <lib>/aula/references: named by its
+// name, never offered as a new build, and reloading it makes a fresh algorithm that runs.
+TEST(AlgorithmHost, ABuiltInIsAPluginOfItsOwnNamedByItsName) {
+  auto devices = std::make_shared<Devices>();
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", "reference", devices->motors, 0);
+  EXPECT_EQ(host.pluginPath(), aula::config::builtinAlgorithmPath("vacuum", "reference"));
+  EXPECT_NE(host.pluginPath().find("/lib/aula/references/libaula_vacuum_reference.so"), std::string::npos) << host.pluginPath();
+  EXPECT_EQ(host.name(), "reference");
+  EXPECT_EQ(host.label(), "reference");
   EXPECT_FALSE(host.isPlugin());
+  EXPECT_FALSE(host.pluginChanged());
+  auto run = [&] { return host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
+  EXPECT_TRUE(run()) << host.fault();
+  EXPECT_TRUE(host.reload());
+  EXPECT_TRUE(run()) << host.fault();
+  // An unknown name says what it looked for.
+  try {
+    AlgorithmHost<VacuumAlgorithm> unknown("test", "vacuum", "oracle", devices->motors, 0);
+    ADD_FAILURE() << "an unknown built-in was loaded";
+  } catch (const aula::component::PluginError& e) {
+    EXPECT_NE(std::string(e.what()).find("not a built-in algorithm of vacuum (no "), std::string::npos) << e.what();
+  }
 }
 
 // With windows (containHangs), a MyAlgorithm.py stuck in a loop is interrupted inside Python:
@@ -111,7 +115,7 @@ TEST_F(AlgorithmHostReload, APythonLoopWithWindowsIsInterruptedAtItsLineAndReloa
   auto devices = std::make_shared<Devices>();  // owned by the calls too: one could outlive the test
   const fs::path file = dir_ / "MyAlgorithm.py";
   replaceFile(std::string(AULA_TEST_DATA_DIR) + "/python/endless_loop/MyAlgorithm.py", file);
-  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, file.string(), devices->motors, 0.5);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", file.string(), devices->motors, 0.5);
   host.containHangs();
   auto run = [&] { return host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
   for (int call = 1; call <= 5; ++call) EXPECT_TRUE(run()) << call << ": " << host.fault();
@@ -144,12 +148,6 @@ int lineOf(const std::string& file, const std::string& text) {
   return 0;
 }
 
-// Deep enough to overflow any stack: each frame keeps a buffer the compiler cannot drop.
-__attribute__((noinline)) int recurse(int depth) {
-  volatile char frame[4096];
-  frame[0] = static_cast<char>(depth);
-  return depth < 0 ? 0 : recurse(depth + 1) + frame[0];
-}
 
 }  // namespace
 
@@ -159,7 +157,7 @@ __attribute__((noinline)) int recurse(int depth) {
 TEST_F(AlgorithmHostReload, ACrashWithWindowsBecomesTheFaultAtItsLineAndReloadWorks) {
   replaceFile(AULA_PLUGIN_SEGFAULT, plugin_);
   auto devices = std::make_shared<Devices>();
-  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {}, plugin_.string(), devices->motors, 5);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", plugin_.string(), devices->motors, 5);
   host.containHangs();
   auto run = [&] { return host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
   for (int call = 1; call <= 5; ++call) EXPECT_TRUE(run()) << call << ": " << host.fault();
@@ -178,13 +176,8 @@ TEST_F(AlgorithmHostReload, ACrashWithWindowsBecomesTheFaultAtItsLineAndReloadWo
 
 // A stack overflow inside the call is caught too (the handler runs on an alternate stack).
 TEST(AlgorithmHost, AStackOverflowWithWindowsBecomesTheFault) {
-  struct Recursive : VacuumAlgorithm {
-    void execute(aula::vacuum::VacuumApi&) override { result = recurse(1); }
-    int result = 0;
-  };
   Motors motors(1.0, 1.0);
-  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", {{"recursive", [](uint64_t) { return std::make_unique<Recursive>(); }}},
-                                      "recursive", motors, 5);
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", AULA_PLUGIN_STACK_OVERFLOW, motors, 5);
   host.containHangs();
   auto devices = std::make_shared<Devices>();
   EXPECT_FALSE(host.call(1, "execute()", [devices](VacuumAlgorithm& a) { a.execute(devices->api); }));

@@ -38,7 +38,7 @@ int gradeSubmissions(const cli::Arguments& args) {
 
 cli::Command grade() {
   const grade::SimilarityRules defaults;  // the similarity rules' defaults are declared once, there
-  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp) x world x seed, headless");
+  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py) x world x seed, headless");
   c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark", false, true},
                    {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
   c.takes_settings = true;

@@ -6,6 +6,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/grade/run_page.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/lcm/udpm_receiver.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/sandbox/sandbox.hpp>
 #include <aula/supervision/confinement.hpp>
@@ -165,7 +166,7 @@ sandbox::Confinement confinementOf(const Exercise& ex, const RunSettings& run, s
   limits.processes = component.getInt("Component.Sandbox.Processes");
   limits.file_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.FileSize") * (1 << 20));
   const std::string algorithm = component.getString(ex.section + ".Algorithm");
-  const auto files = supervision::componentFiles(binDir() + "/" + ex.component, run.cfg_path, run.world, algorithm);
+  const auto files = supervision::componentFiles(binDir() + "/" + ex.component, ex.name, run.cfg_path, run.world, algorithm);
   sandbox::Confinement confinement = supervision::componentConfinement(files, limits);
   // The one algorithm the sandboxed component may run, in a file it cannot change.
   confinement.read_only_at.emplace_back(graded_file.write(algorithm + "\n"), sandbox::kGradedAlgorithmFile);
@@ -187,6 +188,11 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
                                                                  : 0;
   s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
   if (s.sandbox) s.confinement = confinementOf(ex, run, graded_file);
+  if (isolation == "full") {  // its own network: a datagram to any other port went nowhere, and is flagged
+    config::CommandLine url;
+    if (!lcm_url.empty()) url.options["lcm-url"] = lcm_url;
+    s.watched_lcm_port = lcmbus::parseUdpmUrl(lcmbus::resolveUrl(url, run.referee())).port;
+  }
   s.has_referee = ex.referee_settings != nullptr;
   // A graded run's key, for the simulator and the referee only (never the component, which runs
   // the student's code), and the recorder that signs the log with it.

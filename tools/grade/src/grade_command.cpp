@@ -182,7 +182,16 @@ int collectGrades(const std::string& dir) {
   if (dir.empty() || !fs::is_directory(fs::path(dir) / "runs")) {
     throw ConfigError("aula grade --collect=" + dir + ": no runs/ folder there (the --out of aula grade)");
   }
-  printGrades(collect(dir), dir);
+  // The class is compared as the grade would have (its manifest keeps the folders and rules).
+  const fs::path manifest_path = fs::path(dir) / "manifest.json";
+  if (!fs::exists(manifest_path)) {
+    printGrades(collect(dir), dir);
+    return 0;
+  }
+  const Manifest manifest = Manifest::load(manifest_path.string());
+  const bool similarity = manifest.similarity_rules.has_value();
+  printGrades(collect(dir, manifest.submissions, manifest.exercise, manifest.similarity_rules.value_or(SimilarityRules{})), dir);
+  if (similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", dir.c_str());
   return 0;
 }
 

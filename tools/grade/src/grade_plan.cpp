@@ -190,6 +190,10 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
   Manifest m;
   m.exercise = request.exercise;
   m.out_dir = request.out_dir;
+  if (request.similarity) {  // for a later `aula grade --collect` (after Slurm, after a full disk)
+    m.submissions = request.submissions;
+    m.similarity_rules = request.similarity_rules;
+  }
   // Each run on its own port, so runs at once never hear each other (a group alone is not
   // enough: engineering.md). A random base keeps two batches on one machine apart too.
   std::random_device random;
@@ -231,70 +235,6 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
     }
   }
   return m;
-}
-
-nlohmann::ordered_json Manifest::toJson() const {
-  nlohmann::ordered_json json;
-  json["exercise"] = exercise;
-  json["out_dir"] = out_dir;
-  json["runs"] = nlohmann::ordered_json::array();
-  for (const PlannedRun& r : runs) {
-    json["runs"].push_back({{"index", r.index},
-                            {"student", r.student},
-                            {"world", r.world_name},
-                            {"world_sha256", r.world_sha256},
-                            {"seed", r.seed},
-                            {"plugin", r.plugin},
-                            {"plugin_sha256", r.plugin_sha256},
-                            {"language", r.language},
-                            {"compile_error", r.compile_error},
-                            {"command", r.argv},
-                            {"result", r.result_path},
-                            {"report", r.report_path},
-                            {"log", r.log_path},
-                            {"wall_limit_s", r.wall_limit_s}});
-  }
-  return json;
-}
-
-Manifest Manifest::fromJson(const nlohmann::json& json) {
-  Manifest m;
-  m.exercise = json.at("exercise").get<std::string>();
-  m.out_dir = json.at("out_dir").get<std::string>();
-  for (const auto& j : json.at("runs")) {
-    PlannedRun r;
-    r.index = j.at("index").get<int>();
-    r.student = j.at("student").get<std::string>();
-    r.world_name = j.at("world").get<std::string>();
-    r.world_sha256 = j.at("world_sha256").get<std::string>();
-    r.seed = j.at("seed").get<long long>();
-    r.plugin = j.at("plugin").get<std::string>();
-    r.plugin_sha256 = j.at("plugin_sha256").get<std::string>();
-    r.compile_error = j.at("compile_error").get<std::string>();
-    r.language = j.value("language", std::string("C++"));
-    r.argv = j.at("command").get<std::vector<std::string>>();
-    r.result_path = j.at("result").get<std::string>();
-    r.report_path = j.at("report").get<std::string>();
-    r.log_path = j.at("log").get<std::string>();
-    r.wall_limit_s = j.at("wall_limit_s").get<double>();
-    m.runs.push_back(r);
-  }
-  return m;
-}
-
-void Manifest::save(const std::string& path) const {
-  fs::create_directories(fs::path(path).parent_path());
-  config::writeFileAtomically(path, toJson().dump(2) + "\n", "the grading manifest");
-}
-
-Manifest Manifest::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot read the manifest");
-  try {
-    return fromJson(nlohmann::json::parse(in));
-  } catch (const nlohmann::json::exception& e) {
-    throw ConfigError(path + ": not an aula grade manifest: " + e.what());
-  }
 }
 
 }  // namespace aula::grade

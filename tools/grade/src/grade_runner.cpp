@@ -171,12 +171,15 @@ std::string failureOf(const nlohmann::json& result) {
 }
 
 std::string tamperingOf(const nlohmann::json& result) {
-  if (!result.contains("tampering") || !result["tampering"].is_object() || result["tampering"].empty()) return "";
   std::string text = "tampering:";
-  for (const auto& [channel, count] : result["tampering"].items()) {
-    text += (text.back() == ':' ? " " : ", ") + channel + " " + count.dump();
+  for (const char* kind : {"tampering", "escape_attempts"}) {
+    if (!result.contains(kind) || !result[kind].is_object()) continue;
+    const std::string prefix = std::string(kind) == "tampering" ? "" : "escape: ";
+    for (const auto& [name, count] : result[kind].items()) {
+      text += (text.back() == ':' ? " " : ", ") + prefix + name + " " + count.dump();
+    }
   }
-  return text;
+  return text == "tampering:" ? "" : text;
 }
 
 bool upToDate(const PlannedRun& run) {

@@ -154,7 +154,7 @@ void writeHead(std::ostringstream& html, const std::vector<StudentGrade>& grades
        << escapeHtml(exercise) << "</title><style>" << kStyle << playerStyle() << "</style></head><body>\n"
        << "<h1>Aula grades: " << escapeHtml(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
        << " runs, " << failed << " failed"
-       << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages the referee refused)" : "")
+       << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages or forbidden system calls, refused)" : "")
        << ". The mark of a student is the median over every world and seed"
        << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escapeHtml(presetsOf(results)))
        << ". Beside it, the median of each raw measure. Open a run to watch it and see where its points went.</p>\n";

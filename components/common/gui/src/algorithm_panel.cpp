@@ -55,8 +55,8 @@ AlgorithmPanel::AlgorithmPanel(const AlgorithmHostBase& host, std::function<bool
 }
 
 void AlgorithmPanel::watchPlugin() {
+  if (!host_.isPlugin()) return;  // a built-in is Aula's own build: nothing of the student's to watch
   const std::string path = host_.pluginPath();
-  if (path.empty()) return;
   const QString file = QString::fromStdString(path);
   const QString folder = QFileInfo(file).absolutePath();
   if (!watcher_.directories().contains(folder)) watcher_.addPath(folder);

@@ -3,6 +3,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 
@@ -31,7 +32,8 @@ std::string TemporaryFile::write(const std::string& content) {
 sandbox::Confinement componentConfinement(const ComponentFiles& files, const sandbox::Limits& limits) {
   sandbox::Confinement c;
   c.limits = limits;
-  c.read_only = {files.program, files.lib_dir, files.cfg};
+  c.read_only = {files.program, files.cfg};
+  c.read_only.insert(c.read_only.end(), files.runtime.begin(), files.runtime.end());
   c.read_only.insert(c.read_only.end(), files.world_inputs.begin(), files.world_inputs.end());
   if (!files.algorithm.empty()) c.read_only.push_back(files.algorithm);
   // config::dataDir() looks for <data>/worlds: there, empty, beside whatever of it is bound.
@@ -42,11 +44,16 @@ sandbox::Confinement componentConfinement(const ComponentFiles& files, const san
   return c;
 }
 
-ComponentFiles componentFiles(const std::string& program, const std::string& cfg, const std::string& world,
-                              const std::string& algorithm) {
+ComponentFiles componentFiles(const std::string& program, const std::string& exercise, const std::string& cfg,
+                              const std::string& world, const std::string& algorithm) {
   ComponentFiles files;
   files.program = program;
-  files.lib_dir = config::libDir();
+  // Aula's runtime, but not the built-in algorithms: a student's plugin must not load a reference.
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(config::libDir(), error)) {
+    if (entry.path().filename() != config::kReferencesFolder) files.runtime.push_back(entry.path().string());
+  }
+  std::sort(files.runtime.begin(), files.runtime.end());
   files.data_dir = config::dataDir();
   files.cfg = fs::absolute(cfg).lexically_normal().string();
   const world::WorldFiles world_files = world::worldFilesOf(world);
@@ -58,6 +65,7 @@ ComponentFiles componentFiles(const std::string& program, const std::string& cfg
   }
   const bool is_path = algorithm.find('/') != std::string::npos || fs::path(algorithm).has_extension();
   if (is_path) files.algorithm = fs::absolute(algorithm).lexically_normal().string();
+  else if (algorithm != "student") files.algorithm = config::builtinAlgorithmPath(exercise, algorithm);
   // A MyAlgorithm.py may import its own modules beside it: its folder (in a graded run, the copy
   // of the submission's .py files and nothing else).
   if (fs::path(files.algorithm).extension() == ".py") files.algorithm = fs::path(files.algorithm).parent_path().string();

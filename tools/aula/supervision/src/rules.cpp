@@ -45,6 +45,8 @@ std::string componentFault(int code, double execute_budget_s) {
   }
   if (code == process::kExitAlgorithmExited) return "the algorithm ended the component (exit() inside execute())";
   if (code == 128 + SIGXFSZ) return "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)";
+  // A forbidden call tried with SIGSYS blocked: the kernel ends the process (forbidden_calls.hpp).
+  if (code == 128 + SIGSYS) return "the algorithm made a system call the sandbox forbids (SIGSYS)";
   if (code > 128) return "component crashed (" + signalName(code) + ")";
   return "";
 }

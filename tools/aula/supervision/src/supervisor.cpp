@@ -8,6 +8,7 @@
 #include <aula/process/signal_watcher.hpp>
 #include <aula/sandbox/sandbox.hpp>
 #include <aula/supervision/capped_output.hpp>
+#include <aula/supervision/escape_watch.hpp>
 #include <aula/supervision/rules.hpp>
 
 #include <chrono>
@@ -59,6 +60,8 @@ class RunSupervisor {
       // The referee had its chance to grade and say why: now everything stops.
       if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
       readSimulatorStatus();
+      readComponentLine();
+      escapes_.poll();
       bool finished = false;
       for (size_t i = 0; i < children_.size(); ++i) {
         if (const auto code = children_[i]->poll()) finished = onExit(i, *code) || finished;
@@ -126,6 +129,7 @@ class RunSupervisor {
     if (status[1] >= 0) close(status[1]);
     if (crash[1] >= 0) close(crash[1]);
     crash_line_ = std::make_unique<process::LinePipe>(crash[0]);
+    if (run_.has_referee) escapes_.tellTo(control_fd_);
     control_fd_ = control[1];
     simulator_status_ = std::make_unique<process::LinePipe>(status[0]);
   }
@@ -176,6 +180,7 @@ class RunSupervisor {
   // simulator's status line): the end of a run is seen when it happens.
   void awaitEvent(const process::SignalWatcher& signals) {
     std::vector<pollfd> watched{{signals.fd(), POLLIN, 0}};
+    if (escapes_.fd() >= 0) watched.push_back({escapes_.fd(), POLLIN, 0});
     if (output_) {
       output_->drain();
       watched.push_back({output_->readFd(), POLLIN, 0});
@@ -184,6 +189,15 @@ class RunSupervisor {
       if (child->exitFd() >= 0 && !child->poll()) watched.push_back({child->exitFd(), POLLIN, 0});
     }
     ::poll(watched.data(), watched.size(), 20);
+  }
+
+  // The component's private line: a crash's one line (kept for its exit), and each system call
+  // its watch refused (sandbox/forbidden_calls.hpp), handed to the referee at once: it flags the run.
+  void readComponentLine() {
+    if (!crash_line_) return;
+    for (const std::string& line : crash_line_->lines()) {
+      if (!escapes_.onComponentLine(line)) crash_text_ = line;
+    }
   }
 
   void readSimulatorStatus() {
@@ -198,7 +212,10 @@ class RunSupervisor {
   // Child `i` exited with `code`: the rules decide (rules.hpp), this carries it out.
   bool onExit(size_t i, int code) {
     if (i == 0) readSimulatorStatus();  // its last words were written before it exited
-    if (run_.has_referee && i == 2) referee_exited_ = true;
+    if (run_.has_referee && i == 2) {
+      referee_exited_ = true;
+      escapes_.tellTo(-1);
+    }
     ExitEvent event;
     event.role = static_cast<Role>(i);
     event.code = code;
@@ -207,8 +224,9 @@ class RunSupervisor {
     event.referee_told = told_referee_;
     event.simulator_ended_run = simulator_ended_run_;
     event.last_child = i + 1 == children_.size();
-    if (i == 1 && crash_line_) {
-      for (const std::string& line : crash_line_->lines()) event.crash_line = line;
+    if (i == 1) {
+      readComponentLine();
+      event.crash_line = crash_text_;
     }
     const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
     const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);
@@ -230,6 +248,7 @@ class RunSupervisor {
 
   // The clients first (they send their last commands and leave lockstep), the simulator last.
   void stopAll() {
+    escapes_.tellTo(-1);
     if (control_fd_ >= 0) close(control_fd_);
     for (auto c = children_.rbegin(); c != children_.rend(); ++c) {
       const int code = (*c)->stop();
@@ -255,6 +274,8 @@ class RunSupervisor {
   int control_fd_ = -1;  // the referee's control pipe, our end
   std::unique_ptr<process::LinePipe> simulator_status_;
   std::unique_ptr<process::LinePipe> crash_line_;  // the component's crash, in the student's lines
+  std::string crash_text_;                         // its last crash line
+  EscapeWatch escapes_{run_.watched_lcm_port};  // what the student's code tried to get out of the run
   int result_ = 0;
   bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
   std::string abort_reason_;

@@ -1,7 +1,7 @@
 #pragma once
-// The component's own algorithms (references and baselines): not part of the student's API (not
-// installed, not exported to plugins: cmake/aula_plugin_exports.list), so a student's plugin cannot
-// reach them.
+// The exercise's own algorithms (references, baselines), each built as a plugin of its own
+// (<lib>/aula/references/libaula_autopark_<name>.so, --algorithm=<name>): not part of the student's API,
+// not installed, and in no component, so a student's plugin cannot reach them (issue 28).
 
 #include <aula/autopark/autopark_algorithm.hpp>
 

@@ -1,9 +1,11 @@
 #pragma once
-// Which algorithm a component runs, and running it with the student's faults contained. One
-// table by name, like the drivers' registry: the exercise's built-ins (references, baselines),
-// "student" (the in-tree template, built as a plugin like any student's), the path of a plugin
-// (.so, built with aula_add_algorithm) or of a student's Python file (.py, run by the exercise's
-// Python host behind the same entry points). Around every call into the algorithm:
+// Which algorithm a component runs, and running it with the student's faults contained. Every
+// algorithm is a plugin, found by name: the exercise's built-ins (references, baselines: NAME is
+// <lib>/aula/references/libaula_<exercise>_NAME.so, a plugin of its own, so that no component
+// contains a reference a student's plugin could call), "student" (the in-tree template, built as a
+// plugin like any student's), the path of a plugin (.so, built with aula_add_algorithm) or of a
+// student's Python file (.py, run by the exercise's Python host behind the same entry points).
+// Around every call into the algorithm:
 // - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
 //   with windows (containHangs), so is a crash (SIGSEGV...) inside a C++ algorithm's call
 //   (crash_report.hpp: its text names the student's line); headless, a crash ends the process;
@@ -23,7 +25,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,10 +40,11 @@ class AlgorithmHostBase {
   static bool namesPlugin(const std::string& choice);
 
   const std::string& choice() const { return choice_; }
-  // For reports: a built-in's name, or the plugin's file name ("libmy_algorithm.so").
+  // For reports: a built-in's name ("reference", "student"), or the plugin's file name ("libmy_algorithm.so").
   std::string name() const;
-  bool isPlugin() const { return !plugin_path_.empty(); }
-  // The plugin's file ("" for a built-in), kept when a reload failed: the window watches it.
+  // A student's file (or the in-tree template) rather than a built-in: Reload offers its new build.
+  bool isPlugin() const { return !plugin_path_.empty() && !builtin_; }
+  // The plugin's file, kept when a reload failed: the window watches it.
   const std::string& pluginPath() const { return plugin_path_; }
   // What runs, for windows and logs: "reference", "libmy_algorithm.so (built 2026-11-23 17:04:12)"
   // or "MyAlgorithm.py (saved 2026-11-23 17:04:12)".
@@ -80,6 +82,7 @@ class AlgorithmHostBase {
   std::string program_, exercise_, choice_;
   Motors& motors_;
   std::string plugin_path_;
+  bool builtin_ = false;  // one of the exercise's built-ins (its own plugin under references/)
   std::unique_ptr<PluginLibrary> plugin_;
   int64_t refused_mtime_ns_ = -1;  // the build a reload could not use: not offered again
   std::string fault_;
@@ -98,14 +101,10 @@ class AlgorithmHostBase {
 template <class Algorithm>
 class AlgorithmHost : public AlgorithmHostBase {
  public:
-  using Factory = std::function<std::unique_ptr<Algorithm>(uint64_t seed)>;
-
   // Throws PluginError (exit 2) for an unknown name or a plugin that cannot be used, at once.
-  AlgorithmHost(std::string program, std::string exercise, std::map<std::string, Factory> builtins,
-                std::string choice, Motors& motors, double execute_budget_s)
-      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, execute_budget_s),
-        builtins_(std::move(builtins)) {
-    if (builtins_.count(choice_) == 0) loadPlugin();
+  AlgorithmHost(std::string program, std::string exercise, std::string choice, Motors& motors, double execute_budget_s)
+      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, execute_budget_s) {
+    loadPlugin();
   }
   ~AlgorithmHost() { dropAlgorithm(); }  // the algorithm's code lives in the plugin
 
@@ -119,14 +118,13 @@ class AlgorithmHost : public AlgorithmHostBase {
     });
   }
 
-  // Drops the algorithm and, for a plugin, loads the file again (a new build). The next call
-  // creates a fresh algorithm. False when the new file cannot be used: the fault says why, and
-  // nothing runs (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
+  // Drops the algorithm and loads the plugin's file again (a new build). The next call creates a
+  // fresh algorithm. False when the new file cannot be used: the fault says why, and nothing runs
+  // (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
   bool reload() {
     if (hung()) return false;  // the abandoned call may still be running in the algorithm
     dropAlgorithm();
     fault_.clear();
-    if (plugin_ == nullptr && builtins_.count(choice_) != 0) return true;
     return reloadPlugin();
   }
 
@@ -137,14 +135,12 @@ class AlgorithmHost : public AlgorithmHostBase {
     crashed_ = false;
   }
   std::unique_ptr<Algorithm> create(uint64_t seed) {
-    const auto builtin = builtins_.find(choice_);
-    if (builtin == builtins_.end() && plugin_ == nullptr) throw std::runtime_error("no algorithm is loaded");
-    auto made = builtin != builtins_.end() ? builtin->second(seed) : plugin_->make<Algorithm>(seed);
+    if (plugin_ == nullptr) throw std::runtime_error("no algorithm is loaded");
+    auto made = plugin_->make<Algorithm>(seed);
     if (!made) throw std::runtime_error("the algorithm's factory returned no algorithm");
     return made;
   }
 
-  std::map<std::string, Factory> builtins_;
   std::unique_ptr<Algorithm> algorithm_;
 };
 

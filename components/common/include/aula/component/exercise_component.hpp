@@ -33,15 +33,14 @@ template <class Algorithm>
 class ExerciseComponent {
  public:
   using Host = AlgorithmHost<Algorithm>;
-  using Builtins = std::map<std::string, typename Host::Factory>;
 
   // `exercise`: its name in the settings' table of exercises ("vacuum"), which gives the keys'
   // section ("Vacuum") and the program's name ("vacuum-cleaner", also its lockstep client's).
   // `cfg`: the effective settings; the robot and its channels come from `world`. Throws
   // PluginError (exit 2) for an algorithm that cannot be used, WorldError for a missing robot.
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
-                    const std::string& exercise, Builtins builtins)
-      : ExerciseComponent(bus, cfg, world, settings::requireExercise(exercise), std::move(builtins)) {}
+                    const std::string& exercise)
+      : ExerciseComponent(bus, cfg, world, settings::requireExercise(exercise)) {}
   virtual ~ExerciseComponent() = default;
   ExerciseComponent(const ExerciseComponent&) = delete;
   ExerciseComponent& operator=(const ExerciseComponent&) = delete;
@@ -124,7 +123,7 @@ class ExerciseComponent {
 
  private:
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
-                    const settings::Exercise& names, Builtins builtins)
+                    const settings::Exercise& names)
       : bus_(bus), algorithm_name_(cfg.getString(names.section + ".Algorithm")) {
     const std::string& p = names.section;
     const world::RobotSpec& robot = world::requireRobot(world, cfg.getString(p + ".Robot"));
@@ -133,7 +132,7 @@ class ExerciseComponent {
     pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
     motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
                                             cfg.getDouble(p + ".MaxW"));
-    host_ = std::make_unique<Host>(names.component, names.name, std::move(builtins), algorithm_name_, *motors_,
+    host_ = std::make_unique<Host>(names.component, names.name, algorithm_name_, *motors_,
                                    cfg.getDouble("Component.ExecuteBudget"));
     episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.name, *host_);
     host_->setOnHung([this] {  // the stuck call may still read these: never written again

@@ -64,6 +64,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
       if (line.rfind("fault ", 0) == 0) node.algorithmFailed(line.substr(6));
       if (line.rfind("abort ", 0) == 0) node.abort(line.substr(6));
       if (line == "discard") discard = true;
+      if (line.rfind("escape ", 0) == 0) node.escapeAttempt(line.substr(7));
     }
   };
   // Alone, a peer gone ends the run (graded so far); true once the run cannot go on.

@@ -12,6 +12,11 @@ std::string dataDir();
 // Aula's own modules and plugins: <folder of the executable>/../lib/aula (a build tree has one
 // too). Never throws: without /proc/self/exe, relative to the current folder.
 std::string libDir();
+// An exercise's built-in algorithm (a reference, a baseline: `--algorithm=NAME`), a plugin of its
+// own: <libDir>/references/libaula_<exercise>_<name>.so. A graded run's sandbox binds only the one
+// it runs (the references folder holds every exercise's references).
+std::string builtinAlgorithmPath(const std::string& exercise, const std::string& name);
+constexpr const char* kReferencesFolder = "references";  // under libDir()
 // The user's documentation (grading.md, worlds.md, exercises/): <folder of the executable>/../share/doc/aula
 // (installed by the .deb; a build tree links it to the source's docs/). Never throws.
 std::string docDir();

@@ -43,6 +43,9 @@ class RefereeNode {
   void abort(const std::string& reason);
   // The launcher tells the algorithm's fault the component could not (it crashed: the line).
   void algorithmFailed(const std::string& fault);
+  // The launcher's "escape WHAT": the student's code tried to get out of the run (TruthGate's
+  // escapeAttempt). Not graded; counted, traced once per kind, and the run is flagged.
+  void escapeAttempt(const std::string& what);
   bool aborted() const { return !outcome_.aborted().empty(); }
   Report report() const;
   std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal

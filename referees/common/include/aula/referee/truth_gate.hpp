@@ -50,7 +50,14 @@ class TruthGate {
   // first one described: the caller then ignores it.
   bool contradictsEpisode(const std::string& channel, const aula::episode_t& msg);
 
-  bool tampered() const { return !tampering().empty(); }
+  // What the student's code tried to get out of the run, as the launcher saw it ("escape WHAT"):
+  // a system call only an escape needs, which the graded component's watch refused
+  // (sandbox/forbidden_calls.hpp: "mount"), or a datagram sent outside the run's LCM channel
+  // ("datagram to port 9"). Counted by what; the run is flagged.
+  void escapeAttempt(const std::string& what) { ++escapes_[what]; }
+  const std::map<std::string, long long>& escapeAttempts() const { return escapes_; }
+
+  bool tampered() const { return !tampering().empty() || !escapes_.empty(); }
   // Forged or refused messages by channel (the referee's and the simulator's counts together).
   std::map<std::string, long long> tampering() const;
   const std::map<std::string, long long>& gaps() const { return gaps_; }
@@ -63,7 +70,7 @@ class TruthGate {
 
   std::optional<auth::Signer> signer_;  // the run's key, prepared
   std::map<std::string, int64_t> last_seq_;
-  std::map<std::string, long long> tampering_, gaps_;
+  std::map<std::string, long long> tampering_, gaps_, escapes_;
   long long simulator_rejected_controls_ = 0;
   std::optional<aula::episode_t> first_episode_;
 };

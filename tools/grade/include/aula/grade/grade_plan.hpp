@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,6 +86,10 @@ struct PlannedRun {
 struct Manifest {
   std::string exercise, out_dir;
   std::vector<PlannedRun> runs;
+  // With similarity on: the class's folders and what flags a pair (`aula grade --collect` compares
+  // the class as the grade would have).
+  std::vector<std::string> submissions;
+  std::optional<SimilarityRules> similarity_rules;
 
   nlohmann::ordered_json toJson() const;
   static Manifest fromJson(const nlohmann::json& json);

@@ -1,0 +1,28 @@
+#pragma once
+// Inside a graded run's sandbox, the component's own watch on what the student's code tries: the
+// system calls that only an escape needs (mount, umount2, unshare, setns, pivot_root, chroot,
+// ptrace, process_vm_readv/writev, kernel modules, reboot, bpf...) are refused with EPERM, as
+// the sandbox refuses them anyway, and each try is said on the launcher's private line
+// ("refused mount\n"), so that the run is flagged (the referee's "refused_system_calls").
+//
+// It is a seccomp filter whose action is SIGSYS (SECCOMP_RET_TRAP), installed before the
+// student's plugin is loaded; the handler counts nothing itself: it writes the line and makes the
+// call return -EPERM. The same filter keeps the student from silencing it: replacing the SIGSYS
+// handler (rt_sigaction) and closing or replacing the line's descriptor (close, dup2, dup3,
+// close_range) are refused. A student who blocks SIGSYS and tries anyway is killed by it (the
+// kernel's rule for a blocked forced signal): "the algorithm made a system call the sandbox
+// forbids (SIGSYS)".
+
+#include <string>
+
+namespace aula::sandbox {
+
+// Installs the handler and the filter in this process (every thread); `line_fd` is the
+// launcher's private line. Returns "" when done, else why not (no seccomp here, an architecture
+// the handler does not know): the caller says so and goes on, the sandbox's own refusals stand.
+std::string watchForbiddenCalls(int line_fd);
+
+// The line the handler writes for a forbidden call: "refused " + the call's name.
+constexpr const char* kRefusedPrefix = "refused ";
+
+}  // namespace aula::sandbox
