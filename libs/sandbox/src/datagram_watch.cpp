@@ -23,7 +23,7 @@ std::vector<sock_filter> filterFor(int lcm_port) {
   const auto port = static_cast<uint32_t>(lcm_port);
   return {
       {BPF_LD | BPF_B | BPF_ABS, 0, 0, static_cast<uint32_t>(SKF_AD_OFF + SKF_AD_PKTTYPE)},  // 0: A = pkttype
-      {BPF_JMP | BPF_JEQ | BPF_K, 0, 8, PACKET_OUTGOING},  // 1: seen once, leaving (not again, arriving)
+      {BPF_JMP | BPF_JEQ | BPF_K, 8, 0, PACKET_OUTGOING},  // 1: counted arriving only (lo shows it once so)
       {BPF_LD | BPF_B | BPF_ABS, 0, 0, 9},                 // 2: A = protocol
       {BPF_JMP | BPF_JEQ | BPF_K, 0, 6, IPPROTO_UDP},      // 3
       {BPF_LD | BPF_H | BPF_ABS, 0, 0, 6},                 // 4: A = flags and fragment offset

@@ -129,8 +129,8 @@ class RunSupervisor {
     if (status[1] >= 0) close(status[1]);
     if (crash[1] >= 0) close(crash[1]);
     crash_line_ = std::make_unique<process::LinePipe>(crash[0]);
-    if (run_.has_referee) escapes_.tellTo(control_fd_);
     control_fd_ = control[1];
+    if (run_.has_referee) escapes_.tellTo(control_fd_);
     simulator_status_ = std::make_unique<process::LinePipe>(status[0]);
   }
 

@@ -5,8 +5,9 @@
 // run or a listener outside, and the run is flagged for it.
 //
 // A packet socket on the namespace's loopback (the launcher is root in the namespace's user
-// namespace, or root), with a kernel filter that keeps only outgoing UDP datagrams (first
-// fragments) whose destination port is not the run's: the run's own LCM traffic never wakes the
+// namespace, or root), with a kernel filter that keeps only arriving UDP datagrams (first
+// fragments; the loopback shows each datagram, unicast or multicast, once as arriving) whose
+// destination port is not the run's: the run's own LCM traffic never wakes the
 // launcher.
 
 #include <string>

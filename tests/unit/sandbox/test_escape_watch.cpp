@@ -1,8 +1,10 @@
-// The graded component's watch on forbidden system calls (sandbox/forbidden_calls.hpp), in a
-// child process of its own (a seccomp filter is for a process's life): a forbidden call returns
+// What a graded run's launcher sees of the student's tries to get out of the run: the graded
+// component's watch on forbidden system calls (sandbox/forbidden_calls.hpp), in a child process of its own (a seccomp filter is for a process's life): a forbidden call returns
 // EPERM and is said on the line; the watch's handler and line cannot be taken away; a call it
 // does not watch goes through.
+#include <aula/sandbox/datagram_watch.hpp>
 #include <aula/sandbox/forbidden_calls.hpp>
+#include <aula/sandbox/sandbox.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,7 +12,11 @@
 #include <csignal>
 #include <string>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
 #include <sys/mount.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <sched.h>
 #include <unistd.h>
@@ -74,4 +80,48 @@ TEST(ForbiddenCalls, TheWatchCannotBeSilenced) {
     return 0;
   });
   EXPECT_EQ(out, "refused umount2\n|ok");
+}
+
+// In a private network, a datagram to any port but the run's is seen (unicast and multicast),
+// once each; the run's own traffic is not.
+TEST(DatagramWatch, SeesDatagramsToOtherPortsOnly) {
+  int seen[2];
+  ASSERT_EQ(::pipe(seen), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {  // a namespace is for a process's life: the child's, which has no thread
+    ::close(seen[0]);
+    const std::string why = aula::sandbox::enterPrivateNetwork();
+    if (!why.empty()) {
+      const std::string text = "no private network: " + why;
+      (void)!::write(seen[1], text.data(), text.size());
+      ::_exit(0);
+    }
+    aula::sandbox::DatagramWatch watch(7667);
+    const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    for (const char* address : {"127.0.0.1", "239.255.76.67"}) {
+      for (const uint16_t port : {uint16_t{7667}, uint16_t{9}}) {
+        sockaddr_in to{};
+        to.sin_family = AF_INET;
+        to.sin_port = htons(port);
+        ::inet_pton(AF_INET, address, &to.sin_addr);
+        (void)!::sendto(fd, "x", 1, 0, reinterpret_cast<sockaddr*>(&to), sizeof to);
+      }
+    }
+    pollfd ready{watch.fd(), POLLIN, 0};
+    ::poll(&ready, 1, 500);
+    ::usleep(50000);  // both arrived
+    std::string text;
+    for (const std::string& what : watch.seen()) text += what + "\n";
+    (void)!::write(seen[1], text.data(), text.size());
+    ::_exit(0);
+  }
+  ::close(seen[1]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  std::string out;
+  char buffer[512];
+  for (ssize_t n; (n = ::read(seen[0], buffer, sizeof buffer)) > 0;) out.append(buffer, n);
+  ::close(seen[0]);
+  if (out.rfind("no private network", 0) == 0) GTEST_SKIP() << out;
+  EXPECT_EQ(out, "datagram to 127.0.0.1:9\ndatagram to 239.255.76.67:9\n");
 }
