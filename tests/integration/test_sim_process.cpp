@@ -20,6 +20,8 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 using namespace std::chrono_literals;
 using aula::testing::readFile;
 using aula::process::ChildProcess;
@@ -110,6 +112,7 @@ TEST(SimProcess, LockstepAdvancesOnlyWhenTheClientAcks) {
   reg.client = "manual";
   reg.period_us = 100000;
   reg.leave = false;
+  reg.pid = ::getpid();  // this process: alive as long as the test (an unset pid named a process that may not exist)
   const auto deadline = std::chrono::steady_clock::now() + 10s;
   while (!listed && std::chrono::steady_clock::now() < deadline) {
     bus->publish(aula::lcmbus::kLockstepRegisterChannel, &reg);

@@ -3,7 +3,8 @@
 
 Usage:
   make_house.py --out FILE.world [--seed N] [--rooms-x N] [--rooms-y N] [--room-size M]
-                [--door-width M] [--furniture N] [--start X,Y,YAW] [--step S | --no-physics]
+                [--door-width M] [--furniture N] [--start X,Y,YAW | --start-room I,J[,YAW]]
+                [--step S | --no-physics]
 
   --out FILE.world  where to write ("-": standard output); required
   --seed N          seeds room sizes, doors and furniture (default 1)
@@ -17,6 +18,9 @@ Usage:
                     tries is left out (the header comment says how many were placed)
   --start X,Y,YAW   the roomba's pose (yaw in rad); default: the centre of room (0, 0) (the
                     south-west one), yaw 0; its 0.165 m disc must clear every wall by 0.085 m
+  --start-room I,J[,YAW]
+                    the roomba at the centre of room (I, J) (column I from the west, row J from
+                    the south, from 0), heading YAW (rad, default 0); not with --start
   --step S          writes <physics type="dart"><max_step_size>S</max_step_size></physics>
                     (S in [0.0001, 0.05] s, what aula-sim accepts); without it no <physics> is
                     written (the simulator's configured step applies)
@@ -45,6 +49,7 @@ parameters and seed always give the same bytes. A bad parameter: one line on std
 exit status 2. The coverage referee and the vacuum component read a map (Vacuum.Map): make one
 for a generated house with aula-mapgen (like worlds/vacuum.world's in tools/mapgen).
 """
+import argparse
 import math
 import os
 import random
@@ -99,7 +104,13 @@ class House:
         self.ys = self.lines(depths)
         self.doors = self.choose_doors()
         self.walls = self.build_walls()
-        self.start = a.start if a.start is not None else (self.room_centre(0, 0) + (0.0,))
+        if a.start is not None:
+            self.start = a.start
+        else:
+            i, j, yaw = a.start_room if a.start_room is not None else (0, 0, 0.0)
+            if not (0 <= i < nx and 0 <= j < ny):
+                raise UsageError(f"--start-room {i},{j}: the house has rooms 0..{nx - 1} x 0..{ny - 1}")
+            self.start = self.room_centre(i, j) + (yaw,)
         self.check_start()
         self.furniture, self.placed = self.place_furniture()
 
@@ -351,7 +362,19 @@ class Reach:
 # ---- command line -------------------------------------------------------------------------
 
 VALUE_OPTIONS = ("--out", "--seed", "--rooms-x", "--rooms-y", "--room-size", "--door-width", "--furniture",
-                 "--start", "--step")
+                 "--start", "--start-room", "--step")
+
+
+def parse_room(text):
+    """argparse type: "I,J" or "I,J,YAW" -> (i, j, yaw)."""
+    parts = text.split(",")
+    try:
+        room = (int(parts[0]), int(parts[1]), float(parts[2]) if len(parts) == 3 else 0.0)
+    except (ValueError, IndexError):
+        room = None
+    if room is None or len(parts) not in (2, 3) or not math.isfinite(room[2]):
+        raise argparse.ArgumentTypeError(f"expected I,J or I,J,YAW (whole numbers, then a number), got {text!r}")
+    return room
 
 
 def parse_args(argv):
@@ -363,7 +386,9 @@ def parse_args(argv):
     p.add_argument("--room-size", type=finite, default=3.2)
     p.add_argument("--door-width", type=finite, default=0.9)
     p.add_argument("--furniture", type=int, default=2)
-    p.add_argument("--start", type=parse_pose)
+    start = p.add_mutually_exclusive_group()
+    start.add_argument("--start", type=parse_pose)
+    start.add_argument("--start-room", type=parse_room)
     physics = p.add_mutually_exclusive_group()
     physics.add_argument("--step", type=finite)
     physics.add_argument("--no-physics", action="store_true")

@@ -21,6 +21,7 @@ int gradeSubmissions(const cli::Arguments& args) {
   options.submissions.assign(args.positional().begin() + 1, args.positional().end());
   options.worlds = args.text("worlds");
   options.seeds = args.text("seeds");
+  options.calibration_seeds = args.text("calibration-seeds");
   options.jobs = args.given("jobs") ? args.integer("jobs") : 0;
   options.out_dir = args.text("out");
   options.engine = args.text("engine");
@@ -42,8 +43,11 @@ cli::Command grade() {
   c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark", false, true},
                    {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
   c.takes_settings = true;
-  c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own)"))
+  c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own); "
+                                 "generate:house:5,seed=7 (street for autopark) writes held-out worlds into OUT/worlds"))
       .text("seeds", "1", "the seeds: 1-5, 1,4,9 or 2-3,7")
+      .text("calibration-seeds", "1-10", "the seeds each world without a calibration file is calibrated on (the "
+                                         "baseline's and the reference's runs, cached in OUT/calibrations); off: none")
       .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
       .text("out", "grading", "the folder of grades.csv, report.html, runs/ and build/ (run again to resume)")
       .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")

@@ -238,7 +238,7 @@ int runExercise(const Arguments& args) {
   // Port 0 (`aula grade`'s runs): a port the OS hands out, now, for all three processes.
   const std::string lcm_url = args.given("lcm-url") ? lcmbus::withFreePort(args.text("lcm-url")) : "";
   const std::string cfg = args.given("config") ? args.text("config") : config::dataPath(ex.config_file);
-  const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless));
+  const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless), args.given("calibration") ? args.text("calibration") : "");
   supervision::TemporaryFile graded_file;
   const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation, graded_file);
   std::unique_ptr<supervision::RunRecorder> recorder;
@@ -275,7 +275,8 @@ cli::Command declare() {
                              "past it the run ends, graded so far, exit 1", true))
       .add(cli::valueOption("lcm-url", "URL", "the run's bus (udpm://GROUP:PORT?ttl=0); port 0: a free one from the OS"))
       .add(cli::valueOption("cpu", "N|auto|any", "the CPU a headless run's processes share (default: auto, the one `aula` starts on)"))
-      .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"));
+      .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"))
+      .add(cli::valueOption("calibration", "FILE", "the world's calibration, with the default rubric (default: WORLD.rubric.cfg beside it)"));
   c.run = runExercise;
   return c;
 }

@@ -55,17 +55,25 @@ void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, const world::WorldSpe
 // With the default rubric, the world's calibration file (W.rubric.cfg, `aula calibrate`) sets the
 // rubric settings the .cfg and the command line leave alone, for every process that reads them;
 // the referee is told which file it was, for its report.
-void applyCalibration(const settings::Exercise& ex, const Config& file, const world::WorldSpec& world, RunSettings& run) {
+void applyCalibration(const settings::Exercise& ex, const Config& file, const world::WorldSpec& world, RunSettings& run,
+                      const std::string& calibration_file) {
   const std::string preset_key = ex.section + ".Referee.Rubric";
   if (ex.referee_settings == nullptr || !ex.referee_settings->declares(preset_key) ||
       run.referee().getString(preset_key) != "default") {
+    if (!calibration_file.empty()) {
+      throw config::ConfigError("--calibration=" + calibration_file + ": a calibration applies to the default rubric only" +
+                                (ex.referee_settings != nullptr && ex.referee_settings->declares(preset_key)
+                                     ? " (" + preset_key + " = " + run.referee().getString(preset_key) + ")"
+                                     : " (" + ex.name + " has no rubric to calibrate)"));
+    }
     return;
   }
-  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256);
+  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256, calibration_file);
   if (calibrated.keys().empty()) return;
   const std::string calibration_key = ex.section + ".Referee.Calibration";
   if (ex.referee_settings->declares(calibration_key)) {
-    const std::string file_name = std::filesystem::path(grade::calibrationPathOf(run.world)).filename().string();
+    const std::string file_name =
+        std::filesystem::path(calibration_file.empty() ? grade::calibrationPathOf(run.world) : calibration_file).filename().string();
     calibrated.set(calibration_key, file_name, "the world's calibration");  // a report the same on every machine
   }
   for (const std::string& key : calibrated.keys()) {
@@ -119,7 +127,8 @@ const world::RobotSpec* exerciseRobot(const settings::Exercise& ex, const world:
   return only;
 }
 
-RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const Config& overrides) {
+RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const Config& overrides,
+                            const std::string& calibration_file) {
   RunSettings run;
   run.cfg_path = cfg_path;
   run.overrides = overrides;
@@ -149,7 +158,7 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
   const world::WorldSpec world = world::loadWorld(run.world);  // read once for the checks below
   adoptTheWorldsOnlyRobot(ex, world, run);
-  applyCalibration(ex, file, world, run);
+  applyCalibration(ex, file, world, run, calibration_file);
   checkPointsOnTheMap(ex, run.component(), world);
   return run;
 }

@@ -26,7 +26,10 @@ struct RunSettings {
 
 // `overrides`: the --Key=value settings, plus what the command's options stand for (its caller
 // sets "Vacuum.Algorithm" for --algorithm, with the origin "command line --algorithm").
-RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const config::Config& overrides);
+// `calibration_file`: the world's calibration to apply with the default rubric (`--calibration`,
+// what `aula grade` gives each run), instead of WORLD.rubric.cfg beside the world.
+RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg_path, const config::Config& overrides,
+                            const std::string& calibration_file = "");
 
 // Points the component will drive to (free_point settings) must be free floor of `world`'s map:
 // a ConfigError naming the setting and the reason otherwise (the component checks what needs its

@@ -102,7 +102,11 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   runs.seeds = request.seeds;
   runs.jobs = request.jobs;
   runs.out_dir = request.out_dir;
-  runs.overrides = {{ex->section + ".Referee.Rubric", "fixed"}};  // an older calibration plays no part
+  const std::string rubric_key = ex->section + ".Referee.Rubric";
+  for (const auto& setting : request.overrides) {
+    if (setting.first != rubric_key) runs.overrides.push_back(setting);
+  }
+  runs.overrides.emplace_back(rubric_key, "fixed");  // an older calibration plays no part
   Submission b, a;
   b.student = "baseline";
   b.plugin = baseline;
@@ -153,11 +157,15 @@ std::string calibrationPathOf(const std::string& world_path) {
   return (fs::path(world_path).parent_path() / (fs::path(world_path).stem().string() + ".rubric.cfg")).string();
 }
 
-config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256) {
+config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256,
+                               const std::string& file_given) {
   config::Config rubric;
-  const std::string path = calibrationPathOf(world_path);
+  const std::string path = file_given.empty() ? calibrationPathOf(world_path) : file_given;
   std::error_code error;
-  if (!fs::is_regular_file(path, error)) return rubric;
+  if (!fs::is_regular_file(path, error)) {
+    if (file_given.empty()) return rubric;
+    throw ConfigError("--calibration=" + path + ": no such file");
+  }
   const config::Config file = config::Config::fromFile(path);
   const auto spec = calibrationSpecOf(exercise);
   const std::string of = file.getString("Calibration.Exercise", "");

@@ -1,5 +1,7 @@
 #include "aula/grade/grade_command.hpp"
 
+#include <aula/grade/grade_worlds.hpp>
+
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/grades.hpp>
@@ -126,8 +128,10 @@ int reportStopped(const GradeStopped& stop, const Manifest& manifest) {
 
 }  // namespace
 
-int gradeClass(const GradeRequest& request, const std::string& bin_dir) {
+int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
+  GradeRequest request = asked;
   fs::create_directories(request.out_dir);
+  prepareWorlds(request, bin_dir);  // generated and calibrated before any student's run
   const std::string prefix = fs::path(bin_dir).parent_path().string();
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
             << std::flush;

@@ -228,6 +228,8 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
                     "--lcm-url=udpm://239.255.76.67:0?ttl=0"};
           if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");
           for (const auto& [key, value] : request.overrides) r.argv.push_back("--" + key + "=" + value);
+          const auto calibration = request.calibrations.find(world_path);
+          if (calibration != request.calibrations.end()) r.argv.push_back("--calibration=" + calibration->second);
         }
         m.runs.push_back(r);
         ++index;

@@ -93,8 +93,20 @@ GradeRequest parseRequest(const GradeOptions& options) {
     }
     r.submissions.push_back(folder.string());
   }
-  for (const std::string& w : splitList(options.worlds)) r.worlds.push_back(config::resolveWorldPath(w, "--worlds"));
-  if (r.worlds.empty()) r.worlds.push_back(defaultWorld(*ex));
+  const std::vector<std::string> worlds = splitList(options.worlds);
+  for (size_t i = 0; i < worlds.size(); ++i) {
+    if (isGenerateItem(worlds[i])) {  // "generate:house:5" and, maybe, its "seed=7"
+      const bool seeded = i + 1 < worlds.size() && worlds[i + 1].rfind("seed=", 0) == 0;
+      r.generate.push_back(parseGenerate(worlds[i], seeded ? worlds[i + 1] : "", r.exercise));
+      i += seeded ? 1 : 0;
+    } else {
+      r.worlds.push_back(config::resolveWorldPath(worlds[i], "--worlds"));
+    }
+  }
+  if (r.worlds.empty() && r.generate.empty()) r.worlds.push_back(defaultWorld(*ex));
+  if (options.calibration_seeds != "off" && !options.calibration_seeds.empty()) {
+    r.calibration_seeds = parseSeeds(options.calibration_seeds);
+  }
   r.seeds = parseSeeds(options.seeds);
   r.jobs = options.jobs > 0 ? static_cast<int>(options.jobs) : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   r.wall_limit_s = options.wall_limit_s;

@@ -1,5 +1,7 @@
 #include "aula/grade/report_html.hpp"
 
+#include <aula/grade/calibration.hpp>
+
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/run_page.hpp>
 
@@ -43,8 +45,24 @@ std::string presetsOf(const std::vector<nlohmann::json>& results) {
   return out;
 }
 
-// Marks in ten bins of one mark, as an SVG bar chart labelled `what`.
-std::string histogramSvg(const std::vector<double>& marks, const std::string& what) {
+// A world's calibration as its runs' reports name it: the file, and the measure's values that are
+// worth a 5 (the baseline's median) and a 10 (the anchor's), as (mark, label) lines.
+std::pair<std::string, std::vector<std::pair<double, std::string>>> calibrationOf(const nlohmann::json& r) {
+  std::pair<std::string, std::vector<std::pair<double, std::string>>> c;
+  const auto spec = calibrationSpecOf(r.value("exercise", std::string()));
+  if (!spec || !r.contains("rubric") || !r["rubric"].contains("calibration")) return c;
+  c.first = r["rubric"]["calibration"].get<std::string>();
+  const char* roles[] = {"5: the baseline's median, ", "10: the anchor's median, "};
+  for (size_t i = 0; i < 2 && i < spec->rubric_keys.size(); ++i) {
+    const auto& value = r["rubric"].value(spec->rubric_keys[i], nlohmann::json());
+    if (value.is_number()) c.second.emplace_back(i == 0 ? 5.0 : 10.0, roles[i] + spec->measure + " " + twoDecimals(value.get<double>()));
+  }
+  return c;
+}
+
+// Marks in ten bins of one mark, as an SVG bar chart labelled `what`, with dashed `lines` at marks.
+std::string histogramSvg(const std::vector<double>& marks, const std::string& what,
+                         const std::vector<std::pair<double, std::string>>& lines = {}) {
   std::array<int, 10> bins{};
   for (double mark : marks) bins[static_cast<size_t>(std::clamp(static_cast<int>(mark), 0, 9))]++;
   int top = 1;
@@ -59,6 +77,12 @@ std::string histogramSvg(const std::vector<double>& marks, const std::string& wh
         << "' fill='#3b7dd8'/>";
     if (bins[i] > 0) svg << "<text x='" << x + 17 << "' y='" << base - bar_h - 4 << "' text-anchor='middle'>" << bins[i] << "</text>";
     svg << "<text x='" << x + 17 << "' y='" << base + 16 << "' text-anchor='middle'>" << i << "-" << i + 1 << "</text>";
+  }
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const double x = 17 + lines[i].first * bar;
+    svg << "<line x1='" << x << "' y1='" << 4 + 14 * i << "' x2='" << x << "' y2='" << base << "' stroke='#d84315' stroke-dasharray='4 3'/>"
+        << "<text x='" << x << "' y='" << 12 + 14 * i << "' text-anchor='" << (lines[i].first >= 10 ? "end" : "middle")
+        << "' font-size='11' fill='#d84315'>" << escapeHtml(lines[i].second) << "</text>";
   }
   svg << "<line x1='16' y1='" << base << "' x2='" << w - 16 << "' y2='" << base << "' stroke='#333'/>"
       << "<text x='" << w / 2 << "' y='" << h - 2 << "' text-anchor='middle'>" << escapeHtml(what) << "</text></svg>";
@@ -165,12 +189,19 @@ void writeOverview(std::ostringstream& html, const std::vector<StudentGrade>& gr
   std::vector<double> medians;
   for (const auto& g : grades) medians.push_back(g.median);
   std::map<std::string, std::vector<double>> by_world;
-  for (const auto& r : results) by_world[fs::path(r.value("world", std::string("?"))).stem().string()].push_back(r.value("mark", 0.0));
+  std::map<std::string, nlohmann::json> a_run_of;  // its calibration, as the runs' reports name it
+  for (const auto& r : results) {
+    const std::string world = fs::path(r.value("world", std::string("?"))).stem().string();
+    by_world[world].push_back(r.value("mark", 0.0));
+    a_run_of.emplace(world, r);
+  }
   html << "<h2>Overview</h2>\n<div class='worlds'><div><b>the class</b><br>" << histogramSvg(medians, "median mark of a student")
        << "</div>";
   for (const auto& [world, marks] : by_world) {
-    html << "<div><b>" << escapeHtml(world) << "</b>: " << marks.size() << " runs, median " << twoDecimals(median(marks)) << "<br>"
-         << histogramSvg(marks, "mark of a run") << "</div>";
+    const auto [file, lines] = calibrationOf(a_run_of[world]);
+    html << "<div><b>" << escapeHtml(world) << "</b>: " << marks.size() << " runs, median " << twoDecimals(median(marks))
+         << (file.empty() ? std::string() : ", calibrated (" + escapeHtml(file) + ")") << "<br>"
+         << histogramSvg(marks, "mark of a run", lines) << "</div>";
   }
   html << "</div>\n";
 }

@@ -32,6 +32,7 @@ struct CalibrationRequest {
   int jobs = 1;
   std::string out_dir;           // the runs go to OUT/runs/{baseline,anchor}/
   std::string command;           // how it was asked, for the file's header
+  std::vector<std::pair<std::string, std::string>> overrides;  // settings for every run (a grade's), but the rubric
 };
 
 struct MeasuredAlgorithm {
@@ -60,9 +61,11 @@ std::string calibrationText(const Calibration& calibration, const std::string& c
 std::string calibrationPathOf(const std::string& world_path);
 
 // The rubric settings of the world's calibration file, each with its origin (file:line), or
-// nothing when the world has none. Throws config::ConfigError naming the file and what is wrong
+// nothing when the world has none. `file`: the calibration to read ("" for the one beside the
+// world; one named must exist). Throws config::ConfigError naming the file and what is wrong
 // when the file is for another exercise or another version of the world (its SHA-256), or holds
 // a key that is not the exercise's calibrated rubric.
-config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256);
+config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256,
+                               const std::string& file = "");
 
 }  // namespace aula::grade

@@ -5,10 +5,12 @@
 // never depends on where it ran.
 
 #include <aula/config/config.hpp>
+#include <aula/grade/generated_worlds.hpp>
 #include <aula/grade/similarity.hpp>
 
 #include <nlohmann/json.hpp>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,7 +22,13 @@ struct GradeRequest {
   std::string exercise;
   std::vector<std::string> submissions;  // folders: each has MyAlgorithm.cpp (and maybe more .cpp)
   std::vector<std::string> worlds;       // absolute paths; empty: the exercise's own world
+  std::vector<WorldsToGenerate> generate;  // held-out worlds to write into OUT/worlds and grade on too
   std::vector<long long> seeds;
+  // Calibrate each world without a calibration file beside it (the exercise's default rubric,
+  // an exercise that has a calibration): the baseline and the anchor over these seeds, cached in
+  // OUT/calibrations by the world's SHA-256 and the grade's settings. Empty: no calibration.
+  std::vector<long long> calibration_seeds;
+  std::map<std::string, std::string> calibrations;  // world path -> its calibration file (the runs' --calibration)
   int jobs = 1;
   std::string out_dir;
   std::string engine = "local";  // local | slurm
@@ -37,6 +45,7 @@ struct GradeOptions {
   std::vector<std::string> submissions;  // as given
   std::string worlds;                    // "W1,W2"; "" for the exercise's own
   std::string seeds = "1";
+  std::string calibration_seeds = "1-10";  // "" or "off": no calibration
   long long jobs = 0;                    // 0: one per CPU
   std::string out_dir = "grading";
   std::string engine = "local";

@@ -1,0 +1,81 @@
+#include "aula/grade/grade_worlds.hpp"
+
+#include <aula/config/paths.hpp>
+#include <aula/grade/calibration.hpp>
+#include <aula/settings/tables.hpp>
+#include <aula/version.hpp>
+#include <aula/world/world_spec.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace aula::grade {
+namespace fs = std::filesystem;
+using config::ConfigError;
+
+namespace {
+
+// The rubric preset the grade's runs use: the teacher's override, else the exercise's default.
+std::string rubricPreset(const GradeRequest& request, const settings::Exercise& ex) {
+  const std::string key = ex.section + ".Referee.Rubric";
+  for (const auto& [k, value] : request.overrides) {
+    if (k == key) return value;
+  }
+  return ex.referee_settings != nullptr && ex.referee_settings->declares(key) ? "default" : "";
+}
+
+// What the calibration depends on besides the world: its seeds, the grade's settings, the version.
+std::string calibrationKey(const GradeRequest& request, const std::string& world_sha256) {
+  std::string text = world_sha256 + "\nseeds";
+  for (long long seed : request.calibration_seeds) text += " " + std::to_string(seed);
+  auto overrides = request.overrides;
+  std::sort(overrides.begin(), overrides.end());
+  for (const auto& [key, value] : overrides) text += "\n" + key + "=" + value;
+  return world::sha256Hex(text + "\n" + kVersion);
+}
+
+void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
+  const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
+  if (request.calibration_seeds.empty() || ex == nullptr || !calibrationSpecOf(request.exercise)) return;
+  if (rubricPreset(request, *ex) != "default") return;  // fixed, original: no world's scale
+  const std::string shipped = fs::path(config::dataDir() + "/worlds").lexically_normal().string() + "/";
+  for (const std::string& world_path : request.worlds) {
+    if (fs::exists(calibrationPathOf(world_path))) continue;  // the teacher's own, applied by aula run
+    if (world_path.rfind(shipped, 0) == 0) continue;  // Aula's own worlds: the rubric was made on them
+    const std::string sha256 = world::loadWorld(world_path).sha256;
+    const std::string name = fs::path(world_path).stem().string() + "-" + calibrationKey(request, sha256).substr(0, 12);
+    const fs::path file = fs::path(request.out_dir) / "calibrations" / (name + ".rubric.cfg");
+    if (!fs::exists(file)) {
+      std::cout << "calibrating " << world_path << " (" << request.calibration_seeds.size() << " seeds)\n" << std::flush;
+      CalibrationRequest calibration;
+      calibration.exercise = request.exercise;
+      calibration.world = world_path;
+      calibration.seeds = request.calibration_seeds;
+      calibration.jobs = request.jobs;
+      calibration.out_dir = (fs::path(request.out_dir) / "calibrations" / name).string();
+      calibration.overrides = request.overrides;
+      const std::string command = "aula grade " + request.exercise + " (calibrating " + fs::path(world_path).filename().string() + ")";
+      config::writeFileAtomically(file.string(), calibrationText(calibrate(calibration, bin_dir), command), "calibration");
+    }
+    request.calibrations[world_path] = file.string();
+  }
+}
+
+}  // namespace
+
+void prepareWorlds(GradeRequest& request, const std::string& bin_dir) {
+  for (const WorldsToGenerate& what : request.generate) {
+    try {
+      const auto worlds = generateWorlds(what, request.out_dir, "python3", bin_dir + "/aula-mapgen");
+      request.worlds.insert(request.worlds.end(), worlds.begin(), worlds.end());
+    } catch (const std::runtime_error& e) {
+      throw ConfigError(std::string("aula grade --worlds=generate:") + what.kind + ": " + e.what());
+    }
+  }
+  request.generate.clear();
+  calibrateWorlds(request, bin_dir);
+}
+
+}  // namespace aula::grade
