@@ -328,6 +328,21 @@ TEST(GradeAClass, BadRequestsAreUsageErrors) {
   EXPECT_NE(readFile(out).find("--seeds: '5-1' counts down"), std::string::npos) << readFile(out);
   EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--engine=cloud"}, out, 30), 2);
   EXPECT_NE(readFile(out).find("--engine=cloud: local or slurm"), std::string::npos) << readFile(out);
+  // The teacher's world or setting cannot run: the grade stops before any student's run.
+  writeFile(dir / "broken.world", "<sdf version='1.9'><world name='x'><model");
+  EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--worlds=" + (dir / "broken.world").string(),
+                      "--out=" + (dir / "broken").string()},
+                     out, 60),
+            2);
+  EXPECT_NE(readFile(out).find("no run can start on " + (dir / "broken.world").string()), std::string::npos) << readFile(out);
+  EXPECT_NE(readFile(out).find("malformed XML"), std::string::npos) << readFile(out);
+  EXPECT_FALSE(fs::exists(dir / "broken" / "runs"));
+  EXPECT_EQ(runToEnd({aula, "grade", "teletaxi", (dir / "alice").string(), "--TeleTaxi.Destination=9999,0",
+                      "--out=" + (dir / "far").string()},
+                     out, 60),
+            2);
+  EXPECT_NE(readFile(out).find("TeleTaxi.Destination = 9999,0"), std::string::npos) << readFile(out);
+  EXPECT_FALSE(fs::exists(dir / "far" / "runs"));
   EXPECT_EQ(runToEnd({aula, "grade-task", (dir / "missing.json").string(), "0"}, out, 30), 2);
   EXPECT_NE(readFile(out).find("cannot read the manifest"), std::string::npos) << readFile(out);
   fs::remove_all(dir);

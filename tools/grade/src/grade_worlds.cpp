@@ -2,12 +2,15 @@
 
 #include <aula/config/paths.hpp>
 #include <aula/grade/calibration.hpp>
+#include <aula/process/child_process.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/version.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
@@ -63,6 +66,28 @@ void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
   }
 }
 
+// Every world as `aula run` will take it with the grade's settings (`aula config` resolves exactly
+// what `aula run` does): a world or setting of the teacher's that cannot run (a malformed world,
+// no robot, a destination inside a building) stops the grade here, before any student's run.
+void checkWorlds(const GradeRequest& request, const std::string& bin_dir) {
+  const std::string log = (fs::path(request.out_dir) / "world-check.log").string();
+  for (const std::string& world : request.worlds) {
+    std::vector<std::string> argv = {bin_dir + "/aula", "config", request.exercise, "--world=" + world};
+    for (const auto& [key, value] : request.overrides) argv.push_back("--" + key + "=" + value);
+    process::ChildProcess child(argv, log, log);
+    const auto code = child.wait(std::chrono::seconds(120));
+    if (code == 0) continue;
+    std::ifstream in(log);
+    std::string said;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("aula: ", 0) == 0) said += (said.empty() ? "" : "; ") + line.substr(6);
+    }
+    throw ConfigError("aula grade: no run can start on " + world + " (no student's run started): " +
+                      (said.empty() ? "aula config exited with " + (code ? std::to_string(*code) : std::string("no code")) : said));
+  }
+  fs::remove(log);
+}
+
 }  // namespace
 
 void prepareWorlds(GradeRequest& request, const std::string& bin_dir) {
@@ -75,6 +100,7 @@ void prepareWorlds(GradeRequest& request, const std::string& bin_dir) {
     }
   }
   request.generate.clear();
+  checkWorlds(request, bin_dir);
   calibrateWorlds(request, bin_dir);
 }
 

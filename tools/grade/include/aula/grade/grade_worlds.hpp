@@ -9,7 +9,8 @@
 
 namespace aula::grade {
 
-// Writes the generated worlds (adding them to request.worlds) and calibrates every world without
+// Writes the generated worlds (adding them to request.worlds), checks that a run can start on
+// every world with the grade's settings (as `aula config` resolves them), and calibrates every world without
 // a calibration file beside it into request.calibrations: OUT/calibrations/<world>-<key>.rubric.cfg,
 // where the key is the SHA-256 of the world's SHA-256, the calibration seeds, the grade's
 // settings and Aula's version (a file already there is used again, not rerun). Only with the
