@@ -346,7 +346,7 @@ TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
   // folder had never been full.
   const std::string again = readFile(log).substr(said.size());
   EXPECT_EQ(readFile((dir / "resumed.code").string()), "0\n") << again;
-  EXPECT_NE(again.find("2 runs already done (same plugin, world and seed): skipped"), std::string::npos) << again;
+  EXPECT_NE(again.find("2 runs already done (same plugin, world, seed and settings): skipped"), std::string::npos) << again;
   EXPECT_EQ(readFile((resumed / "grades.csv").string()), readFile((dir / "roomy" / "grades.csv").string()));
   fs::remove_all(dir);
 }

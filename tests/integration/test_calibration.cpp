@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 
 using namespace std::chrono_literals;
 using aula::testing::jsonNumber;
@@ -109,4 +111,72 @@ TEST(Calibration, IsAppliedNamedAndRefusedForAnotherVersionOfTheWorld) {
   const auto stale = runToEnd({kAula, "run", "vacuum", "--headless", "--world=" + world, "--algorithm=bounce"});
   EXPECT_EQ(stale.code.value_or(-1), 2) << stale.output;
   EXPECT_NE(stale.output.find("calibrated for another version of " + world), std::string::npos) << stale.output;
+}
+
+namespace {
+
+struct TaxiRun {
+  double mark = 0, driving_time_s = 0;
+};
+
+// One headless TeleTaxi run on `world` to `destination`; `extra`: more options.
+TaxiRun taxiRun(const std::string& dir, const std::string& world, const std::string& algorithm, const std::string& destination,
+                const std::vector<std::string>& extra) {
+  const std::string report = dir + "/taxi-" + std::to_string(std::hash<std::string>{}(algorithm + destination)) + ".json";
+  std::vector<std::string> command = {kAula, "run", "teletaxi", "--headless", "--world=" + world, "--algorithm=" + algorithm,
+                                      "--TeleTaxi.Destination=" + destination, "--report=" + report,
+                                      "--lcm-url=" + aula::testing::privateLcmUrl()};
+  command.insert(command.end(), extra.begin(), extra.end());
+  const auto run = runToEnd(command, 120s);
+  EXPECT_EQ(run.code.value_or(-1), 0) << run.output;
+  const std::string json = readFile(report);
+  return {jsonNumber(json, "mark"), jsonNumber(json, "driving_time_s")};
+}
+
+}  // namespace
+
+// TeleTaxi's speed scale, calibrated per world and destination (issue 27): the fixed scale gives
+// the reference and a plain BFS student that drives slower both 10.00 (their average speeds are
+// far above its 2.6 m/s); calibrated on the reference's driving time to each destination, the
+// slower student gets a lower mark than the reference on every destination. A calibration for
+// another destination is refused.
+TEST(CalibratedCity, AStudentSlowerThanTheReferenceGetsALowerMarkOnEveryDestination) {
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = dir + "/city.world";
+  std::filesystem::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/cityLarge.world", world);
+  // The student: a breadth-first wave on the grid, followed at up to 6 m/s (tests/data/plugins/teletaxi_follow.cpp).
+  const std::vector<std::string> slower = {};
+  for (const std::string destination : {"220,240", "-40,40"}) {
+    const std::string calibration = dir + "/city-" + destination + ".rubric.cfg";
+    const auto calibrated = runToEnd({kAula, "calibrate", "teletaxi", "--world=" + world, "--seeds=1", "--jobs=1",
+                                      "--TeleTaxi.Destination=" + destination, "--out=" + dir + "/runs", "--output=" + calibration},
+                                     300s);
+    ASSERT_EQ(calibrated.code.value_or(-1), 0) << calibrated.output;
+    const std::string text = readFile(calibration);
+    EXPECT_NE(text.find("Calibration.Setting.TeleTaxi.Destination = " + destination), std::string::npos) << text;
+    EXPECT_NE(text.find("TeleTaxi.Referee.FullMarkTime = "), std::string::npos) << text;
+
+    const TaxiRun fixed_reference = taxiRun(dir, world, "reference", destination, {"--TeleTaxi.Referee.Rubric=fixed"});
+    std::vector<std::string> fixed_student = slower;
+    fixed_student.push_back("--TeleTaxi.Referee.Rubric=fixed");
+    const TaxiRun fixed_bfs = taxiRun(dir, world, AULA_PLUGIN_TELETAXI_FOLLOW, destination, fixed_student);
+    EXPECT_DOUBLE_EQ(fixed_reference.mark, fixed_bfs.mark) << "the fixed scale tells them apart: the test shows nothing";
+
+    const TaxiRun reference = taxiRun(dir, world, "reference", destination, {"--calibration=" + calibration});
+    std::vector<std::string> calibrated_student = slower;
+    calibrated_student.push_back("--calibration=" + calibration);
+    const TaxiRun bfs = taxiRun(dir, world, AULA_PLUGIN_TELETAXI_FOLLOW, destination, calibrated_student);
+    EXPECT_GT(bfs.driving_time_s, 1.2 * reference.driving_time_s) << destination;
+    EXPECT_GE(reference.mark, 9.9) << destination;
+    EXPECT_LT(bfs.mark, reference.mark - 0.2) << destination << ": " << bfs.driving_time_s << " s against "
+                                              << reference.driving_time_s << " s";
+  }
+  // A calibration made for one destination is refused for another, before the run.
+  const auto other = runToEnd({kAula, "run", "teletaxi", "--headless", "--world=" + world, "--TeleTaxi.Destination=-40,40",
+                               "--calibration=" + dir + "/city-220,240.rubric.cfg", "--lcm-url=" + aula::testing::privateLcmUrl()},
+                              60s);
+  EXPECT_EQ(other.code.value_or(-1), 2) << other.output;
+  EXPECT_NE(other.output.find("calibrated for TeleTaxi.Destination = 220,240, and this run's is -40,40"), std::string::npos)
+      << other.output;
+  std::filesystem::remove_all(dir);
 }

@@ -167,11 +167,21 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   EXPECT_TRUE(fs::is_regular_file(out / "runs" / "good" / "vacuum-seed1.png"));
   EXPECT_GT(fs::file_size(out / "runs" / "good" / "vacuum-seed1.lcmlog"), 100000u);
 
-  // Again with the same folder: every run is up to date (same plugin, world and seed).
+  // Again with the same folder: every run is up to date (same plugin, world, seed and settings).
   ASSERT_EQ(runToEnd(grade, (dir / "grade2.txt").string(), 120), 0);
   const std::string second = readFile((dir / "grade2.txt").string());
   EXPECT_NE(second.find("8 runs already done"), std::string::npos) << second;
   EXPECT_EQ(readFile((out / "grades.csv").string()), first_csv);
+  // Under other settings no result is this grade's: every run runs again (the broken submission's
+  // two never ran: nothing to run again).
+  std::vector<std::string> shorter = grade;
+  std::replace(shorter.begin(), shorter.end(), std::string(kShortRun), std::string("--Vacuum.Referee.Duration=50"));
+  ASSERT_EQ(runToEnd(shorter, (dir / "grade3.txt").string(), 300), 0);
+  const std::string third = readFile((dir / "grade3.txt").string());
+  EXPECT_NE(third.find("2 runs already done"), std::string::npos) << third;
+  EXPECT_NE(third.find("good vacuum.world seed 1: "), std::string::npos) << third;
+  EXPECT_NE(readFile((out / "runs" / "good" / "vacuum-seed1.json").string()).find("\"--Vacuum.Referee.Duration=50\""),
+            std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -107,7 +107,8 @@ TEST(TeleTaxiRun, ADestinationTheTaxiCannotReachFromWhereItStandsEndsTheRunWithT
 TEST(TeleTaxiRun, TheReportStatesTheRubricPresetAndItsNumbers) {
   const std::string json = runTaxi("120,-40", "rubric");
   EXPECT_NE(json.find("\"rubric\": {\n    \"preset\": \"default\",\n    \"TeleTaxi.Referee.ArrivalRadius\": 5.0,\n"
-                      "    \"TeleTaxi.Referee.FullMarkSpeed\": 2.6,\n    \"TeleTaxi.Referee.MinTravel\": 2.0\n  }"),
+                      "    \"TeleTaxi.Referee.FullMarkSpeed\": 2.6,\n    \"TeleTaxi.Referee.FullMarkTime\": 0.0,\n"
+                      "    \"TeleTaxi.Referee.MinTravel\": 2.0\n  }"),
             std::string::npos) << json;
   EXPECT_NE(json.find("\"measures\": [\"driving_time_s\", \"final_distance_m\", \"path_length_m\"]"), std::string::npos) << json;
 }

@@ -135,12 +135,17 @@ SettingsTable makeTaxiReferee() {
   t.real("TeleTaxi.Referee.ArrivalRadius", 5, "m", 0, 1000, "arrived: stopped within this distance of the destination", true);
   t.real("TeleTaxi.Referee.FullMarkSpeed", 2.6, "m/s", 0, 100,
          "average speed along the path worth a speed mark of 10 (it adds 0.2 x speed mark)", true);
+  t.real("TeleTaxi.Referee.FullMarkTime", 0, "s", 0, 1e6,
+         "driving time worth a speed mark of 10 instead of FullMarkSpeed (0: none); a world's calibration sets it to "
+         "the reference's time to the destination");
   t.real("TeleTaxi.Referee.MinTravel", 2, "m", 0, 1000,
          "the distance mark counts only when the taxi travelled at least this far since GO!");
   t.presets("TeleTaxi.Referee.Rubric", "default",
-            {"TeleTaxi.Referee.ArrivalRadius", "TeleTaxi.Referee.FullMarkSpeed", "TeleTaxi.Referee.MinTravel"},
-            {{"default", "a taxi that did not drive gets no distance mark", {}},
-             {"fixed", "the same as default (the TeleTaxi rubric is not calibrated per world yet)", {}},
+            {"TeleTaxi.Referee.ArrivalRadius", "TeleTaxi.Referee.FullMarkSpeed", "TeleTaxi.Referee.FullMarkTime",
+             "TeleTaxi.Referee.MinTravel"},
+            {{"default", "a taxi that did not drive gets no distance mark; the world's calibration, if any, sets the speed "
+                         "scale from the reference's time to the destination", {}},
+             {"fixed", "the default scale on every world, never a world's calibration", {}},
              {"original", "the thesis's scale: arriving without driving is worth 8", {{"TeleTaxi.Referee.MinTravel", "0"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");
   return t;

@@ -20,7 +20,9 @@ TaxiGrade gradeTaxi(const TaxiGradeInput& in, const TaxiGradeScale& scale) {
   }
   const bool drove = in.path_length_m >= scale.min_travel_m;
   g.base_mark = !drove ? 0.0 : in.final_distance_m <= 2.0 ? 8.0 : in.final_distance_m <= 4.0 ? 7.5 : 7.0;
-  g.speed_mark = std::min(10.0, 10.0 * g.average_speed_mps / scale.reference_speed_mps);
+  g.speed_mark = scale.full_mark_time_s <= 0 ? std::min(10.0, 10.0 * g.average_speed_mps / scale.reference_speed_mps)
+                 : in.driving_time_s > 0     ? std::min(10.0, 10.0 * scale.full_mark_time_s / in.driving_time_s)
+                                             : 0.0;
   g.mark = std::min(10.0, g.base_mark + 0.2 * g.speed_mark);
   if (drove) {
     std::snprintf(line, sizeof line, "reached: %.2f m from the destination, %.2f m/s average",

@@ -13,6 +13,7 @@ TaxiRefereeSettings taxiRefereeSettings(const config::Config& cfg) {
   s.stop_hold_s = cfg.getDouble("TeleTaxi.Referee.StopHold");
   s.scale.arrival_radius_m = cfg.getDouble("TeleTaxi.Referee.ArrivalRadius");
   s.scale.reference_speed_mps = cfg.getDouble("TeleTaxi.Referee.FullMarkSpeed");
+  s.scale.full_mark_time_s = cfg.getDouble("TeleTaxi.Referee.FullMarkTime");
   s.scale.min_travel_m = cfg.getDouble("TeleTaxi.Referee.MinTravel");
   return s;
 }

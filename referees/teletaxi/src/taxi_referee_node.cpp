@@ -107,17 +107,23 @@ void TaxiRefereeNode::addGrading(referee::Report& r) const {
 
 std::string TaxiRefereeNode::gradeSummary() const {
   const TaxiGrade g = grade();
+  char scale[64];  // the speed scale: a world's calibrated time, or the fixed speed
+  if (settings_.scale.full_mark_time_s > 0) {
+    std::snprintf(scale, sizeof scale, "in %.3g s (calibrated)", settings_.scale.full_mark_time_s);
+  } else {
+    std::snprintf(scale, sizeof scale, "at %.3g m/s", settings_.scale.reference_speed_mps);
+  }
   char text[512];
   std::snprintf(text, sizeof text,
                 "TeleTaxi mark: %.2f / 10\n"
                 "  %s\n"
                 "  base %.1f (distance %.2f m) + 0.2 x speed mark %.2f (%.2f m/s = %.1f km/h over %.1f m in %.1f s sim)\n"
                 "  straight distance start -> destination: %.1f m; bumps against walls: %lld\n"
-                "  rubric %s: arrival within %.3g m, a speed mark of 10 at %.3g m/s, a distance mark from %.3g m travelled\n",
+                "  rubric %s: arrival within %.3g m, a speed mark of 10 %s, a distance mark from %.3g m travelled\n",
                 g.mark, g.verdict.c_str(), g.base_mark, referee_.distanceToGoalM(), g.speed_mark,
                 g.average_speed_mps, g.average_speed_mps * 3.6, referee_.pathLengthM(),
                 referee_.elapsedS(), referee_.straightDistanceM(), bumps_, settings_.rubric.c_str(),
-                settings_.scale.arrival_radius_m, settings_.scale.reference_speed_mps, settings_.scale.min_travel_m);
+                settings_.scale.arrival_radius_m, scale, settings_.scale.min_travel_m);
   return text;
 }
 
@@ -167,8 +173,13 @@ void TaxiRefereeNode::addTrace(referee::Report& out) const {
   char distance[96], speed[96];
   std::snprintf(distance, sizeof distance, "%s %.2f m from the destination (8 within 2 m, 7.5 within 4, 7 within %.3g)",
                 g.reached ? "stopped" : "not reached:", referee_.distanceToGoalM(), settings_.scale.arrival_radius_m);
-  std::snprintf(speed, sizeof speed, "%.2f m/s average over %.1f m (10 at %.3g m/s)", g.average_speed_mps,
-                referee_.pathLengthM(), settings_.scale.reference_speed_mps);
+  if (settings_.scale.full_mark_time_s > 0) {
+    std::snprintf(speed, sizeof speed, "%.1f s driving (10 in %.3g s, the reference's time)", referee_.elapsedS(),
+                  settings_.scale.full_mark_time_s);
+  } else {
+    std::snprintf(speed, sizeof speed, "%.2f m/s average over %.1f m (10 at %.3g m/s)", g.average_speed_mps,
+                  referee_.pathLengthM(), settings_.scale.reference_speed_mps);
+  }
   // mark = min(10, base + 0.2 x speed mark): with base <= 8 and the speed mark <= 10 the sum is the mark.
   out.setJson("breakdown", referee::breakdownJson({{"arrival", distance, g.base_mark, 8.0},
                                                    {"speed", speed, 0.2 * g.speed_mark, 2.0}}));

@@ -21,6 +21,7 @@ std::string commandLine(const cli::Arguments& args, const std::string& world) {
   for (const char* option : {"baseline", "anchor"}) {
     if (args.given(option)) line += std::string(" --") + option + "=" + args.text(option);
   }
+  for (const auto& [key, value] : args.settings()) line += " --" + key + "=" + value;
   return line;
 }
 
@@ -36,22 +37,27 @@ int calibrateWorld(const cli::Arguments& args) {
   request.jobs = args.given("jobs") ? static_cast<int>(args.integer("jobs"))
                                     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   request.out_dir = std::filesystem::absolute(args.text("out")).string();
+  request.overrides = args.settings();
   const grade::Calibration calibration = grade::calibrate(request, binDir());
   const std::string path = args.given("output") ? args.text("output") : grade::calibrationPathOf(request.world);
   config::writeFileAtomically(path, grade::calibrationText(calibration, commandLine(args, request.world)),
                               "the calibration");
-  std::cout << ex.name << " on " << request.world << ": " << calibration.spec.measure << " median "
-            << calibration.baseline.median << " (" << calibration.baseline.algorithm << ", a 5) and "
-            << calibration.anchor.median << " (" << calibration.anchor.algorithm << ", a 10) over "
-            << request.seeds.size() << " seeds\nwrote " << path << "\n";
+  std::cout << ex.name << " on " << request.world << ": " << calibration.spec.measure << " median ";
+  if (!calibration.baseline.algorithm.empty()) {
+    std::cout << calibration.baseline.median << " (" << calibration.baseline.algorithm << ", a 5) and ";
+  }
+  std::cout << calibration.anchor.median << " (" << calibration.anchor.algorithm << ", a 10) over " << request.seeds.size()
+            << " seeds\nwrote " << path << "\n";
   return 0;
 }
 
 }  // namespace
 
 cli::Command calibrate() {
-  cli::Command c("calibrate", "calibrate an exercise's rubric for a world: the baseline's median a 5, the anchor's a 10");
-  c.positionals = {{"EXERCISE", "vacuum (its coverage scale)"}};
+  cli::Command c("calibrate", "calibrate an exercise's rubric for a world: the baseline's median a 5, the anchor's a 10 "
+                              "(TeleTaxi: the reference's driving time a speed mark of 10)");
+  c.positionals = {{"EXERCISE", "vacuum (its coverage scale) or teletaxi (its speed scale, for the destination)"}};
+  c.takes_settings = true;
   c.options.add(cli::valueOption("world", "FILE", "the world to calibrate (a .world file or a shipped world's name); required"))
       .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")
       .add(cli::valueOption("baseline", "ALGORITHM", "the algorithm worth a 5 (default: the exercise's baseline, bounce)"))

@@ -68,7 +68,7 @@ void applyCalibration(const settings::Exercise& ex, const Config& file, const wo
     }
     return;
   }
-  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256, calibration_file);
+  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256, calibration_file, &run.component());
   if (calibrated.keys().empty()) return;
   const std::string calibration_key = ex.section + ".Referee.Calibration";
   if (ex.referee_settings->declares(calibration_key)) {

@@ -1,5 +1,6 @@
 #include "aula/grade/calibration.hpp"
 
+#include <aula/config/paths.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/grades.hpp>
@@ -67,9 +68,36 @@ MeasuredAlgorithm measure(const Manifest& manifest, const std::string& who, cons
 
 std::vector<std::pair<std::string, std::string>> rubricOf(const CalibrationSpec& spec, const MeasuredAlgorithm& baseline,
                                                           const MeasuredAlgorithm& anchor) {
-  // Every spec so far draws a line through two points: the baseline's median at a 5, the
-  // anchor's at a 10 (vacuum: HalfMarkCoverage, FullMarkCoverage).
+  // A line through two points, the baseline's median at a 5 and the anchor's at a 10 (vacuum:
+  // HalfMarkCoverage, FullMarkCoverage); or one point, the anchor's (TeleTaxi: FullMarkTime).
+  if (spec.baseline.empty()) return {{spec.rubric_keys.at(0), number(anchor.median)}};
   return {{spec.rubric_keys.at(0), number(baseline.median)}, {spec.rubric_keys.at(1), number(anchor.median)}};
+}
+
+// The value `key` has in the runs: the grade's or the command line's setting, else the exercise's .cfg's, else its default.
+std::string effectiveSetting(const settings::Exercise& ex, const std::string& key,
+                             const std::vector<std::pair<std::string, std::string>>& overrides) {
+  for (const auto& [k, value] : overrides) {
+    if (k == key) return value;
+  }
+  config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
+  std::vector<const config::SettingsTable*> siblings;
+  for (const auto* t : ex.tables()) {
+    if (t != ex.component_settings) siblings.push_back(t);
+  }
+  return ex.component_settings->resolve(file, siblings).getString(key);
+}
+
+// Each anchor run must have earned a mark: a scale of one point is the anchor's (a TeleTaxi
+// reference that did not arrive sets no time).
+void requireMarks(const Manifest& manifest, const std::string& anchor) {
+  for (const PlannedRun& run : manifest.runs) {
+    std::ifstream in(run.result_path);
+    const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
+    if (!result.is_discarded() && result.value("mark", 0.0) > 0) continue;
+    throw ConfigError("aula calibrate: the " + anchor + " earned no mark on " + run.world_name + " with seed " +
+                      std::to_string(run.seed) + ": it cannot set the scale; see " + run.log_path);
+  }
 }
 
 }  // namespace
@@ -77,7 +105,11 @@ std::vector<std::pair<std::string, std::string>> rubricOf(const CalibrationSpec&
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise) {
   if (exercise == "vacuum") {
     return CalibrationSpec{"vacuum", "coverage_percent", "bounce", "reference",
-                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}};
+                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}, {}};
+  }
+  if (exercise == "teletaxi") {  // the speed scale: the reference's driving time to that destination
+    return CalibrationSpec{"teletaxi", "driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
+                           {"TeleTaxi.Destination"}};
   }
   return std::nullopt;
 }
@@ -87,13 +119,18 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
   if (!spec || ex == nullptr) {
     throw ConfigError("aula calibrate: the " + request.exercise +
-                      " exercise has no world-dependent scale to calibrate yet (vacuum has: its coverage scale)");
+                      " exercise has no world-dependent scale to calibrate yet (vacuum has: its coverage scale; teletaxi: "
+                      "its speed scale)");
   }
   Calibration c;
   c.spec = *spec;
   c.world = fs::absolute(request.world).string();
   c.world_sha256 = world::loadWorld(c.world).sha256;
   c.seeds = request.seeds;
+  if (spec->baseline.empty() && !request.baseline.empty()) {
+    throw ConfigError("aula calibrate --baseline=" + request.baseline + ": the " + request.exercise +
+                      " scale has one point, the anchor's (" + spec->measure + ")");
+  }
   const std::string baseline = request.baseline.empty() ? spec->baseline : request.baseline;
   const std::string anchor = request.anchor.empty() ? spec->anchor : request.anchor;
   GradeRequest runs;
@@ -112,13 +149,21 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   b.plugin = baseline;
   a.student = "anchor";
   a.plugin = anchor;
-  const Manifest manifest = planRuns(runs, {b, a}, bin_dir);
+  std::vector<Submission> algorithms = {a};
+  if (!baseline.empty()) algorithms.insert(algorithms.begin(), b);
+  const Manifest manifest = planRuns(runs, algorithms, bin_dir);
   runLocal(manifest, request.jobs, [](const PlannedRun& run, const nlohmann::ordered_json& result, const Progress& p) {
     std::cout << "[" << p.done << "/" << p.total << "] " << run.plugin << " seed " << run.seed << ": "
               << number(result.value("mark", 0.0)) << "\n" << std::flush;
   });
-  c.baseline = measure(manifest, "baseline", baseline, spec->measure);
+  for (const std::string& key : spec->context_keys) c.context.emplace_back(key, effectiveSetting(*ex, key, request.overrides));
   c.anchor = measure(manifest, "anchor", anchor, spec->measure);
+  if (baseline.empty()) {
+    requireMarks(manifest, anchor);
+    c.rubric = rubricOf(*spec, c.baseline, c.anchor);
+    return c;
+  }
+  c.baseline = measure(manifest, "baseline", baseline, spec->measure);
   if (!(c.anchor.median > c.baseline.median)) {
     throw ConfigError("aula calibrate: on " + request.world + " the anchor (" + anchor + ", median " + spec->measure + " " +
                       number(c.anchor.median) + ") does not beat the baseline (" + baseline + ", " +
@@ -131,7 +176,8 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
 std::string calibrationText(const Calibration& c, const std::string& command) {
   std::ostringstream out;
   out << "# The " << c.spec.exercise << " rubric calibrated for " << fs::path(c.world).filename().string()
-      << ": the baseline's median " << c.spec.measure << " is worth a 5, the anchor's a 10.\n"
+      << (c.spec.baseline.empty() ? ": the anchor's median " + c.spec.measure + " is worth a 10.\n"
+                                  : ": the baseline's median " + c.spec.measure + " is worth a 5, the anchor's a 10.\n")
       << "# Written by `" << command << "`; aula run and aula grade apply it with the default rubric\n"
       << "# (--" << settings::exerciseNamed(c.spec.exercise)->section
       << ".Referee.Rubric=fixed or =original ignore it). docs/grading.md, \"Calibration\".\n";
@@ -142,8 +188,10 @@ std::string calibrationText(const Calibration& c, const std::string& command) {
       << "Calibration.AulaVersion = " << kVersion << "\n"
       << "Calibration.Seeds = " << seeds << "\n"
       << "Calibration.Measure = " << c.spec.measure << "\n";
+  for (const auto& [key, value] : c.context) out << "Calibration.Setting." << key << " = " << value << "\n";
   for (const auto& [role, m] : {std::pair<std::string, const MeasuredAlgorithm*>{"Baseline", &c.baseline},
                                 {"Anchor", &c.anchor}}) {
+    if (m->algorithm.empty()) continue;  // a scale of one point has no baseline
     out << "Calibration." << role << " = " << m->algorithm << "\n"
         << "Calibration." << role << "Values = " << numbers(m->values) << "\n"
         << "Calibration." << role << "Median = " << number(m->median) << "\n"
@@ -158,7 +206,7 @@ std::string calibrationPathOf(const std::string& world_path) {
 }
 
 config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256,
-                               const std::string& file_given) {
+                               const std::string& file_given, const config::Config* run) {
   config::Config rubric;
   const std::string path = file_given.empty() ? calibrationPathOf(world_path) : file_given;
   std::error_code error;
@@ -178,6 +226,26 @@ config::Config readCalibration(const std::string& exercise, const std::string& w
     throw ConfigError((file.has("Calibration.WorldSha256") ? file.origin("Calibration.WorldSha256") : path) +
                       ": calibrated for another version of " + world_path + " (its files changed since): run `aula calibrate " +
                       exercise + " --world=" + world_path + "` again, or delete the file for the fixed rubric");
+  }
+  for (const std::string& key : spec->context_keys) {
+    const std::string recorded = "Calibration.Setting." + key;
+    if (run == nullptr || !file.has(recorded) || !run->has(key)) continue;
+    std::vector<double> made, now;
+    try {
+      made = file.getDoubleList(recorded);
+      now = run->getDoubleList(key);
+    } catch (const ConfigError&) {
+      made.clear();
+    }
+    const bool same = made.empty() ? file.getString(recorded) == run->getString(key)
+                                   : made.size() == now.size() && std::equal(made.begin(), made.end(), now.begin(),
+                                                                             [](double a, double b) { return std::abs(a - b) < 1e-9; });
+    if (!same) {
+      throw ConfigError(file.origin(recorded) + ": calibrated for " + key + " = " + file.getString(recorded) + ", and this run's is " +
+                        run->getString(key) + " (" + run->origin(key) + "): `aula calibrate " + exercise + " --world=" + world_path +
+                        " --" + key + "=" + run->getString(key) + " --output=FILE` calibrates it, or --" +
+                        settings::exerciseNamed(exercise)->section + ".Referee.Rubric=fixed grades without one");
+    }
   }
   for (const std::string& key : file.keys()) {
     if (key.rfind("Calibration.", 0) == 0) continue;

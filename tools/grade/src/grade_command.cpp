@@ -44,7 +44,7 @@ void runLocally(const Manifest& manifest, int jobs) {
   const bool terminal = ::isatty(STDOUT_FILENO) != 0;
   const auto started = std::chrono::steady_clock::now();
   const auto skipped = std::count_if(manifest.runs.begin(), manifest.runs.end(), upToDate);
-  if (skipped > 0) std::cout << skipped << " runs already done (same plugin, world and seed): skipped\n" << std::flush;
+  if (skipped > 0) std::cout << skipped << " runs already done (same plugin, world, seed and settings): skipped\n" << std::flush;
   runLocal(manifest, jobs, [&](const PlannedRun& run, const nlohmann::ordered_json& result, const Progress& p) {    const std::string failure = failureOf(result);
     if (terminal) {
       const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -70,7 +70,7 @@ void runOnSlurm(const Manifest& manifest, const std::string& manifest_path, cons
     if (!upToDate(run)) indices += (indices.empty() ? "" : ",") + std::to_string(run.index);
   }
   if (indices.empty()) {
-    std::cout << "every run is already done (same plugin, world and seed)\n";
+    std::cout << "every run is already done (same plugin, world, seed and settings)\n";
     return;
   }
   const fs::path slurm_dir = fs::path(manifest.out_dir) / "slurm";

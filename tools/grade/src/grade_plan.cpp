@@ -227,9 +227,10 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
                     // Port 0: the launcher takes one the OS hands out, where and when the run starts.
                     "--lcm-url=udpm://239.255.76.67:0?ttl=0"};
           if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");
-          for (const auto& [key, value] : request.overrides) r.argv.push_back("--" + key + "=" + value);
+          for (const auto& [key, value] : request.overrides) r.settings.push_back("--" + key + "=" + value);
           const auto calibration = request.calibrations.find(world_path);
-          if (calibration != request.calibrations.end()) r.argv.push_back("--calibration=" + calibration->second);
+          if (calibration != request.calibrations.end()) r.settings.push_back("--calibration=" + calibration->second);
+          r.argv.insert(r.argv.end(), r.settings.begin(), r.settings.end());
         }
         m.runs.push_back(r);
         ++index;

@@ -72,6 +72,7 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   result["language"] = run.language;
   if (!result.contains("world")) result["world"] = run.world_name;
   result["plugin_sha256"] = run.plugin_sha256;
+  result["settings"] = run.settings;
   result["wall_time_s"] = std::round(wall_s * 100) / 100;
   if (exit_code) result["exit_code"] = *exit_code;
   std::string failure;
@@ -187,7 +188,7 @@ bool upToDate(const PlannedRun& run) {
   if (!result) return false;
   auto same = [&](const char* key, const nlohmann::ordered_json& value) { return result->contains(key) && (*result)[key] == value; };
   return same("plugin_sha256", run.plugin_sha256) && same("world_sha256", run.world_sha256) && same("seed", run.seed) &&
-         same("student", run.student);
+         same("student", run.student) && same("settings", run.settings);
 }
 
 nlohmann::ordered_json runOne(const PlannedRun& run) {

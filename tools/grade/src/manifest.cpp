@@ -35,6 +35,7 @@ nlohmann::ordered_json Manifest::toJson() const {
                             {"language", r.language},
                             {"compile_error", r.compile_error},
                             {"command", r.argv},
+                            {"settings", r.settings},
                             {"result", r.result_path},
                             {"report", r.report_path},
                             {"log", r.log_path},
@@ -69,6 +70,7 @@ Manifest Manifest::fromJson(const nlohmann::json& json) {
     r.compile_error = j.at("compile_error").get<std::string>();
     r.language = j.value("language", std::string("C++"));
     r.argv = j.at("command").get<std::vector<std::string>>();
+    r.settings = j.value("settings", std::vector<std::string>{});
     r.result_path = j.at("result").get<std::string>();
     r.report_path = j.at("report").get<std::string>();
     r.log_path = j.at("log").get<std::string>();

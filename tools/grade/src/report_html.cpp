@@ -52,10 +52,11 @@ std::pair<std::string, std::vector<std::pair<double, std::string>>> calibrationO
   const auto spec = calibrationSpecOf(r.value("exercise", std::string()));
   if (!spec || !r.contains("rubric") || !r["rubric"].contains("calibration")) return c;
   c.first = r["rubric"]["calibration"].get<std::string>();
-  const char* roles[] = {"5: the baseline's median, ", "10: the anchor's median, "};
-  for (size_t i = 0; i < 2 && i < spec->rubric_keys.size(); ++i) {
+  const size_t anchor = spec->baseline.empty() ? 0 : 1;  // a scale of one point is the anchor's
+  for (size_t i = 0; i < spec->rubric_keys.size(); ++i) {
     const auto& value = r["rubric"].value(spec->rubric_keys[i], nlohmann::json());
-    if (value.is_number()) c.second.emplace_back(i == 0 ? 5.0 : 10.0, roles[i] + spec->measure + " " + twoDecimals(value.get<double>()));
+    const std::string role = i == anchor ? "10: the anchor's median, " : "5: the baseline's median, ";
+    if (value.is_number()) c.second.emplace_back(i == anchor ? 10.0 : 5.0, role + spec->measure + " " + twoDecimals(value.get<double>()));
   }
   return c;
 }

@@ -5,6 +5,10 @@
 //   base:     8 (<= 2 m), 7.5 (<= 4 m), 7 (<= 5 m)
 //   speed:    average speed along the path = path length / driving time (sim)
 //   speed mark = min(10, 10 * speed / 2.6);  mark = min(10, base + 0.2 * speed mark)
+//   with a world's calibration (full_mark_time_s > 0: the reference's driving time to this
+//   destination on this world), the speed mark is on time instead:
+//   speed mark = min(10, 10 * full_mark_time_s / driving time), so a taxi 30 % slower than the
+//   reference, whatever path it took, gets 7.7
 //   not reached (timeout or stopped farther than 5 m): mark 0
 //   the base counts only when the taxi travelled at least min_travel_m (default rubric 2 m; the
 //   original's 0 gave 8 to a taxi that never moved)
@@ -33,6 +37,7 @@ struct TaxiGrade {
 struct TaxiGradeScale {
   double arrival_radius_m = 5.0;
   double reference_speed_mps = 2.6;  // average speed worth a speed mark of 10
+  double full_mark_time_s = 0.0;     // > 0: the driving time worth a speed mark of 10 (instead of the speed)
   double min_travel_m = 2.0;         // the base mark needs at least this path since GO!
 };
 

@@ -19,8 +19,11 @@ namespace aula::grade {
 struct CalibrationSpec {
   std::string exercise;
   std::string measure;               // a report field: "coverage_percent"
-  std::string baseline, anchor;      // default algorithms
-  std::vector<std::string> rubric_keys;  // the referee's settings it writes
+  std::string baseline, anchor;      // default algorithms; no baseline: a scale of one point, the anchor's
+  std::vector<std::string> rubric_keys;  // the referee's settings it writes (the baseline's first, if any)
+  // Settings the measure depends on besides the world (TeleTaxi.Destination): their values are
+  // written in the file (Calibration.Setting.<key>), and a run with other values is refused.
+  std::vector<std::string> context_keys;
 };
 // The spec of `exercise`; nullopt when it has none (the message says what it calibrates instead).
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise);
@@ -46,7 +49,8 @@ struct Calibration {
   std::string world, world_sha256;
   std::vector<long long> seeds;
   MeasuredAlgorithm baseline, anchor;
-  std::vector<std::pair<std::string, std::string>> rubric;  // key, value
+  std::vector<std::pair<std::string, std::string>> rubric;   // key, value
+  std::vector<std::pair<std::string, std::string>> context;  // the context keys' values in the runs
 };
 
 // Runs both algorithms (headless, sandboxed, with the fixed rubric so that an older calibration
@@ -62,10 +66,12 @@ std::string calibrationPathOf(const std::string& world_path);
 
 // The rubric settings of the world's calibration file, each with its origin (file:line), or
 // nothing when the world has none. `file`: the calibration to read ("" for the one beside the
-// world; one named must exist). Throws config::ConfigError naming the file and what is wrong
-// when the file is for another exercise or another version of the world (its SHA-256), or holds
-// a key that is not the exercise's calibrated rubric.
+// world; one named must exist). `run`: the run's settings, whose context keys must have the
+// values the calibration was made with (nullptr: not checked). Throws config::ConfigError naming
+// the file and what is wrong when the file is for another exercise, another version of the world
+// (its SHA-256) or another context (another destination), or holds a key that is not the
+// exercise's calibrated rubric.
 config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256,
-                               const std::string& file = "");
+                               const std::string& file = "", const config::Config* run = nullptr);
 
 }  // namespace aula::grade

@@ -86,6 +86,9 @@ struct PlannedRun {
   std::string plugin, plugin_sha256, compile_error;
   std::string language;  // the submission's: "C++", "Python" or "" (none)
   std::vector<std::string> argv;  // the exact command ("" when the plugin did not compile)
+  // What the run was graded under besides its plugin, world and seed: the grade's --Key=value and
+  // its --calibration. A result under other settings is not this run's (it is run again).
+  std::vector<std::string> settings;
   std::string result_path;        // runs/<student>/<world>-seed<k>.json
   std::string report_path;        // where the referee writes its own report
   std::string log_path;           // the run's output

@@ -25,7 +25,7 @@ struct GradeStopped : std::runtime_error {
 // the referee's report, picture and trace, and its result.
 constexpr uint64_t kRoomForARunBytes = 1u << 20;
 
-// Is the run's result already there for the same plugin, world and seed (resume)?
+// Is the run's result already there for the same plugin, world, seed and settings (resume)?
 bool upToDate(const PlannedRun& run);
 
 // Runs one entry to its end (Slurm's `aula grade-task MANIFEST INDEX`). Returns the result;
