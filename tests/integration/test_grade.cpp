@@ -395,13 +395,27 @@ TEST(GradeAClass, GeneratedHeldOutWorldsAreCalibratedAndTheSameTwice) {
   EXPECT_NE(html.find("5: the baseline&#39;s median, coverage_percent"), std::string::npos) << html.substr(0, 4000);
 
   ASSERT_EQ(runToEnd({aula, "grade", "autopark", (dir / "class" / "bob").string(), "--worlds=generate:street:2,seed=4",
-                      "--seeds=1", "--out=" + (dir / "streets").string()},
+                      "--seeds=1", "--calibration-seeds=1-2", "--out=" + (dir / "streets").string()},
                      (dir / "streets.txt").string(), 600),
             0)
       << readFile((dir / "streets.txt").string());
   const auto streets = readGrades((dir / "streets" / "grades.csv").string());
   EXPECT_EQ(streets.at("bob").at("runs"), "2");
   EXPECT_EQ(streets.at("bob").at("runs_failed"), "0") << readFile((dir / "streets" / "grades.csv").string());
+  // Each street's time allowance is the reactive parker's there: parked as fast, it gets a 10.
+  for (const auto& entry : fs::directory_iterator(dir / "streets" / "calibrations")) {
+    if (entry.path().extension() != ".cfg") continue;
+    const std::string street = entry.path().filename().string().substr(0, std::string("street-seed4-1").size());
+    const std::string report = (dir / (street + "-reactive.json")).string();
+    ASSERT_EQ(runToEnd({aula, "run", "autopark", "--headless", "--algorithm=reactive", "--seed=1",
+                        "--world=" + (dir / "streets" / "worlds" / (street + ".world")).string(),
+                        "--calibration=" + entry.path().string(), "--report=" + report, "--lcm-url=" + privateLcmUrl()},
+                       (dir / "reactive.txt").string(), 300),
+              0)
+        << readFile((dir / "reactive.txt").string());
+    EXPECT_GE(jsonNumber(readFile(report), "mark"), 9.5) << readFile(report);
+    EXPECT_NE(readFile(entry.path().string()).find("Autopark.Referee.FullMarkTime = "), std::string::npos);
+  }
 
   for (const auto& [worlds_option, said] : std::vector<std::pair<std::string, std::string>>{
            {"--worlds=generate:street:2", "a street is a world of autopark, not of vacuum"},

@@ -243,9 +243,10 @@ SettingsTable makeAutoparkReferee() {
              "Autopark.Referee.GapBands", "Autopark.Referee.CurbBands", "Autopark.Referee.Scale",
              "Autopark.Referee.NotParkedMark", "Autopark.Referee.ContactCost"},
             {{"default", "gaps relative to the slot: a centred car gets full marks in any slot of 1.2 L or more; not "
-                         "parked is worth NotParkedMark; a contact costs a share of the mark",
+                         "parked is worth NotParkedMark; a contact costs a share of the mark; the street's calibration, "
+                         "if any, sets the time allowance from the reactive parker's time",
               {}},
-             {"fixed", "the same as default (the Autopark rubric is not calibrated per world yet)", {}},
+             {"fixed", "the default scale on every street, never a street's calibration", {}},
              {"original", "the thesis's scale: gaps of [1.5, 3.5) m to each car; any contact loses a quarter",
               {{"Autopark.Referee.GapRule", "absolute"}, {"Autopark.Referee.Scale", "thesis"}}}},
             "the grading scale: a preset of the rubric settings (a value set in the .cfg or on the command line wins)");

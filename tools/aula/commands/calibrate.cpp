@@ -56,7 +56,8 @@ int calibrateWorld(const cli::Arguments& args) {
 cli::Command calibrate() {
   cli::Command c("calibrate", "calibrate an exercise's rubric for a world: the baseline's median a 5, the anchor's a 10 "
                               "(TeleTaxi: the reference's driving time a speed mark of 10)");
-  c.positionals = {{"EXERCISE", "vacuum (its coverage scale) or teletaxi (its speed scale, for the destination)"}};
+  c.positionals = {{"EXERCISE", "vacuum (its coverage scale), teletaxi (its speed scale, for the destination) or "
+                                "autopark (its time allowance)"}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("world", "FILE", "the world to calibrate (a .world file or a shipped world's name); required"))
       .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")

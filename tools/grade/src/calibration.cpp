@@ -111,6 +111,9 @@ std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise) {
     return CalibrationSpec{"teletaxi", "driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
                            {"TeleTaxi.Destination"}};
   }
+  if (exercise == "autopark") {  // the time allowance: the thesis's reactive parker's time on that street
+    return CalibrationSpec{"autopark", "park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"}, {}};
+  }
   return std::nullopt;
 }
 
@@ -119,8 +122,7 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
   if (!spec || ex == nullptr) {
     throw ConfigError("aula calibrate: the " + request.exercise +
-                      " exercise has no world-dependent scale to calibrate yet (vacuum has: its coverage scale; teletaxi: "
-                      "its speed scale)");
+                      " exercise has no world-dependent scale to calibrate");
   }
   Calibration c;
   c.spec = *spec;
