@@ -14,6 +14,12 @@ std::vector<std::string> driverTypes() {
   return types;
 }
 
+uint64_t deviceSeed(uint64_t run_seed, const world::PluginSpec& plugin) {
+  uint64_t h = 1469598103934665603ull ^ run_seed;  // FNV-1a over "robot/plugin"
+  for (char c : plugin.owner + "/" + plugin.name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  return h;
+}
+
 std::unique_ptr<Driver> makeDriver(const std::string& type) {
   if (type == "pose3d") return std::make_unique<Pose3dDriver>();
   if (type == "motors") return std::make_unique<MotorsDriver>();

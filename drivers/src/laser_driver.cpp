@@ -46,10 +46,10 @@ void LaserDriver::attach(DriverContext& context, int robot, const world::PluginS
   const double sensor_z = spec.pose.translation().z() + mount_.translation().z();
   raycaster_ = context.raycaster_at(sensor_z);
 
-  // Noise stream per device: the run seed mixed with the robot and plugin names.
-  uint64_t h = 1469598103934665603ull ^ context.seed;
-  for (char c : plugin.owner + "/" + plugin.name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
-  rng_.seed(h);
+  // Noise: the plugin's own, or the run's preset's when larger, from this device's stream.
+  rng_.seed(deviceSeed(context.seed, plugin));
+  noise_stddev_m_ = std::max(noise_stddev_m_, context.noise.laser_stddev_m);
+  dropout_ = context.noise.laser_dropout;
 
   message_.num_ranges = samples;
   message_.ranges.assign(samples, static_cast<float>(max_range));
@@ -80,6 +80,12 @@ void LaserDriver::scan(aula::laser_t& out) {
       if (r < out.max_range) {
         r = static_cast<float>(std::clamp(r + noise(rng_), request_.min_range_m, request_.max_range_m));
       }
+    }
+  }
+  if (dropout_ > 0) {  // no echo: the beam reads max_range, as a real scanner's missing return
+    std::bernoulli_distribution lost(dropout_);
+    for (auto& r : out.ranges) {
+      if (lost(rng_)) r = static_cast<float>(request_.max_range_m);
     }
   }
 }

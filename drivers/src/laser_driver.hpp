@@ -8,7 +8,8 @@
 //                  increment = (max - min) / (samples - 1)
 //   min_range, max_range   m, default 0.08 .. 10; no hit -> max_range, closer than min -> min_range
 //   rate_hz        default 20
-//   noise_stddev   m, default 0: seeded Gaussian noise on hits
+//   noise_stddev   m, default 0: seeded Gaussian noise on hits (the run's Simulator.Noise.LaserStddev
+//                  when larger; Simulator.Noise.LaserDropout: beams with no echo read max_range)
 // Rays are cast analytically against the static geometry cut at the sensor's height and against
 // the other robots' footprints.
 
@@ -40,6 +41,7 @@ class LaserDriver : public Driver {
   double mount_yaw_rad_ = 0.0;
   geometry::ScanRequest request_;
   double noise_stddev_m_ = 0.0;
+  double dropout_ = 0.0;  // the run's Simulator.Noise.LaserDropout
   std::mt19937_64 rng_;
   Periodic schedule_;
   aula::laser_t message_;

@@ -52,6 +52,7 @@ void MotorsDriver::attach(DriverContext& context, int robot, const world::Plugin
   const double watchdog_s = plugin.getDouble("watchdog_s", 0.5);
   if (!(watchdog_s > 0)) throw world::WorldError(where + ": watchdog_s must be > 0");
   watchdog_us_ = static_cast<int64_t>(std::llround(watchdog_s * 1e6));
+  slip_rng_.seed(deviceSeed(context.seed, plugin));
   subscription_ = context.bus->subscribe(channel_, &MotorsDriver::onCommand, this);
 }
 
@@ -77,6 +78,14 @@ void MotorsDriver::step(int64_t sim_time_us) {
   if (fresh_command_) {
     last_command_us_ = sim_time_us;
     fresh_command_ = false;
+    if (context_->noise.wheel_slip > 0) {  // drawn here, in sim-time order: the same seed slips the same
+      std::normal_distribution<double> slip(1.0, context_->noise.wheel_slip);
+      const double v_factor = std::max(0.0, slip(slip_rng_));
+      // A car keeps its curvature (the steering does not slip); a differential drive's two wheels slip apart.
+      const double w_factor = limits_.ackermann ? v_factor : std::max(0.0, slip(slip_rng_));
+      command_.v_mps = std::clamp(command_.v_mps * v_factor, -limits_.max_v_mps, limits_.max_v_mps);
+      command_.w_radps = std::clamp(command_.w_radps * w_factor, -limits_.max_w_radps, limits_.max_w_radps);
+    }
   }
   if (have_command_ && sim_time_us - last_command_us_ > watchdog_us_) {
     command_ = VelocityCommand{};  // watchdog: the client went quiet, stop the robot

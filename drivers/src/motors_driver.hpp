@@ -12,11 +12,16 @@
 //                The car turns about a point on its rear axle line, as a real car does, so the
 //                centre gets the lateral speed l = -rear_axle_x * w (the rear axle never slides).
 //   watchdog_s   s of sim time, default 0.5: with no command for that long the robot stops
+// With the run's Simulator.Noise.WheelSlip, each command's v and w are delivered scaled by
+// 1 + N(0, slip), drawn when it arrives (from this device's own stream), within the limits (a car's
+// v and w by one factor: its curvature stays).
 // Non-finite commands are rejected (counted, logged); the previous command stays.
 
 #include "aula/drivers/driver.hpp"
 
 #include <aula/motors_t.hpp>
+
+#include <random>
 
 namespace lcm { class ReceiveBuffer; class Subscription; }
 
@@ -68,6 +73,7 @@ class MotorsDriver : public Driver {
   int64_t last_command_us_ = 0;
   int64_t now_us_ = 0;
   long long rejected_ = 0;
+  std::mt19937_64 slip_rng_;  // the wheel slip's draws (deviceSeed)
 };
 
 }  // namespace aula::drivers

@@ -47,6 +47,9 @@ SimulatorOptions SimulatorOptions::fromConfig(const config::Config& cfg) {
   o.lockstep_drop = std::chrono::milliseconds(cfg.getInt("Simulator.Lockstep.DropAfterMs"));
   o.duration_s = cfg.getDouble("Simulator.Duration");
   o.start_paused = cfg.getBool("Simulator.StartPaused");
+  o.noise.laser_stddev_m = cfg.getDouble("Simulator.Noise.LaserStddev");
+  o.noise.laser_dropout = cfg.getDouble("Simulator.Noise.LaserDropout");
+  o.noise.wheel_slip = cfg.getDouble("Simulator.Noise.WheelSlip");
   if (o.clock_period_us < secondsToUs(o.step_s)) {
     throw config::ConfigError(cfg.origin("Simulator.ClockPeriod") + ": Simulator.ClockPeriod must be >= the physics step");
   }
@@ -92,6 +95,7 @@ Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bu
   context_.bus = &bus_;
   context_.physics = physics_.get();
   context_.seed = static_cast<uint64_t>(options_.seed);
+  context_.noise = options_.noise;
   context_.stamper = &stamper_;
   context_.raycaster_at = [this](double z_m) { return raycasterAt(z_m); };
   for (int r = 0; r < physics_->robotCount(); ++r) {

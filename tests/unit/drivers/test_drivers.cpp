@@ -164,6 +164,44 @@ TEST(LaserDriver, RangesMatchAnalyticDistances) {
   }
 }
 
+// The run's noise (Simulator.Noise.*): about the asked share of beams read max_range, the others
+// stay near the truth; the wheels deliver another distance than commanded, the same for the same
+// seed.
+TEST(SensorNoise, DropoutsReadMaxRangeAndSlipChangesTheDistanceDriven) {
+  aula::lcmbus::Bus bus("memq://");
+  Listener listener(bus);
+  aula::sim::SimulatorOptions noisy = fastOptions();
+  noisy.noise.laser_dropout = 0.2;
+  aula::sim::Simulator sim(room(0.7, -1.2, 0.3), noisy, bus);
+  int lost = 0, beams = 0;
+  for (int i = 0; i < 10; ++i) {
+    runFor(sim, bus, 0.05);
+    for (float r : listener.laser.ranges) {
+      lost += r == listener.laser.max_range ? 1 : 0;  // the room is 10 m wide: no beam reaches 10 m
+      ++beams;
+    }
+  }
+  EXPECT_NEAR(static_cast<double>(lost) / beams, 0.2, 0.03) << lost << " of " << beams;
+
+  auto driven = [](double slip, uint64_t seed) {
+    aula::lcmbus::Bus slip_bus("memq://");
+    Listener poses(slip_bus);
+    aula::sim::SimulatorOptions o = fastOptions();
+    o.noise.wheel_slip = slip;
+    o.seed = static_cast<int64_t>(seed);
+    aula::sim::Simulator slipping(room(-3, 0, 0), o, slip_bus);
+    for (int i = 0; i < 50; ++i) {
+      send(slip_bus, 1.0);
+      runFor(slipping, slip_bus, 0.04);
+    }
+    return poses.pose.x;
+  };
+  const double exact = driven(0.0, 1), slipped = driven(0.2, 1);
+  EXPECT_GT(std::abs(slipped - exact), 0.01) << "no slip: " << exact;
+  EXPECT_DOUBLE_EQ(driven(0.2, 1), slipped) << "the same seed slips the same";
+  EXPECT_NE(driven(0.2, 2), slipped) << "another seed slips otherwise";
+}
+
 class WallImpact : public ::testing::TestWithParam<double> {};
 
 TEST_P(WallImpact, StopsAtTheWallWithBumperPressed) {

@@ -22,6 +22,15 @@ namespace aula::geometry { class Raycaster2D; }
 
 namespace aula::drivers {
 
+// Sensor realism for a whole run (Simulator.Noise.*, off by default), on top of what each plugin
+// declares; drawn from each device's own stream of the run's seed (deviceSeed), so the same seed
+// gives the same run.
+struct SensorNoise {
+  double laser_stddev_m = 0.0;  // Gaussian noise on every laser hit
+  double laser_dropout = 0.0;   // the share of beams that get no echo (read max_range)
+  double wheel_slip = 0.0;      // relative stddev of the speed the wheels deliver, drawn per command
+};
+
 // What a driver may touch. Owned by the simulator; outlives every driver.
 struct DriverContext {
   lcmbus::Bus* bus = nullptr;
@@ -29,6 +38,7 @@ struct DriverContext {
   // Static world geometry cut at a height (lasers ask for their mount height).
   std::function<const geometry::Raycaster2D*(double z_m)> raycaster_at;
   uint64_t seed = 0;                                 // run seed (noise)
+  SensorNoise noise;                                 // the run's sensor realism
   // Numbers (and in a graded run signs) what the referee grades: the pose and the bumper.
   auth::Stamper* stamper = nullptr;
 };
@@ -43,6 +53,9 @@ class Driver {
   // World reset: forget held commands and schedules.
   virtual void reset() {}
 };
+
+// A device's own noise stream: the run seed mixed with its robot's and plugin's names.
+uint64_t deviceSeed(uint64_t run_seed, const world::PluginSpec& plugin);
 
 // The driver types this build knows, by the name used in <plugin filename="...">.
 std::vector<std::string> driverTypes();

@@ -43,6 +43,7 @@ struct SimulatorOptions {
   std::chrono::milliseconds lockstep_drop{5000};
   double duration_s = 0.0;           // stop after this much sim time; 0 = run until stopped
   bool start_paused = false;
+  drivers::SensorNoise noise;        // Simulator.Noise.*: sensor realism, off by default
   // Alone (three terminals: no launcher watches the processes): a client whose process is gone
   // without leaving (killed, crashed) ends the run. Under the launcher (aula-sim --status-fd) it
   // watches its children itself and tells the referee why.
