@@ -431,3 +431,61 @@ TEST(GradeAClass, GeneratedHeldOutWorldsAreCalibratedAndTheSameTwice) {
   EXPECT_FALSE(fs::exists(dir / "no" / "runs"));
   fs::remove_all(dir);
 }
+
+// A teacher's city that declares its own destinations (<aula:destination>), where the shipped
+// default (120, -40) is inside a building (issue 27): aula run and aula config drive to its first,
+// and aula grade grades over each, each calibrated on its own (the reference's time to it). A
+// malformed declaration stops the grade before any run.
+TEST(GradeAClass, ATeachersCityIsGradedOverTheDestinationsItDeclares) {
+  const fs::path dir = privateDir();
+  std::string city = readFile(std::string(AULA_SOURCE_DIR) + "/worlds/cityLarge.world");
+  const std::string declared =
+      "\n    <aula:destination name=\"plaza\">-40 40</aula:destination>"
+      "\n    <aula:destination name=\"far\">220 240</aula:destination>"
+      "\n    <model name=\"new_block\"><static>true</static><pose>120 -40 2.5 0 0 0</pose><link name=\"l\">"
+      "<collision name=\"c\"><geometry><box><size>12 12 5</size></box></geometry></collision></link></model>";
+  const auto world_open = city.find('>', city.find("<world")) + 1;
+  writeFile(dir / "teacher_city.world", city.substr(0, world_open) + declared + city.substr(world_open));
+  fs::create_directories(dir / "class");
+  fs::copy(std::string(AULA_TEST_DATA_DIR) + "/python/teletaxi_follow", dir / "class" / "bob", fs::copy_options::recursive);
+  const std::string aula = std::string(AULA_BIN_DIR) + "/aula";
+
+  const std::string shown = (dir / "config.txt").string();
+  ASSERT_EQ(runToEnd({aula, "config", "teletaxi", "--world=" + (dir / "teacher_city.world").string()}, shown, 60), 0)
+      << readFile(shown);
+  EXPECT_NE(readFile(shown).find("TeleTaxi.Destination = -40, 40 m    [the world's destination 'plaza']"), std::string::npos)
+      << readFile(shown);
+  // The shipped default is refused there: the test's building is where it should be.
+  EXPECT_EQ(runToEnd({aula, "config", "teletaxi", "--world=" + (dir / "teacher_city.world").string(),
+                      "--TeleTaxi.Destination=120,-40"},
+                     shown, 60),
+            2)
+      << readFile(shown);
+
+  const std::string log = (dir / "grade.txt").string();
+  ASSERT_EQ(runToEnd({aula, "grade", "teletaxi", (dir / "class" / "bob").string(), "--worlds=" + (dir / "teacher_city.world").string(),
+                      "--seeds=1", "--calibration-seeds=1", "--out=" + (dir / "out").string()},
+                     log, 300),
+            0)
+      << readFile(log);
+  const auto rows = readGrades((dir / "out" / "grades.csv").string());
+  EXPECT_EQ(rows.at("bob").at("runs"), "2") << readFile(log);
+  EXPECT_EQ(rows.at("bob").at("runs_failed"), "0") << readFile(log);
+  for (const std::string destination : {"plaza", "far"}) {
+    const std::string result = readFile((dir / "out" / "runs" / "bob" / ("teacher_city-" + destination + "-seed1.json")).string());
+    EXPECT_NE(result.find("\"calibration\": \"teacher_city-" + destination + "-"), std::string::npos) << result;
+    EXPECT_GT(jsonNumber(result, "mark"), 7.0) << result;
+  }
+
+  writeFile(dir / "bad_city.world", city.substr(0, world_open) + "\n<aula:destination name=\"x\">1</aula:destination>" +
+                                        city.substr(world_open));
+  EXPECT_EQ(runToEnd({aula, "grade", "teletaxi", (dir / "class" / "bob").string(), "--worlds=" + (dir / "bad_city.world").string(),
+                      "--out=" + (dir / "bad").string()},
+                     log, 60),
+            2)
+      << readFile(log);
+  EXPECT_NE(readFile(log).find("<aula:destination name=\"x\">: expected two numbers, X Y in metres"), std::string::npos)
+      << readFile(log);
+  EXPECT_FALSE(fs::exists(dir / "bad" / "runs"));
+  fs::remove_all(dir);
+}

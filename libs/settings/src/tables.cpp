@@ -151,6 +151,8 @@ SettingsTable makeTaxiReferee() {
          "the reference's time to the destination");
   t.real("TeleTaxi.Referee.MinTravel", 2, "m", 0, 1000,
          "the distance mark counts only when the taxi travelled at least this far since GO!");
+  t.text("TeleTaxi.Referee.Calibration", "",
+         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
   t.presets("TeleTaxi.Referee.Rubric", "default",
             {"TeleTaxi.Referee.ArrivalRadius", "TeleTaxi.Referee.FullMarkSpeed", "TeleTaxi.Referee.FullMarkTime",
              "TeleTaxi.Referee.MinTravel"},
@@ -249,6 +251,8 @@ SettingsTable makeAutoparkReferee() {
   t.reals("Autopark.Referee.ContactCost", "0.1, 0.1, 0.05", 3, "", 0, 10,
           "Scale parked: the share of the mark each contact costs [0], plus [1] per second in contact, plus [2] per cm "
           "it went into what it touched (at most the whole mark)");
+  t.text("Autopark.Referee.Calibration", "",
+         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
   t.presets("Autopark.Referee.Rubric", "default",
             {"Autopark.Referee.FullMarkTime", "Autopark.Referee.GapRule", "Autopark.Referee.SlotGapFractions",
              "Autopark.Referee.GapBands", "Autopark.Referee.CurbBands", "Autopark.Referee.Scale",

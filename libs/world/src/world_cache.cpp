@@ -12,7 +12,7 @@
 namespace aula::world {
 namespace {
 
-constexpr const char* kHeader = "aula-world-cache-v2";
+constexpr const char* kHeader = "aula-world-cache-v3";  // v3: the world's destinations
 
 std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 
@@ -122,6 +122,8 @@ std::optional<WorldSpec> parseEntry(std::istream& in) {
       robot.shape_offset = readPose(offset);
       if (!shape || !pose || !offset) return std::nullopt;
       spec.robots.push_back(robot);
+    } else if (kind == "destination" && f.size() == 4) {
+      spec.destinations.push_back(Destination{f[1], std::stod(f[2]), std::stod(f[3])});
     } else if (kind == "plugin" && f.size() == 4 && !spec.robots.empty()) {
       spec.robots.back().plugins.push_back(PluginSpec{f[1], f[2], {}, f[3]});
     } else if (kind == "param" && f.size() == 3 && !spec.robots.empty() && !spec.robots.back().plugins.empty()) {
@@ -173,6 +175,9 @@ void writeCachedWorld(const std::string& key, const WorldSpec& spec, const std::
   for (const auto& input : inputs) out << "input\t" << sha256OfFile(input) << "\t" << escape(input) << "\n";
   out << "world\t" << escape(spec.name) << "\t" << escape(spec.source_path) << "\t" << spec.sha256 << "\t"
       << number(spec.physics_step_s) << "\n";
+  for (const auto& d : spec.destinations) {
+    out << "destination\t" << escape(d.name) << "\t" << number(d.x_m) << "\t" << number(d.y_m) << "\n";
+  }
   for (const auto& object : spec.statics) {
     out << "static\t" << escape(object.name) << "\t" << numbers(object.shape) << "\t" << numbers(object.pose) << "\n";
   }

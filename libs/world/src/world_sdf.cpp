@@ -108,6 +108,27 @@ namespace {
 // Static geometry of a static model (and of its nested models), in world coordinates.
 // <plane> collisions (a Gazebo ground plane) are skipped: Aula's physics keeps robots on the
 // ground with a planar joint, and a ground would be an obstacle in every map.
+// <aula:destination name="N">X Y</aula:destination> under <world> (sdformat keeps an element
+// with a namespace prefix as it is): each a name, unique, and two numbers.
+void readDestinations(const sdf::ElementPtr& world, const std::string& path, WorldSpec& spec) {
+  for (sdf::ElementPtr e = world->GetFirstElement(); e; e = e->GetNextElement()) {
+    if (e->GetName() != "aula:destination") continue;
+    const std::string name = e->HasAttribute("name") ? e->GetAttribute("name")->GetAsString() : "";
+    const std::string where = path + ": <aula:destination" + (name.empty() ? "" : " name=\"" + name + "\"") + ">";
+    if (name.empty()) throw WorldError(where + ": needs a name attribute");
+    for (const Destination& d : spec.destinations) {
+      if (d.name == name) throw WorldError(where + ": a second destination of that name");
+    }
+    std::istringstream text(e->GetValue() != nullptr ? e->GetValue()->GetAsString() : "");
+    Destination d{name};
+    std::string more;
+    if (!(text >> d.x_m >> d.y_m) || (text >> more) || !std::isfinite(d.x_m) || !std::isfinite(d.y_m)) {
+      throw WorldError(where + ": expected two numbers, X Y in metres");
+    }
+    spec.destinations.push_back(d);
+  }
+}
+
 void addStatics(const sdf::Model& model, const Eigen::Isometry3d& model_pose, const std::string& prefix,
                 const std::string& file, WorldSpec& spec) {
   const std::string name = prefix + model.Name();
@@ -259,6 +280,8 @@ extern "C" __attribute__((visibility("default"))) void aula_world_parse_sdf(cons
       physics->GetElement("max_step_size")->GetExplicitlySetInFile() && world->PhysicsCount() > 0) {
     spec.physics_step_s = world->PhysicsByIndex(0)->MaxStepSize();
   }
+
+  readDestinations(world->Element(), path, spec);
 
   for (uint64_t m = 0; m < world->ModelCount(); ++m) {
     const sdf::Model* model = world->ModelByIndex(m);

@@ -52,6 +52,21 @@ void adoptTheWorldsOnlyRobot(const settings::Exercise& ex, const world::WorldSpe
             << "exercise's plugins, '" << robot->name << "'\n";
 }
 
+// A world that declares destinations (<aula:destination>) is driven to its first, unless the
+// command line names one (`aula grade` names each in turn): every process is given it.
+void driveToTheWorldsDestination(const settings::Exercise& ex, const world::WorldSpec& world, RunSettings& run) {
+  const std::string key = ex.section + ".Destination";
+  if (world.destinations.empty() || !run.component().has(key) || run.overrides.has(key)) return;
+  const world::Destination& d = world.destinations.front();
+  std::ostringstream value;
+  value << d.x_m << ", " << d.y_m;
+  const std::string origin = "the world's destination '" + d.name + "'";
+  run.overrides.set(key, value.str(), origin);
+  for (auto& [table, cfg] : run.effective) {
+    if (table->declares(key)) cfg.set(key, value.str(), origin);
+  }
+}
+
 // With the default rubric, the world's calibration file (W.rubric.cfg, `aula calibrate`) sets the
 // rubric settings the .cfg and the command line leave alone, for every process that reads them;
 // the referee is told which file it was, for its report.
@@ -158,6 +173,7 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);
   const world::WorldSpec world = world::loadWorld(run.world);  // read once for the checks below
   adoptTheWorldsOnlyRobot(ex, world, run);
+  driveToTheWorldsDestination(ex, world, run);
   applyCalibration(ex, file, world, run, calibration_file);
   checkPointsOnTheMap(ex, run.component(), world);
   return run;

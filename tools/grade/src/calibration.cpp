@@ -88,6 +88,25 @@ std::string effectiveSetting(const settings::Exercise& ex, const std::string& ke
   return ex.component_settings->resolve(file, siblings).getString(key);
 }
 
+// The context keys' values in the calibration's runs; a world's declared destination is where its
+// runs drive when no setting names one (as aula run does).
+std::vector<std::pair<std::string, std::string>> contextOf(const CalibrationSpec& spec, const settings::Exercise& ex,
+                                                           const world::WorldSpec& world,
+                                                           const std::vector<std::pair<std::string, std::string>>& overrides) {
+  std::vector<std::pair<std::string, std::string>> context;
+  for (const std::string& key : spec.context_keys) {
+    const bool named = std::any_of(overrides.begin(), overrides.end(), [&](const auto& s) { return s.first == key; });
+    if (key == ex.section + ".Destination" && !named && !world.destinations.empty()) {
+      std::ostringstream value;
+      value << world.destinations.front().x_m << ", " << world.destinations.front().y_m;
+      context.emplace_back(key, value.str());
+    } else {
+      context.emplace_back(key, effectiveSetting(ex, key, overrides));
+    }
+  }
+  return context;
+}
+
 // Each anchor run must have earned a mark: a scale of one point is the anchor's (a TeleTaxi
 // reference that did not arrive sets no time).
 void requireMarks(const Manifest& manifest, const std::string& anchor) {
@@ -127,7 +146,8 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   Calibration c;
   c.spec = *spec;
   c.world = fs::absolute(request.world).string();
-  c.world_sha256 = world::loadWorld(c.world).sha256;
+  const world::WorldSpec world = world::loadWorld(c.world);
+  c.world_sha256 = world.sha256;
   c.seeds = request.seeds;
   if (spec->baseline.empty() && !request.baseline.empty()) {
     throw ConfigError("aula calibrate --baseline=" + request.baseline + ": the " + request.exercise +
@@ -158,7 +178,7 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
     std::cout << "[" << p.done << "/" << p.total << "] " << run.plugin << " seed " << run.seed << ": "
               << number(result.value("mark", 0.0)) << "\n" << std::flush;
   });
-  for (const std::string& key : spec->context_keys) c.context.emplace_back(key, effectiveSetting(*ex, key, request.overrides));
+  c.context = contextOf(*spec, *ex, world, request.overrides);
   c.anchor = measure(manifest, "anchor", anchor, spec->measure);
   if (baseline.empty()) {
     requireMarks(manifest, anchor);

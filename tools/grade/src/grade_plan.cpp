@@ -161,30 +161,36 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
   return out;
 }
 
-namespace {
-
-struct GradedWorld {
-  std::string path, name, sha256;  // name: the file's, or "house-1a2b3c4d.world" when two share one
-};
-
-// Worlds told apart by content (a fixed model reruns the world); two with one file name get
-// their hash's first 8 digits in their names, so that neither's runs overwrite the other's.
-std::vector<GradedWorld> gradedWorlds(const std::vector<std::string>& paths) {
+std::vector<GradedWorld> gradedWorlds(const GradeRequest& request) {
   std::vector<GradedWorld> worlds;
-  for (const std::string& path : paths) {
-    worlds.push_back({path, fs::path(path).filename().string(), world::loadWorld(path).sha256});
+  const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
+  const std::string destination_key = ex != nullptr ? ex->section + ".Destination" : "";
+  const bool destination_given = std::any_of(request.overrides.begin(), request.overrides.end(),
+                                             [&](const auto& setting) { return setting.first == destination_key; });
+  for (const std::string& path : request.worlds) {
+    const world::WorldSpec spec = world::loadWorld(path);
+    const bool declares = ex != nullptr && ex->component_settings->declares(destination_key) && !destination_given;
+    if (!declares || spec.destinations.empty()) {
+      worlds.push_back({path, fs::path(path).filename().string(), spec.sha256, "", path});
+      continue;
+    }
+    for (const world::Destination& d : spec.destinations) {  // graded over each, as a world of its own
+      std::ostringstream value;
+      value << d.x_m << "," << d.y_m;
+      const fs::path file(path);
+      worlds.push_back({path, file.stem().string() + "-" + d.name + file.extension().string(), spec.sha256,
+                        destination_key + "=" + value.str(), path + "#" + d.name});
+    }
   }
-  for (GradedWorld& w : worlds) {
+  for (GradedWorld& w : worlds) {  // two different worlds of one file name: named apart by their hash
     const auto shared = std::count_if(worlds.begin(), worlds.end(), [&](const GradedWorld& other) {
       return fs::path(other.path).filename() == fs::path(w.path).filename() && other.sha256 != w.sha256;
     });
-    const fs::path file(w.path);
+    const fs::path file(w.name);
     if (shared > 0) w.name = file.stem().string() + "-" + w.sha256.substr(0, 8) + file.extension().string();
   }
   return worlds;
 }
-
-}  // namespace
 
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir) {
   Manifest m;
@@ -197,7 +203,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
   // Each run on its own port, so runs at once never hear each other (a group alone is not
   // enough: engineering.md). A random base keeps two batches on one machine apart too.
   std::random_device random;
-  const std::vector<GradedWorld> worlds = gradedWorlds(request.worlds);
+  const std::vector<GradedWorld> worlds = gradedWorlds(request);
   int index = 0;
   for (const Submission& s : submissions) {
     for (const GradedWorld& world : worlds) {
@@ -228,7 +234,8 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
                     "--lcm-url=udpm://239.255.76.67:0?ttl=0"};
           if (request.record) r.argv.push_back("--record=" + stem.string() + ".lcmlog");
           for (const auto& [key, value] : request.overrides) r.settings.push_back("--" + key + "=" + value);
-          const auto calibration = request.calibrations.find(world_path);
+          if (!world.destination.empty()) r.settings.push_back("--" + world.destination);
+          const auto calibration = request.calibrations.find(world.key);
           if (calibration != request.calibrations.end()) r.settings.push_back("--calibration=" + calibration->second);
           r.argv.insert(r.argv.end(), r.settings.begin(), r.settings.end());
         }

@@ -44,11 +44,18 @@ void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
   if (request.calibration_seeds.empty() || ex == nullptr || !calibrationSpecOf(request.exercise)) return;
   if (rubricPreset(request, *ex) != "default") return;  // fixed, original: no world's scale
   const std::string shipped = fs::path(config::dataDir() + "/worlds").lexically_normal().string() + "/";
-  for (const std::string& world_path : request.worlds) {
+  for (const GradedWorld& graded : gradedWorlds(request)) {
+    const std::string& world_path = graded.path;
     if (fs::exists(calibrationPathOf(world_path))) continue;  // the teacher's own, applied by aula run
     if (world_path.rfind(shipped, 0) == 0) continue;  // Aula's own worlds: the rubric was made on them
-    const std::string sha256 = world::loadWorld(world_path).sha256;
-    const std::string name = fs::path(world_path).stem().string() + "-" + calibrationKey(request, sha256).substr(0, 12);
+    auto overrides = request.overrides;  // the grade's settings, and the destination of this graded world
+    if (!graded.destination.empty()) {
+      const auto equals = graded.destination.find('=');
+      overrides.emplace_back(graded.destination.substr(0, equals), graded.destination.substr(equals + 1));
+    }
+    GradeRequest keyed = request;
+    keyed.overrides = overrides;
+    const std::string name = fs::path(graded.name).stem().string() + "-" + calibrationKey(keyed, graded.sha256).substr(0, 12);
     const fs::path file = fs::path(request.out_dir) / "calibrations" / (name + ".rubric.cfg");
     if (!fs::exists(file)) {
       std::cout << "calibrating " << world_path << " (" << request.calibration_seeds.size() << " seeds)\n" << std::flush;
@@ -58,11 +65,11 @@ void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
       calibration.seeds = request.calibration_seeds;
       calibration.jobs = request.jobs;
       calibration.out_dir = (fs::path(request.out_dir) / "calibrations" / name).string();
-      calibration.overrides = request.overrides;
+      calibration.overrides = overrides;
       const std::string command = "aula grade " + request.exercise + " (calibrating " + fs::path(world_path).filename().string() + ")";
       config::writeFileAtomically(file.string(), calibrationText(calibrate(calibration, bin_dir), command), "calibration");
     }
-    request.calibrations[world_path] = file.string();
+    request.calibrations[graded.key] = file.string();
   }
 }
 
@@ -71,9 +78,18 @@ void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
 // no robot, a destination inside a building) stops the grade here, before any student's run.
 void checkWorlds(const GradeRequest& request, const std::string& bin_dir) {
   const std::string log = (fs::path(request.out_dir) / "world-check.log").string();
-  for (const std::string& world : request.worlds) {
+  for (const std::string& world : request.worlds) {  // each readable first (gradedWorlds reads them)
+    try {
+      world::loadWorld(world);
+    } catch (const world::WorldError& e) {
+      throw ConfigError("aula grade: no run can start on " + world + " (no student's run started): " + e.what());
+    }
+  }
+  for (const GradedWorld& graded : gradedWorlds(request)) {
+    const std::string& world = graded.path;
     std::vector<std::string> argv = {bin_dir + "/aula", "config", request.exercise, "--world=" + world};
     for (const auto& [key, value] : request.overrides) argv.push_back("--" + key + "=" + value);
+    if (!graded.destination.empty()) argv.push_back("--" + graded.destination);
     process::ChildProcess child(argv, log, log);
     const auto code = child.wait(std::chrono::seconds(120));
     if (code == 0) continue;
@@ -82,7 +98,8 @@ void checkWorlds(const GradeRequest& request, const std::string& bin_dir) {
     for (std::string line; std::getline(in, line);) {
       if (line.rfind("aula: ", 0) == 0) said += (said.empty() ? "" : "; ") + line.substr(6);
     }
-    throw ConfigError("aula grade: no run can start on " + world + " (no student's run started): " +
+    throw ConfigError("aula grade: no run can start on " + world + (graded.destination.empty() ? "" : " with " + graded.destination) +
+                      " (no student's run started): " +
                       (said.empty() ? "aula config exited with " + (code ? std::to_string(*code) : std::string("no code")) : said));
   }
   fs::remove(log);

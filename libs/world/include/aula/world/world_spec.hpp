@@ -77,6 +77,13 @@ struct RobotSpec {
   const PluginSpec* findPluginNamed(const std::string& name) const;
 };
 
+// A place a world declares for its exercise to drive to (TeleTaxi), under <world>:
+//   <aula:destination name="plaza">-40 40</aula:destination>   (x y, m)
+struct Destination {
+  std::string name;
+  double x_m = 0.0, y_m = 0.0;
+};
+
 struct WorldSpec {
   std::string name;
   std::string source_path;
@@ -84,6 +91,7 @@ struct WorldSpec {
   double physics_step_s = 0.0;  // <physics><max_step_size>; 0 when the world does not say
   std::vector<StaticObject> statics;
   std::vector<RobotSpec> robots;
+  std::vector<Destination> destinations;  // in the file's order; names unique
 
   const RobotSpec* findRobot(const std::string& name) const;
 };

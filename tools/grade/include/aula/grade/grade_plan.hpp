@@ -28,7 +28,7 @@ struct GradeRequest {
   // an exercise that has a calibration): the baseline and the anchor over these seeds, cached in
   // OUT/calibrations by the world's SHA-256 and the grade's settings. Empty: no calibration.
   std::vector<long long> calibration_seeds;
-  std::map<std::string, std::string> calibrations;  // world path -> its calibration file (the runs' --calibration)
+  std::map<std::string, std::string> calibrations;  // GradedWorld::key -> its calibration file (the runs' --calibration)
   int jobs = 1;
   std::string out_dir;
   std::string engine = "local";  // local | slurm
@@ -109,6 +109,16 @@ struct Manifest {
   static Manifest load(const std::string& path);  // throws ConfigError naming the file
 };
 
+
+// A world the grade runs on: a world file, or one of the destinations it declares (TeleTaxi: a
+// world with <aula:destination>s is graded over each, unless the grade's settings name one).
+struct GradedWorld {
+  std::string path, name, sha256;  // name: the file's ("city.world"), "city-plaza.world" for a destination,
+                                   // or "house-1a2b3c4d.world" when two different worlds share one file name
+  std::string destination;         // "TeleTaxi.Destination=-40,40", or "" for the world's file alone
+  std::string key;                 // the path, or "path#destination": request.calibrations' key
+};
+std::vector<GradedWorld> gradedWorlds(const GradeRequest& request);
 
 // Every submission x world x seed, each on its own LCM port.
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir);
