@@ -434,8 +434,8 @@ TEST(GradeAClass, GeneratedHeldOutWorldsAreCalibratedAndTheSameTwice) {
 
 // A teacher's city that declares its own destinations (<aula:destination>), where the shipped
 // default (120, -40) is inside a building (issue 27): aula run and aula config drive to its first,
-// and aula grade grades over each, each calibrated on its own (the reference's time to it). A
-// malformed declaration stops the grade before any run.
+// and aula grade grades over each, each calibrated on its own (the reference's time to it); so is
+// a generated city over the two it declares. A malformed declaration stops the grade before any run.
 TEST(GradeAClass, ATeachersCityIsGradedOverTheDestinationsItDeclares) {
   const fs::path dir = privateDir();
   std::string city = readFile(std::string(AULA_SOURCE_DIR) + "/worlds/cityLarge.world");
@@ -475,6 +475,35 @@ TEST(GradeAClass, ATeachersCityIsGradedOverTheDestinationsItDeclares) {
     const std::string result = readFile((dir / "out" / "runs" / "bob" / ("teacher_city-" + destination + "-seed1.json")).string());
     EXPECT_NE(result.find("\"calibration\": \"teacher_city-" + destination + "-"), std::string::npos) << result;
     EXPECT_GT(jsonNumber(result, "mark"), 7.0) << result;
+  }
+
+  // A generated city declares two destinations (road crossings): graded over both, each
+  // calibrated; the reference gets at least 9.5 on each, the BFS student (slower) less.
+  ASSERT_EQ(runToEnd({aula, "grade", "teletaxi", (dir / "class" / "bob").string(), "--worlds=generate:city:1,seed=5", "--seeds=1",
+                      "--calibration-seeds=1", "--out=" + (dir / "generated").string()},
+                     log, 300),
+            0)
+      << readFile(log);
+  EXPECT_EQ(readGrades((dir / "generated" / "grades.csv").string()).at("bob").at("runs"), "2") << readFile(log);
+  for (const auto& entry : fs::directory_iterator(dir / "generated" / "calibrations")) {
+    if (entry.path().extension() != ".cfg") continue;
+    const std::string name = entry.path().filename().string();  // city-seed5-1-d1-<key>.rubric.cfg
+    const std::string graded = name.substr(0, std::string("city-seed5-1-d1").size());
+    const std::string text = readFile(entry.path().string());
+    const auto at = text.find("Calibration.Setting.TeleTaxi.Destination = ");
+    ASSERT_NE(at, std::string::npos) << text;
+    const std::string destination = text.substr(at + 43, text.find('\n', at) - at - 43);
+    const std::string report = (dir / (graded + "-reference.json")).string();
+    ASSERT_EQ(runToEnd({aula, "run", "teletaxi", "--headless", "--algorithm=reference",
+                        "--world=" + (dir / "generated" / "worlds" / "city-seed5-1.world").string(),
+                        "--TeleTaxi.Destination=" + destination, "--calibration=" + entry.path().string(), "--report=" + report,
+                        "--lcm-url=" + privateLcmUrl()},
+                       log, 120),
+              0)
+        << readFile(log);
+    EXPECT_GE(jsonNumber(readFile(report), "mark"), 9.5) << readFile(report);
+    const std::string student = readFile((dir / "generated" / "runs" / "bob" / (graded + "-seed1.json")).string());
+    EXPECT_LT(jsonNumber(student, "mark"), jsonNumber(readFile(report), "mark")) << student;
   }
 
   writeFile(dir / "bad_city.world", city.substr(0, world_open) + "\n<aula:destination name=\"x\">1</aula:destination>" +

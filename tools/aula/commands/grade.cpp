@@ -44,7 +44,7 @@ cli::Command grade() {
                    {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own); "
-                                 "generate:house:5,seed=7 (street for autopark) writes held-out worlds into OUT/worlds"))
+                                 "generate:house:5,seed=7 (city for teletaxi, street for autopark) writes held-out worlds into OUT/worlds"))
       .text("seeds", "1", "the seeds: 1-5, 1,4,9 or 2-3,7")
       .text("calibration-seeds", "1-10", "the seeds each world without a calibration file is calibrated on (the "
                                          "baseline's and the reference's runs, cached in OUT/calibrations); off: none")

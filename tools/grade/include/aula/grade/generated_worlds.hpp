@@ -6,8 +6,9 @@
 // - house (vacuum): the rooms (2-4 x 1-3), their sizes and doors, the furniture (1-3 boxes a
 //   room), the start room and heading;
 // - street (autopark): the slot (1.3 to 2 lengths of the 4 m car), the curb's offset, the neighbours' sizes
-//   (car, van, small), the car's start.
-// A city (TeleTaxi) is refused for now: its destinations must come from the world.
+//   (car, van, small), the car's start;
+// - city (teletaxi): the blocks (2-4 a side, split into buildings), the roads' width, the city's
+//   size, and two destinations it declares (road crossings), over which it is graded.
 
 #include <string>
 #include <vector>
