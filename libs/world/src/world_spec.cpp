@@ -24,6 +24,12 @@
 
 namespace aula::world {
 
+std::string settingValue(const Destination& destination) {
+  std::ostringstream value;
+  value << destination.x_m << ", " << destination.y_m;
+  return value.str();
+}
+
 const std::map<std::string, std::set<std::string>>& pluginKeys() {
   static const std::map<std::string, std::set<std::string>> keys = {
       {"pose3d", {"channel", "rate_hz"}},

@@ -58,12 +58,11 @@ void driveToTheWorldsDestination(const settings::Exercise& ex, const world::Worl
   const std::string key = ex.section + ".Destination";
   if (world.destinations.empty() || !run.component().has(key) || run.overrides.has(key)) return;
   const world::Destination& d = world.destinations.front();
-  std::ostringstream value;
-  value << d.x_m << ", " << d.y_m;
+  const std::string value = world::settingValue(d);
   const std::string origin = "the world's destination '" + d.name + "'";
-  run.overrides.set(key, value.str(), origin);
+  run.overrides.set(key, value, origin);
   for (auto& [table, cfg] : run.effective) {
-    if (table->declares(key)) cfg.set(key, value.str(), origin);
+    if (table->declares(key)) cfg.set(key, value, origin);
   }
 }
 

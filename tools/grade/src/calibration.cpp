@@ -80,12 +80,7 @@ std::string effectiveSetting(const settings::Exercise& ex, const std::string& ke
   for (const auto& [k, value] : overrides) {
     if (k == key) return value;
   }
-  config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
-  std::vector<const config::SettingsTable*> siblings;
-  for (const auto* t : ex.tables()) {
-    if (t != ex.component_settings) siblings.push_back(t);
-  }
-  return ex.component_settings->resolve(file, siblings).getString(key);
+  return componentSettings(ex).getString(key);
 }
 
 // The context keys' values in the calibration's runs; a world's declared destination is where its
@@ -97,9 +92,7 @@ std::vector<std::pair<std::string, std::string>> contextOf(const CalibrationSpec
   for (const std::string& key : spec.context_keys) {
     const bool named = std::any_of(overrides.begin(), overrides.end(), [&](const auto& s) { return s.first == key; });
     if (key == ex.section + ".Destination" && !named && !world.destinations.empty()) {
-      std::ostringstream value;
-      value << world.destinations.front().x_m << ", " << world.destinations.front().y_m;
-      context.emplace_back(key, value.str());
+      context.emplace_back(key, world::settingValue(world.destinations.front()));
     } else {
       context.emplace_back(key, effectiveSetting(ex, key, overrides));
     }

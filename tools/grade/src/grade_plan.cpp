@@ -175,11 +175,9 @@ std::vector<GradedWorld> gradedWorlds(const GradeRequest& request) {
       continue;
     }
     for (const world::Destination& d : spec.destinations) {  // graded over each, as a world of its own
-      std::ostringstream value;
-      value << d.x_m << "," << d.y_m;
       const fs::path file(path);
       worlds.push_back({path, file.stem().string() + "-" + d.name + file.extension().string(), spec.sha256,
-                        destination_key + "=" + value.str(), path + "#" + d.name});
+                        destination_key + "=" + world::settingValue(d), path + "#" + d.name});
     }
   }
   for (GradedWorld& w : worlds) {  // two different worlds of one file name: named apart by their hash

@@ -40,17 +40,21 @@ long long parseInteger(const std::string& text, const std::string& what) {
 
 // The exercise's own world: its .cfg's (or the declared default) <Section>.World.
 std::string defaultWorld(const settings::Exercise& ex) {
-  const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
-  std::vector<const config::SettingsTable*> siblings;
-  for (const auto* t : ex.tables()) {
-    if (t != ex.component_settings) siblings.push_back(t);
-  }
-  const config::Config cfg = ex.component_settings->resolve(file, siblings);
+  const config::Config cfg = componentSettings(ex);
   const std::string key = ex.section + ".World";
   return config::resolveWorldPath(cfg.getString(key), cfg.origin(key) + ": " + key);
 }
 
 }  // namespace
+
+config::Config componentSettings(const settings::Exercise& ex) {
+  const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
+  std::vector<const config::SettingsTable*> siblings;
+  for (const auto* t : ex.tables()) {
+    if (t != ex.component_settings) siblings.push_back(t);
+  }
+  return ex.component_settings->resolve(file, siblings);
+}
 
 std::vector<long long> parseSeeds(const std::string& text) {
   std::vector<long long> seeds;

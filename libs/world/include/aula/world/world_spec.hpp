@@ -84,6 +84,9 @@ struct Destination {
   double x_m = 0.0, y_m = 0.0;
 };
 
+// The destination as a setting's value ("-40, 40": <Section>.Destination).
+std::string settingValue(const Destination& destination);
+
 struct WorldSpec {
   std::string name;
   std::string source_path;

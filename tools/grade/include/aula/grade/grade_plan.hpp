@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+namespace aula::settings { struct Exercise; }
+
 namespace aula::grade {
 
 struct GradeRequest {
@@ -59,6 +61,8 @@ struct GradeOptions {
 // Checks the exercise, the submissions and the worlds; throws config::ConfigError (exit 2) naming
 // the option or folder that is wrong.
 GradeRequest parseRequest(const GradeOptions& options);
+// The exercise's component settings as its own .cfg (in the data folder) and the defaults give them.
+config::Config componentSettings(const settings::Exercise& ex);
 // "1-5", "1,3,9", "2-3,7" -> the seeds, in order, without repeats.
 std::vector<long long> parseSeeds(const std::string& text);
 
