@@ -12,15 +12,15 @@
 //   make a user namespace of its own (to get capabilities back), write a file in $AULA_EXAM_WRITE;
 // - "reference": drive with the component's own reference (makeReferenceAlgorithm, declared here
 //   since the API no longer does);
-// - "find-reference": find the reference anyway: makeReferenceAlgorithm in the component's own
-//   symbol tables (read from /proc/self/exe, called at the program's load address), else the
-//   reference's plugin beside the component (<bin>/../lib/aula/references), opened with dlopen;
-//   drive with whichever it found;
+// - "find-reference": find the reference anyway: its plugin beside the component
+//   (<bin>/../lib/aula/references), opened with dlopen, else makeReferenceAlgorithm in the
+//   component's own symbol tables (read from /proc/self/exe, called at the program's load
+//   address); drive with whichever it found;
 // - "reexec": start the component again in its own process, with --Vacuum.Algorithm=reference;
 // - "exit": exit(0) from inside execute();
 // - "_exit": _exit(0) from inside execute() (no atexit handler runs: the component's exit() watch
 //   never sees it);
-// - "flood": 64 MB to stdout;
+// - "flood": 4 MB to stdout in each execute(), without end;
 // - "detach": 20 children in sessions of their own, SIGTERM blocked, that would outlive the run.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
@@ -145,13 +145,8 @@ inline void* symbolInProgram(const char* name) {
   return nullptr;
 }
 
-// The reference, found in the component or beside it: nullptr when neither could be had.
+// The reference, found beside the component or in it: nullptr when neither could be had.
 inline std::unique_ptr<aula::vacuum::VacuumAlgorithm> findReference(uint64_t seed) {
-  if (void* make = symbolInProgram("_ZN4aula6vacuum22makeReferenceAlgorithmEm")) {
-    say("find makeReferenceAlgorithm in the component", true);
-    return reinterpret_cast<MakeReference>(make)(seed);
-  }
-  say("find makeReferenceAlgorithm in the component", false, ENOENT);
   std::error_code error;
   const auto bin = std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
   const std::string plugin = (bin.parent_path() / "lib/aula/references/libaula_vacuum_reference.so").string();
@@ -159,7 +154,13 @@ inline std::unique_ptr<aula::vacuum::VacuumAlgorithm> findReference(uint64_t see
   using Factory = aula::vacuum::VacuumAlgorithm* (*)(uint64_t);
   auto factory = handle != nullptr ? reinterpret_cast<Factory>(::dlsym(handle, "aula_vacuum_algorithm_v1")) : nullptr;
   say("load the reference's plugin", factory != nullptr, ENOENT);
-  return factory != nullptr ? std::unique_ptr<aula::vacuum::VacuumAlgorithm>(factory(seed)) : nullptr;
+  if (factory != nullptr) return std::unique_ptr<aula::vacuum::VacuumAlgorithm>(factory(seed));
+  if (void* make = symbolInProgram("_ZN4aula6vacuum22makeReferenceAlgorithmEm")) {
+    say("find makeReferenceAlgorithm in the component", true);
+    return reinterpret_cast<MakeReference>(make)(seed);
+  }
+  say("find makeReferenceAlgorithm in the component", false, ENOENT);
+  return nullptr;
 }
 
 // The component's own command line, its algorithm made the reference, run in this process.
@@ -179,7 +180,7 @@ inline void reexecAsReference() {
 inline void flood() {
   std::string line(1023, 'x');
   line += '\n';
-  for (int i = 0; i < 64 * 1024; ++i) std::fwrite(line.data(), 1, line.size(), stdout);
+  for (int i = 0; i < 4 * 1024; ++i) std::fwrite(line.data(), 1, line.size(), stdout);
   std::fflush(stdout);
 }
 
@@ -215,9 +216,10 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (reference_) return reference_->execute(api);
     api.motors.sendV(0.0);
     api.motors.sendW(0.0);
+    const std::string attack = AULA_EXAM_ATTACK;
+    if (attack == "flood") flood();
     if (done_) return;
     done_ = true;
-    const std::string attack = AULA_EXAM_ATTACK;
     if (attack == "read") readFiles();
     if (attack == "udp") sendDatagrams();
     if (attack == "memory") useMemory();
@@ -226,7 +228,6 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (attack == "reexec") reexecAsReference();
     if (attack == "exit") std::exit(0);
     if (attack == "_exit") ::_exit(0);
-    if (attack == "flood") flood();
     if (attack == "detach") detachChildren();
   }
 

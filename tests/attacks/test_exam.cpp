@@ -26,6 +26,8 @@ using aula::testing::readFile;
 
 const std::string kAula = std::string(AULA_BIN_DIR) + "/aula";
 constexpr const char* kShortRun = "--Vacuum.Referee.Duration=20";
+// A flood is ended past 16 MB here (256 MB by default): the same rule, at less CPU for the machine.
+constexpr const char* kOutputLimit = "--Component.Sandbox.Output=16";
 
 // A UDP listener outside every run, on 0.0.0.0:port and in LCM's multicast group.
 class Listener {
@@ -104,7 +106,7 @@ void writeSubmission(const fs::path& folder, const std::string& attack, const st
 int grade(const std::vector<std::string>& folders, const fs::path& out, const std::string& log) {
   std::vector<std::string> argv = {kAula, "grade", "vacuum"};
   argv.insert(argv.end(), folders.begin(), folders.end());
-  argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun});
+  argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun, kOutputLimit});
   aula::process::ChildProcess child(argv, log, log);
   return child.wait(300s).value_or(-1);
 }
@@ -121,21 +123,21 @@ void expectRefused(const fs::path& out, const std::string& student, const std::v
 void expectEndedWithTheirReason(const std::map<std::string, std::map<std::string, std::string>>& rows,
                                 const std::string& language) {
   auto line = [&](const std::string& student) { return rows.at(student).at("line"); };
+  // The reference is out of a plugin's reach; reaching for it by name, or starting the component
+  // again with it, ends the run, flagged.
+  const std::string called = "the algorithm tried to call makeReferenceAlgorithm, the reference, which no student's algorithm may";
+  for (const std::string student : {"reference", "find-reference", "reexec"}) {
+    if (student == "find-reference" && language == "python") continue;
+    const std::string why = student == "reexec" ? "the algorithm tried to run the component again with Vacuum.Algorithm=reference"
+                                                : called;
+    EXPECT_NE(line(student).find(why), std::string::npos) << line(student);
+    EXPECT_EQ(rows.at(student).at("runs_tampered"), "1") << line(student);
+    EXPECT_LT(std::stod(rows.at(student).at("median")), 1.0) << line(student);
+  }
   if (language == "cpp") {
-    // The reference is out of a plugin's reach: no 10, and why.
-    EXPECT_NE(line("reference").find("undefined symbol"), std::string::npos) << line("reference");
-    EXPECT_EQ(rows.at("reference").at("median"), "0.00") << line("reference");
     EXPECT_NE(line("exit").find("the algorithm ended the component (exit() inside execute())"), std::string::npos)
         << line("exit");
-    EXPECT_EQ(rows.at("find-reference").at("runs_failed"), "0") << line("find-reference");
-    EXPECT_LT(std::stod(rows.at("find-reference").at("median")), 1.0) << line("find-reference");
-  } else {
-    EXPECT_EQ(rows.at("reference").at("runs_failed"), "0") << line("reference");
-    EXPECT_LT(std::stod(rows.at("reference").at("median")), 1.0) << line("reference");
   }
-  EXPECT_NE(line("reexec").find("a graded run's component runs only the grade's algorithm"), std::string::npos)
-      << line("reexec");
-  EXPECT_LT(std::stod(rows.at("reexec").at("median")), 1.0) << line("reexec");
   // _exit(0) slips past the exit() watch: the launcher still says whose doing it was (not "silent").
   EXPECT_NE(line("_exit").find("the algorithm ended the component (exit code 0 in the middle of the run"), std::string::npos)
       << line("_exit");
@@ -143,6 +145,9 @@ void expectEndedWithTheirReason(const std::map<std::string, std::map<std::string
   // The sandbox's limits, said as such (in Python too: not a MemoryError's traceback alone).
   EXPECT_NE(line("memory").find("the algorithm used more than 2048 MB of memory"), std::string::npos) << line("memory");
   EXPECT_NE(line("fork").find("the algorithm started more than 64 processes"), std::string::npos) << line("fork");
+  EXPECT_NE(line("flood").find("the algorithm printed more than 16 MB (stdout and stderr)"), std::string::npos)
+      << line("flood");
+  EXPECT_EQ(rows.at("flood").at("runs_tampered"), "0") << line("flood");
 }
 
 // An exam in `language` (GetParam()): a quiet student and an attacker per attack, in one class.
@@ -184,11 +189,9 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   expectRefused(dir / "out", "read", reads);
   expectRefused(dir / "out", "privilege", {"unmount /proc", "remount / read-write", "make a user namespace",
                                           "write " + (dir / "out" / "grades.csv").string()});
-  if (language == "python") expectRefused(dir / "out", "reference", {"find makeReferenceAlgorithm", "load the reference's plugin"});
-  // The reference is in no component, and its plugin is not in a student's sandbox.
-  if (language == "cpp") {
-    expectRefused(dir / "out", "find-reference", {"find makeReferenceAlgorithm in the component", "load the reference's plugin"});
-  }
+  // The reference's plugin is not in a student's sandbox; its factory's name in the component is a
+  // tripwire, which ends the run that calls it (below).
+  expectRefused(dir / "out", language == "python" ? "reference" : "find-reference", {"load the reference's plugin"});
   // A datagram out of the run went nowhere, and flagged its run; the quiet student is not flagged.
   EXPECT_EQ(rows.at("udp").at("runs_tampered"), "1") << rows.at("udp").at("line");
   const std::string udp_result = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.json").string());
@@ -202,14 +205,15 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
     EXPECT_NE(privilege_report.find(call), std::string::npos) << call << "\n" << privilege_report;
   }
   EXPECT_NE(privilege_report.find("\"escape_attempts\""), std::string::npos) << privilege_report;
-  for (const char* student : {"read", "udp", "privilege", "flood"}) {
+  for (const char* student : {"read", "udp", "privilege"}) {
     EXPECT_EQ(rows.at(student).at("runs_failed"), "0") << rows.at(student).at("line");
     EXPECT_EQ(rows.at(student).at("median"), alone.at("quiet").at("median")) << rows.at(student).at("line");
   }
   EXPECT_EQ(listener.received(), 0) << "a datagram left a graded run";
   const std::string udp_log = readFile((dir / "out" / "runs" / "udp" / "vacuum-seed1.log").string());
   EXPECT_NE(udp_log.find("exam: send to 127.0.0.1"), std::string::npos) << udp_log;
-  // A flood of output: that run's log is capped (its head, its tail and what was dropped).
+  // A flood of output ends that run (expectEndedWithTheirReason), its log capped (its head, its
+  // tail and what was dropped).
   const fs::path flood_log = dir / "out" / "runs" / "flood" / "vacuum-seed1.log";
   EXPECT_LT(fs::file_size(flood_log), 1u << 20);
   EXPECT_NE(readFile(flood_log.string()).find("bytes of the component's output dropped here"), std::string::npos);

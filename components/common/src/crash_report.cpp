@@ -1,5 +1,7 @@
 #include "aula/component/crash_report.hpp"
 
+#include <aula/sandbox/forbidden_calls.hpp>
+
 #include <csetjmp>
 #include <csignal>
 #include <cstring>
@@ -185,6 +187,11 @@ void installCrashReport(const std::string& program, const PluginImage& plugin) {
 }
 
 void reportCrashesTo(int fd) { crashState().fault_fd = fd; }
+
+void endForForbiddenCall(const std::string& what) {
+  const CrashReportState& s = crashState();
+  sandbox::endForForbiddenTry(s.fault_fd, s.program, what);
+}
 
 void prepareThreadForCrashes() {
   giveThisThreadAnAltStack();

@@ -19,17 +19,21 @@ namespace aula::app {
 namespace {
 
 // In a graded run's sandbox the component runs only the grade's algorithm (sandbox.hpp). True in
-// a graded run's sandbox.
-bool requireGradedAlgorithm(const config::Config& cfg, const std::string& section) {
+// a graded run's sandbox. Another is the student's code starting the component again with another
+// algorithm (the reference): the run ends with that reason, flagged on the launcher's private line.
+bool requireGradedAlgorithm(const config::Config& cfg, const config::CommandLine& command_line, const std::string& section,
+                            const std::string& program) {
   std::ifstream graded(sandbox::kGradedAlgorithmFile);
   std::string algorithm;
   if (!graded || !std::getline(graded, algorithm)) return false;
   const std::string key = section + ".Algorithm";
-  if (cfg.getString(key) != algorithm) {
-    throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) +
-                              ": a graded run's component runs only the grade's algorithm (" + algorithm + ")");
+  if (cfg.getString(key) == algorithm) return true;
+  if (command_line.flag("crash-fd")) {
+    sandbox::endForForbiddenTry(static_cast<int>(command_line.optionDouble("crash-fd", -1)), program,
+                                "run the component again with " + key + "=" + cfg.getString(key));
   }
-  return true;
+  throw config::ConfigError(cfg.origin(key) + ": " + key + " = " + cfg.getString(key) +
+                            ": a graded run's component runs only the grade's algorithm (" + algorithm + ")");
 }
 
 // A graded component's watch on the system calls only an escape needs, said on the launcher's
@@ -102,7 +106,8 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
     }
   }
   setup.cfg = table.resolve(file, siblings);
-  if (exercise != nullptr && exercise->component == program && requireGradedAlgorithm(setup.cfg, exercise->section)) {
+  if (exercise != nullptr && exercise->component == program &&
+      requireGradedAlgorithm(setup.cfg, setup.command_line, exercise->section, program)) {
     watchForbiddenCalls(setup.command_line, program);
   }
 

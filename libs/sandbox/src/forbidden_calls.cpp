@@ -1,9 +1,13 @@
 #include "aula/sandbox/forbidden_calls.hpp"
 
+#include <aula/process/exit_codes.hpp>
+
 #include <seccomp.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <iostream>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -104,6 +108,16 @@ std::string watchForbiddenCalls(int line_fd) {
   if (seccomp_load(ctx.get()) != 0) return std::string("seccomp_load: ") + std::strerror(errno);
   return "";
 #endif
+}
+
+void endForForbiddenTry(int line_fd, const std::string& program, const std::string& what) {
+  if (line_fd >= 0) {
+    const std::string line = kRefusedPrefix + what + "\n";
+    (void)!::write(line_fd, line.data(), line.size());
+  }
+  std::cerr << program << ": the algorithm tried to " << what << ", which no student's algorithm may: the run ends"
+            << std::endl;
+  std::_Exit(process::kExitAlgorithmForbidden);
 }
 
 }  // namespace aula::sandbox

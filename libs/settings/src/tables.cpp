@@ -60,6 +60,8 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
             "processes the student's code may start in a sandboxed run; past it the run ends with that reason");
   t.real("Component.Sandbox.FileSize", 64, "MB", 1, 1e7,
          "the largest file the student's code may write in a sandboxed run, and its private temporary folder's size");
+  t.real("Component.Sandbox.Output", 256, "MB", 1, 1e7,
+         "what the student's code may print in a sandboxed run (stdout and stderr); past it the run ends with that reason");
 }
 
 SettingsTable makeSimulator() {

@@ -11,11 +11,11 @@
 # - "fork": os.fork() until refused, and keep trying;
 # - "privilege": unmount /proc, remount / read-write, a user namespace of its own (through ctypes),
 #   write a file in $AULA_EXAM_WRITE;
-# - "reference": find the component's reference (makeReferenceAlgorithm) through ctypes, as
-#   a C++ plugin would through the dynamic linker;
+# - "reference": load the reference's plugin through ctypes, then find the component's
+#   reference (makeReferenceAlgorithm) as a C++ plugin would through the dynamic linker, and call it;
 # - "reexec": start the component again in this process, with --Vacuum.Algorithm=reference;
 # - "_exit": os._exit(0) inside execute();
-# - "flood": 64 MB to stdout.
+# - "flood": 4 MB to stdout in each execute(), without end.
 import ctypes
 import os
 import socket
@@ -81,12 +81,6 @@ def try_privileges():
 
 
 def find_reference():
-    # makeReferenceAlgorithm(uint64_t) as the linker names it, looked up in every loaded object.
-    try:
-        getattr(libc, "_ZN4aula6vacuum22makeReferenceAlgorithmEm")
-        say("find makeReferenceAlgorithm", True)
-    except AttributeError:
-        say("find makeReferenceAlgorithm", False, 2)  # ENOENT
     # The reference's own plugin, beside the component.
     bin_dir = os.path.dirname(os.readlink("/proc/self/exe"))
     plugin = os.path.join(bin_dir, "..", "lib", "aula", "references", "libaula_vacuum_reference.so")
@@ -95,6 +89,17 @@ def find_reference():
         say("load the reference's plugin", True)
     except (OSError, AttributeError):
         say("load the reference's plugin", False, 2)
+    # makeReferenceAlgorithm(uint64_t) as the linker names it, looked up in every loaded object,
+    # and called as C++ calls it (its std::unique_ptr returned through a hidden first argument).
+    try:
+        make = getattr(libc, "_ZN4aula6vacuum22makeReferenceAlgorithmEm")
+        say("find makeReferenceAlgorithm", True)
+        made = ctypes.c_void_p()
+        make.restype = None
+        make(ctypes.byref(made), ctypes.c_uint64(1))
+        say("call makeReferenceAlgorithm", bool(made.value))
+    except AttributeError:
+        say("find makeReferenceAlgorithm", False, 2)  # ENOENT
 
 
 def reexec_as_reference():
@@ -109,14 +114,14 @@ def reexec_as_reference():
 
 def flood():
     line = "x" * 1023 + "\n"
-    for _ in range(64 * 1024):
+    for _ in range(4 * 1024):
         sys.stdout.write(line)
     sys.stdout.flush()
 
 
 ATTACKS = {"read": read_files, "udp": send_datagrams, "memory": use_memory, "fork": fork_forever,
            "privilege": try_privileges, "reference": find_reference, "reexec": reexec_as_reference,
-           "_exit": lambda: os._exit(0), "flood": flood}
+           "_exit": lambda: os._exit(0)}
 
 
 class MyAlgorithm:
@@ -126,6 +131,8 @@ class MyAlgorithm:
     def execute(self, api):
         api.motors.sendV(0.0)
         api.motors.sendW(0.0)
+        if AULA_EXAM_ATTACK == "flood":
+            flood()
         if self.done:
             return
         self.done = True

@@ -38,6 +38,7 @@ TEST(SupervisionRules, ExitCodesInWords) {
   EXPECT_EQ(componentFault(0, 2), "");
   EXPECT_EQ(componentFault(aula::process::kExitAlgorithmExited, 2), "the algorithm ended the component (exit() inside execute())");
   EXPECT_EQ(componentFault(128 + SIGXFSZ, 2), "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)");
+  EXPECT_EQ(componentFault(aula::process::kExitAlgorithmForbidden, 2), "the algorithm tried what no student's algorithm may");
 }
 
 ExitEvent exitOf(Role role, int code) {
@@ -92,6 +93,22 @@ TEST(SupervisionRules, AHeadlessComponentEndingWithZeroMidRunIsTheAlgorithms) {
   ExitEvent demo = exitOf(Role::Component, 0);
   demo.has_referee = false;
   EXPECT_TRUE(onExit(demo, 2, "aula-demo-client").tell_referee.empty());
+}
+
+// A component's tripwire (a reference's factory called) said what was tried on its private line:
+// the failure names it; a component that did not say keeps the general reason.
+TEST(SupervisionRules, AForbiddenTryIsNamedInTheFailure) {
+  ExitEvent e = exitOf(Role::Component, aula::process::kExitAlgorithmForbidden);
+  e.refused = "call makeReferenceAlgorithm, the reference";
+  const ExitVerdict v = onExit(e, 2, "vacuum-cleaner");
+  EXPECT_EQ(v.tell_referee, "the algorithm tried to call makeReferenceAlgorithm, the reference, which no student's algorithm may");
+  EXPECT_FALSE(v.run_over);  // the referee grades what there is and ends the run
+  EXPECT_EQ(onExit(exitOf(Role::Component, aula::process::kExitAlgorithmForbidden), 2, "vacuum-cleaner").tell_referee,
+            "the algorithm tried what no student's algorithm may");
+  // A refused system call before a crash does not rename the crash.
+  ExitEvent crash = exitOf(Role::Component, 128 + SIGSEGV);
+  crash.refused = "mount";
+  EXPECT_EQ(onExit(crash, 2, "vacuum-cleaner").tell_referee, "component crashed (SIGSEGV)");
 }
 
 TEST(SupervisionRules, ADeadRefereeLeavesAReportWithNoMark) {

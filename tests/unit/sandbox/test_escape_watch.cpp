@@ -10,6 +10,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <string>
 
 #include <arpa/inet.h>
@@ -80,6 +81,29 @@ TEST(ForbiddenCalls, TheWatchCannotBeSilenced) {
     return 0;
   });
   EXPECT_EQ(out, "refused umount2\n|ok");
+}
+
+// A tripwire's end (a reference's factory called): the try said on the line, exit code 5 at once
+// (no atexit handler: the student's state is not trusted), whether or not the watch is installed.
+TEST(ForbiddenCalls, AForbiddenTryEndsTheProcessAndIsSaidOnTheLine) {
+  const std::string out = inWatchedChild([](int line_fd) -> int {
+    std::atexit([] { ::_exit(9); });
+    aula::sandbox::endForForbiddenTry(line_fd, "vacuum-cleaner", "call makeReferenceAlgorithm");
+  });
+  EXPECT_EQ(out, "refused call makeReferenceAlgorithm\n|");
+  int line[2];
+  ASSERT_EQ(::pipe(line), 0);
+  const pid_t child = ::fork();
+  if (child == 0) aula::sandbox::endForForbiddenTry(line[1], "vacuum-cleaner", "call it");
+  ::close(line[1]);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 5);
+  char said[64] = {};
+  EXPECT_GT(::read(line[0], said, sizeof said - 1), 0);
+  EXPECT_STREQ(said, "refused call it\n");
+  ::close(line[0]);
 }
 
 // In a private network, a datagram to any port but the run's is seen (unicast and multicast),

@@ -21,7 +21,8 @@ EscapeWatch::EscapeWatch(int watched_lcm_port) {
 bool EscapeWatch::onComponentLine(const std::string& line) {
   const std::string prefix = sandbox::kRefusedPrefix;
   if (line.rfind(prefix, 0) != 0) return false;
-  tell(line.substr(prefix.size()));
+  last_refused_ = line.substr(prefix.size());
+  tell(last_refused_);
   return true;
 }
 

@@ -44,6 +44,7 @@ std::string componentFault(int code, double execute_budget_s) {
     return text.str();
   }
   if (code == process::kExitAlgorithmExited) return "the algorithm ended the component (exit() inside execute())";
+  if (code == process::kExitAlgorithmForbidden) return "the algorithm tried what no student's algorithm may";
   if (code == 128 + SIGXFSZ) return "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)";
   // A forbidden call tried with SIGSYS blocked: the kernel ends the process (forbidden_calls.hpp).
   if (code == 128 + SIGSYS) return "the algorithm made a system call the sandbox forbids (SIGSYS)";
@@ -85,6 +86,10 @@ ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::strin
   }
   std::string fault = e.has_referee && component ? componentFault(e.code, execute_budget_s) : "";
   if (e.has_referee && component && e.headless && e.code == 0) fault = kAlgorithmEndedMidRun;
+  // What it tried, as the component's tripwire said it on its private line (flagged there too).
+  if (!fault.empty() && e.code == process::kExitAlgorithmForbidden && !e.refused.empty()) {
+    fault = "the algorithm tried to " + e.refused.substr(0, 200) + ", which no student's algorithm may";
+  }
   if (!fault.empty() && !e.referee_told) {
     v.tell_referee = fault;
     v.algorithm_fault = crashInStudentLines(fault, e.crash_line);

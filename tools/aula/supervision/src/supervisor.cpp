@@ -56,7 +56,7 @@ class RunSupervisor {
         break;
       }
       checkWallBudget();
-      checkProcesses();
+      checkLimits();
       // The referee had its chance to grade and say why: now everything stops.
       if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
       readSimulatorStatus();
@@ -159,18 +159,23 @@ class RunSupervisor {
     }
   }
 
-  // A sandboxed component's processes (bubblewrap's two aside), looked at every 100 ms: past the
-  // limit the run ends with that reason and the component is stopped at once (its whole process
-  // namespace dies with it).
-  void checkProcesses() {
+  // A sandboxed component past a limit the launcher counts: its output (stdout and stderr), its
+  // processes (bubblewrap's two aside, looked at every 100 ms). The run ends with that reason and
+  // the component is stopped at once (its whole process namespace dies with it).
+  void checkLimits() {
     if (!run_.sandbox || children_.size() < 2 || told_referee_) return;
+    const sandbox::Limits& limits = run_.confinement.limits;
+    std::string why;
+    if (output_ && output_->bytesRead() > limits.output_bytes) {
+      why = "the algorithm printed more than " + std::to_string(limits.output_bytes >> 20) + " MB (stdout and stderr)";
+    }
     const auto now = std::chrono::steady_clock::now();
-    if (now - processes_checked_ < std::chrono::milliseconds(100)) return;
-    processes_checked_ = now;
-    const int limit = run_.confinement.limits.processes;
-    const int started = static_cast<int>(process::descendantsOf(children_[1]->pid()).size()) - 2;
-    if (started <= limit) return;
-    const std::string why = "the algorithm started more than " + std::to_string(limit) + " processes";
+    if (why.empty() && now - processes_checked_ >= std::chrono::milliseconds(100)) {
+      processes_checked_ = now;
+      const int started = static_cast<int>(process::descendantsOf(children_[1]->pid()).size()) - 2;
+      if (started > limits.processes) why = "the algorithm started more than " + std::to_string(limits.processes) + " processes";
+    }
+    if (why.empty()) return;
     std::cerr << "aula: " << why << ": stopping it\n";
     tellReferee(why);
     children_[1]->stop(std::chrono::milliseconds(200));
@@ -227,6 +232,7 @@ class RunSupervisor {
     if (i == 1) {
       readComponentLine();
       event.crash_line = crash_text_;
+      event.refused = escapes_.lastRefused();
     }
     const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
     const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);

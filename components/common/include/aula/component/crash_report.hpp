@@ -29,6 +29,11 @@ void installCrashReport(const std::string& program, const PluginImage& plugin);
 // The launcher's private line for the crash's one line (a descriptor of this process), or -1.
 void reportCrashesTo(int fd);
 
+// The student's code called what no student's algorithm may (`what`: "call
+// makeReferenceAlgorithm", from a tripwire of the component's): the process ends with that reason,
+// said on the launcher's private line too, which flags the run (sandbox::endForForbiddenTry).
+[[noreturn]] void endForForbiddenCall(const std::string& what);
+
 // An object a crash left behind (a crashed algorithm) is never destroyed, since its destructor
 // could crash again; this says so to LeakSanitizer in a sanitizer build (nothing otherwise).
 void abandonAfterCrash(const void* object);

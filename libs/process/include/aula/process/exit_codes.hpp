@@ -8,6 +8,7 @@ constexpr int kExitFailed = 1;          // a process failed (or a run ended unfi
 constexpr int kExitUsage = 2;           // usage or configuration error: nothing ran
 constexpr int kExitAlgorithmHung = 3;   // a component: the student's code did not return in time
 constexpr int kExitAlgorithmExited = 4; // a component: the student's code called exit() inside a call
+constexpr int kExitAlgorithmForbidden = 5;  // a component: the student's code tried what a run forbids
 constexpr int kExitInterrupted = 130;   // SIGINT
 constexpr int kExitTerminated = 143;    // SIGTERM
 

@@ -25,4 +25,11 @@ std::string watchForbiddenCalls(int line_fd);
 // The line the handler writes for a forbidden call: "refused " + the call's name.
 constexpr const char* kRefusedPrefix = "refused ";
 
+// Ends this process because the student's code tried what no student's algorithm may, `what`
+// ("call makeReferenceAlgorithm", "run the algorithm 'reference'"): "refused WHAT" on the
+// launcher's private line `line_fd` when there is one (the run is flagged), the reason on stderr
+// after `program`, and exit code kExitAlgorithmForbidden, with no destructor or atexit handler
+// run (the student's state is not to be trusted).
+[[noreturn]] void endForForbiddenTry(int line_fd, const std::string& program, const std::string& what);
+
 }  // namespace aula::sandbox

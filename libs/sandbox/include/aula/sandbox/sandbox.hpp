@@ -29,6 +29,7 @@ struct Limits {
   uint64_t memory_bytes = 2ull << 30;  // RLIMIT_DATA: its heap and private mappings
   int processes = 64;                  // processes it may start (its own threads aside)
   uint64_t file_bytes = 64ull << 20;   // RLIMIT_FSIZE, and the size of its private /var/tmp
+  uint64_t output_bytes = 256ull << 20;  // its stdout and stderr together (counted by the launcher)
 };
 
 // The threads a component runs by itself (the algorithm's thread, the watchdog, the bus, TBB's

@@ -2,7 +2,8 @@
 // A sandboxed component's output (the student's prints) reaches the run's log through a pipe the
 // launcher drains: the first kHeadBytes as they come, then only the last kTailBytes are kept and
 // written at the end with how much was dropped. A student's flood ends neither the grade nor the
-// disk (issue 28: 562 MB of stdout per run once filled a class's out folder).
+// disk (issue 28: 562 MB of stdout per run once filled a class's out folder); past
+// Component.Sandbox.Output the launcher ends that run with the reason (supervisor.cpp).
 
 #include <cstddef>
 #include <string>
@@ -28,6 +29,8 @@ class CappedOutput {
   void drain();
   // The rest, the kept tail and the count of what was dropped.
   void finish();
+  // Everything read so far, kept or dropped.
+  size_t bytesRead() const { return passed_ + dropped_ + tail_.size(); }
 
  private:
   void pass(const char* data, size_t size);

@@ -27,11 +27,14 @@ class EscapeWatch {
   // The datagrams seen since the last call, told.
   void poll();
   int fd() const { return datagrams_ ? datagrams_->fd() : -1; }  // readable when one was seen
+  // The last refused try of the component's ("" for none): why a component that ended for one did.
+  const std::string& lastRefused() const { return last_refused_; }
 
  private:
   void tell(const std::string& what);
   int control_fd_ = -1;
   int told_ = 0;
+  std::string last_refused_;
   std::unique_ptr<sandbox::DatagramWatch> datagrams_;
 };
 

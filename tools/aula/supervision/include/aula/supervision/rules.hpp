@@ -45,6 +45,7 @@ struct ExitEvent {
   bool simulator_ended_run = false;  // the simulator said why it ended a graded run
   bool last_child = false;
   std::string crash_line;            // what a component said of its crash (crash_report.hpp)
+  std::string refused;               // the last try its watch refused ("call makeReferenceAlgorithm...")
 };
 
 // What it does about it.
