@@ -8,6 +8,11 @@
 //   a recorded run regrades to the same report.
 #include "test_support.hpp"
 
+#include <aula/belief_t.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -143,6 +148,36 @@ TEST(PythonAlgorithms, ExceptionGivesTheTracebackInTheStudentsLines) {
                          "in speed: `return 1.0 / remaining`)");
   EXPECT_GT(jsonNumber(run.report, "sim_time_s"), 0.0) << describe(run);
   EXPECT_LT(jsonNumber(run.report, "sim_time_s"), 20.0) << describe(run);
+}
+
+// A MyAlgorithm.py tells its belief (api.belief) as C++ does: its pose after every call and its
+// map (a numpy array) reach the run's log; a map of the wrong shape is the student's error, in
+// their line.
+TEST(PythonAlgorithms, TheBeliefReachesTheLogAndABadMapIsTheStudentsError) {
+  const std::string recorded = aula::testing::privateDir() + "/belief.lcmlog";
+  const PyRun run =
+      runHeadless("vacuum", kPython + "belief/MyAlgorithm.py", {"--Vacuum.Referee.Duration=20", "--record=" + recorded});
+  expectPythonFault(run, "MyAlgorithm.py:23: ValueError: Belief.setMap: cells must be a 2-D array (rows of y, columns of x)");
+  lcm::LogFile in(recorded, "r");
+  ASSERT_TRUE(in.good()) << recorded;
+  int poses = 0, maps = 0;
+  double last_x_m = 0, last_y_m = 0;
+  for (const lcm::LogEvent* e = in.readNextEvent(); e != nullptr; e = in.readNextEvent()) {
+    aula::belief_t belief{};
+    if (e->channel != "VACUUM_BELIEF" || belief.decode(e->data, 0, e->datalen) <= 0) continue;
+    ++poses;
+    last_x_m = belief.x_m;
+    last_y_m = belief.y_m;
+    if (belief.map_width == 0) continue;
+    ++maps;
+    EXPECT_EQ(belief.map_width, 4);
+    EXPECT_EQ(belief.map_height, 3);
+    EXPECT_DOUBLE_EQ(belief.map_origin_y_m, -0.75);
+    EXPECT_EQ(belief.map_cells, std::vector<uint8_t>(12, 128));
+  }
+  EXPECT_EQ(poses, 49) << "one belief after each call that returned";
+  EXPECT_EQ(maps, 1);
+  EXPECT_NEAR(std::hypot(last_x_m, last_y_m), 49 * 0.2 * 0.08, 0.05);  // its own odometry, straight ahead
 }
 
 // The execute budget raises inside the loop (even past `except Exception`): the run goes on to

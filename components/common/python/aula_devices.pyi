@@ -2,6 +2,7 @@
 # as Aula's embedded Python sees them: the same C++ objects under the same names. Stubs only,
 # for your editor: at run time each exercise's module (aula_vacuum, aula_teletaxi,
 # aula_autopark) holds these classes.
+from typing import Any
 import numpy as np
 import numpy.typing as npt
 
@@ -59,3 +60,12 @@ class Motors:
     def getL(self) -> float: ...
     def maxV(self) -> float: ...
     def maxW(self) -> float: ...
+
+class Belief:
+    # What your algorithm believes (never graded): the window draws it in magenta beside the
+    # truth, the run's log keeps it. Your own frame: put your start where you like (0, 0).
+    def setPose(self, x_m: float, y_m: float, yaw_rad: float) -> None: ...
+    # cells: a 2-D array (row r, column c is the cell at x = origin_x_m + c * resolution_m,
+    # y = origin_y_m + r * resolution_m), each 0 (free) .. 255 (occupied), 128 unknown.
+    def setMap(self, cells: Any, resolution_m: float, origin_x_m: float = 0.0, origin_y_m: float = 0.0) -> None: ...
+

@@ -18,6 +18,7 @@ using PythonVacuum = aula::python::PythonExecuteAlgorithm<aula::vacuum::VacuumAl
 
 PYBIND11_EMBEDDED_MODULE(aula_vacuum, m) {
   aula::python::bindDevices(m);
+  aula::python::bindBelief(m);
   py::class_<YawSensor>(m, "YawSensor").def("getYaw", &YawSensor::getYaw);
   const auto ref = py::return_value_policy::reference;
   py::class_<VacuumApi>(m, "VacuumApi")
@@ -25,6 +26,7 @@ PYBIND11_EMBEDDED_MODULE(aula_vacuum, m) {
       .def_property_readonly("laser", [](VacuumApi& api) -> aula::component::Laser& { return api.laser; }, ref)
       .def_property_readonly("bumper", [](VacuumApi& api) -> aula::component::Bumper& { return api.bumper; }, ref)
       .def_property_readonly("motors", [](VacuumApi& api) -> aula::component::Motors& { return api.motors; }, ref)
+      .def_property_readonly("belief", [](VacuumApi& api) -> aula::component::Belief& { return api.belief; }, ref)
       .def_readonly("period_s", &VacuumApi::period_s);
 }
 

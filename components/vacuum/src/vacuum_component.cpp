@@ -13,7 +13,9 @@ VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, co
   laser_ = std::make_unique<component::LaserProxy>(bus, world::channelOf(robot, "laser"));
   bumper_ = std::make_unique<component::BumperProxy>(bus, world::channelOf(robot, "bumper"));
   yaw_ = std::make_unique<YawSensor>(poseProxy());
-  api_ = std::make_unique<VacuumApi>(VacuumApi{*yaw_, *laser_, *bumper_, motorsProxy(), cfg.getDouble("Vacuum.Period")});
+  belief_publisher_ = std::make_unique<component::BeliefPublisher>(bus, cfg.getString("Vacuum.Belief.Channel"), belief_);
+  api_ = std::make_unique<VacuumApi>(
+      VacuumApi{*yaw_, *laser_, *bumper_, motorsProxy(), belief_, cfg.getDouble("Vacuum.Period")});
 }
 
 }  // namespace aula::vacuum

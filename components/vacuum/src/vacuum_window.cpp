@@ -8,6 +8,7 @@
 
 #include <QApplication>
 #include <QHBoxLayout>
+#include <QPainter>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -57,6 +58,7 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
   // not at the GUI's refresh rate, so the band has no gaps however fast the simulation runs.
   component_.setOnTick([this](int64_t utime) { onTick(utime); });
+  map_->setOverlay([this](QPainter& painter) { drawBelief(painter); });
   connect(&timer_, &QTimer::timeout, this, &VacuumWindow::refresh);
   timer_.start(50);
   refresh();
@@ -71,7 +73,9 @@ void VacuumWindow::onTick(int64_t utime) {
     run_start_utime_ = last_sample_utime_ = -1;
     poses_before_start_.clear();
     end_said_ = false;
+    belief_ = BeliefShown{};
   }
+  followBelief();
   const auto& p = component_.truePose();
   if (!p.received() || p.utime() == last_pose_utime_) return;
   last_pose_utime_ = p.utime();
@@ -113,6 +117,54 @@ void VacuumWindow::onTick(int64_t utime) {
   }
 }
 
+// The algorithm's belief after this tick's execute() (the window's thread: no call is running).
+// Its frame is its own: it is put on the world where the truth was when it first spoke.
+void VacuumWindow::followBelief() {
+  const component::Belief& belief = component_.belief();
+  const auto& truth = component_.truePose();
+  if (component_.algorithm().hung() || !belief.hasPose() || !truth.received()) return;
+  if (!belief_.placed) {
+    belief_.placed = true;
+    belief_.dx_m = truth.getX() - belief.x_m();
+    belief_.dy_m = truth.getY() - belief.y_m();
+  }
+  belief_.has_pose = true;
+  belief_.x_m = belief.x_m() + belief_.dx_m;
+  belief_.y_m = belief.y_m() + belief_.dy_m;
+  belief_.yaw_rad = belief.yaw_rad();
+  if (belief.mapVersion() == belief_.map_version) return;
+  belief_.map_version = belief.mapVersion();
+  const component::BeliefMap& map = belief.map();
+  QImage image(map.width, map.height, QImage::Format_ARGB32);
+  for (int row = 0; row < map.height; ++row) {
+    auto* line = reinterpret_cast<QRgb*>(image.scanLine(map.height - 1 - row));
+    for (int col = 0; col < map.width; ++col) {
+      const uint8_t cell = map.cells[static_cast<size_t>(row) * map.width + col];
+      line[col] = cell >= 192 ? qRgba(200, 0, 200, 230) : cell <= 64 ? qRgba(200, 0, 200, 28) : qRgba(0, 0, 0, 0);
+    }
+  }
+  belief_.map = image;
+  belief_.map_world = QRectF(map.origin_x_m + belief_.dx_m, map.origin_y_m + belief_.dy_m, map.width * map.resolution_m,
+                             map.height * map.resolution_m);
+}
+
+void VacuumWindow::drawBelief(QPainter& painter) const {
+  if (!belief_.map.isNull()) {
+    const QRectF& w = belief_.map_world;
+    const QPointF top_left = map_->worldToWidget(w.left(), w.top() + w.height());
+    const QPointF bottom_right = map_->worldToWidget(w.left() + w.width(), w.top());
+    painter.drawImage(QRectF(top_left, bottom_right), belief_.map);
+  }
+  if (!belief_.has_pose) return;
+  const QPointF centre = map_->worldToWidget(belief_.x_m, belief_.y_m);
+  const QPointF ahead = map_->worldToWidget(belief_.x_m + 0.3 * std::cos(belief_.yaw_rad), belief_.y_m + 0.3 * std::sin(belief_.yaw_rad));
+  const double radius_px = component_.robotRadiusM() * map_->pixelsPerMetre();
+  painter.setPen(QPen(QColor(200, 0, 200), 2));
+  painter.setBrush(Qt::NoBrush);
+  painter.drawEllipse(centre, radius_px, radius_px);
+  painter.drawLine(centre, ahead);
+}
+
 void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 2 * component_.robotRadiusM(), 2 * component_.robotRadiusM());
@@ -124,11 +176,12 @@ void VacuumWindow::refresh() {
     std::fprintf(stderr, "vacuum-cleaner: this window counted %.2f %% of the floor cleaned since Run\n",
                  coverage_ ? coverage_->coveragePercent() : 0.0);
   }
-  status_->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s")
+  status_->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s%5")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(component_.motors().getV(), 0, 'f', 2)
                        .arg(component_.motors().getW(), 0, 'f', 2)
-                       .arg(coverage_ ? coverage_->coveragePercent() : 0.0, 0, 'f', 1));
+                       .arg(coverage_ ? coverage_->coveragePercent() : 0.0, 0, 'f', 1)
+                       .arg(belief_.has_pose ? "\nmagenta: what the algorithm believes (its map, its pose)" : ""));
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {

@@ -2,7 +2,9 @@
 // The vacuum cleaner window: the house map with the robot and the area it has cleaned (its
 // real 0.33 m disc footprint, from the true pose: shown to the student, never given to the
 // algorithm), the "Run my algorithm" toggle, the teleoperator and Stop, and the cleaned
-// percentage since Run (the referee's CoverageGrid on the same map) with its plot.
+// percentage since Run (the referee's CoverageGrid on the same map) with its plot. In magenta,
+// what the algorithm says it believes (api.belief: its own map and pose, in its own frame, put
+// on the world where the truth was when it first said it), beside the truth.
 
 #include <aula/component/algorithm_panel.hpp>
 #include <aula/component/referee_status_label.hpp>
@@ -35,6 +37,8 @@ class VacuumWindow : public QMainWindow {
  private:
   void refresh();
   void onTick(int64_t utime);
+  void followBelief();
+  void drawBelief(QPainter& painter) const;
 
   VacuumComponent& component_;
   gui::MapView* map_ = nullptr;
@@ -57,6 +61,15 @@ class VacuumWindow : public QMainWindow {
     double x_m, y_m;
   };
   std::deque<PoseSeen> poses_before_start_;
+  // The algorithm's belief as shown: its frame's offset onto the world, its pose, its map.
+  struct BeliefShown {
+    bool placed = false, has_pose = false;
+    double dx_m = 0, dy_m = 0, x_m = 0, y_m = 0, yaw_rad = 0;
+    int64_t map_version = 0;
+    QImage map;  // occupied cells opaque, free ones faint, top row the map's highest y
+    QRectF map_world;  // x, y of its lower-left corner in the world, width, height in metres
+  };
+  BeliefShown belief_;
 };
 
 }  // namespace aula::vacuum

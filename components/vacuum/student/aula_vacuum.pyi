@@ -1,5 +1,6 @@
 # The vacuum cleaner's API (aula/vacuum/vacuum_algorithm.hpp) as MyAlgorithm.py sees it: stubs
 # for your editor (with aula_devices.pyi beside it).
+from aula_devices import Belief as Belief
 from aula_devices import Bumper as Bumper
 from aula_devices import BumperData as BumperData
 from aula_devices import Laser as Laser
@@ -19,4 +20,6 @@ class VacuumApi:
     def bumper(self) -> Bumper: ...  # getBumperData().state == 1 when pressed
     @property
     def motors(self) -> Motors: ...  # sendV(), sendW(), clamped to MaxV / MaxW
+    @property
+    def belief(self) -> Belief: ...  # setPose(), setMap(): what you believe, shown, never graded
     period_s: float  # the control period (sim seconds between execute() calls)

@@ -180,6 +180,8 @@ SettingsTable makeVacuumComponent() {
               "the algorithm that drives the roomba (reference: spiral, walls and bounces; mapping: maps the house with "
               "its laser and plans its coverage, unfinished; bounce: the random-bounce baseline; PATH.so: a plugin; "
               "PATH.py: a MyAlgorithm.py)");
+  t.text("Vacuum.Belief.Channel", "VACUUM_BELIEF",
+         "where the algorithm's belief (api.belief: its own pose and map, never graded) is published for the window and the log");
   vacuumDuration(t);
   return t;
 }

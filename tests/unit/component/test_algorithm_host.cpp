@@ -38,7 +38,8 @@ struct Devices {
   aula::component::Laser laser;
   aula::component::Bumper bumper;
   Motors motors{1.0, 1.0};
-  aula::vacuum::VacuumApi api{yaw, laser, bumper, motors, 0.08};
+  aula::component::Belief belief;
+  aula::vacuum::VacuumApi api{yaw, laser, bumper, motors, belief, 0.08};
 };
 
 class AlgorithmHostReload : public ::testing::Test {

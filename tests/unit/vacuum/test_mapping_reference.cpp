@@ -32,7 +32,8 @@ struct CleanerRun {
 CleanerRun drive(const std::string& world_file, double seconds) {
   aula::test::PlainRobot robot(world_file, "roomba", 0.5, 3.0);
   YawSensor yaw(robot.pose);
-  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, kPeriodS};
+  aula::component::Belief belief;
+  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, belief, kPeriodS};
   const auto world = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/" + world_file);
   const auto map = aula::world::occupancyMapOf(world, {0.02, 0.005, 0.09});  // the referee's Vacuum.Map
   CoverageGrid floor(map.image, map.transform, robot.x(), robot.y());

@@ -27,7 +27,8 @@ struct Coverage {
 Coverage drive(std::unique_ptr<VacuumAlgorithm> algorithm, double seconds) {
   aula::test::PlainRobot robot("vacuum.world", "roomba", 0.5, 3.0);
   YawSensor yaw(robot.pose);
-  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, kPeriodS};
+  aula::component::Belief belief;
+  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, belief, kPeriodS};
   std::set<std::pair<int, int>> cells;
   Coverage run;
   const int periods = static_cast<int>(seconds / kPeriodS);
@@ -47,7 +48,8 @@ Coverage drive(std::unique_ptr<VacuumAlgorithm> algorithm, double seconds) {
 TEST(RoombaReference, ABumpWhileDrivingForwardBacksOff) {
   aula::test::PlainRobot robot("vacuum.world", "roomba", 0.5, 3.0);
   YawSensor yaw(robot.pose);
-  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, kPeriodS};
+  aula::component::Belief belief;
+  VacuumApi api{yaw, robot.laser(), robot.bumper, robot.motors, belief, kPeriodS};
   auto reference = makeReferenceAlgorithm(1);
   reference->execute(api);
   EXPECT_GT(robot.motors.getV(), 0) << "it starts driving (its spiral)";
@@ -62,7 +64,8 @@ TEST(RoombaReference, WaitsForItsFirstScan) {
   aula::component::Bumper bumper;
   aula::component::Motors motors(0.5, 3.0);
   YawSensor yaw(pose);
-  VacuumApi api{yaw, laser, bumper, motors, kPeriodS};
+  aula::component::Belief belief;
+  VacuumApi api{yaw, laser, bumper, motors, belief, kPeriodS};
   makeReferenceAlgorithm(1)->execute(api);
   EXPECT_EQ(motors.getV(), 0);
   EXPECT_EQ(motors.getW(), 0);

@@ -2,6 +2,10 @@
 
 #include <aula/component/devices.hpp>
 
+#include <pybind11/numpy.h>
+
+#include <stdexcept>
+
 namespace aula::python {
 
 void bindDevices(py::module_& m) {
@@ -54,6 +58,29 @@ void bindDevices(py::module_& m) {
       .def("getL", &Motors::getL)
       .def("maxV", &Motors::maxV)
       .def("maxW", &Motors::maxW);
+}
+
+void bindBelief(py::module_& m) {
+  using namespace aula::component;
+  // The cells as a 2-D array: row r, column c is the cell at x = origin_x_m + c * resolution_m,
+  // y = origin_y_m + r * resolution_m (0 free .. 255 occupied, 128 unknown).
+  using Cells = py::array_t<uint8_t, py::array::c_style | py::array::forcecast>;
+  py::class_<Belief>(m, "Belief")
+      .def("setPose", &Belief::setPose, py::arg("x_m"), py::arg("y_m"), py::arg("yaw_rad"))
+      .def(
+          "setMap",
+          [](Belief& belief, const Cells& cells, double resolution_m, double origin_x_m, double origin_y_m) {
+            if (cells.ndim() != 2) throw std::invalid_argument("Belief.setMap: cells must be a 2-D array (rows of y, columns of x)");
+            BeliefMap map;
+            map.height = static_cast<int>(cells.shape(0));
+            map.width = static_cast<int>(cells.shape(1));
+            map.resolution_m = resolution_m;
+            map.origin_x_m = origin_x_m;
+            map.origin_y_m = origin_y_m;
+            map.cells.assign(cells.data(), cells.data() + cells.size());
+            belief.setMap(std::move(map));
+          },
+          py::arg("cells"), py::arg("resolution_m"), py::arg("origin_x_m") = 0.0, py::arg("origin_y_m") = 0.0);
 }
 
 }  // namespace aula::python

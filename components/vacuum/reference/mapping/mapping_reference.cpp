@@ -99,6 +99,43 @@ void MappingReference::execute(VacuumApi& api) {
   prev_cmd_w_ = cmd_w_;
   cmd_v_ = std::clamp(v, -s_.max_speed_mps, s_.max_speed_mps);
   cmd_w_ = w;
+  tellBelief(api);
+}
+
+// What the cleaner believes, for the window and the run's log: its pose every period; its map
+// every 10 s of sim time, within 3 m of where it has been, at twice its cell (a cell occupied if
+// any of its four is, else free if one is known free, else unknown).
+void MappingReference::tellBelief(VacuumApi& api) {
+  api.belief.setPose(est_.x_m, est_.y_m, yaw_);
+  visited_min_ = {std::min(visited_min_.x_m, est_.x_m), std::min(visited_min_.y_m, est_.y_m)};
+  visited_max_ = {std::max(visited_max_.x_m, est_.x_m), std::max(visited_max_.y_m, est_.y_m)};
+  if (now_s_ < next_belief_map_s_) return;
+  next_belief_map_s_ = now_s_ + 10;
+  constexpr double kMarginM = 3;
+  const int i0 = std::max(0, map_.col(visited_min_.x_m - kMarginM)) & ~1;
+  const int j0 = std::max(0, map_.row(visited_min_.y_m - kMarginM)) & ~1;
+  const int i1 = std::min(map_.width(), map_.col(visited_max_.x_m + kMarginM));
+  const int j1 = std::min(map_.width(), map_.row(visited_max_.y_m + kMarginM));
+  component::BeliefMap belief;
+  belief.width = std::max(1, (i1 - i0) / 2);
+  belief.height = std::max(1, (j1 - j0) / 2);
+  belief.resolution_m = 2 * map_.cellM();
+  const Point2 corner = map_.centre(i0, j0);
+  belief.origin_x_m = corner.x_m - map_.cellM() / 2;
+  belief.origin_y_m = corner.y_m - map_.cellM() / 2;
+  belief.cells.assign(static_cast<size_t>(belief.width) * belief.height, 128);
+  for (int r = 0; r < belief.height; ++r) {
+    for (int c = 0; c < belief.width; ++c) {
+      bool occupied = false, free = false;
+      for (int k = 0; k < 4; ++k) {
+        const int i = i0 + 2 * c + k % 2, j = j0 + 2 * r + k / 2;
+        occupied = occupied || map_.occupied(i, j);
+        free = free || map_.knownFree(i, j);
+      }
+      belief.cells[static_cast<size_t>(r) * belief.width + c] = occupied ? 255 : free ? 0 : 128;
+    }
+  }
+  api.belief.setMap(std::move(belief));
 }
 
 void MappingReference::localize(const component::LaserData& scan, double yaw, bool bumped) {

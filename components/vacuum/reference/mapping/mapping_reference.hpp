@@ -96,6 +96,7 @@ class MappingReference : public VacuumAlgorithm {
   void follow(double yaw_rad, double& v, double& w);
   void enterFollow(std::vector<Point2> waypoints);
   void escapeByLaser();
+  void tellBelief(VacuumApi& api);
 
   MappingSettings s_;
   ScanMap map_;
@@ -129,6 +130,9 @@ class MappingReference : public VacuumAlgorithm {
   double backoff_v_ = 0, backoff_end_s_ = -1e9;
   double fresh_s_ = 0;  // when the last execute() swept new floor
   double last_reset_s_ = -1e9;
+  // What it tells of its belief (api.belief): where it has been, and when its map goes next.
+  Point2 visited_min_, visited_max_;
+  double next_belief_map_s_ = 0;
   std::mt19937_64 rng_;
 };
 

@@ -16,6 +16,7 @@
 //   2: the first version checked against the hash (the API had changed under 1, issue 30).
 //   3: the Python hosts (the laser keeps its buffers, issue 31).
 //   4: the references left the API (issue 28).
+//   5: the vacuum API's belief (the algorithm's own pose and map, shown; issue 26).
 //
 // A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
 // Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
@@ -24,8 +25,8 @@
 //   const char* aula_python_set_file(const char* path);  // the .py its factory loads; error text or nullptr
 //   void        aula_python_interrupt(const char* why);  // raises inside a call that overran its budget
 
-#define AULA_ALGORITHM_ABI_VERSION 4
-#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "95ffd5461ca4b9516bb6868500cba98e86b5ce15a8f7c5b3ed7f6088d3e8fb2c"
+#define AULA_ALGORITHM_ABI_VERSION 5
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "546cdcb40e76fccf092aa5dc1d4f20e21661195a545370eb397e3cd8dc2a474e"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 #include <stdexcept>

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace aula::component {
@@ -128,6 +130,57 @@ class Motors {
   double max_v_, max_w_;
   double v_ = 0, w_ = 0, l_ = 0;
   int64_t non_finite_v_ = 0, non_finite_w_ = 0, non_finite_l_ = 0;
+};
+
+// An occupancy grid an algorithm built: `width` x `height` cells of `resolution_m`, row-major
+// from the cell whose corner is (origin_x_m, origin_y_m); each cell 0 (free) to 255 (occupied),
+// 128 for unknown.
+struct BeliefMap {
+  int width = 0, height = 0;
+  double resolution_m = 0, origin_x_m = 0, origin_y_m = 0;
+  std::vector<uint8_t> cells;
+};
+
+// What the algorithm believes, when it says: where it is (its own estimate, in its own frame: a
+// robot that is not told its position starts where it likes, usually at 0, 0) and the map it
+// built. Never graded and never fed back to the algorithm: the window draws it beside the truth
+// and the run's log keeps it (the component publishes it), so a student sees what their
+// localization gives. Bad values are the caller's error, said as such.
+class Belief {
+ public:
+  void setPose(double x_m, double y_m, double yaw_rad) {
+    if (!std::isfinite(x_m) || !std::isfinite(y_m) || !std::isfinite(yaw_rad)) {
+      throw std::invalid_argument("Belief::setPose: x, y and yaw must be finite numbers");
+    }
+    x_m_ = x_m;
+    y_m_ = y_m;
+    yaw_rad_ = yaw_rad;
+    has_pose_ = true;
+  }
+  void setMap(BeliefMap map) {
+    if (map.width <= 0 || map.height <= 0 || map.cells.size() != static_cast<size_t>(map.width) * map.height) {
+      throw std::invalid_argument("Belief::setMap: " + std::to_string(map.cells.size()) + " cells for a " +
+                                  std::to_string(map.width) + " x " + std::to_string(map.height) + " map");
+    }
+    if (!(map.resolution_m > 0) || !std::isfinite(map.origin_x_m) || !std::isfinite(map.origin_y_m)) {
+      throw std::invalid_argument("Belief::setMap: the resolution must be > 0 and the origin finite");
+    }
+    map_ = std::move(map);
+    ++map_version_;
+  }
+
+  bool hasPose() const { return has_pose_; }
+  double x_m() const { return x_m_; }
+  double y_m() const { return y_m_; }
+  double yaw_rad() const { return yaw_rad_; }
+  const BeliefMap& map() const { return map_; }
+  int64_t mapVersion() const { return map_version_; }  // 0: no map yet; +1 at each setMap
+
+ private:
+  double x_m_ = 0, y_m_ = 0, yaw_rad_ = 0;
+  bool has_pose_ = false;
+  BeliefMap map_;
+  int64_t map_version_ = 0;
 };
 
 }  // namespace aula::component

@@ -26,6 +26,7 @@ struct VacuumApi {
   component::Laser& laser;    // getLaserData(): 180 beams over -90..90 degrees, m and mm
   component::Bumper& bumper;  // getBumperData().state == 1 when pressed
   component::Motors& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
+  component::Belief& belief;  // setPose(), setMap(): what the algorithm believes, shown, never graded
   double period_s;                 // the control period (sim seconds between execute() calls)
 };
 

@@ -4,6 +4,7 @@
 // GUI (robot glyph and cleaned area); the algorithm never sees it. The rest (motors, control
 // loop, episode, teleoperation, hot reload) is every exercise's ExerciseComponent.
 
+#include <aula/component/belief_publisher.hpp>
 #include <aula/component/exercise_component.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
 #include <aula/world/occupancy_map.hpp>
@@ -22,9 +23,22 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
   const world::OccupancyMap& map() const { return map_; }
   double robotRadiusM() const { return robot_radius_m_; }
   double runDurationS() const { return run_duration_s_; }  // the referee's Vacuum.Referee.Duration
+  const std::string& beliefChannel() const { return belief_publisher_->channel(); }
+  // What the algorithm says it believes (api.belief); read it between calls into the algorithm,
+  // never while one is hung (algorithm().hung()).
+  const component::Belief& belief() const { return belief_; }
 
  private:
   void execute(VacuumAlgorithm& algorithm) override { algorithm.execute(*api_); }
+  // A new algorithm believes nothing yet.
+  bool startNewEpisode() override {
+    belief_ = component::Belief{};
+    return true;
+  }
+  // After this period's execute(): what the algorithm believes, on the bus.
+  void beforeTick(int64_t utime) override {
+    if (running()) belief_publisher_->publish(utime);
+  }
   void detachSensors() override {
     laser_->detach();
     bumper_->detach();
@@ -36,6 +50,8 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
   std::unique_ptr<component::LaserProxy> laser_;
   std::unique_ptr<component::BumperProxy> bumper_;
   std::unique_ptr<YawSensor> yaw_;
+  component::Belief belief_;
+  std::unique_ptr<component::BeliefPublisher> belief_publisher_;
   std::unique_ptr<VacuumApi> api_;
 };
 

@@ -13,6 +13,8 @@ namespace py = pybind11;
 
 // Pose3d, LaserData, Laser, BumperData, Bumper and Motors into `m`.
 void bindDevices(py::module_& m);
+// Belief (what the algorithm believes: its own pose and map), for the APIs that give one.
+void bindBelief(py::module_& m);
 
 // A numpy array over `values` (no copy), kept valid by `owner`; read-only unless `writable`.
 template <class T>
