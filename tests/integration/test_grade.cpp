@@ -475,6 +475,9 @@ TEST(GradeAClass, ATeachersCityIsGradedOverTheDestinationsItDeclares) {
     const std::string result = readFile((dir / "out" / "runs" / "bob" / ("teacher_city-" + destination + "-seed1.json")).string());
     EXPECT_NE(result.find("\"calibration\": \"teacher_city-" + destination + "-"), std::string::npos) << result;
     EXPECT_GT(jsonNumber(result, "mark"), 7.0) << result;
+    // Each destination is a world of its own in the grades and the class's page.
+    EXPECT_EQ(rows.at("bob").count("median_teacher_city-" + destination), 1u) << readFile((dir / "out" / "grades.csv").string());
+    EXPECT_NE(readFile((dir / "out" / "report.html").string()).find("<b>teacher_city-" + destination + "</b>"), std::string::npos);
   }
 
   // A generated city declares two destinations (road crossings): graded over both, each

@@ -1,6 +1,7 @@
 // aula grade's plan for a Python submission: a folder with MyAlgorithm.py and no MyAlgorithm.cpp
 // is not compiled; its .py files are copied into OUT/build/<student>, and its runs load the copy.
 #include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grade_runner.hpp>
 
 #include <gtest/gtest.h>
 
@@ -107,3 +108,27 @@ TEST(GradePlan, TwoWorldsWithOneFileNameAreNamedApartAndAModelChangesTheHash) {
   EXPECT_NE(again.runs[0].world_sha256, plan.runs[0].world_sha256);
   fs::remove_all(root);
 }
+
+// A resumed grade runs again what ended for the machine's reason (a starved process, the wall
+// budget), never what the algorithm did: the same run gives the same result, so only time is spent.
+TEST(GradePlan, ARunThatFailedForTheMachinesReasonIsNotUpToDate) {
+  const std::string dir = scratch();
+  aula::grade::PlannedRun run;
+  run.result_path = dir + "/r.json";
+  run.student = "ada";
+  run.seed = 1;
+  auto resultFailing = [&](const std::string& failure) {
+    std::ofstream(run.result_path) << "{\"plugin_sha256\": \"\", \"world_sha256\": \"\", \"seed\": 1, \"student\": \"ada\", "
+                                      "\"settings\": [], \"failure\": \"" << failure << "\"}";
+    return aula::grade::upToDate(run);
+  };
+  EXPECT_TRUE(resultFailing(""));
+  EXPECT_TRUE(resultFailing("execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12)"));
+  EXPECT_TRUE(resultFailing("the algorithm used more than 2048 MB of memory"));
+  EXPECT_FALSE(resultFailing("the run failed (exit 1): vacuum-cleaner: the simulator stopped (no SIM_CLOCK for 2 s of wall "
+                             "time): the component ends"));
+  EXPECT_FALSE(resultFailing("lockstep client 'vacuum-cleaner' silent for 5.1 s"));
+  EXPECT_FALSE(resultFailing("the run's wall-clock budget of 60 s ran out (--timeout)"));
+  fs::remove_all(dir);
+}
+

@@ -71,6 +71,7 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   result["student"] = run.student;
   result["language"] = run.language;
   if (!result.contains("world")) result["world"] = run.world_name;
+  result["graded_world"] = run.world_name;  // a world's file, or one of its destinations ("city-plaza.world")
   result["plugin_sha256"] = run.plugin_sha256;
   result["settings"] = run.settings;
   result["wall_time_s"] = std::round(wall_s * 100) / 100;
@@ -183,9 +184,18 @@ std::string tamperingOf(const nlohmann::json& result) {
   return text == "tampering:" ? "" : text;
 }
 
+std::string machineFailureOf(const nlohmann::json& result) {
+  const std::string failure = result.value("failure", std::string());
+  for (const char* reason : {"the simulator stopped (no SIM_CLOCK", "silent for", "the referee did not grade in time",
+                             "wall-clock budget"}) {
+    if (failure.find(reason) != std::string::npos) return reason;
+  }
+  return "";
+}
+
 bool upToDate(const PlannedRun& run) {
   const auto result = readJson(run.result_path);
-  if (!result) return false;
+  if (!result || !machineFailureOf(*result).empty()) return false;
   auto same = [&](const char* key, const nlohmann::ordered_json& value) { return result->contains(key) && (*result)[key] == value; };
   return same("plugin_sha256", run.plugin_sha256) && same("world_sha256", run.world_sha256) && same("seed", run.seed) &&
          same("student", run.student) && same("settings", run.settings);

@@ -34,9 +34,11 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
-std::string worldStem(const std::string& world) { return fs::path(world).stem().string(); }
-
 }  // namespace
+
+std::string gradedWorldOf(const nlohmann::json& result) {
+  return fs::path(result.value("graded_world", result.value("world", std::string("?")))).stem().string();
+}
 
 std::string twoDecimals(double value) {
   if (!std::isfinite(value)) return "";  // no run measured it
@@ -94,7 +96,7 @@ struct Runs {
 // seen first) join the lists.
 void addRun(const nlohmann::json& r, Runs& runs, std::set<std::string>& worlds, std::vector<std::string>& measures) {
   const double mark = r.value("mark", 0.0);
-  const std::string world = worldStem(r.value("world", "?"));
+  const std::string world = gradedWorldOf(r);
   if (runs.language.empty()) runs.language = r.value("language", std::string());
   worlds.insert(world);
   runs.marks.push_back(mark);

@@ -155,7 +155,7 @@ document.querySelectorAll('button.open-run').forEach(b => b.addEventListener('cl
 
 // A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
 std::string runId(const nlohmann::json& r) {
-  return r.value("student", std::string("?")) + "/" + fs::path(r.value("world", std::string("?"))).stem().string() + "-seed" +
+  return r.value("student", std::string("?")) + "/" + gradedWorldOf(r) + "-seed" +
          std::to_string(r.value("seed", 0LL));
 }
 
@@ -192,7 +192,7 @@ void writeOverview(std::ostringstream& html, const std::vector<StudentGrade>& gr
   std::map<std::string, std::vector<double>> by_world;
   std::map<std::string, nlohmann::json> a_run_of;  // its calibration, as the runs' reports name it
   for (const auto& r : results) {
-    const std::string world = fs::path(r.value("world", std::string("?"))).stem().string();
+    const std::string world = gradedWorldOf(r);
     by_world[world].push_back(r.value("mark", 0.0));
     a_run_of.emplace(world, r);
   }
@@ -250,7 +250,7 @@ void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string id = runId(r);
   const RunFiles files = runFilesOf(r);
   const std::string failure = failureOf(r);
-  html << "<div class='run' id='card-" << escapeHtml(id) << "'><b>" << escapeHtml(fs::path(r.value("world", "?")).stem().string())
+  html << "<div class='run' id='card-" << escapeHtml(id) << "'><b>" << escapeHtml(gradedWorldOf(r))
        << ", seed " << r.value("seed", 0LL) << ": " << twoDecimals(r.value("mark", 0.0)) << "</b>";
   const std::string measures = measuresOf(r);
   if (!measures.empty()) html << "<div>" << escapeHtml(measures) << "</div>";

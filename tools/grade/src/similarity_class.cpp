@@ -2,6 +2,7 @@
 // report.html's section.
 #include "aula/grade/similarity.hpp"
 
+#include <aula/grade/grades.hpp>
 #include <aula/grade/run_page.hpp>
 
 #include <algorithm>
@@ -36,7 +37,7 @@ Paths pathsOf(const std::vector<nlohmann::json>& results) {
     if (text.empty()) continue;
     const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
     if (parsed.is_discarded()) continue;
-    const std::string run = fs::path(r.value("world", std::string("?"))).stem().string() + " seed " +
+    const std::string run = gradedWorldOf(r) + " seed " +
                             std::to_string(r.value("seed", 0LL));
     paths[r.value("student", std::string("?"))][run] = pathOfTrace(parsed);
   }

@@ -25,8 +25,13 @@ struct GradeStopped : std::runtime_error {
 // the referee's report, picture and trace, and its result.
 constexpr uint64_t kRoomForARunBytes = 1u << 20;
 
-// Is the run's result already there for the same plugin, world, seed and settings (resume)?
+// Is the run's result already there for the same plugin, world, seed and settings (resume)? A
+// run that ended for the machine's reason, not the algorithm's (a process starved past the
+// lockstep's wall-clock limits, the run's wall budget), is run again: a run is the same run
+// whenever it runs (sim time is its only clock), so this costs time, never a mark.
 bool upToDate(const PlannedRun& run);
+// That reason in a run's failure, or "" ("the simulator stopped (no SIM_CLOCK for 2 s...").
+std::string machineFailureOf(const nlohmann::json& result);
 
 // Runs one entry to its end (Slurm's `aula grade-task MANIFEST INDEX`). Returns the result;
 // throws GradeStopped.

@@ -31,6 +31,9 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
 double median(std::vector<double> values);
 // A mark or measure as grades.csv and report.html show it: two decimals, "" when no run measured it.
 std::string twoDecimals(double value);
+// The world a run was graded on, as the class's results name it: the world file's stem, or a
+// destination's ("city-plaza" for city.world's destination "plaza").
+std::string gradedWorldOf(const nlohmann::json& result);
 // grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
 // runs_tampered, failures.
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
