@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
+#include <map>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -209,6 +211,30 @@ nlohmann::ordered_json runOne(const PlannedRun& run) {
   }
 }
 
+namespace {
+
+// Runs at once take different CPUs, as long as there are CPUs enough: each run's processes share
+// one (they take turns), and two runs on one CPU would leave another idle.
+class CpuShares {
+ public:
+  int quietest() {
+    if (cpus_.empty()) return -1;
+    const auto at = std::min_element(runs_on_.begin(), runs_on_.end()) - runs_on_.begin();
+    ++runs_on_[at];
+    return cpus_[at];
+  }
+  void release(int cpu) {
+    const auto at = std::find(cpus_.begin(), cpus_.end(), cpu) - cpus_.begin();
+    if (at < static_cast<long>(cpus_.size())) --runs_on_[at];
+  }
+
+ private:
+  std::vector<int> cpus_ = process::allowedCpus();
+  std::vector<int> runs_on_ = std::vector<int>(cpus_.size(), 0);
+};
+
+}  // namespace
+
 void runLocal(const Manifest& manifest, int jobs,
               const std::function<void(const PlannedRun&, const nlohmann::ordered_json&, const Progress&)>& on_done) {
   Progress progress;
@@ -223,25 +249,13 @@ void runLocal(const Manifest& manifest, int jobs,
       pending.push_back(&run);
     }
   }
-  // Runs at once take different CPUs, as long as there are CPUs enough: each run's processes share
-  // one (they take turns), and two runs on one CPU would leave another idle.
-  const std::vector<int> cpus = process::allowedCpus();
-  std::vector<int> runs_on_cpu(cpus.size(), 0);
-  auto quietestCpu = [&]() -> int {
-    if (cpus.empty()) return -1;
-    const auto at = std::min_element(runs_on_cpu.begin(), runs_on_cpu.end()) - runs_on_cpu.begin();
-    ++runs_on_cpu[at];
-    return cpus[at];
-  };
-  auto release = [&](int cpu) {
-    const auto at = std::find(cpus.begin(), cpus.end(), cpu) - cpus.begin();
-    if (at < static_cast<long>(cpus.size())) --runs_on_cpu[at];
-  };
+  CpuShares cpus;
   std::vector<std::pair<const PlannedRun*, std::unique_ptr<RunInProgress>>> running;
+  std::map<const PlannedRun*, int> retries;
   size_t next = 0;
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
-      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next], quietestCpu()));
+      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next], cpus.quietest()));
       ++next;
     }
     for (auto it = running.begin(); it != running.end();) {
@@ -259,10 +273,20 @@ void runLocal(const Manifest& manifest, int jobs,
         ++it;
         continue;
       }
+      cpus.release(it->second->cpu());
+      // Ended for the machine's reason (a process starved past the lockstep's limits): the same
+      // run again, twice at most; it gives the same result whenever it runs.
+      const std::string machine = machineFailureOf(*result);
+      if (!machine.empty() && retries[it->first]++ < 2) {
+        std::cerr << "aula grade: " << it->first->student << " " << it->first->world_name << " seed " << it->first->seed
+                  << " ended for the machine's reason (" << machine << "...): running it again\n";
+        pending.push_back(it->first);
+        it = running.erase(it);
+        continue;
+      }
       ++progress.done;
       if (!failureOf(*result).empty()) ++progress.failed;
       on_done(*it->first, *result, progress);
-      release(it->second->cpu());
       it = running.erase(it);
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
