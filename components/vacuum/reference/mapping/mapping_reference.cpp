@@ -96,8 +96,10 @@ void MappingReference::spin(double yaw, double& w) {
 // at all (the contact's friction holds it), so it moves off too; back, or forward if backing
 // off is what pressed it.
 void MappingReference::onBump(int bumper, double yaw) {
-  if (cmd_v_ > 0 && bumper == 1) {  // straight ahead (not a side's glance)
-    const Point2 ahead = along(est_, s_.bump_ahead_m, yaw);
+  if (cmd_v_ > 0) {
+    // Where it touched: straight ahead, or (a side's glance) about half way round to that side.
+    const double bearing_rad = bumper == 1 ? 0.0 : (bumper == 0 ? 1 : -1) * s_.side_bump_rad;
+    const Point2 ahead = along(est_, s_.bump_ahead_m, yaw + bearing_rad);
     if (map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) {
       coverage_.addBump(ahead, now_s_ + s_.bump_memory_s);
     }

@@ -37,6 +37,7 @@ struct ScanMapSettings {
   double field_radius_m = 0.3;    // the match field falls to 0 this far from an occupied cell
   double free_max_m = 6.0;        // free space is carved along each beam up to this range
   double hit_max_m = 8.0;         // a beam longer than this marks no wall (grazing, far)
+  double join_max_m = 0.3;        // neighbouring beams' hits this far apart on one surface are joined
   double hit_margin_m = 0.05;     // a hit's beam carves free space only up to this short of it
   int hit_logodds = 4, free_logodds = 1, occupied_logodds = 4;  // per beam; clamped to +-100
 };
@@ -109,6 +110,8 @@ class ScanMap {
   // A thin wall's two faces then never share a side, whatever the beams' angles: by the beams'
   // own directions a face seen at 50 degrees counted as seen along the other axis, and a scan
   // fitted a wall's other face 0.2 m away (h2 seeds 2 and 9).
+  static bool neighbours(const component::LaserData& scan, int k, int m);
+  void joinHits(Point2 a_m, Point2 b_m, Point2 look);
   static std::vector<Point2> surfaceLooks(const component::LaserData& scan, double laser_yaw_rad, double max_range_m);
   static constexpr int kSides = 4;
   static constexpr uint8_t kOccupiedBit = 0x10;  // occupied_: this bit, and one bit per side stamped
