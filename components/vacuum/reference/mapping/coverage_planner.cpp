@@ -157,10 +157,11 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
   const int w = (map_.maxCol() - i0) / k + 1, h = (map_.maxRow() - j0) / k + 1;
   if (map_.maxCol() < i0 || w <= 0 || h <= 0) return {};
   // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
-  // map has closed (a passage seen too narrow, a wall drawn a little off).
+  // map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
+  // (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
   const auto passable = [&](int i, int j) {
     if (!relaxed) return traversable(i, j);
-    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m;
+    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m && !bumped(i, j);
   };
   struct Block {
     int rep = -2;  // its cell (j * width + i) to go through; -1: not passable; -2: not looked at yet

@@ -23,11 +23,14 @@ struct CoverageSettings {
   // pushed it along and the scans could not tell how far (lost in 3 runs of 10).
   double clearance_m = 0.185;
   double hug_clearance_m = 0.175; // ... but a lane along a wall, to sweep the strip beside it
-  double sweep_radius_m = 0.15;   // floor counted swept around the centre (the disc's is 0.165)
+  // Floor counted swept around the centre (the disc's is 0.165): at 0.15 every path left a
+  // sliver along its sides that the plans went back for.
+  double sweep_radius_m = 0.16;
   double plan_cell_m = 0.1;       // the nearest-unswept search's grid
-  // Its relaxed search: through floor not seen yet, and nearer walls, but never a gap narrower
-  // than the disc (0.33 m): a robot that went in there was wedged between both sides.
-  double relaxed_clearance_m = 0.17;
+  // Its relaxed search: through floor not seen yet, and nearer walls, but never a gap the disc
+  // (0.33 m) barely fits: a robot that went in there was wedged between both sides (0.33 m; at
+  // 0.17, h2's 0.34 m gap between two boxes).
+  double relaxed_clearance_m = 0.18;
 };
 
 struct Lane {

@@ -100,9 +100,13 @@ void MappingReference::onBump(int bumper, double yaw) {
     // Where it touched: straight ahead, or (a side's glance) about half way round to that side.
     const double bearing_rad = bumper == 1 ? 0.0 : (bumper == 0 ? 1 : -1) * s_.side_bump_rad;
     const Point2 ahead = along(est_, s_.bump_ahead_m, yaw + bearing_rad);
-    if (map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) {
+    // Bumped from here before: the wall there is a centimetre or two nearer than the map has it
+    // (a path along h2's corridor clipped a box's corner for 50 s), so it is marked anyway.
+    const bool repeated = distance(est_, last_bump_m_) < s_.same_goal_m;
+    if (repeated || map_.clearanceM(map_.col(ahead.x_m), map_.row(ahead.y_m)) > s_.bump_known_m) {
       coverage_.addBump(ahead, now_s_ + s_.bump_memory_s);
     }
+    last_bump_m_ = est_;
   }
   // The same goal bumped on the way to again and again: the map has the way there clear, but
   // the disc does not pass (a wall a centimetre nearer than drawn, a glance on a side): it is
