@@ -108,10 +108,8 @@ void MappingReference::onBump(int bumper, double yaw) {
     }
     last_bump_m_ = est_;
   }
-  // The same goal bumped on the way to again and again: the map has the way there clear, but
-  // the disc does not pass (a wall a centimetre nearer than drawn, a glance on a side): it is
-  // given up, or the robot presses on (h2: 700 bumps in a 0.43 m corridor, every push dragging
-  // the estimate along the corridor, where the scans cannot tell how far it went).
+  // The same goal bumped on the way to again: the disc does not pass where the map has it clear
+  // (h2: 700 bumps in a 0.43 m corridor, each push dragging the estimate along it unseen).
   if (mode_ == Mode::Follow && !waypoints_.empty()) {
     const Point2 goal = waypoints_.back();
     goal_bumps_ = distance(goal, bumped_goal_) < s_.same_goal_m ? goal_bumps_ + 1 : 1;
@@ -142,7 +140,9 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
   now_s_ = clock_offset_s_ + exec_s;
   const double dt = std::max(0.0, now_s_ - last_now_s_);
   const double dyaw = wrapAngle(yaw - last_yaw_);
-  const bool blocked = bumped && cmd_v_ > 0;
+  // Pressed on something, it does not go where it is told, backing off included (h2: wedged in a
+  // box's corner, every backoff it did not make moved the estimate 6 cm, and it was lost).
+  const bool blocked = bumped && cmd_v_ != 0;
   if (!blocked) est_ = along(est_, cmd_v_ * dt, last_yaw_ + dyaw / 2);
 
   if (scan.timeStamp != last_stamp_) {
@@ -199,9 +199,7 @@ void MappingReference::correct(const component::LaserData& scan, double yaw_s, P
 }
 
 // A far correction is taken only when it explains most of the scan (h2 seed 9: a jump of 0.19 m
-// fitted 27 of 52 points, half of them on a wall's other face) and the next scans, driving
-// straight, find the same offset from the prediction: one scan that happens to fit elsewhere
-// does not move the estimate.
+// fitted 27 of 52 points) and the next scans, driving straight, find the same offset.
 bool MappingReference::confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max) {
   if (m.score < s_.map_good_match || w_max > s_.jump_max_w_radps ||
       m.points < s_.jump_min_explained * static_cast<double>(points)) {
@@ -304,10 +302,8 @@ void MappingReference::decide() {
   }
 }
 
-// No lane fits beside the last one: the wall on that side is nearer than lane_spacing_m, and the
-// last lane left a strip along it unswept (lanes fall where their spacing puts them: up to
-// 0.1 m of floor beside every wall was never swept, 11 % of the shipped house). A lane back
-// along the wall, as near as hug_clearance_m, sweeps it.
+// No lane fits beside the last one: the wall is nearer than lane_spacing_m, and the strip along
+// it (up to 0.1 m beside every wall, 11 % of the shipped house) is swept by a lane back along it.
 bool MappingReference::hugWall(Point2 p) {
   const auto [q, back] = coverage_.besideWall(p, -side_ * lane_dy_, side_ * lane_dx_, -lane_dx_, -lane_dy_,
                                               s_.lane_spacing_m - map_.cellM(), s_.min_hug_m, s_.hug_strip_m, false);
