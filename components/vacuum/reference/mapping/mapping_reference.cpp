@@ -90,11 +90,9 @@ void MappingReference::spin(double yaw, double& w) {
   }
 }
 
-// A bump while moving forward: back off. Unless the map already has a wall there (the pose or
-// the steering was a little off), the plans keep away from it for a while: the laser missed
-// something there. A bump while turning on the spot: a disc pressed against a wall may not turn
-// at all (the contact's friction holds it), so it moves off too; back, or forward if backing
-// off is what pressed it.
+// A bump moving forward: back off, and unless the map has a wall there, the plans keep away from
+// it for a while (the laser missed something). A bump turning on the spot: a disc pressed on a
+// wall may not turn (friction), so it moves off too; back, or forward if backing off pressed it.
 void MappingReference::onBump(int bumper, double yaw) {
   if (cmd_v_ > 0) {
     // Where it touched: straight ahead, or (a side's glance) about half way round to that side.
@@ -254,28 +252,8 @@ void MappingReference::decide() {
     }
     if (hugWall(p)) return;
   }
-  // 2. A new lane from here: one of the ways with about the most unswept floor (seeded).
-  const std::pair<int, int> ways[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  Lane lanes[4];
-  double longest_m = 0;
-  for (int k = 0; k < 4; ++k) {
-    lanes[k] = coverage_.lane(p, ways[k].first, ways[k].second);
-    longest_m = std::max(longest_m, lanes[k].unswept_m);
-  }
-  if (longest_m >= s_.min_lane_m) {
-    std::vector<int> good;
-    for (int k = 0; k < 4; ++k) {
-      if (lanes[k].unswept_m >= s_.lane_choice * longest_m) good.push_back(k);
-    }
-    const int k = good[std::uniform_int_distribution<size_t>(0, good.size() - 1)(rng_)];
-    on_lane_ = true;
-    lane_dx_ = ways[k].first;
-    lane_dy_ = ways[k].second;
-    side_ = std::uniform_int_distribution<int>(0, 1)(rng_) ? 1 : -1;
-    if (startAtWall(p)) return;
-    enterFollow({lanes[k].end_m});
-    return;
-  }
+  // 2. A new lane from here.
+  if (newLane(p)) return;
   // 3. The nearest unswept floor, then a lane from there.
   on_lane_ = false;
   std::vector<Point2> path = coverage_.pathToUnswept(p);
@@ -302,6 +280,29 @@ void MappingReference::decide() {
   }
 }
 
+// A new lane from p: one of the ways with about the most unswept floor (seeded).
+bool MappingReference::newLane(Point2 p) {
+  const std::pair<int, int> ways[4] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  Lane lanes[4];
+  double longest_m = 0;
+  for (int k = 0; k < 4; ++k) {
+    lanes[k] = coverage_.lane(p, ways[k].first, ways[k].second);
+    longest_m = std::max(longest_m, lanes[k].unswept_m);
+  }
+  if (longest_m < s_.min_lane_m) return false;
+  std::vector<int> good;
+  for (int k = 0; k < 4; ++k) {
+    if (lanes[k].unswept_m >= s_.lane_choice * longest_m) good.push_back(k);
+  }
+  const int k = good[std::uniform_int_distribution<size_t>(0, good.size() - 1)(rng_)];
+  on_lane_ = true;
+  lane_dx_ = ways[k].first;
+  lane_dy_ = ways[k].second;
+  side_ = std::uniform_int_distribution<int>(0, 1)(rng_) ? 1 : -1;
+  if (!startAtWall(p)) enterFollow({lanes[k].end_m});
+  return true;
+}
+
 // No lane fits beside the last one: the wall is nearer than lane_spacing_m, and the strip along
 // it (up to 0.1 m beside every wall, 11 % of the shipped house) is swept by a lane back along it.
 bool MappingReference::hugWall(Point2 p) {
@@ -316,8 +317,7 @@ bool MappingReference::hugWall(Point2 p) {
 }
 
 // A new run of lanes (lane_dx_, lane_dy_) from p: if a wall along them is near on one side, the
-// first lane goes along it (hug_clearance_m from it) and the next ones away from it. A first
-// lane where the robot happens to be left the floor between it and that wall to no lane.
+// first lane goes along it and the next ones away from it (else no lane sweeps beside it).
 bool MappingReference::startAtWall(Point2 p) {
   for (int side : {side_, -side_}) {
     const auto [q, first] = coverage_.besideWall(p, side * lane_dy_, -side * lane_dx_, lane_dx_, lane_dy_,

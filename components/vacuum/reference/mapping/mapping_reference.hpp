@@ -109,6 +109,7 @@ class MappingReference : public VacuumAlgorithm {
   void decide();
   void follow(double yaw_rad, double& v, double& w);
   void enterFollow(std::vector<Point2> waypoints);
+  bool newLane(Point2 p);
   bool hugWall(Point2 p);
   bool startAtWall(Point2 p);
   void escapeByLaser();
