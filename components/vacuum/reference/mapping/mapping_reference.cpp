@@ -82,11 +82,8 @@ void MappingReference::spin(double yaw, double& w) {
     w = std::copysign(std::clamp(s_.turn_gain_per_s * std::abs(error), 0.3, s_.turn_max_radps), error);
   } else if (++spin_hold_ >= 3) {
     spin_hold_ = 0;
-    if (spin_quarters_++ >= 4) {
-      decide();
-    } else {
-      spin_target_ = wrapAngle(spin_target_ + M_PI / 2);
-    }
+    if (spin_quarters_++ >= 4) decide();
+    else spin_target_ = wrapAngle(spin_target_ + M_PI / 2);
   }
 }
 
@@ -179,8 +176,7 @@ void MappingReference::correct(const component::LaserData& scan, double yaw_s, P
   }
   if (!far) jump_count_ = 0;
   poor_matches_ = 0;
-  // Along a corridor the scan says nothing about the position along it: keep the prediction
-  // there, and draw nothing until it says where the laser is.
+  // Along a corridor the scan cannot say where along it: keep the prediction there, draw nothing.
   const bool sharp_x = m.sharpness_x >= s_.min_sharpness, sharp_y = m.sharpness_y >= s_.min_sharpness;
   if (sharp_x) est_.x_m += m.laser_m.x_m - predicted.x_m;
   if (sharp_y) est_.y_m += m.laser_m.y_m - predicted.y_m;
@@ -238,8 +234,12 @@ void MappingReference::decide() {
     }
   }
   // 1. The boustrophedon: a sidestep, and a lane back beside the last one.
+  // After the first pass, lanes along walls only: lanes again over the rest found little (h2: 1.4
+  // points in its last 300 s), and the strips along walls are most of the floor left.
+  const bool walls_only = passes_ > 1;
   if (on_lane_) {
     for (int side : {side_, -side_}) {
+      if (walls_only) break;
       const Point2 q{p.x_m - side * lane_dy_ * s_.lane_spacing_m, p.y_m + side * lane_dx_ * s_.lane_spacing_m};
       if (!coverage_.traversable(q) || !coverage_.segmentClear(p, q, 0.05)) continue;
       const Lane back = coverage_.lane(q, -lane_dx_, -lane_dy_);
@@ -299,8 +299,9 @@ bool MappingReference::newLane(Point2 p) {
   lane_dx_ = ways[k].first;
   lane_dy_ = ways[k].second;
   side_ = std::uniform_int_distribution<int>(0, 1)(rng_) ? 1 : -1;
-  if (!startAtWall(p)) enterFollow({lanes[k].end_m});
-  return true;
+  if (startAtWall(p)) return true;
+  if (passes_ == 1) enterFollow({lanes[k].end_m});
+  return passes_ == 1;
 }
 
 // No lane fits beside the last one: the wall is nearer than lane_spacing_m, and the strip along
