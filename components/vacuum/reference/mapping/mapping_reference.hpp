@@ -5,8 +5,9 @@
 //   localize  predict from its own speed commands along the measured yaw, then match each scan
 //             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
-//             (boustrophedon); where no lane is left, the way to the nearest unswept floor
-//             (CoveragePlanner); when all is swept, a second pass;
+//             (boustrophedon), the first and last of a run along walls; where no lane is left,
+//             the way to the nearest unswept floor (CoveragePlanner); when all is swept, a
+//             second pass along the walls;
 //   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
