@@ -10,6 +10,7 @@
 namespace aula::vacuum::mapping {
 namespace {
 constexpr int kMinUnsweptCells = 3;  // of a block's: fewer is a sliver, not worth a trip
+constexpr int kWallReachCells = 8;   // a lane goes on to the wall if it is this near (0.2 m) beyond its unswept floor
 }  // namespace
 
 CoveragePlanner::CoveragePlanner(const ScanMap& map, const CoverageSettings& settings)
@@ -93,34 +94,58 @@ void CoveragePlanner::forget(Point2 p_m) { sweep(p_m); }
 
 void CoveragePlanner::resetSwept() { std::fill(swept_.begin(), swept_.end(), 0); }
 
-bool CoveragePlanner::segmentClear(Point2 a_m, Point2 b_m, double skip_m) const {
+bool CoveragePlanner::segmentClear(Point2 a_m, Point2 b_m, double skip_m, double clearance_m) const {
+  if (clearance_m < 0) clearance_m = s_.clearance_m;
   const double length_m = std::hypot(b_m.x_m - a_m.x_m, b_m.y_m - a_m.y_m);
   const double step_m = 0.5 * map_.cellM();
   const int steps = static_cast<int>(std::ceil(length_m / step_m));
   for (int k = 0; k <= steps; ++k) {
     const double f = steps == 0 ? 1.0 : static_cast<double>(k) / steps;
     if (f * length_m < skip_m) continue;
-    if (!traversable(Point2{a_m.x_m + f * (b_m.x_m - a_m.x_m), a_m.y_m + f * (b_m.y_m - a_m.y_m)})) return false;
+    if (!passable(Point2{a_m.x_m + f * (b_m.x_m - a_m.x_m), a_m.y_m + f * (b_m.y_m - a_m.y_m)}, clearance_m)) return false;
   }
   return true;
 }
 
-Lane CoveragePlanner::lane(Point2 from_m, int dx, int dy) const {
+Lane CoveragePlanner::lane(Point2 from_m, int dx, int dy) const { return wallLane(from_m, dx, dy, 0, 0, s_.clearance_m, 0); }
+
+Lane CoveragePlanner::wallLane(Point2 from_m, int dx, int dy, int wall_dx, int wall_dy, double clearance_m,
+                               double strip_m) const {
+  const int strip = static_cast<int>(std::lround(strip_m / map_.cellM()));
   Lane out;
   out.end_m = from_m;
   int i = map_.col(from_m.x_m), j = map_.row(from_m.y_m);
   const double cell_m = map_.cellM();
+  int last = 0, unswept_last = 0;
   for (int k = 1;; ++k) {
     i += dx;
     j += dy;
-    if (!traversable(i, j)) break;
-    if (!swept(i, j)) {
+    if (!map_.knownFree(i, j) || map_.clearanceM(i, j) < clearance_m || bumped(i, j)) break;
+    last = k;
+    if (!swept(i + wall_dx * strip, j + wall_dy * strip)) {
       out.unswept_m += cell_m;
-      // Along the lane's own line (not snapped to the cells' centres).
-      out.end_m = {from_m.x_m + dx * k * cell_m, from_m.y_m + dy * k * cell_m};
+      unswept_last = k;
     }
   }
+  // Up to the wall when it is near the last unswept place: the disc then sweeps the floor
+  // along the wall ahead too, which no lane across it does (it stops clearance_m short).
+  const int end = last - unswept_last <= kWallReachCells ? last : unswept_last;
+  // Along the lane's own line (not snapped to the cells' centres).
+  out.end_m = {from_m.x_m + dx * end * cell_m, from_m.y_m + dy * end * cell_m};
   return out;
+}
+
+std::pair<Point2, Lane> CoveragePlanner::besideWall(Point2 from_m, int wall_dx, int wall_dy, int dx, int dy,
+                                                    double max_m, double min_m, double strip_m, bool wall_beyond) const {
+  const double cell_m = map_.cellM();
+  for (double d_m = max_m; d_m >= min_m; d_m -= cell_m) {
+    const Point2 q{from_m.x_m + wall_dx * d_m, from_m.y_m + wall_dy * d_m};
+    if (!passable(q, s_.hug_clearance_m)) continue;
+    const Point2 beyond{q.x_m + wall_dx * cell_m, q.y_m + wall_dy * cell_m};
+    if ((wall_beyond && passable(beyond, s_.hug_clearance_m)) || !segmentClear(from_m, q, 0.05, s_.hug_clearance_m)) break;
+    return {q, wallLane(q, dx, dy, wall_dx, wall_dy, s_.hug_clearance_m, strip_m)};
+  }
+  return {from_m, Lane{}};
 }
 
 std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) const {
@@ -132,10 +157,11 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
   const int w = (map_.maxCol() - i0) / k + 1, h = (map_.maxRow() - j0) / k + 1;
   if (map_.maxCol() < i0 || w <= 0 || h <= 0) return {};
   // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
-  // map has closed (a passage seen too narrow, a wall drawn a little off).
+  // map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
+  // (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
   const auto passable = [&](int i, int j) {
     if (!relaxed) return traversable(i, j);
-    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m;
+    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m && !bumped(i, j);
   };
   struct Block {
     int rep = -2;  // its cell (j * width + i) to go through; -1: not passable; -2: not looked at yet

@@ -12,17 +12,25 @@
 #include "scan_map.hpp"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace aula::vacuum::mapping {
 
 struct CoverageSettings {
-  double clearance_m = 0.175;     // the centre keeps this far from walls (radius 0.165 + margin)
-  double sweep_radius_m = 0.15;   // floor counted swept around the centre (the disc's is 0.165)
+  // The centre keeps this far from walls (radius 0.165 + margin): 0.175 took the disc along
+  // h2's 0.43 m corridor under a box with a centimetre to spare, where every glance on the box
+  // pushed it along and the scans could not tell how far (lost in 3 runs of 10).
+  double clearance_m = 0.185;
+  double hug_clearance_m = 0.175; // ... but a lane along a wall, to sweep the strip beside it
+  // Floor counted swept around the centre (the disc's is 0.165): at 0.15 every path left a
+  // sliver along its sides that the plans went back for.
+  double sweep_radius_m = 0.16;
   double plan_cell_m = 0.1;       // the nearest-unswept search's grid
-  // Its relaxed search: through floor not seen yet, and nearer walls, but never a gap narrower
-  // than the disc (0.33 m): a robot that went in there was wedged between both sides.
-  double relaxed_clearance_m = 0.17;
+  // Its relaxed search: through floor not seen yet, and nearer walls, but never a gap the disc
+  // (0.33 m) barely fits: a robot that went in there was wedged between both sides (0.33 m; at
+  // 0.17, h2's 0.34 m gap between two boxes).
+  double relaxed_clearance_m = 0.18;
 };
 
 struct Lane {
@@ -45,8 +53,14 @@ class CoveragePlanner {
     return map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.clearance_m && !bumped(i, j);
   }
   bool traversable(Point2 p_m) const { return traversable(map_.col(p_m.x_m), map_.row(p_m.y_m)); }
-  // Every cell along a -> b traversable, except within skip_m of a (the robot may start close to a wall).
-  bool segmentClear(Point2 a_m, Point2 b_m, double skip_m = 0) const;
+  // traversable() with another clearance.
+  bool passable(Point2 p_m, double clearance_m) const {
+    const int i = map_.col(p_m.x_m), j = map_.row(p_m.y_m);
+    return map_.knownFree(i, j) && map_.clearanceM(i, j) >= clearance_m && !bumped(i, j);
+  }
+  // Every cell along a -> b traversable (passable at clearance_m if given), except within skip_m
+  // of a (the robot may start close to a wall).
+  bool segmentClear(Point2 a_m, Point2 b_m, double skip_m = 0, double clearance_m = -1) const;
 
   // Something the laser does not see was bumped at p_m: no plan goes within clearance_m of it
   // until until_s. Not a wall on the map: a bump placed wrong (a side contact, a pose a little
@@ -57,6 +71,16 @@ class CoveragePlanner {
 
   // Straight from `from` along the axis (dx, dy) (one of +-x, +-y) while traversable.
   Lane lane(Point2 from_m, int dx, int dy) const;
+  // The same along a wall on the side (wall_dx, wall_dy), passable at clearance_m: what counts
+  // is the floor strip_m towards the wall, which the disc sweeps and the robot's centre never
+  // crosses.
+  Lane wallLane(Point2 from_m, int dx, int dy, int wall_dx, int wall_dy, double clearance_m, double strip_m) const;
+  // A lane along (dx, dy) beside a wall on the side (wall_dx, wall_dy) of from_m: its start is
+  // the farthest place that way, max_m to min_m off, passable at hug_clearance_m and in a clear
+  // line from from_m (and with the wall right beyond it if wall_beyond); the lane is wallLane()'s
+  // from there. Lane::unswept_m 0: none.
+  std::pair<Point2, Lane> besideWall(Point2 from_m, int wall_dx, int wall_dy, int dx, int dy, double max_m,
+                                     double min_m, double strip_m, bool wall_beyond) const;
   // Waypoints to the nearest traversable place that is unswept or next to floor not seen yet (a
   // frontier), through traversable places (relaxed: see CoverageSettings); empty if there is none.
   std::vector<Point2> pathToUnswept(Point2 from_m, bool relaxed = false) const;

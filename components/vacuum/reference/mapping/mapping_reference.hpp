@@ -5,8 +5,9 @@
 //   localize  predict from its own speed commands along the measured yaw, then match each scan
 //             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
-//             (boustrophedon); where no lane is left, the way to the nearest unswept floor
-//             (CoveragePlanner); when all is swept, a second pass;
+//             (boustrophedon), the first and last of a run along walls; where no lane is left,
+//             the way to the nearest unswept floor (CoveragePlanner); when all is swept, a
+//             second pass along the walls;
 //   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
@@ -42,19 +43,26 @@ struct MappingSettings {
   double match_max_w_radps = 0.25;    // turning faster than this: prediction only
   double map_max_w_radps = 0.15;      // ... and drawn into the map only below this
   double jump_max_w_radps = 0.05;     // a correction beyond track_window_m only when this straight
+  double jump_min_explained = 0.6;    // ... and a share of the scan's points on walls the map has seen...
+  double jump_agree_m = 0.03;         // ... and the same offset from the prediction (this close)...
+  int jump_confirm_scans = 3;         // ... in this many scans in a row
   double map_every_m = 0.1;           // draw a scan after moving this far...
   double map_every_rad = 0.3;         // ... or turning this much
   // Coverage.
   double lane_spacing_m = 0.28;       // the disc is 0.33 m: lanes overlap by 5 cm
+  double min_hug_m = 0.075;           // a lane along a wall only this far beside the last lane, or more
+  double max_slide_m = 0.5;           // a new run of lanes starts at a wall this near beside it
+  double hug_strip_m = 0.1;           // ... and its floor this far towards the wall still unswept
   double min_lane_m = 0.3;            // a shorter unswept run is not worth a lane
   double lane_choice = 0.7;           // a new lane: any way with this share of the longest's unswept floor
-  double arrive_m = 0.04;
+  double arrive_m = 0.015;            // a lane's end is the wall's: every centimetre short is floor left
+  double beside_m = 0.05;             // ... or this near with the waypoint behind
   double turn_in_place_rad = 0.25;    // heading errors above this turn on the spot
-  double turn_gain_per_s = 3.0;
+  double turn_gain_per_s = 5.0;       // turning on the spot was a quarter of the time at 3 and 2.5 rad/s
   double turn_min_radps = 0.6;
-  double turn_max_radps = 2.5;
+  double turn_max_radps = 3.0;
   double steer_max_radps = 1.0;
-  double approach_gain_per_s = 1.5;
+  double approach_gain_per_s = 3.0;  // slowing down from 0.13 m off: the motors stop it within 3 cm
   double approach_min_mps = 0.1;
   double follow_min_mps = 0.2;        // the deadline assumes at least this speed, plus...
   double follow_slack_s = 6.0;        // ... this long
@@ -62,8 +70,11 @@ struct MappingSettings {
   double backoff_mps = 0.12;
   double backoff_s = 0.5;
   double bump_ahead_m = 0.2;          // a bump straight ahead blocks the plans this far ahead of the centre...
+  double side_bump_rad = 0.8;         // ... or this far round to the bumper's side...
   double bump_known_m = 0.1;          // ... unless the map has a wall this close to that point...
   double bump_memory_s = 60;          // ... for this long
+  int goal_bumps = 2;                 // bumps on the way to one goal before it is given up...
+  double same_goal_m = 0.1;           // ... a goal this close to the last one being the same
   double stuck_s = 3.0;               // no progress this long while following: give up the goal
   double stuck_m = 0.05;
   double escape_radius_m = 0.5;       // too close to a wall: the nearest traversable place within this
@@ -92,9 +103,16 @@ class MappingReference : public VacuumAlgorithm {
  private:
   enum class Mode { Spin, Follow, Backoff };
   void localize(const component::LaserData& scan, double yaw_rad, bool bumped);
+  void correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max);
+  bool confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max);
+  void spin(double yaw, double& w);
+  void onBump(int bumper, double yaw);
   void decide();
   void follow(double yaw_rad, double& v, double& w);
   void enterFollow(std::vector<Point2> waypoints);
+  bool newLane(Point2 p);
+  bool hugWall(Point2 p);
+  bool startAtWall(Point2 p);
   void escapeByLaser();
   void tellBelief(VacuumApi& api);
 
@@ -111,6 +129,8 @@ class MappingReference : public VacuumAlgorithm {
   int64_t last_stamp_ = -1;
   double last_yaw_ = 0, cmd_v_ = 0, cmd_w_ = 0, prev_cmd_w_ = 0;
   int poor_matches_ = 0;
+  int jump_count_ = 0;       // scans in a row that found the same far correction...
+  Point2 jump_offset_;       // ... this one (from the prediction)
   bool mapped_once_ = false;
   Point2 last_insert_;
   double last_insert_yaw_ = 0;
@@ -118,6 +138,7 @@ class MappingReference : public VacuumAlgorithm {
   std::vector<Point2> waypoints_;
   int lane_dx_ = 0, lane_dy_ = 0, side_ = 1;
   bool on_lane_ = false;
+  bool hugging_ = false;     // on a lane along a wall (hug_clearance_m from it)
   double mode_start_s_ = 0, deadline_s_ = 0;
   Point2 progress_at_;
   double progress_s_ = 0;
@@ -128,6 +149,9 @@ class MappingReference : public VacuumAlgorithm {
   double yaw_ = 0;
   bool escaping_ = false;
   double backoff_v_ = 0, backoff_end_s_ = -1e9;
+  Point2 last_bump_m_{1e9, 1e9};  // where the last bump moving forward was
+  int goal_bumps_ = 0;       // bumps on the way to...
+  Point2 bumped_goal_;       // ... this goal
   double fresh_s_ = 0;  // when the last execute() swept new floor
   double last_reset_s_ = -1e9;
   // What it tells of its belief (api.belief): where it has been, and when its map goes next.

@@ -24,12 +24,20 @@ struct Point2 {
   double x_m = 0, y_m = 0;
 };
 
+// A scan's end point relative to the laser (the map's axes), and the side (ScanMap::side) of the
+// surface it fell on: the way a beam square to that surface would look at it.
+struct ScanPoint {
+  double x_m = 0, y_m = 0;
+  int side = 0;
+};
+
 struct ScanMapSettings {
   double cell_m = 0.025;          // a wall is placed within half a cell: the match's bias bound
   double size_m = 40;             // the square mapped, centred on the start
   double field_radius_m = 0.3;    // the match field falls to 0 this far from an occupied cell
   double free_max_m = 6.0;        // free space is carved along each beam up to this range
   double hit_max_m = 8.0;         // a beam longer than this marks no wall (grazing, far)
+  double join_max_m = 0.3;        // neighbouring beams' hits this far apart on one surface are joined
   double hit_margin_m = 0.05;     // a hit's beam carves free space only up to this short of it
   int hit_logodds = 4, free_logodds = 1, occupied_logodds = 4;  // per beam; clamped to +-100
 };
@@ -52,7 +60,7 @@ class ScanMap {
 
   // A scan's end points relative to the laser, in the map's axes (rotated by the laser's yaw):
   // every `stride`-th beam that hit something nearer than max_range_m.
-  static std::vector<Point2> endpoints(const component::LaserData& scan, double laser_yaw_rad, double max_range_m,
+  static std::vector<ScanPoint> endpoints(const component::LaserData& scan, double laser_yaw_rad, double max_range_m,
                                        int stride = 1);
 
   // Draws a scan taken at `laser_m` (the map's frame) with the laser facing laser_yaw_rad.
@@ -60,15 +68,15 @@ class ScanMap {
 
   // The laser's position that best fits `points` (endpoints()) to the map, searched within
   // +-search_half_m of `predicted_m` (then refined by a hill climb that may leave the window).
-  ScanMatch match(const std::vector<Point2>& points, Point2 predicted_m, double search_half_m) const;
+  ScanMatch match(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m) const;
   // match() on the points seen(): chosen at the prediction first, then again from where they
   // fit (a prediction 0.3 m off keeps the points that happen to land near walls from there).
   // ScanMatch::points: how many were matched.
-  ScanMatch matchSeen(const std::vector<Point2>& points, Point2 predicted_m, double search_half_m) const;
-  double score(const std::vector<Point2>& points, Point2 laser_m) const;
+  ScanMatch matchSeen(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m) const;
+  double score(const std::vector<ScanPoint>& points, Point2 laser_m) const;
   // The points that, from laser_m, end near a wall the map has seen from their side: only they
   // can say where the laser is; the rest is new (a wall's other face, a room not seen yet).
-  std::vector<Point2> seen(const std::vector<Point2>& points, Point2 laser_m) const;
+  std::vector<ScanPoint> seen(const std::vector<ScanPoint>& points, Point2 laser_m) const;
 
   // Cells: (i, j) = (column along x, row along y).
   int width() const { return n_; }
@@ -97,6 +105,14 @@ class ScanMap {
   // scan's point is matched only to hits seen looking the same way: a wall's two faces are
   // 0.2 m apart, and a scan of a face not drawn yet fits the other one otherwise.
   static int side(double dx, double dy);
+  // Per beam, the way a beam square to the surface it hit would look (from its neighbours' hits
+  // on the same surface; its own direction where it has none); (0, 0) where it hit nothing.
+  // A thin wall's two faces then never share a side, whatever the beams' angles: by the beams'
+  // own directions a face seen at 50 degrees counted as seen along the other axis, and a scan
+  // fitted a wall's other face 0.2 m away (h2 seeds 2 and 9).
+  static bool neighbours(const component::LaserData& scan, int k, int m);
+  void joinHits(Point2 a_m, Point2 b_m, Point2 look);
+  static std::vector<Point2> surfaceLooks(const component::LaserData& scan, double laser_yaw_rad, double max_range_m);
   static constexpr int kSides = 4;
   static constexpr uint8_t kOccupiedBit = 0x10;  // occupied_: this bit, and one bit per side stamped
   void occupy(int i, int j, Point2 hit_m, double beam_x, double beam_y);
