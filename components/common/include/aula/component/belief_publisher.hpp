@@ -19,7 +19,6 @@ class BeliefPublisher {
 
   // After the execute() of sim time `utime`: publishes what the algorithm said, if anything.
   void publish(int64_t utime);
-  const std::string& channel() const { return channel_; }
 
  private:
   lcmbus::Bus& bus_;

@@ -23,7 +23,6 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
   const world::OccupancyMap& map() const { return map_; }
   double robotRadiusM() const { return robot_radius_m_; }
   double runDurationS() const { return run_duration_s_; }  // the referee's Vacuum.Referee.Duration
-  const std::string& beliefChannel() const { return belief_publisher_->channel(); }
   // What the algorithm says it believes (api.belief); read it between calls into the algorithm,
   // never while one is hung (algorithm().hung()).
   const component::Belief& belief() const { return belief_; }
