@@ -92,7 +92,13 @@ Point2 CoveragePlanner::nearestTraversable(Point2 from_m, double radius_m) const
 
 void CoveragePlanner::forget(Point2 p_m) { sweep(p_m); }
 
-void CoveragePlanner::resetSwept() { std::fill(swept_.begin(), swept_.end(), 0); }
+void CoveragePlanner::resetSwept(double near_walls_m) {
+  for (int j = map_.minRow(); j <= map_.maxRow(); ++j) {
+    for (int i = map_.minCol(); i <= map_.maxCol(); ++i) {
+      if (map_.clearanceM(i, j) < near_walls_m) swept_[static_cast<size_t>(j) * map_.width() + i] = 0;
+    }
+  }
+}
 
 bool CoveragePlanner::segmentClear(Point2 a_m, Point2 b_m, double skip_m, double clearance_m) const {
   if (clearance_m < 0) clearance_m = s_.clearance_m;
@@ -121,6 +127,11 @@ Lane CoveragePlanner::wallLane(Point2 from_m, int dx, int dy, int wall_dx, int w
     i += dx;
     j += dy;
     if (!map_.knownFree(i, j) || map_.clearanceM(i, j) < clearance_m || bumped(i, j)) break;
+    // Nearer a wall than the plans go, the other side must leave room: a cell away from the
+    // wall is traversable (else the lane enters a gap the disc barely fits, h2's 0.35 m between
+    // a box and a wall, and is wedged there).
+    const bool beside_wall = wall_dx != 0 || wall_dy != 0;
+    if (beside_wall && clearance_m < s_.clearance_m && !traversable(i - wall_dx, j - wall_dy)) break;
     last = k;
     if (!swept(i + wall_dx * strip, j + wall_dy * strip)) {
       out.unswept_m += cell_m;

@@ -47,7 +47,9 @@ class CoveragePlanner {
   // The robot's centre is here: its disc sweeps around it. Returns the cells newly swept.
   int sweep(Point2 centre_m);
   void forget(Point2 p_m);      // give up on this place (unreachable): counted swept
-  void resetSwept();            // start a new pass over the whole floor
+  // Start a new pass over the floor nearer a wall than near_walls_m: the strips along walls that
+  // lanes across the rooms leave, and the centres that sweep them.
+  void resetSwept(double near_walls_m);
   bool swept(int i, int j) const { return map_.inside(i, j) && swept_[static_cast<size_t>(j) * map_.width() + i] != 0; }
   bool traversable(int i, int j) const {
     return map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.clearance_m && !bumped(i, j);

@@ -260,7 +260,9 @@ void MappingReference::enterFollow(std::vector<Point2> waypoints) {
 
 void MappingReference::decide() {
   const Point2 p = est_;
+  const bool was_hugging = hugging_ && on_lane_;
   hugging_ = false;
+  if (was_hugging && roundTheCorner(p)) return;
   // 0. Too close to a wall (a bump, a push): out to the nearest place the plans may start from.
   if (!coverage_.traversable(p)) {
     const Point2 out = coverage_.nearestTraversable(p, s_.escape_radius_m);
@@ -306,7 +308,7 @@ void MappingReference::decide() {
     return;
   }
   last_reset_s_ = now_s_;
-  coverage_.resetSwept();
+  coverage_.resetSwept(s_.second_pass_m);
   ++passes_;
   coverage_.sweep(est_);
   path = coverage_.pathToUnswept(p);
@@ -347,9 +349,36 @@ bool MappingReference::hugWall(Point2 p) {
   const auto [q, back] = coverage_.besideWall(p, -side_ * lane_dy_, side_ * lane_dx_, -lane_dx_, -lane_dy_,
                                               s_.lane_spacing_m - map_.cellM(), s_.min_hug_m, s_.hug_strip_m, false);
   if (back.unswept_m < s_.min_lane_m) return false;
+  wall_dx_ = -side_ * lane_dy_;
+  wall_dy_ = side_ * lane_dx_;
   lane_dx_ = -lane_dx_;
   lane_dy_ = -lane_dy_;
   enterFollow({q, back.end_m});
+  hugging_ = true;
+  return true;
+}
+
+// A lane along a wall ended: on along the next wall, round the corner. At a wall ahead (an inner
+// corner), along it away from the last one; where the last wall ended (an outer corner), past its
+// end and round it.
+bool MappingReference::roundTheCorner(Point2 p) {
+  const int dx = lane_dx_, dy = lane_dy_, wx = wall_dx_, wy = wall_dy_;
+  const auto [q, inner] = coverage_.besideWall(p, dx, dy, -wx, -wy, s_.corner_reach_m, 0.0, s_.hug_strip_m, true);
+  if (inner.unswept_m >= s_.min_lane_m) {
+    lane_dx_ = -wx, lane_dy_ = -wy, wall_dx_ = dx, wall_dy_ = dy;
+    enterFollow({q, inner.end_m});
+    hugging_ = true;
+    return true;
+  }
+  const Point2 past{p.x_m + dx * s_.corner_past_m, p.y_m + dy * s_.corner_past_m};
+  if (!coverage_.passable(past, coverage_.settings().hug_clearance_m) ||
+      !coverage_.segmentClear(p, past, 0.05, coverage_.settings().hug_clearance_m)) {
+    return false;
+  }
+  const Lane outer = coverage_.wallLane(past, wx, wy, -dx, -dy, coverage_.settings().hug_clearance_m, s_.hug_strip_m);
+  if (outer.unswept_m < s_.min_lane_m) return false;
+  lane_dx_ = wx, lane_dy_ = wy, wall_dx_ = -dx, wall_dy_ = -dy;
+  enterFollow({past, outer.end_m});
   hugging_ = true;
   return true;
 }
@@ -362,6 +391,8 @@ bool MappingReference::startAtWall(Point2 p) {
                                                  s_.max_slide_m, s_.min_hug_m, s_.hug_strip_m, true);
     if (first.unswept_m < s_.min_lane_m) continue;
     side_ = side;  // the lanes to come go away from the wall
+    wall_dx_ = side * lane_dy_;
+    wall_dy_ = -side * lane_dx_;
     enterFollow({q, first.end_m});
     hugging_ = true;
     return true;

@@ -5,15 +5,14 @@
 //   localize  predict from its own speed commands along the measured yaw, then match each scan
 //             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
-//             (boustrophedon), the first and last of a run along walls; where no lane is left,
-//             the way to the nearest unswept floor (CoveragePlanner); when all is swept, a
-//             second pass along the walls;
+//             (boustrophedon), the first and last of a run along walls, and a lane along a wall
+//             goes on round the corner along the next; where no lane is left, the way to the
+//             nearest unswept floor (CoveragePlanner); when all is swept, a second pass over
+//             the floor near walls, along them;
 //   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
 //             nothing new swept for no_fresh_s: out by the laser.
-// Not finished: its coverage goal is met in some houses only (docs/performance.md, "Mapping
-// cleaner").
 
 #include "coverage_planner.hpp"
 #include "scan_map.hpp"
@@ -53,6 +52,8 @@ struct MappingSettings {
   double min_hug_m = 0.075;           // a lane along a wall only this far beside the last lane, or more
   double max_slide_m = 0.5;           // a new run of lanes starts at a wall this near beside it
   double hug_strip_m = 0.1;           // ... and its floor this far towards the wall still unswept
+  double corner_reach_m = 0.05;       // a wall ahead this near at a lane's end: round the inner corner
+  double corner_past_m = 0.25;        // the side's wall ended: this far on, and round its end
   double min_lane_m = 0.3;            // a shorter unswept run is not worth a lane
   double lane_choice = 0.7;           // a new lane: any way with this share of the longest's unswept floor
   double arrive_m = 0.015;            // a lane's end is the wall's: every centimetre short is floor left
@@ -82,6 +83,7 @@ struct MappingSettings {
   double escape_run_m = 0.8;          // ... this far at most...
   double escape_margin_m = 0.4;       // ... stopping this short of what it sees there;
   double escape_min_m = 0.1;          // shorter than this: it backs out instead
+  double second_pass_m = 0.3;         // the second pass: floor this near walls only
   int fresh_cells = 4;                // an execute() sweeping this many new cells (2.5 cm) is progress...
   double no_fresh_s = 40;             // ... and none for this long, while following plans, is not
 };
@@ -113,6 +115,7 @@ class MappingReference : public VacuumAlgorithm {
   bool newLane(Point2 p);
   bool hugWall(Point2 p);
   bool startAtWall(Point2 p);
+  bool roundTheCorner(Point2 p);
   void escapeByLaser();
   void tellBelief(VacuumApi& api);
 
@@ -138,7 +141,8 @@ class MappingReference : public VacuumAlgorithm {
   std::vector<Point2> waypoints_;
   int lane_dx_ = 0, lane_dy_ = 0, side_ = 1;
   bool on_lane_ = false;
-  bool hugging_ = false;     // on a lane along a wall (hug_clearance_m from it)
+  bool hugging_ = false;     // on a lane along a wall (hug_clearance_m from it)...
+  int wall_dx_ = 0, wall_dy_ = 0;  // ... on this side
   double mode_start_s_ = 0, deadline_s_ = 0;
   Point2 progress_at_;
   double progress_s_ = 0;
