@@ -2,7 +2,7 @@
 # The vacuum's mapping reference uses the student API alone: its sources
 # (components/vacuum/reference/mapping), copied into a project made by `aula new`, build against
 # an installed Aula with the source and build trees hidden (bubblewrap, as test_install.sh), and
-# the plugin cleans the house exactly as --algorithm=mapping does (same seed, same report
+# the plugin cleans the house exactly as --algorithm=reference does (same seed, same report
 # figures: the same code, and lockstep makes a run repeatable).
 # Usage: test_mapping_reference.sh SOURCE_DIR BUILD_DIR
 set -euo pipefail
@@ -30,7 +30,7 @@ bwrap --dev-bind / / --tmpfs "$src" --tmpfs "$build" --die-with-parent \
       --report=plugin.json --lcm-url='$url' >'$work/out.txt' 2>&1 || true
 "
 [ -s "$work/plugin.json" ] || { echo "no report from the plugin; the run printed:"; cat "$work/out.txt"; exit 1; }
-"$build/bin/aula" run vacuum --headless --seed=2 --algorithm=mapping --report="$work/builtin.json" --lcm-url="$url" >/dev/null 2>&1
+"$build/bin/aula" run vacuum --headless --seed=2 --algorithm=reference --report="$work/builtin.json" --lcm-url="$url" >/dev/null 2>&1
 figure() { grep "^  \"$1\"" "$2" | sed 's/.*: \([0-9.]*\),*/\1/'; }
 plugin=$(figure coverage_percent "$work/plugin.json"); builtin=$(figure coverage_percent "$work/builtin.json")
 echo "mapping reference, seed 2: as a plugin from the prefix $plugin %, built in $builtin %"

@@ -95,11 +95,11 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   ASSERT_EQ(runToEnd(grade, (dir / "grade1.txt").string(), 300), 0) << readFile((dir / "grade1.txt").string());
   const std::string first_csv = readFile((out / "grades.csv").string());
 
-  // The reference's own marks on the same seeds (the good submission is the reference).
+  // The classic reference's own marks on the same seeds (the good submission is its source).
   std::vector<double> reference, reference_coverage;
   for (int seed : {1, 2}) {
     const std::string report = (dir / ("reference" + std::to_string(seed) + ".json")).string();
-    ASSERT_EQ(runToEnd({aula, "run", "vacuum", "--headless", "--algorithm=reference", "--seed=" + std::to_string(seed),
+    ASSERT_EQ(runToEnd({aula, "run", "vacuum", "--headless", "--algorithm=classic", "--seed=" + std::to_string(seed),
                         "--report=" + report, "--lcm-url=" + privateLcmUrl(), kShortRun},
                        (dir / "reference.txt").string(), 120),
               0);

@@ -96,7 +96,7 @@ TEST(VacuumRun, TwoRunsAtOnceGiveTheSameReportAsOneAlone) {
 TEST(VacuumRun, TheMappingCleanersOwnPoseStaysNearTheTruthAllRun) {
   const std::string dir = aula::testing::privateDir();
   const std::string log = dir + "/run.log", recorded = dir + "/run.lcmlog";
-  aula::process::ChildProcess run({std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=mapping",
+  aula::process::ChildProcess run({std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=reference",
                                    "--seed=1", "--record=" + recorded, "--lcm-url=" + aula::testing::privateLcmUrl()},
                                   log, log);
   ASSERT_EQ(run.wait(200s).value_or(-1), 0) << readFile(log);

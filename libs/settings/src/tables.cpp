@@ -176,9 +176,9 @@ SettingsTable makeVacuumComponent() {
   windowKeys(t, "Vacuum.Window", "880, 690", "the vacuum cleaner's window");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   motionKeys(t, "Vacuum", 0.5, 3.0, 0.08, 2, 10);
-  t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "mapping", "bounce"},
-              "the algorithm that drives the roomba (reference: spiral, walls and bounces; mapping: maps the house with "
-              "its laser and plans its coverage, unfinished; bounce: the random-bounce baseline; PATH.so: a plugin; "
+  t.algorithm("Vacuum.Algorithm", "student", {"student", "reference", "classic", "bounce"},
+              "the algorithm that drives the roomba (reference: maps the house with its laser and plans its coverage; "
+              "classic: the thesis's spiral, walls and bounces; bounce: the random-bounce baseline; PATH.so: a plugin; "
               "PATH.py: a MyAlgorithm.py)");
   t.text("Vacuum.Belief.Channel", "VACUUM_BELIEF",
          "where the algorithm's belief (api.belief: its own pose and map, never graded) is published for the window and the log");

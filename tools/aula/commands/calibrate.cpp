@@ -63,7 +63,7 @@ cli::Command calibrate() {
       .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")
       .add(cli::valueOption("baseline", "ALGORITHM", "the algorithm worth a 5 (default: the exercise's baseline, bounce)"))
       .add(cli::valueOption("anchor", "ALGORITHM",
-                            "the algorithm worth a 10 (default: the exercise's reference; e.g. mapping, or a plugin PATH.so)"))
+                            "the algorithm worth a 10 (default: the exercise's reference; e.g. classic, or a plugin PATH.so)"))
       .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
       .text("out", "calibration", "the folder of the calibration's runs (reports, pictures; run again to resume)")
       .add(cli::valueOption("output", "FILE.cfg", "where to write the rubric (default: W.rubric.cfg beside the world)"));

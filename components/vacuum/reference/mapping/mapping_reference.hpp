@@ -1,7 +1,7 @@
 #pragma once
-// The vacuum's mapping cleaner (--algorithm=mapping; meant to become the reference): it maps the
-// house from its own laser and plans its coverage, with the student API alone (yaw, laser,
-// bumper, motors; no x, y):
+// The vacuum's reference, the mapping cleaner (--algorithm=reference; the thesis's spiral, walls
+// and bounces is --algorithm=classic): it maps the house from its own laser and plans its
+// coverage, with the student API alone (yaw, laser, bumper, motors; no x, y):
 //   localize  predict from its own speed commands along the measured yaw, then match each scan
 //             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back

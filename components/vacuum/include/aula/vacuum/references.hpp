@@ -10,7 +10,7 @@
 
 namespace aula::vacuum {
 
-std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);   // spiral, wall, bounce
+std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);   // spiral, wall, bounce: --algorithm=classic
 std::unique_ptr<VacuumAlgorithm> makeRandomBounceAlgorithm(uint64_t seed);  // the baseline
 
 }  // namespace aula::vacuum
