@@ -18,9 +18,13 @@ constexpr double kBinS = 100.0;
 
 CoveragePlot::CoveragePlot(double duration_s, QWidget* parent) : QChartView(parent), duration_s_(duration_s) {
   auto* chart = new QChart;
-  chart->setTitle("Cleaned floor (%) over sim time");
-  chart->setMargins(QMargins(4, 4, 4, 4));
-  chart->legend()->setAlignment(Qt::AlignBottom);
+  // The window's fixed height leaves the chart about 160 px: with a legend and axis titles as
+  // well, QtCharts elided every label to "...". The title names the series instead.
+  chart->setTitle("Cleaned floor, %: total (red), per 100 s (blue)");
+  chart->setMargins(QMargins(2, 2, 2, 2));
+  chart->legend()->hide();
+  QFont label_font = chart->font();
+  label_font.setPointSizeF(7.5);
   const int bins = std::max(1, static_cast<int>(std::ceil(duration_s_ / kBinS)));
 
   gains_ = new QBarSet("gain per 100 s");
@@ -35,9 +39,10 @@ CoveragePlot::CoveragePlot(double duration_s, QWidget* parent) : QChartView(pare
   chart->addSeries(cumulative_);
 
   // Bars sit on a category axis (one per 100 s), the curve on a time axis over the same width.
+  // Each bar's end in sim seconds.
   auto* categories = new QBarCategoryAxis;
-  for (int i = 0; i < bins; ++i) categories->append(QString::number((i + 1) * kBinS / 100, 'f', 0));
-  categories->setTitleText("x 100 s");
+  for (int i = 0; i < bins; ++i) categories->append(QString::number((i + 1) * kBinS, 'f', 0));
+  categories->setLabelsFont(label_font);
   chart->addAxis(categories, Qt::AlignBottom);
   bars->attachAxis(categories);
   auto* time_axis = new QValueAxis;
@@ -49,6 +54,7 @@ CoveragePlot::CoveragePlot(double duration_s, QWidget* parent) : QChartView(pare
   percent_axis_->setRange(0, 20);
   percent_axis_->setTickCount(3);
   percent_axis_->setLabelFormat("%.0f");
+  percent_axis_->setLabelsFont(label_font);
   chart->addAxis(percent_axis_, Qt::AlignLeft);
   bars->attachAxis(percent_axis_);
   cumulative_->attachAxis(percent_axis_);

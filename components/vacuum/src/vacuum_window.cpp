@@ -181,7 +181,7 @@ void VacuumWindow::refresh() {
                        .arg(component_.motors().getV(), 0, 'f', 2)
                        .arg(component_.motors().getW(), 0, 'f', 2)
                        .arg(coverage_ ? coverage_->coveragePercent() : 0.0, 0, 'f', 1)
-                       .arg(belief_.has_pose ? "\nmagenta: what the algorithm believes (its map, its pose)" : ""));
+                       .arg(belief_.has_pose ? "\nmagenta: its belief (api.belief)" : ""));
 }
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {

@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QFontMetrics>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QPushButton>
 
 #include <cmath>
@@ -52,8 +53,13 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   mark_->setFixedHeight(2 * QFontMetrics(mark_->font()).lineSpacing() + 8);
   mark_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   auto* show = new QPushButton("Show me my mark", this);
-  layout->addWidget(percent_, 0, 0);
-  layout->addWidget(countdown_, 0, 1);
+  // The clock's line shares the top row with the percentage: at the end it is "Time's up at
+  // 900.00 s of sim time", wider than the gauge's column it was in (cut at the window's edge).
+  auto* top = new QHBoxLayout;
+  top->addWidget(percent_);
+  top->addStretch(1);
+  top->addWidget(countdown_);
+  layout->addLayout(top, 0, 0, 1, 2);
   layout->addWidget(bar_, 1, 0, 1, 2);
   layout->addWidget(map_, 2, 0);
   layout->addWidget(clock_, 2, 1, Qt::AlignTop);
