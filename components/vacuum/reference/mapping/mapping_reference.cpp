@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace aula::vacuum::mapping {
 namespace {
@@ -29,6 +30,10 @@ void MappingReference::execute(VacuumApi& api) {
   const bool bumped = api.bumper.getBumperData().state == 1;
   localize(scan, yaw, bumped);
   map_.markFree(est_, s_.footprint_m);
+  if (trail_.empty() || distance(est_, trail_.back()) >= s_.trail_step_m) {
+    trail_.push_back(est_);
+    if (trail_.size() > 200) trail_.pop_front();
+  }
   if (coverage_.sweep(est_) >= s_.fresh_cells || mode_ == Mode::Spin) fresh_s_ = now_s_;
   coverage_.expireBumps(now_s_);
 
@@ -151,6 +156,7 @@ void MappingReference::onBump(int bumper, double yaw) {
       goal_bumps_ = 0;
     }
   }
+  unwedge_ = unwedge_ || wedged(est_);
   const bool again = now_s_ - backoff_end_s_ < s_.backoff_s;  // the last backoff ended pressed
   backoff_v_ = cmd_v_ > 0 || !again ? -s_.backoff_mps : -backoff_v_;
   mode_ = Mode::Backoff;
@@ -262,6 +268,7 @@ void MappingReference::decide() {
   const Point2 p = est_;
   const bool was_hugging = hugging_ && on_lane_;
   hugging_ = false;
+  if (unwedge_ && unwedge()) return;
   if (was_hugging && roundTheCorner(p)) return;
   // 0. Too close to a wall (a bump, a push): out to the nearest place the plans may start from.
   if (!coverage_.traversable(p)) {
@@ -355,6 +362,47 @@ bool MappingReference::hugWall(Point2 p) {
   lane_dy_ = -lane_dy_;
   enterFollow({q, back.end_m});
   hugging_ = true;
+  return true;
+}
+
+// Bumped here again and again (a gap the disc barely fits, between a box and a wall the map
+// draws a centimetre off: g1 seed 4 was wedged for 600 s, 1026 bumps): wedged.
+bool MappingReference::wedged(Point2 p) {
+  recent_bumps_.emplace_back(now_s_, p);
+  while (now_s_ - recent_bumps_.front().first > s_.wedge_window_s) recent_bumps_.pop_front();
+  if (static_cast<int>(recent_bumps_.size()) < s_.wedge_bumps) return false;
+  for (const auto& bump : recent_bumps_) {
+    if (distance(bump.second, p) > s_.wedge_m) return false;
+  }
+  recent_bumps_.clear();
+  return true;
+}
+
+// Out of a wedge the way it came in, along its own trail (floor it has driven on), and the
+// plans keep away from the spot for the rest of the run.
+bool MappingReference::unwedge() {
+  unwedge_ = false;
+  const Point2 wedge = est_;
+  std::vector<Point2> way;
+  for (auto it = trail_.rbegin(); it != trail_.rend(); ++it) {
+    if (distance(*it, wedge) < s_.trail_step_m) continue;
+    way.push_back(*it);
+    if (distance(*it, wedge) >= s_.unwedge_m) break;
+  }
+  coverage_.addBump(wedge, std::numeric_limits<double>::infinity());
+  if (way.empty()) return false;
+  on_lane_ = false;
+  // The way out behind: in reverse, not turning round (a disc pressed on both sides may not turn).
+  const Point2 out = way.back();
+  const double bearing = wrapAngle(std::atan2(out.y_m - wedge.y_m, out.x_m - wedge.x_m) - yaw_);
+  if (std::abs(bearing) > M_PI / 2) {
+    backoff_v_ = -s_.backoff_mps;
+    mode_ = Mode::Backoff;
+    mode_start_s_ = now_s_ + distance(out, wedge) / s_.backoff_mps - s_.backoff_s;
+    return true;
+  }
+  escaping_ = true;  // through floor the plans now keep away from
+  enterFollow(std::move(way));
   return true;
 }
 

@@ -12,13 +12,15 @@
 //   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
-//             nothing new swept for no_fresh_s: out by the laser.
+//             nothing new swept for no_fresh_s: out by the laser; bumped wedge_bumps times in
+//             one spot (wedged in a gap): back out along its own trail, and never back there.
 
 #include "coverage_planner.hpp"
 #include "scan_map.hpp"
 
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
+#include <deque>
 #include <memory>
 #include <random>
 #include <vector>
@@ -84,6 +86,11 @@ struct MappingSettings {
   double escape_margin_m = 0.4;       // ... stopping this short of what it sees there;
   double escape_min_m = 0.1;          // shorter than this: it backs out instead
   double second_pass_m = 0.3;         // the second pass: floor this near walls only
+  int wedge_bumps = 8;                // this many bumps within wedge_window_s...
+  double wedge_window_s = 30;         // ...
+  double wedge_m = 0.3;               // ... all this near one another: wedged. Out along its own trail
+  double unwedge_m = 1.0;             // this far, and the plans never go back there
+  double trail_step_m = 0.1;          // the trail: where it has been, a point this far apart
   int fresh_cells = 4;                // an execute() sweeping this many new cells (2.5 cm) is progress...
   double no_fresh_s = 40;             // ... and none for this long, while following plans, is not
 };
@@ -116,6 +123,8 @@ class MappingReference : public VacuumAlgorithm {
   bool hugWall(Point2 p);
   bool startAtWall(Point2 p);
   bool roundTheCorner(Point2 p);
+  bool wedged(Point2 p);
+  bool unwedge();
   void escapeByLaser();
   void tellBelief(VacuumApi& api);
 
@@ -156,6 +165,9 @@ class MappingReference : public VacuumAlgorithm {
   Point2 last_bump_m_{1e9, 1e9};  // where the last bump moving forward was
   int goal_bumps_ = 0;       // bumps on the way to...
   Point2 bumped_goal_;       // ... this goal
+  std::deque<std::pair<double, Point2>> recent_bumps_;  // (when, where) within wedge_window_s
+  bool unwedge_ = false;     // wedged: out along the trail at the next decision
+  std::deque<Point2> trail_;  // where it has been, the newest last
   double fresh_s_ = 0;  // when the last execute() swept new floor
   double last_reset_s_ = -1e9;
   // What it tells of its belief (api.belief): where it has been, and when its map goes next.
