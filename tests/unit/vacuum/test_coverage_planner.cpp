@@ -3,6 +3,7 @@
 // and which floor is still worth a trip.
 #include "../support/synthetic_scan.hpp"
 
+#include <aula/geometry/raycaster2d.hpp>
 #include <coverage_planner.hpp>
 
 #include <gtest/gtest.h>
@@ -67,44 +68,35 @@ TEST(CoveragePlanner, TheRelaxedSearchNeverPassesAGapNarrowerThanTheDisc) {
 
 namespace {
 
-struct Box {
-  double x0, y0, x1, y1;
-};
+// The 4 m room (walls 0.2 m thick round [-2, 2]^2) with one box in it, (x0, y0)-(x1, y1): the
+// laser's ranges cast by the simulator's own caster.
+aula::geometry::OrientedBox rect(double x0_m, double y0_m, double x1_m, double y1_m) {
+  return {{(x0_m + x1_m) / 2, (y0_m + y1_m) / 2, 0.0}, x1_m - x0_m, y1_m - y0_m};
+}
 
-// The 4 m room (walls 0.2 m thick round [-2, 2]^2) with one box in it: a scan ray-cast from
-// laser_m facing yaw_rad.
-aula::component::LaserData boxRoomScan(Point2 laser_m, double yaw_rad, const Box& box) {
-  const Box solids[] = {{-2.2, -2.2, 2.2, -2}, {-2.2, 2, 2.2, 2.2}, {-2.2, -2, -2, 2}, {2, -2, 2.2, 2}, box};
+aula::geometry::Raycaster2D boxRoom(double x0_m, double y0_m, double x1_m, double y1_m) {
+  aula::geometry::Obstacles2D statics;
+  statics.rects = {rect(-2.2, -2.2, 2.2, -2), rect(-2.2, 2, 2.2, 2.2), rect(-2.2, -2, -2, 2), rect(2, -2, 2.2, 2),
+                   rect(x0_m, y0_m, x1_m, y1_m)};
+  return aula::geometry::Raycaster2D(statics);
+}
+
+// A scan ray-cast from laser_m facing yaw_rad.
+aula::component::LaserData castScan(const aula::geometry::Raycaster2D& room, Point2 laser_m, double yaw_rad) {
   return aula::test::syntheticScan(180, -M_PI / 2, M_PI / 2, [&](double angle_rad) {
-    const double dx = std::cos(yaw_rad + angle_rad), dy = std::sin(yaw_rad + angle_rad);
-    double nearest_m = 10;
-    for (const Box& b : solids) {  // slab test
-      double t0 = 0, t1 = 1e9;
-      const double lo[2] = {b.x0, b.y0}, hi[2] = {b.x1, b.y1}, o[2] = {laser_m.x_m, laser_m.y_m}, d[2] = {dx, dy};
-      for (int a = 0; a < 2; ++a) {
-        if (std::abs(d[a]) < 1e-12) {
-          if (o[a] < lo[a] || o[a] > hi[a]) t0 = 1e9;
-          continue;
-        }
-        const double ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
-        t0 = std::max(t0, std::min(ta, tb));
-        t1 = std::min(t1, std::max(ta, tb));
-      }
-      if (t0 <= t1) nearest_m = std::min(nearest_m, t0);
-    }
-    return nearest_m;
+    return room.cast({laser_m.x_m, laser_m.y_m}, yaw_rad + angle_rad, 10.0);
   });
 }
 
 // How far along the south wall (+x, the wall at -y) a lane at hug_clearance_m from it goes,
 // from x = -1.5, in the room with a box whose south face is gap_m from that wall.
 double wallLaneEndX(double gap_m) {
-  const Box box{0.0, -2 + gap_m, 1.0, -2 + gap_m + 0.5};
+  const auto room = boxRoom(0.0, -2 + gap_m, 1.0, -2 + gap_m + 0.5);
   ScanMap map;
   // Looks from the room's middle, and along the floor between the box and the wall.
-  for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(boxRoomScan({0.5, 1.0}, yaw, box), yaw, {0.5, 1.0});
-  for (double x : {-1.5, -0.5}) map.insert(boxRoomScan({x, -2 + gap_m / 2}, 0, box), 0, {x, -2 + gap_m / 2});
-  for (double x : {1.5, 1.8}) map.insert(boxRoomScan({x, -2 + gap_m / 2}, M_PI, box), M_PI, {x, -2 + gap_m / 2});
+  for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(castScan(room, {0.5, 1.0}, yaw), yaw, {0.5, 1.0});
+  for (double x : {-1.5, -0.5}) map.insert(castScan(room, {x, -2 + gap_m / 2}, 0), 0, {x, -2 + gap_m / 2});
+  for (double x : {1.5, 1.8}) map.insert(castScan(room, {x, -2 + gap_m / 2}, M_PI), M_PI, {x, -2 + gap_m / 2});
   CoveragePlanner planner(map);
   const double hug_m = planner.settings().hug_clearance_m;
   return planner.wallLane({-1.5, -2 + hug_m}, 1, 0, 0, -1, hug_m, 0.1).end_m.x_m;

@@ -32,7 +32,7 @@ void MappingReference::execute(VacuumApi& api) {
   map_.markFree(est_, s_.footprint_m);
   if (trail_.empty() || distance(est_, trail_.back()) >= s_.trail_step_m) {
     trail_.push_back(est_);
-    if (trail_.size() > 200) trail_.pop_front();
+    if (trail_.size() > 200) trail_.pop_front();  // 20 m: far more than unwedge_m needs
   }
   if (coverage_.sweep(est_) >= s_.fresh_cells || mode_ == Mode::Spin) fresh_s_ = now_s_;
   coverage_.expireBumps(now_s_);
@@ -418,12 +418,10 @@ bool MappingReference::roundTheCorner(Point2 p) {
     hugging_ = true;
     return true;
   }
+  const double hug_m = coverage_.settings().hug_clearance_m;
   const Point2 past{p.x_m + dx * s_.corner_past_m, p.y_m + dy * s_.corner_past_m};
-  if (!coverage_.passable(past, coverage_.settings().hug_clearance_m) ||
-      !coverage_.segmentClear(p, past, 0.05, coverage_.settings().hug_clearance_m)) {
-    return false;
-  }
-  const Lane outer = coverage_.wallLane(past, wx, wy, -dx, -dy, coverage_.settings().hug_clearance_m, s_.hug_strip_m);
+  if (!coverage_.passable(past, hug_m) || !coverage_.segmentClear(p, past, 0.05, hug_m)) return false;
+  const Lane outer = coverage_.wallLane(past, wx, wy, -dx, -dy, hug_m, s_.hug_strip_m);
   if (outer.unswept_m < s_.min_lane_m) return false;
   lane_dx_ = wx, lane_dy_ = wy, wall_dx_ = -dx, wall_dy_ = -dy;
   enterFollow({past, outer.end_m});
