@@ -1,5 +1,7 @@
 #include "aula/sim/simulator.hpp"
 
+#include <aula/process/machine_reason.hpp>
+
 #include <aula/config/config.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/process/child_process.hpp>
@@ -434,9 +436,12 @@ bool Simulator::awaitLockstepAcks(WallTime now) {
     std::snprintf(silent, sizeof silent, "lockstep client '%s' silent for %.1f s", c.client.c_str(),
                   c.silent_for.count() / 1000.0);
     if (graded_) {
-      // A graded run never goes on without the student's component or the referee.
-      ended_because_ = silent;
-      log(ended_because_ + " (wall): a graded run does not go on without it; the run ends");
+      // A graded run never goes on without the student's component or the referee. A process
+      // that is gone is seen at once by the launcher (its child); one that only computes or
+      // sleeps is judged by its own budgets of CPU time. Silence this long is a starved
+      // machine's backstop (Simulator.Lockstep.DropAfterMs), never a mark.
+      ended_because_ = process::machineReason(std::string(silent) + " of wall time");
+      log(ended_because_ + ": a graded run does not go on without it; the run ends");
       return true;
     }
     if (c.pid > 0 && !process::processGone(c.pid)) {

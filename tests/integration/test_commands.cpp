@@ -9,6 +9,7 @@
 #include <set>
 
 namespace {
+namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using aula::testing::jsonNumber;
 using aula::testing::Outcome;
@@ -139,3 +140,47 @@ TEST(Commands, RunHonoursDurationForEveryExercise) {
 }
 
 }  // namespace
+
+// `aula help run` is `aula run --help`; an error names the command once ("aula run: ...").
+TEST(Commands, HelpOfACommandAndErrorsNameItOnce) {
+  const Outcome help = runToEnd({kBin + "/aula", "help", "run"}, 60s);
+  EXPECT_EQ(help.code.value_or(-1), 0) << help.output;
+  EXPECT_EQ(help.output, runToEnd({kBin + "/aula", "run", "--help"}, 60s).output);
+  const Outcome unknown = runToEnd({kBin + "/aula", "help", "rnu"}, 60s);
+  EXPECT_EQ(unknown.code.value_or(-1), 2) << unknown.output;
+  const Outcome wrong = runToEnd({kBin + "/aula", "run", "vacuum", "--wrold=x"}, 60s);
+  EXPECT_EQ(wrong.code.value_or(-1), 2) << wrong.output;
+  EXPECT_NE(wrong.output.find("aula run: unknown option '--wrold'"), std::string::npos) << wrong.output;
+  EXPECT_EQ(wrong.output.find("aula: aula run"), std::string::npos) << wrong.output;
+}
+
+// Bad input a grade meets is refused at once with exit 2, naming the argument: a file that never
+// ends (/dev/zero), a folder where a file belongs, seeds out of a run's range, a corrupt result,
+// a project in the other language. (Each hung or was accepted silently before.)
+TEST(Commands, InputThatNeverEndsOrIsOutOfRangeIsRefusedNamingIt) {
+  const std::string dir = aula::testing::privateDir();
+  fs::create_directories(dir + "/ana");
+  std::ofstream(dir + "/ana/MyAlgorithm.py") << "class MyAlgorithm:\n    def execute(self, api):\n        pass\n";
+  fs::create_directories(dir + "/collect/runs/ana");
+  std::ofstream(dir + "/collect/runs/ana/vacuum-seed1.json") << "{\"mark\": 3.2, ";  // cut short
+  const std::string aula = kBin + "/aula";
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{aula, "run", "vacuum", "--headless", "--config=/dev/zero"}, "config file /dev/zero: not a regular file"},
+      {{aula, "run", "vacuum", "--headless", "--config=" + dir}, "config file " + dir + ": a folder, not a file"},
+      {{aula, "grade", "vacuum", dir + "/ana", "--out=" + dir + "/out", "--seeds=9223372036854775807"},
+       "--seeds=9223372036854775807: '9223372036854775807': a seed is at most"},
+      {{aula, "grade", "vacuum", dir + "/ana", "--out=" + dir + "/out", "--seeds=-5"}, "--seeds=-5: '-5': a seed is 0 or more"},
+      {{aula, "grade", "vacuum", dir + "/ana", "--out=" + dir + "/out", "--seeds=1-200000"}, "is more than 1000 seeds"},
+      {{aula, "grade", "vacuum", dir + "/ana", "--out=" + dir + "/out", "--calibration-seeds=9223372036854775807"},
+       "--calibration-seeds=9223372036854775807"},
+      {{aula, "grade", "--collect=" + dir + "/collect"}, "vacuum-seed1.json: not a result"},
+      {{aula, "new", "vacuum", dir + "/ana"}, "MyAlgorithm.py already exists: " + dir + "/ana is a Python project"},
+  };
+  for (const auto& [args, said] : cases) {
+    const Outcome out = runToEnd(args, 60s);  // a backstop: each is refused before anything runs
+    EXPECT_EQ(out.code.value_or(-1), 2) << args.back() << "\n" << out.output;
+    EXPECT_NE(out.output.find(said), std::string::npos) << args.back() << "\n" << out.output;
+  }
+  EXPECT_FALSE(fs::exists(dir + "/ana/MyAlgorithm.cpp"));  // aula new wrote nothing
+  fs::remove_all(dir);
+}

@@ -133,7 +133,7 @@ TEST(LauncherReports, ADeadRefereeLeavesAReportWithoutAMark) {
   ::kill(referee, SIGKILL);
   EXPECT_EQ(run.wait(30s).value_or(-1), 1) << readFile(out);
   const std::string json = readFile(report);
-  EXPECT_NE(json.find("\"aborted\": \"vacuum-cleaner-referee died (SIGKILL)\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"aborted\": \"the machine's reason: vacuum-cleaner-referee died (SIGKILL)\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
   EXPECT_EQ(json.find("\"mark\""), std::string::npos) << json;
   EXPECT_NE(readFile(out).find("died (SIGKILL): the run has no mark"), std::string::npos) << readFile(out);
@@ -154,42 +154,82 @@ TEST(LauncherReports, ARunPastItsWallClockBudgetEndsWithTheReason) {
   const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
   auto argv = slowRun(report);
   argv.push_back("--timeout=3");
-  const auto started = std::chrono::steady_clock::now();
   ChildProcess run(argv, out, out);
-  EXPECT_EQ(run.wait(60s).value_or(-1), 1) << readFile(out);
-  EXPECT_LT(std::chrono::steady_clock::now() - started, 30s);
+  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
   const std::string json = readFile(report);
-  EXPECT_NE(json.find("wall-clock budget of 3 s ran out"), std::string::npos) << json << readFile(out);
-  EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
-  fs::remove_all(dir);
-}
-
-// A graded run (headless: the run's key) whose component or referee stops acking for longer than
-// Simulator.Lockstep.DropAfterMs (5 s) is not run on without it: the simulator ends it, the report
-// says which client was silent and for how long, with "finished": false, and the exit is 1.
-class SilentClient : public ::testing::TestWithParam<std::pair<const char*, const char*>> {};
-
-TEST_P(SilentClient, EndsAGradedRunWithTheReason) {
-  const auto [program, lockstep_name] = GetParam();
-  const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
-  ChildProcess run(slowRun(report), out, out);
-  const pid_t client = waitForChild(run.pid(), program);
-  ASSERT_GT(client, 0) << readFile(out);
-  std::this_thread::sleep_for(1s);
-  stopFor(client, 7s);
-  EXPECT_EQ(run.wait(30s).value_or(-1), 1) << readFile(out);
-  const std::string json = readFile(report);
-  EXPECT_NE(json.find(std::string("\"aborted\": \"lockstep client '") + lockstep_name + "' silent for 5."), std::string::npos)
+  EXPECT_NE(json.find("the machine's reason: the run's wall-clock backstop of 3 s ran out"), std::string::npos)
       << json << readFile(out);
   EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
-  EXPECT_NE(readFile(out).find("the simulator ended the run"), std::string::npos) << readFile(out);
   fs::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(LauncherReports, SilentClient,
-                         ::testing::Values(std::make_pair("vacuum-cleaner", "vacuum-cleaner"),
-                                           std::make_pair("vacuum-cleaner-referee", "vacuum-referee")),
-                         [](const auto& info) { return info.index == 0 ? std::string("Component") : std::string("Referee"); });
+// Stopped for 3 s (SIGSTOP, then SIGCONT: a starved machine, a debugger), any of the three
+// processes of a graded run is waited for, and its report is byte-identical to the same run's
+// undisturbed, which runs beside it on a bus of its own (the default): no wall-clock limit decides
+// a run, and two runs on one machine never meet.
+class StoppedProcess : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(StoppedProcess, IsWaitedForAndTheReportIsTheSame) {
+  const std::string dir = privateDir();
+  auto runTo = [](const std::string& report) {
+    return std::vector<std::string>{kAula, "run", "vacuum", "--headless", "--rtf=1", "--Vacuum.Referee.Duration=8",
+                                    "--algorithm=reference", "--seed=1", "--report=" + report};
+  };
+  ChildProcess calm(runTo(dir + "/calm.json"), dir + "/calm.txt", dir + "/calm.txt");
+  ChildProcess stopped(runTo(dir + "/stopped.json"), dir + "/stopped.txt", dir + "/stopped.txt");
+  const pid_t process = waitForChild(stopped.pid(), GetParam());
+  ASSERT_GT(process, 0) << readFile(dir + "/stopped.txt");
+  std::this_thread::sleep_for(1s);
+  stopFor(process, 3s);
+  EXPECT_EQ(calm.wait(300s).value_or(-1), 0) << readFile(dir + "/calm.txt");
+  EXPECT_EQ(stopped.wait(300s).value_or(-1), 0) << readFile(dir + "/stopped.txt");
+  const std::string report = readFile(dir + "/calm.json");
+  EXPECT_NE(report.find("\"finished\": true"), std::string::npos) << report;
+  EXPECT_EQ(report.find("tampering"), std::string::npos) << report;
+  EXPECT_EQ(readFile(dir + "/stopped.json"), report);
+  fs::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(LauncherReports, StoppedProcess,
+                         ::testing::Values("aula-sim", "vacuum-cleaner", "vacuum-cleaner-referee"),
+                         [](const auto& info) { return std::string(info.index == 0 ? "Simulator" : info.index == 1 ? "Component" : "Referee"); });
+
+// Simulator.Lockstep.DropAfterMs is only a starved machine's backstop: past it a graded run ends
+// for the machine's reason, never the student's (aula grade runs it again).
+TEST(LauncherReports, ASilentClientPastTheBackstopIsTheMachinesReason) {
+  const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
+  auto argv = slowRun(report);
+  argv.push_back("--Simulator.Lockstep.DropAfterMs=1000");
+  ChildProcess run(argv, out, out);
+  const pid_t client = waitForChild(run.pid(), "vacuum-cleaner");
+  ASSERT_GT(client, 0) << readFile(out);
+  std::this_thread::sleep_for(1s);
+  stopFor(client, 4s);
+  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
+  const std::string json = readFile(report);
+  EXPECT_NE(json.find("\"aborted\": \"the machine's reason: lockstep client 'vacuum-cleaner' silent for 1."), std::string::npos)
+      << json << readFile(out);
+  EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
+  fs::remove_all(dir);
+}
+
+// A component killed from outside the run (SIGKILL: the out-of-memory killer) is the machine's
+// reason, never the student's crash.
+TEST(LauncherReports, AComponentKilledFromOutsideIsTheMachinesReason) {
+  const std::string dir = privateDir(), report = dir + "/r.json", out = dir + "/out.txt";
+  ChildProcess run(slowRun(report), out, out);
+  const pid_t component = waitForChild(run.pid(), "vacuum-cleaner");
+  ASSERT_GT(component, 0) << readFile(out);
+  std::this_thread::sleep_for(1s);
+  ::kill(component, SIGKILL);
+  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
+  const std::string json = readFile(report);
+  EXPECT_NE(json.find("\"aborted\": \"the machine's reason: the component was killed (SIGKILL) from outside the run\""),
+            std::string::npos)
+      << json << readFile(out);
+  EXPECT_EQ(json.find("algorithm_error"), std::string::npos) << json;
+  fs::remove_all(dir);
+}
 
 // Outside grading (three terminals, windows: no key), a component stopped in a debugger is waited
 // for as long as its process lives: the run goes on when it resumes and finishes as usual.

@@ -222,21 +222,19 @@ TEST(StudentFaults, CrashNamesTheStudentsLineInTheSandbox) {
   expectCrashNamedAtItsLine(runVacuum(AULA_PLUGIN_SEGFAULT, "segfault_sandboxed", {"--sandbox"}));
 }
 
-// 3. execute() never returns: the watchdog ends the component after its budget, the run ends in
-// a few seconds instead of hanging.
+// 3. execute() never returns: the watchdog ends the component once the call has used its budget
+// of CPU time (however busy the machine), instead of hanging.
 TEST(StudentFaults, EndlessLoopEndsTheRunWithinTheBudget) {
-  const RunResult run = runVacuum(AULA_PLUGIN_ENDLESS_LOOP, "endless_loop", {"--Component.ExecuteBudget=1"}, 30s);
+  const RunResult run = runVacuum(AULA_PLUGIN_ENDLESS_LOOP, "endless_loop", {"--Component.ExecuteBudget=1"}, 300s);
   ASSERT_TRUE(run.code.has_value()) << "the run hung\n" << describe(run);
-  EXPECT_LT(run.wall_s, 15.0) << describe(run);
   EXPECT_NE(*run.code, 0) << describe(run);
-  EXPECT_NE(run.err.find("vacuum-cleaner: the student's algorithm: execute() did not return within 1 s"),
-            std::string::npos)
-      << describe(run);
-  EXPECT_NE(run.err.find("ended the run: execute() did not return within 1 s"), std::string::npos) << describe(run);
+  const std::string overran = "execute() used more than 1 s of CPU time (an endless loop?) (Component.ExecuteBudget)";
+  EXPECT_NE(run.err.find("vacuum-cleaner: the student's algorithm: " + overran), std::string::npos) << describe(run);
+  EXPECT_NE(run.err.find("ended the run: " + overran), std::string::npos) << describe(run);
   ASSERT_FALSE(run.report.empty()) << describe(run);
   const auto aborted = jsonString(run.report, "aborted");
   ASSERT_TRUE(aborted.has_value()) << describe(run);
-  EXPECT_NE(aborted->find("did not return within"), std::string::npos) << describe(run);
+  EXPECT_EQ(*aborted, overran) << describe(run);
   EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
   EXPECT_NO_AULA_PROCESS_LEFT();
 }
@@ -257,7 +255,8 @@ TEST(StudentFaults, NoCommandsIsAnOrdinaryRunWithTheDoNothingMark) {
   const RunResult run = runVacuum(AULA_PLUGIN_DOES_NOTHING, "does_nothing");
   expectFinishedWithoutFault(run);
   EXPECT_FALSE(hasField(run.report, "non_finite_commands")) << describe(run);
-  EXPECT_EQ(run.err.find("aula: "), std::string::npos) << describe(run);
+  // The launcher says only which bus the run has, nothing about the run.
+  EXPECT_EQ(run.err.find("aula: ", run.err.find("aula: the run's bus is ") == 0 ? 1 : 0), std::string::npos) << describe(run);
   EXPECT_NO_AULA_PROCESS_LEFT();
 
   // The in-tree template stands still too (it sends zeros): the same mark.

@@ -105,12 +105,13 @@ bool AlgorithmHostBase::namesPlugin(const std::string& choice) {
 }
 
 AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
-                                     double execute_budget_s)
+                                     const AlgorithmBudgets& budgets)
     : program_(std::move(program)),
       exercise_(std::move(exercise)),
       choice_(std::move(choice)),
       motors_(motors),
-      watchdog_(program_, execute_budget_s) {
+      budgets_(budgets),
+      watchdog_(program_, budgets.run) {
   installCrashReport(program_, PluginImage{});
 }
 
@@ -169,34 +170,34 @@ std::string AlgorithmHostBase::label() const {
 }
 
 void AlgorithmHostBase::containHangs() {
-  if (watchdog_.budgetS() > 0 && !thread_) thread_ = std::make_unique<AlgorithmThread>();
+  if (thread_) return;
+  thread_ = std::make_unique<AlgorithmThread>();
+  watchdog_.setResponse(ExecuteWatchdog::Response::Flag);
 }
 
-bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
+bool AlgorithmHostBase::guarded(const char* what, const CallBudget& budget, std::function<void()> call) {
   if (hung_) return false;
   if (thread_) {
     // The outcome is shared with the job: an abandoned call may still write it. A crash in a C++
     // algorithm comes back as its fault (a Python one may hold the interpreter's lock: it ends the process).
     auto outcome = std::make_shared<CallOutcome>();
     const bool survive = !PluginLibrary::isPythonFile(plugin_path_);
-    bool returned = thread_->run(
-        [what, outcome, survive, call = std::move(call), plugin = plugin_.get()] {
+    ExecuteWatchdog& watchdog = watchdog_;  // never destroyed once a call is abandoned (the process _Exits)
+    const bool returned = thread_->run(
+        [what, budget, outcome, survive, &watchdog, call = std::move(call), plugin = plugin_.get()] {
+          watchdog.arm(what, budget);
           *outcome = outcomeOf(what, call, plugin, survive);
+          watchdog.disarm();
         },
-        watchdog_.budgetS());
-    if (!returned && plugin_ != nullptr && plugin_->interrupter()) {
-      // Raise inside the call (see ExecuteWatchdog), from a thread of its own: it may block.
-      std::thread(plugin_->interrupter(), ExecuteWatchdog::overrunText(what, watchdog_.budgetS())).detach();
-      returned = thread_->waitMore(ExecuteWatchdog::kInterruptGraceS);
-    }
+        watchdog_);
     if (!returned) {
-      abandonHungCall(what);
+      abandonHungCall(watchdog_.abandoned());
       return false;
     }
     fault_ = outcome->fault;
     crashed_ = outcome->crashed;
   } else {
-    watchdog_.arm(what);
+    watchdog_.arm(what, budget);
     fault_ = faultOf(what, call, plugin_.get());
     watchdog_.disarm();
   }
@@ -207,12 +208,12 @@ bool AlgorithmHostBase::guarded(const char* what, std::function<void()> call) {
   return false;
 }
 
-void AlgorithmHostBase::abandonHungCall(const char* what) {
+void AlgorithmHostBase::abandonHungCall(const std::string& why) {
   hung_ = true;
   (void)thread_.release();  // still running the call: never joined, never freed
-  fault_ = ExecuteWatchdog::overrunText(what, watchdog_.budgetS());
-  std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted "
-            << "(Component.ExecuteBudget). Fix it, rebuild, and start the run again." << std::endl;
+  fault_ = why;
+  std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted. "
+            << "Fix it, rebuild, and start the run again." << std::endl;
   if (on_hung_) on_hung_();
 }
 

@@ -20,18 +20,20 @@ AlgorithmThread::~AlgorithmThread() {
   thread_.join();
 }
 
-bool AlgorithmThread::run(std::function<void()> call, double budget_s) {
+bool AlgorithmThread::run(std::function<void()> call, ExecuteWatchdog& watchdog) {
   std::unique_lock<std::mutex> lock(mutex_);
   job_ = std::move(call);
   has_job_ = true;
   done_ = false;
   wake_.notify_all();
-  return wake_.wait_for(lock, std::chrono::duration<double>(budget_s), [this] { return done_; });
-}
-
-bool AlgorithmThread::waitMore(double s) {
-  std::unique_lock<std::mutex> lock(mutex_);
-  return wake_.wait_for(lock, std::chrono::duration<double>(s), [this] { return done_; });
+  // However long it takes: only the watchdog's judgement of the call ends the wait.
+  while (!wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return done_; })) {
+    lock.unlock();
+    const bool given_up = !watchdog.abandoned().empty();
+    lock.lock();
+    if (given_up && !done_) return false;
+  }
+  return true;
 }
 
 void AlgorithmThread::loop() {

@@ -1,8 +1,10 @@
 #include "aula/component/crash_report.hpp"
 
+#include <aula/process/exit_codes.hpp>
 #include <aula/sandbox/forbidden_calls.hpp>
 
 #include <csetjmp>
+#include <cstdlib>
 #include <csignal>
 #include <cstring>
 #include <memory>
@@ -191,6 +193,19 @@ void reportCrashesTo(int fd) { crashState().fault_fd = fd; }
 void endForForbiddenCall(const std::string& what) {
   const CrashReportState& s = crashState();
   sandbox::endForForbiddenTry(s.fault_fd, s.program, what);
+}
+
+const char* const kOverranPrefix = "overran ";
+
+void endForOverrun(const std::string& program, const std::string& why) {
+  const CrashReportState& s = crashState();
+  if (s.fault_fd >= 0) {
+    const std::string line = kOverranPrefix + why + "\n";
+    (void)!::write(s.fault_fd, line.data(), line.size());
+  }
+  const std::string said = program + ": the student's algorithm: " + why + "; ending the run\n";
+  (void)!::write(STDERR_FILENO, said.data(), said.size());
+  std::_Exit(process::kExitAlgorithmHung);
 }
 
 void prepareThreadForCrashes() {

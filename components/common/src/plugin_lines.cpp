@@ -111,8 +111,17 @@ bool studentLineOf(const char* block, const char* block_end, StudentLine& line) 
       function = at;
       function_n = n;
     } else if (!startsWith(at, n, "??") && !startsWith(at, n, "/usr/")) {
+      // "/any/folder name/MyAlgorithm.cpp:10 (discriminator 2)": a folder's name may hold spaces,
+      // so only a trailing " (...)" is cut off.
       size_t location_n = n;
-      if (const void* space = std::memchr(at, ' ', n)) location_n = static_cast<size_t>(static_cast<const char*>(space) - at);
+      if (location_n > 0 && at[location_n - 1] == ')') {
+        for (size_t i = location_n; i-- > 1;) {
+          if (at[i] == '(' && at[i - 1] == ' ') {
+            location_n = i - 1;
+            break;
+          }
+        }
+      }
       size_t base = location_n;  // the file's name: after the last '/'
       while (base > 0 && at[base - 1] != '/') --base;
       copyText(line.where, sizeof line.where, at + base, location_n - base);

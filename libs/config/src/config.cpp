@@ -1,5 +1,7 @@
 #include "aula/config/config.hpp"
 
+#include <aula/config/paths.hpp>
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -58,11 +60,7 @@ std::vector<std::string> splitList(const std::string& text) {
 }  // namespace
 
 Config Config::fromFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ConfigError(path + ": cannot open config file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return fromString(buffer.str(), path);
+  return fromString(readSmallFile(path, kMaxConfigBytes, "config file"), path);
 }
 
 Config Config::fromString(const std::string& text, const std::string& origin) {

@@ -98,6 +98,26 @@ void requireWritableFolder(const std::string& file_path, const std::string& what
   if (access(folder.c_str(), W_OK | X_OK) != 0) throw ConfigError(what + ": the folder '" + folder.string() + "' is not writable");
 }
 
+std::string readSmallFile(const std::string& path, uint64_t max_bytes, const std::string& what) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error || status.type() == fs::file_type::not_found) throw ConfigError(what + " " + path + ": no such file");
+  if (status.type() == fs::file_type::directory) throw ConfigError(what + " " + path + ": a folder, not a file");
+  if (status.type() != fs::file_type::regular) {
+    throw ConfigError(what + " " + path + ": not a regular file (a device or a pipe may never end)");
+  }
+  const uint64_t size = fs::file_size(path, error);
+  if (error || size > max_bytes) {
+    throw ConfigError(what + " " + path + ": larger than " + std::to_string(max_bytes) + " bytes, which no " + what + " is");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(what + " " + path + ": cannot open it (" + std::strerror(errno) + ")");
+  std::string text(size, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(size));
+  text.resize(static_cast<size_t>(in.gcount()));
+  return text;
+}
+
 void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   auto fail = [&](const std::string& step, int error) {

@@ -67,7 +67,7 @@ void LockstepClient::sendRegister(bool leave) {
 std::string LockstepClient::simulatorGone(std::chrono::steady_clock::time_point now) const {
   if (!instance_locked_) return "";
   if (!last_tick_.ended.empty()) return "the simulator ended the run: " + last_tick_.ended;
-  if (now - last_clock_ < kSimulatorSilence) return "";
+  if (!silence_means_gone_ || now - last_clock_ < kSimulatorSilence) return "";
   return "the simulator stopped (no " + std::string(kClockChannel) + " for " + std::to_string(kSimulatorSilence.count()) +
          " s of wall time)";
 }

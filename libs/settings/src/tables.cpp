@@ -52,8 +52,20 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
   t.real(section + ".MaxW", max_w, "rad/s", 0, w_bound_radps, "turn-rate limit the motors proxy clamps to", true);
   t.real(section + ".Period", period_s, "s", 0.005, 1, "execute() period, seconds of simulated time");
   t.flag(section + ".Autostart", false, "start the algorithm at once (set by `aula run --headless`)");
+  // The student's calls are measured by what they use, never by the machine's wall time
+  // (ExecuteWatchdog): CPU seconds of the thread that runs them, and seconds it spends blocked.
   t.real("Component.ExecuteBudget", 2.0, "s", 0, 86400,
-         "wall time one call of the student's execute() may take before the run is ended (0: no limit, for a debugger)");
+         "CPU time one call of execute() may use before the run ends (an endless loop); 0: no limit, for a debugger");
+  t.real("Component.StartBudget", 60.0, "s", 0, 86400,
+         "CPU time creating the algorithm may use: loading its file, its imports (numpy, cv2) and its constructor or __init__; 0: no limit");
+  t.real("Component.PlanBudget", 60.0, "s", 0, 86400,
+         "CPU time one call that plans (TeleTaxi's generatePath()) may use; 0: no limit");
+  t.real("Component.BlockedLimit", 10.0, "s", 0, 86400,
+         "time one call may spend blocked, sleeping or waiting (not computing); 0: no limit");
+  t.real("Component.RunBudget", 600.0, "s", 0, 1e7,
+         "CPU time all the algorithm's calls of a run may use together; 0: no limit");
+  t.real("Component.RunBlockedLimit", 60.0, "s", 0, 1e7,
+         "time all the algorithm's calls of a run may spend blocked together; 0: no limit");
   t.real("Component.Sandbox.Memory", 2048, "MB", 64, 1e7,
          "memory the student's code may use in a sandboxed (graded) run; past it the run ends with that reason");
   t.integer("Component.Sandbox.Processes", 64, "", 0, 4096,
@@ -72,7 +84,7 @@ SettingsTable makeSimulator() {
   t.flag("Simulator.Lockstep", false, "advance only when every registered client has acknowledged");
   t.integer("Simulator.Lockstep.WaitForClients", 0, "clients", 0, 64, "lockstep: wait for this many clients before the first step");
   t.integer("Simulator.Lockstep.ResendMs", 20, "ms", 1, 60000, "lockstep: re-send an unacknowledged tick after this wall time");
-  t.integer("Simulator.Lockstep.DropAfterMs", 5000, "ms", 1, 86400000, "lockstep: a client silent this long (wall) ends a graded run; otherwise it is waited for while its process lives, and dropped once it is gone");
+  t.integer("Simulator.Lockstep.DropAfterMs", 600000, "ms", 1, 86400000, "lockstep: a backstop for a starved machine: a client silent this long (wall) ends a graded run for the machine's reason (the launcher sees a process that is gone at once; a slow one is waited for); outside a graded run a silent client is waited for while its process lives, and dropped once it is gone");
   t.real("Simulator.ClockPeriod", 0.02, "s", 1e-4, 10, "SIM_CLOCK tick period, seconds of simulated time");
   t.integer("Simulator.Seed", 0, "", -9223372036854775807LL, 9223372036854775807LL, "seed of every random process (sensor noise)");
   t.real("Simulator.Duration", 0, "s", 0, 1e9, "stop after this much simulated time (0: run until stopped)");

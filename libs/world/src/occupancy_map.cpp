@@ -79,14 +79,29 @@ cv::Mat rasterizeOccupancy(const WorldSpec& world, const geometry::MapTransform&
 
 namespace aula::world {
 
+namespace {
+constexpr int kMaxMapPx = 20000;  // 400 MB of map: far past any exercise's world
+}  // namespace
+
 geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m) {
   if (world.statics.empty()) throw WorldError(world.source_path + ": no static geometry to map");
   const Eigen::Vector4d bounds = staticBounds(world);
   geometry::MapTransform t;
   t.resolution_m = resolution_m;
   // The 1e-6 px tolerance absorbs rounding of rotated footprints (cos(pi/2) != 0).
-  t.width_px = static_cast<int>(std::ceil((bounds[2] - bounds[0]) / resolution_m - 1e-6));
-  t.height_px = static_cast<int>(std::ceil((bounds[3] - bounds[1]) / resolution_m - 1e-6));
+  const double width_px = std::ceil((bounds[2] - bounds[0]) / resolution_m - 1e-6);
+  const double height_px = std::ceil((bounds[3] - bounds[1]) / resolution_m - 1e-6);
+  // Checked before it becomes an int: a huge box must be said as such, never wrap around into
+  // an image size OpenCV asserts on.
+  if (!(width_px <= kMaxMapPx) || !(height_px <= kMaxMapPx)) {
+    char size[96];
+    std::snprintf(size, sizeof size, "%.4g x %.4g px", width_px, height_px);
+    throw WorldError(world.source_path + ": the map would be " + size + " (its static geometry spans " +
+                     std::to_string(bounds[2] - bounds[0]) + " x " + std::to_string(bounds[3] - bounds[1]) +
+                     " m); at most " + std::to_string(kMaxMapPx) + " px a side: use a coarser Map.Resolution or smaller models");
+  }
+  t.width_px = static_cast<int>(width_px);
+  t.height_px = static_cast<int>(height_px);
   const double cx = (bounds[0] + bounds[2]) / 2, cy = (bounds[1] + bounds[3]) / 2;
   t.origin_x_m = cx - t.width_px * resolution_m / 2;
   t.origin_y_m = cy + t.height_px * resolution_m / 2;
@@ -96,10 +111,6 @@ geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m)
 OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
   OccupancyMap out;
   out.transform = fitTransform(world, params.resolution_m);
-  if (out.transform.width_px > 20000 || out.transform.height_px > 20000) {
-    throw WorldError(world.source_path + ": the map would be " + std::to_string(out.transform.width_px) + " x " +
-                     std::to_string(out.transform.height_px) + " px; use a coarser Map.Resolution");
-  }
   // Key: everything the raster depends on, printed exactly.
   std::ostringstream key;
   key << std::setprecision(17) << "aula-map-v1 " << params.resolution_m << ' ' << params.z_min_m << ' '

@@ -92,8 +92,19 @@ TEST(Config, NumbersMustBeFiniteAndWhole) {
 }
 
 TEST(Config, MissingFileIsNamed) {
-  EXPECT_EQ(errorOf([] { Config::fromFile("/nonexistent/a.cfg"); }),
-            "/nonexistent/a.cfg: cannot open config file");
+  EXPECT_EQ(errorOf([] { Config::fromFile("/nonexistent/a.cfg"); }), "config file /nonexistent/a.cfg: no such file");
+}
+
+// A device that never ends (/dev/zero) or a folder named as the file: refused at once, never read
+// (reading /dev/zero grew a process by 0.5 GB/s; a folder read as empty ran on defaults).
+TEST(Config, AFileThatIsNotARegularFileIsRefusedAtOnce) {
+  EXPECT_EQ(errorOf([] { Config::fromFile("/dev/zero"); }),
+            "config file /dev/zero: not a regular file (a device or a pipe may never end)");
+  EXPECT_EQ(errorOf([] { Config::fromFile(::testing::TempDir()); }),
+            "config file " + ::testing::TempDir() + ": a folder, not a file");
+  const std::string big = ::testing::TempDir() + "aula_config_big.cfg";
+  std::ofstream(big) << std::string(Config::kMaxConfigBytes + 1, '#');
+  EXPECT_NE(errorOf([&] { Config::fromFile(big); }).find("larger than"), std::string::npos);
 }
 
 TEST(Config, ReadsRealFiles) {

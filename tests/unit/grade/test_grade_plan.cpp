@@ -1,5 +1,6 @@
 // aula grade's plan for a Python submission: a folder with MyAlgorithm.py and no MyAlgorithm.cpp
 // is not compiled; its .py files are copied into OUT/build/<student>, and its runs load the copy.
+#include <aula/config/config.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 
@@ -125,10 +126,32 @@ TEST(GradePlan, ARunThatFailedForTheMachinesReasonIsNotUpToDate) {
   EXPECT_TRUE(resultFailing(""));
   EXPECT_TRUE(resultFailing("execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12)"));
   EXPECT_TRUE(resultFailing("the algorithm used more than 2048 MB of memory"));
-  EXPECT_FALSE(resultFailing("the run failed (exit 1): vacuum-cleaner: the simulator stopped (no SIM_CLOCK for 2 s of wall "
-                             "time): the component ends"));
-  EXPECT_FALSE(resultFailing("lockstep client 'vacuum-cleaner' silent for 5.1 s"));
-  EXPECT_FALSE(resultFailing("the run's wall-clock budget of 60 s ran out (--timeout)"));
+  EXPECT_TRUE(resultFailing("execute() used more than 2 s of CPU time (an endless loop?) (Component.ExecuteBudget)"));
+  EXPECT_FALSE(resultFailing("the machine's reason: the run failed (exit 1): aula-sim: stopped at 674 s"));
+  EXPECT_FALSE(resultFailing("the machine's reason: lockstep client 'vacuum-cleaner' silent for 600.1 s of wall time"));
+  EXPECT_FALSE(resultFailing("the machine's reason: the run's wall-clock backstop of 60 s ran out (--timeout)"));
+  EXPECT_FALSE(resultFailing("the machine's reason: the component was killed (SIGKILL) from outside the run"));
   fs::remove_all(dir);
 }
 
+// Seeds out of a run's range, or more than a grade can mean, are refused at once naming the
+// option (--seeds=9223372036854775807 never returned; --seeds=-5 gave every student 0.00).
+TEST(GradePlan, SeedsOutOfRangeAreRefusedNamingTheOption) {
+  using aula::grade::parseSeeds;
+  EXPECT_EQ(parseSeeds("1-3,7", "--seeds"), (std::vector<long long>{1, 2, 3, 7}));
+  auto refusal = [](const std::string& text, const std::string& option) {
+    try {
+      parseSeeds(text, option);
+    } catch (const aula::config::ConfigError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal("-5", "--seeds"), "--seeds=-5: '-5': a seed is 0 or more");
+  EXPECT_EQ(refusal("9223372036854775807", "--seeds"),
+            "--seeds=9223372036854775807: '9223372036854775807': a seed is at most 9000000000000000000");
+  EXPECT_EQ(refusal("9223372036854775807", "--calibration-seeds").rfind("--calibration-seeds=", 0), 0u);
+  EXPECT_EQ(refusal("1-200000", "--seeds"), "--seeds=1-200000: '1-200000' is more than 1000 seeds");
+  EXPECT_EQ(refusal("1-600,1000-1600", "--seeds"), "--seeds=1-600,1000-1600: more than 1000 seeds in all");
+  EXPECT_EQ(refusal("1-1000", "--seeds"), "accepted");
+}

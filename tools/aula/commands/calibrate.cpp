@@ -31,7 +31,7 @@ int calibrateWorld(const cli::Arguments& args) {
   grade::CalibrationRequest request;
   request.exercise = ex.name;
   request.world = config::resolveWorldPath(args.text("world"), "command line --world");
-  request.seeds = grade::parseSeeds(args.text("seeds"));
+  request.seeds = grade::parseSeeds(args.text("seeds"), "--seeds");
   request.baseline = args.given("baseline") ? args.text("baseline") : "";
   request.anchor = args.given("anchor") ? args.text("anchor") : "";
   request.jobs = args.given("jobs") ? static_cast<int>(args.integer("jobs"))

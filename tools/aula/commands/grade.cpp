@@ -51,7 +51,7 @@ cli::Command grade() {
       .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
       .text("out", "grading", "the folder of grades.csv, report.html, runs/ and build/ (run again to resume)")
       .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")
-      .real("wall-limit", 600, "s", 0, 1e7, "each run's wall-clock limit (the sim-time limit is the referee's)", true)
+      .real("wall-limit", 3600, "s", 1, 1e7, "each run's wall-clock backstop for a starved machine: past it the run is the machine's failure and is run again (the sim-time limit is the referee's)", true)
       .flag("record", false, "keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)")
       .choice("similarity", "auto", {"auto", "on", "off"},
               "compare the submissions' code and their robots' paths (similarity.csv, flagged pairs in report.html); "

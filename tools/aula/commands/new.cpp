@@ -74,6 +74,13 @@ int createProject(const cli::Arguments& args) {
   const std::vector<std::string> files =
       python ? std::vector<std::string>{"MyAlgorithm.py", "aula_" + ex.name + ".pyi", "aula_devices.pyi", "README.md"}
              : std::vector<std::string>{"MyAlgorithm.cpp", "CMakeLists.txt", "README.md"};
+  // A project in the other language there already: a second algorithm beside it would be graded
+  // instead of (or along with) the student's own.
+  const char* other = python ? "MyAlgorithm.cpp" : "MyAlgorithm.py";
+  if (fs::exists(root / other)) {
+    throw ConfigError("aula new: " + (root / other).string() + " already exists: " + dir + " is a " +
+                      (python ? "C++" : "Python") + " project; nothing was written (choose a new folder)");
+  }
   refuseExisting(root, files);
   std::error_code error;
   fs::create_directories(root, error);

@@ -200,7 +200,6 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
   if (headless && s.has_referee) s.key = auth::randomKey();
   if (s.has_referee) {
     s.algorithm = run.component().getString(ex.section + ".Algorithm");
-    s.execute_budget_s = run.component().getDouble("Component.ExecuteBudget");
   }
   return s;
 }
@@ -226,6 +225,20 @@ std::string isolate() {
   return "partial";
 }
 
+// The run's bus: --lcm-url, the .cfg's Aula.LcmUrl or LCM_DEFAULT_URL when one of them chooses,
+// else one of its own, so that two runs on one machine never hear each other. Port 0: a free
+// port the OS hands out, now, for all three processes.
+std::string runBus(const Arguments& args, const RunSettings& run) {
+  config::CommandLine chosen;
+  if (args.given("lcm-url")) chosen.options["lcm-url"] = args.text("lcm-url");
+  const config::Config& cfg = run.component();
+  const char* env = std::getenv("LCM_DEFAULT_URL");
+  const bool someone_chose = args.given("lcm-url") || (cfg.has("Aula.LcmUrl") && cfg.origin("Aula.LcmUrl") != "default") ||
+                             (env != nullptr && *env != '\0');
+  const std::string url = someone_chose ? lcmbus::resolveUrl(chosen, cfg) : "udpm://239.255.76.67:0?ttl=0";
+  return lcmbus::withFreePort(url);
+}
+
 int runExercise(const Arguments& args) {
   const Exercise& ex = exerciseArgument(args.positional(0), "run");
   bool headless = args.flag("headless");
@@ -236,10 +249,10 @@ int runExercise(const Arguments& args) {
   checkOptions(ex, args, headless);
   const std::string isolation = args.flag("sandbox") ? isolate() : "";
   prepareOutputs(args);
-  // Port 0 (`aula grade`'s runs): a port the OS hands out, now, for all three processes.
-  const std::string lcm_url = args.given("lcm-url") ? lcmbus::withFreePort(args.text("lcm-url")) : "";
   const std::string cfg = args.given("config") ? args.text("config") : config::dataPath(ex.config_file);
   const RunSettings run = resolveSettings(ex, cfg, overridesOf(ex, args, headless), args.given("calibration") ? args.text("calibration") : "");
+  const std::string lcm_url = runBus(args, run);
+  std::cerr << "aula: the run's bus is " << lcm_url << " (for LCM's tools: LCM_DEFAULT_URL='" << lcm_url << "')\n";
   supervision::TemporaryFile graded_file;
   const supervision::Supervision supervision = supervisionOf(ex, args, run, headless, lcm_url, isolation, graded_file);
   std::unique_ptr<supervision::RunRecorder> recorder;

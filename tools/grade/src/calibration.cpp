@@ -100,15 +100,24 @@ std::vector<std::pair<std::string, std::string>> contextOf(const CalibrationSpec
   return context;
 }
 
-// Each anchor run must have earned a mark: a scale of one point is the anchor's (a TeleTaxi
-// reference that did not arrive sets no time).
-void requireMarks(const Manifest& manifest, const std::string& anchor) {
+// Each anchor run must have earned a mark and, where the exercise says what success is, have
+// succeeded (parked, reached): a scale of one point is the anchor's, and a failed anchor would set
+// it from a failure (a reactive parker that never parks sets FullMarkTime to the timeout).
+void requireAnchorSucceeded(const Manifest& manifest, const CalibrationSpec& spec, const std::string& anchor) {
   for (const PlannedRun& run : manifest.runs) {
+    if (run.student != "anchor") continue;
     std::ifstream in(run.result_path);
     const nlohmann::json result = nlohmann::json::parse(in, nullptr, false);
-    if (!result.is_discarded() && result.value("mark", 0.0) > 0) continue;
-    throw ConfigError("aula calibrate: the " + anchor + " earned no mark on " + run.world_name + " with seed " +
-                      std::to_string(run.seed) + ": it cannot set the scale; see " + run.log_path);
+    const bool marked = !result.is_discarded() && result.value("mark", 0.0) > 0;
+    const bool succeeded = spec.success.empty() || (!result.is_discarded() && result.value(spec.success, false));
+    if (marked && succeeded) continue;
+    const std::string other = spec.other_anchor.empty() || spec.other_anchor == anchor
+                                  ? ""
+                                  : "; try another anchor, e.g. --anchor=" + spec.other_anchor;
+    throw ConfigError("aula calibrate: the anchor (" + anchor + ") " +
+                      (succeeded ? "earned no mark" : "did not succeed (its report's " + spec.success + " is not true)") +
+                      " on " + run.world_name + " with seed " + std::to_string(run.seed) +
+                      ": it cannot set the scale, and no rubric was written" + other + "; see " + run.log_path);
   }
 }
 
@@ -117,14 +126,14 @@ void requireMarks(const Manifest& manifest, const std::string& anchor) {
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise) {
   if (exercise == "vacuum") {
     return CalibrationSpec{"vacuum", "coverage_percent", "bounce", "reference",
-                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}, {}};
+                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}, {}, "", ""};
   }
   if (exercise == "teletaxi") {  // the speed scale: the reference's driving time to that destination
     return CalibrationSpec{"teletaxi", "driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
-                           {"TeleTaxi.Destination"}};
+                           {"TeleTaxi.Destination"}, "reached", ""};
   }
   if (exercise == "autopark") {  // the time allowance: the thesis's reactive parker's time on that street
-    return CalibrationSpec{"autopark", "park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"}, {}};
+    return CalibrationSpec{"autopark", "park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"}, {}, "parked", "planner"};
   }
   return std::nullopt;
 }
@@ -168,13 +177,15 @@ Calibration calibrate(const CalibrationRequest& request, const std::string& bin_
   if (!baseline.empty()) algorithms.insert(algorithms.begin(), b);
   const Manifest manifest = planRuns(runs, algorithms, bin_dir);
   runLocal(manifest, request.jobs, [](const PlannedRun& run, const nlohmann::ordered_json& result, const Progress& p) {
+    // A failed run is said as such, never as a result (it stops the calibration below).
+    const std::string failure = failureOf(result);
     std::cout << "[" << p.done << "/" << p.total << "] " << run.plugin << " seed " << run.seed << ": "
-              << number(result.value("mark", 0.0)) << "\n" << std::flush;
+              << (failure.empty() ? number(result.value("mark", 0.0)) : "failed: " + failure) << "\n" << std::flush;
   });
   c.context = contextOf(*spec, *ex, world, request.overrides);
   c.anchor = measure(manifest, "anchor", anchor, spec->measure);
+  requireAnchorSucceeded(manifest, *spec, anchor);
   if (baseline.empty()) {
-    requireMarks(manifest, anchor);
     c.rubric = rubricOf(*spec, c.baseline, c.anchor);
     return c;
   }

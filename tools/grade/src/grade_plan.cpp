@@ -120,6 +120,13 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
     while (next < out.size() && static_cast<int>(running.size()) < request.jobs) {
       Submission& s = out[next];
       const fs::path project = fs::path(request.out_dir) / "build" / s.student;
+      if (fs::exists(fs::path(s.folder) / "MyAlgorithm.cpp") && fs::exists(fs::path(s.folder) / "MyAlgorithm.py")) {
+        // Which one the student meant is theirs to say: the grade never picks one silently.
+        s.compile_error = "both MyAlgorithm.cpp and MyAlgorithm.py in " + s.folder + ": keep only the one to grade";
+        s.language = "";
+        ++next;
+        continue;
+      }
       if (isPythonSubmission(s.folder)) {  // nothing to compile
         preparePython(s, project);
         ++next;

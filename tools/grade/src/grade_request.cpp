@@ -56,24 +56,33 @@ config::Config componentSettings(const settings::Exercise& ex) {
   return ex.component_settings->resolve(file, siblings);
 }
 
-std::vector<long long> parseSeeds(const std::string& text) {
+std::vector<long long> parseSeeds(const std::string& text, const std::string& option) {
   std::vector<long long> seeds;
+  const std::string named = option + "=" + text;
   for (const std::string& item : splitList(text)) {
     const auto dash = item.find('-', 1);
     long long from = 0, to = 0;
     if (dash == std::string::npos) {
-      from = to = parseInteger(item, "--seeds");
+      from = to = parseInteger(item, option);
     } else {
-      from = parseInteger(item.substr(0, dash), "--seeds");
-      to = parseInteger(item.substr(dash + 1), "--seeds");
+      from = parseInteger(item.substr(0, dash), option);
+      to = parseInteger(item.substr(dash + 1), option);
     }
-    if (from > to) throw ConfigError("--seeds: '" + item + "' counts down (write " + std::to_string(to) + "-" + std::to_string(from) + ")");
-    if (to - from > 10000) throw ConfigError("--seeds: '" + item + "' is more than 10000 seeds");
+    // The seeds a run takes (aula run --seed): never negative, and far from the end of the range.
+    if (from < 0 || to < 0) throw ConfigError(named + ": '" + item + "': a seed is 0 or more");
+    if (from > kMaxSeed || to > kMaxSeed) {
+      throw ConfigError(named + ": '" + item + "': a seed is at most " + std::to_string(kMaxSeed));
+    }
+    if (from > to) throw ConfigError(named + ": '" + item + "' counts down (write " + std::to_string(to) + "-" + std::to_string(from) + ")");
+    if (to - from >= kMaxSeeds) throw ConfigError(named + ": '" + item + "' is more than " + std::to_string(kMaxSeeds) + " seeds");
     for (long long seed = from; seed <= to; ++seed) {
       if (std::find(seeds.begin(), seeds.end(), seed) == seeds.end()) seeds.push_back(seed);
+      if (seeds.size() > static_cast<size_t>(kMaxSeeds)) {
+        throw ConfigError(named + ": more than " + std::to_string(kMaxSeeds) + " seeds in all");
+      }
     }
   }
-  if (seeds.empty()) throw ConfigError("--seeds=" + text + ": no seed (e.g. --seeds=1-5 or --seeds=1,4,9)");
+  if (seeds.empty()) throw ConfigError(named + ": no seed (e.g. " + option + "=1-5 or " + option + "=1,4,9)");
   return seeds;
 }
 
@@ -109,9 +118,9 @@ GradeRequest parseRequest(const GradeOptions& options) {
   }
   if (r.worlds.empty() && r.generate.empty()) r.worlds.push_back(defaultWorld(*ex));
   if (options.calibration_seeds != "off" && !options.calibration_seeds.empty()) {
-    r.calibration_seeds = parseSeeds(options.calibration_seeds);
+    r.calibration_seeds = parseSeeds(options.calibration_seeds, "--calibration-seeds");
   }
-  r.seeds = parseSeeds(options.seeds);
+  r.seeds = parseSeeds(options.seeds, "--seeds");
   r.jobs = options.jobs > 0 ? static_cast<int>(options.jobs) : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   r.wall_limit_s = options.wall_limit_s;
   r.engine = options.engine;

@@ -1,5 +1,7 @@
 #include "aula/grade/grade_runner.hpp"
 
+#include <aula/process/machine_reason.hpp>
+
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/cpu_affinity.hpp>
@@ -82,7 +84,8 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   if (!run.compile_error.empty()) {
     failure = run.compile_error;
   } else if (timed_out) {
-    failure = "wall-time limit exceeded (" + std::to_string(static_cast<int>(run.wall_limit_s)) + " s)";
+    failure = process::machineReason("the grade's wall-clock backstop of " +
+                                     std::to_string(static_cast<int>(run.wall_limit_s)) + " s ran out");
   } else if (result.contains("algorithm_error")) {
     failure = result["algorithm_error"].get<std::string>();
   } else if (result.contains("aborted")) {
@@ -90,8 +93,9 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   } else if (exit_code && *exit_code == 2) {
     failure = "refused: " + refusalOf(run.log_path);
   } else if (!exit_code || *exit_code != 0 || !fs::exists(run.report_path)) {
-    failure = "the run failed (exit " + (exit_code ? std::to_string(*exit_code) : std::string("?")) +
-              "): " + lastLine(run.log_path);
+    // No report, no reason of the student's: the launcher itself failed or was killed.
+    failure = process::machineReason("the run failed (exit " + (exit_code ? std::to_string(*exit_code) : std::string("?")) +
+                                     "): " + lastLine(run.log_path));
   }
   if (!failure.empty()) result["failure"] = failure;
   result["log"] = run.log_path;
@@ -188,11 +192,7 @@ std::string tamperingOf(const nlohmann::json& result) {
 
 std::string machineFailureOf(const nlohmann::json& result) {
   const std::string failure = result.value("failure", std::string());
-  for (const char* reason : {"the simulator stopped (no SIM_CLOCK", "silent for", "the referee did not grade in time",
-                             "wall-clock budget"}) {
-    if (failure.find(reason) != std::string::npos) return reason;
-  }
-  return "";
+  return process::isMachineReason(failure) ? failure : "";
 }
 
 bool upToDate(const PlannedRun& run) {
@@ -279,7 +279,7 @@ void runLocal(const Manifest& manifest, int jobs,
       const std::string machine = machineFailureOf(*result);
       if (!machine.empty() && retries[it->first]++ < 2) {
         std::cerr << "aula grade: " << it->first->student << " " << it->first->world_name << " seed " << it->first->seed
-                  << " ended for the machine's reason (" << machine << "...): running it again\n";
+                  << " ended for " << machine << ": running it again\n";
         pending.push_back(it->first);
         it = running.erase(it);
         continue;

@@ -68,11 +68,13 @@ std::vector<nlohmann::json> readResults(const std::string& out_dir) {
   std::sort(files.begin(), files.end());
   std::vector<nlohmann::json> results;
   for (const auto& file : files) {
-    std::ifstream in(file);
+    // A half-written file cannot exist (results are renamed into place): one that does not read is
+    // damaged, and a grade without it would be silently short of a run.
     try {
-      results.push_back(nlohmann::json::parse(in));
-    } catch (const nlohmann::json::exception&) {
-      // A half-written file cannot exist (results are renamed into place); anything else is not ours.
+      results.push_back(nlohmann::json::parse(config::readSmallFile(file.string(), 64u << 20, "run result")));
+    } catch (const nlohmann::json::exception& e) {
+      throw config::ConfigError("run result " + file.string() + ": not a result (" + e.what() +
+                                "); remove it and resume the grade to run it again");
     }
   }
   return results;

@@ -108,6 +108,12 @@ void startInterpreter() {
   }
   // Debian's python3, whatever the student's environment has: no PYTHONPATH, no user
   // site-packages, no python from PATH.
+  // UTF-8 whatever the locale (a sandbox's is C): a folder named "maría" is a path like any other.
+  PyPreConfig preconfig;
+  PyPreConfig_InitIsolatedConfig(&preconfig);
+  preconfig.utf8_mode = 1;
+  const PyStatus pre = Py_PreInitialize(&preconfig);
+  if (PyStatus_Exception(pre)) throw std::runtime_error(std::string("cannot start Python: ") + (pre.err_msg ? pre.err_msg : "?"));
   PyConfig config;
   PyConfig_InitIsolatedConfig(&config);
   config.install_signal_handlers = 0;  // the component's signals stay the component's

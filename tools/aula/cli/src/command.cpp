@@ -178,6 +178,14 @@ std::string CommandTable::help(const std::string& extra) const {
 int CommandTable::dispatch(int argc, const char* const* argv, const std::string& version, const std::string& extra_help) const {
   const std::vector<std::string> args(argv + std::min(argc, 2), argv + argc);
   const std::string first = argc > 1 ? argv[1] : "";
+  if (first == "help" && argc > 2) {  // `aula help run`: as `aula run --help`
+    if (const Command* asked = find(argv[2])) {
+      std::cout << asked->help();
+      return 0;
+    }
+    std::cerr << "aula help: unknown command '" << argv[2] << "'\n" << help(extra_help);
+    return 2;
+  }
   if (first == "--help" || first == "help") {
     std::cout << help(extra_help);
     return 0;

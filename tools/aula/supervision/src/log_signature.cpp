@@ -1,6 +1,7 @@
 #include "aula/supervision/log_signature.hpp"
 
 #include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -105,7 +106,7 @@ void writeKeyFile(const std::string& path, const auth::Key& key) {
 }
 
 auth::Key readKeyFile(const std::string& path) {
-  std::ifstream in(path);
+  std::istringstream in(config::readSmallFile(path, 4096, "key file"));
   std::string text;
   if (!(in >> text) || text.size() != 2 * auth::kKeyBytes) throw config::ConfigError(path + ": not a log's key (64 hex digits)");
   auth::Key key{};

@@ -3,6 +3,7 @@
 #include <aula/config/config.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/process/exit_codes.hpp>
+#include <aula/process/machine_reason.hpp>
 #include <aula/version.hpp>
 
 #include <algorithm>
@@ -37,17 +38,16 @@ std::string signalName(int code) {
   return std::string("SIG") + (name != nullptr ? name : std::to_string(code - 128));
 }
 
-std::string componentFault(int code, double execute_budget_s) {
-  if (code == process::kExitAlgorithmHung) {
-    std::ostringstream text;
-    text << "execute() did not return within " << execute_budget_s << " s";
-    return text.str();
-  }
+std::string componentFault(int code) {
+  if (code == process::kExitAlgorithmHung) return "a call into the algorithm overran its budget";
   if (code == process::kExitAlgorithmExited) return "the algorithm ended the component (exit() inside execute())";
   if (code == process::kExitAlgorithmForbidden) return "the algorithm tried what no student's algorithm may";
   if (code == 128 + SIGXFSZ) return "the algorithm wrote a file larger than the sandbox allows (SIGXFSZ)";
   // A forbidden call tried with SIGSYS blocked: the kernel ends the process (forbidden_calls.hpp).
   if (code == 128 + SIGSYS) return "the algorithm made a system call the sandbox forbids (SIGSYS)";
+  // SIGKILL is never the sandbox's own limit (those end a run with their reason first), nor a
+  // crash: someone outside the run killed it (the out-of-memory killer).
+  if (code == 128 + SIGKILL) return process::machineReason("the component was killed (SIGKILL) from outside the run");
   if (code > 128) return "component crashed (" + signalName(code) + ")";
   return "";
 }
@@ -67,12 +67,21 @@ const char* const kAlgorithmEndedMidRun =
     "the algorithm ended the component (exit code 0 in the middle of the run: _exit(), quick_exit() or exit() "
     "outside a call into it)";
 
-ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::string& program) {
+ExitVerdict onExit(const ExitEvent& e, const std::string& program) {
   ExitVerdict v;
   const bool component = e.role == Role::Component, referee = e.role == Role::Referee;
   if (e.role == Role::Simulator && e.simulator_ended_run) return v;  // the referee grades and ends the run
+  // The simulator died (killed from outside, the out-of-memory killer): not the student's doing.
+  // The referee grades what there is and says why; the run is run again by a grade.
+  if (e.has_referee && e.role == Role::Simulator && e.code != 0 && !e.referee_told) {
+    v.tell_referee = process::machineReason(program + (e.code > 128 ? " died (" + signalName(e.code) + ")"
+                                                                   : " exited with code " + std::to_string(e.code)));
+    v.message = v.tell_referee;
+    v.result = 1;
+    return v;
+  }
   if (e.has_referee && referee && e.code > 128) {
-    v.aborted_report = program + " died (" + signalName(e.code) + ")";
+    v.aborted_report = process::machineReason(program + " died (" + signalName(e.code) + ")");
     v.message = v.aborted_report + ": the run has no mark";
     v.result = 1;
     v.run_over = true;
@@ -84,7 +93,12 @@ ExitVerdict onExit(const ExitEvent& e, double execute_budget_s, const std::strin
     v.run_over = true;
     return v;
   }
-  std::string fault = e.has_referee && component ? componentFault(e.code, execute_budget_s) : "";
+  std::string fault = e.has_referee && component ? componentFault(e.code) : "";
+  // Which budget, as the component's watchdog said it on its private line.
+  const std::string overran = "overran ";
+  if (!fault.empty() && e.code == process::kExitAlgorithmHung && e.crash_line.rfind(overran, 0) == 0) {
+    fault = e.crash_line.substr(overran.size(), 300);
+  }
   if (e.has_referee && component && e.headless && e.code == 0) fault = kAlgorithmEndedMidRun;
   // What it tried, as the component's tripwire said it on its private line (flagged there too).
   if (!fault.empty() && e.code == process::kExitAlgorithmForbidden && !e.refused.empty()) {

@@ -4,6 +4,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/line_pipe.hpp>
+#include <aula/process/machine_reason.hpp>
 #include <aula/process/process_tree.hpp>
 #include <aula/process/signal_watcher.hpp>
 #include <aula/sandbox/sandbox.hpp>
@@ -58,7 +59,8 @@ class RunSupervisor {
       checkWallBudget();
       checkLimits();
       // The referee had its chance to grade and say why: now everything stops.
-      if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(5)) break;
+      // (A backstop: on a starved machine grading what there is can take a while.)
+      if (ending_since_ && std::chrono::steady_clock::now() - *ending_since_ > std::chrono::seconds(60)) break;
       readSimulatorStatus();
       readComponentLine();
       escapes_.poll();
@@ -152,8 +154,11 @@ class RunSupervisor {
   void checkWallBudget() {
     const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
     if (run_.wall_budget_s > 0 && wall_s > run_.wall_budget_s && !ending_since_) {
+      std::ostringstream what;
+      what << "the run's wall-clock backstop of " << run_.wall_budget_s
+           << " s ran out (--timeout): the machine was too slow or too busy for this run";
       std::ostringstream why;
-      why << "the run's wall-clock budget of " << run_.wall_budget_s << " s ran out (--timeout)";
+      why << process::machineReason(what.str());
       std::cerr << "aula: " << why.str() << "\n";
       endRun(why.str());
     }
@@ -235,13 +240,15 @@ class RunSupervisor {
       event.refused = escapes_.lastRefused();
     }
     const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
-    const ExitVerdict verdict = supervision::onExit(event, run_.execute_budget_s, name);
+    const ExitVerdict verdict = supervision::onExit(event, name);
     if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
     if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";
     if (!verdict.aborted_report.empty()) writeAbortedReport(run_, verdict.aborted_report);
     if (!verdict.tell_referee.empty()) {
       const std::string& said = verdict.algorithm_fault.empty() ? verdict.tell_referee : verdict.algorithm_fault;
-      std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: " << said << "\n";
+      if (verdict.message.empty()) {
+        std::cerr << "aula: " << name << " (running the algorithm '" << run_.algorithm << "') ended the run: " << said << "\n";
+      }
       if (!verdict.algorithm_fault.empty()) {
         const std::string line = "fault " + verdict.algorithm_fault + "\n";
         (void)!write(control_fd_, line.data(), line.size());
@@ -270,7 +277,9 @@ class RunSupervisor {
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
       std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
-      writeAbortedReport(run_, abort_reason_ + "; the referee did not answer");
+      writeAbortedReport(run_, process::isMachineReason(abort_reason_)
+                                   ? abort_reason_ + "; the referee did not answer"
+                                   : process::machineReason(abort_reason_ + "; the referee did not grade in time"));
     }
   }
 

@@ -9,12 +9,13 @@
 // - an exception is caught: the fault's text is kept, the robot stopped, the algorithm halted;
 //   with windows (containHangs), so is a crash (SIGSEGV...) inside a C++ algorithm's call
 //   (crash_report.hpp: its text names the student's line); headless, a crash ends the process;
-// - a call that does not return within the execute budget (wall seconds) ends the process
-//   (ExecuteWatchdog) with its own exit code, which the launcher explains; with windows
-//   (containHangs) the calls run on an AlgorithmThread instead, and a call that does not return
-//   halts the algorithm for good: the fault says so, the component freezes its devices and
-//   stops the robot (its onHung hook), the window stays responsive; an algorithm that can be
-//   interrupted (Python) is first raised into, and a call that then returns is an ordinary fault;
+// - a call past its budget (AlgorithmBudgets: CPU time of the thread that runs it, time it spends
+//   blocked; never the machine's wall time) ends the process (ExecuteWatchdog) with its own exit
+//   code and reason, which the launcher explains; with windows (containHangs) the calls run on an
+//   AlgorithmThread instead, and a call given up halts the algorithm for good: the fault says so,
+//   the component freezes its devices and stops the robot (its onHung hook), the window stays
+//   responsive; an algorithm that can be interrupted (Python) is first raised into, and a call
+//   that then returns is an ordinary fault;
 // - non-finite motor commands are counted, and said once in the log.
 
 #include <aula/component/devices.hpp>
@@ -30,6 +31,19 @@
 #include <vector>
 
 namespace aula::component {
+
+// What the student's calls may use (the Component.*Budget settings): creating the algorithm
+// (loading the file, its imports, the constructor or __init__), each execute(), each call that
+// plans (TeleTaxi's generatePath()), and all of them over the run.
+struct AlgorithmBudgets {
+  CallBudget start{60, 10, "Component.StartBudget"};
+  CallBudget execute{2, 10, "Component.ExecuteBudget"};
+  CallBudget plan{60, 10, "Component.PlanBudget"};
+  RunBudget run{600, 60};
+};
+
+// Which budget a call has.
+enum class CallKind { Execute, Plan };
 
 // The non-template half: the plugin, the fault, the counters and the log lines.
 class AlgorithmHostBase {
@@ -71,13 +85,14 @@ class AlgorithmHostBase {
 
  protected:
   AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
-                    double execute_budget_s);
+                    const AlgorithmBudgets& budgets);
   void loadPlugin();
   // Loads the plugin again; a file that cannot be used becomes the fault.
   bool reloadPlugin();
   // Runs `call` under the watchdog (or on the AlgorithmThread); an exception becomes the fault.
   // False when it threw or hung. `call` must own what it uses: a hung call outlives this frame.
-  bool guarded(const char* what, std::function<void()> call);
+  bool guarded(const char* what, const CallBudget& budget, std::function<void()> call);
+  const AlgorithmBudgets& budgets() const { return budgets_; }
 
   std::string program_, exercise_, choice_;
   Motors& motors_;
@@ -90,7 +105,8 @@ class AlgorithmHostBase {
 
  private:
   void noteNonFinite();
-  void abandonHungCall(const char* what);
+  void abandonHungCall(const std::string& why);
+  AlgorithmBudgets budgets_;
   ExecuteWatchdog watchdog_;
   std::unique_ptr<AlgorithmThread> thread_;  // with windows (containHangs)
   bool hung_ = false;
@@ -102,20 +118,24 @@ template <class Algorithm>
 class AlgorithmHost : public AlgorithmHostBase {
  public:
   // Throws PluginError (exit 2) for an unknown name or a plugin that cannot be used, at once.
-  AlgorithmHost(std::string program, std::string exercise, std::string choice, Motors& motors, double execute_budget_s)
-      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, execute_budget_s) {
+  AlgorithmHost(std::string program, std::string exercise, std::string choice, Motors& motors,
+                const AlgorithmBudgets& budgets)
+      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, budgets) {
     loadPlugin();
   }
   ~AlgorithmHost() { dropAlgorithm(); }  // the algorithm's code lives in the plugin
 
   // Calls `use(algorithm)` (creating it with `seed` on first use) with faults contained.
   // Does nothing once halted by a fault. False when it threw now.
-  bool call(uint64_t seed, const char* what, const std::function<void(Algorithm&)>& use) {
+  // Creating it has a budget of its own (Component.StartBudget), apart from the first call's.
+  bool call(uint64_t seed, const char* what, CallKind kind, const std::function<void(Algorithm&)>& use) {
     if (!fault_.empty()) return false;
-    return guarded(what, [this, seed, use] {  // copies: the call may outlive this frame (a hang)
-      if (!algorithm_) algorithm_ = create(seed);
-      use(*algorithm_);
-    });
+    if (!algorithm_ && !guarded("creating the algorithm (loading its file, its imports, its constructor)",
+                                budgets().start, [this, seed] { algorithm_ = create(seed); })) {
+      return false;
+    }
+    const CallBudget& budget = kind == CallKind::Plan ? budgets().plan : budgets().execute;
+    return guarded(what, budget, [this, use] { use(*algorithm_); });  // copies: the call may outlive this frame (a hang)
   }
 
   // Drops the algorithm and loads the plugin's file again (a new build). The next call creates a

@@ -28,6 +28,7 @@ class ControlLoop {
   int64_t periodUs() const { return period_us_; }
   int64_t seed() const { return client_.lastTick().seed; }  // the run's seed (from SIM_CLOCK)
   std::string simulatorGone() const { return client_.simulatorGone(); }  // LockstepClient's
+  void watchedByLauncher() { client_.watchedByLauncher(); }
   // Optional hook after every due tick, running or not (GUI model updates, recorders).
   void setOnTick(std::function<void(int64_t utime)> hook) { on_tick_ = std::move(hook); }
 

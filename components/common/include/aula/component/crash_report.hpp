@@ -33,6 +33,12 @@ void reportCrashesTo(int fd);
 // makeReferenceAlgorithm", from a tripwire of the component's): the process ends with that reason,
 // said on the launcher's private line too, which flags the run (sandbox::endForForbiddenTry).
 [[noreturn]] void endForForbiddenCall(const std::string& what);
+// Ends the process for a call that overran its budget (ExecuteWatchdog): `why` on stderr and, as
+// "overran WHY", on the launcher's private line; exit code kExitAlgorithmHung. Nothing is flushed
+// or destroyed: the stuck thread holds whatever it holds.
+[[noreturn]] void endForOverrun(const std::string& program, const std::string& why);
+// The private line's prefix of that reason.
+extern const char* const kOverranPrefix;
 
 // An object a crash left behind (a crashed algorithm) is never destroyed, since its destructor
 // could crash again; this says so to LeakSanitizer in a sanitizer build (nothing otherwise).

@@ -29,6 +29,17 @@
 
 namespace aula::component {
 
+// The Component.*Budget settings, read once.
+inline AlgorithmBudgets budgetsOf(const config::Config& cfg) {
+  AlgorithmBudgets b;
+  const double blocked_s = cfg.getDouble("Component.BlockedLimit");
+  b.start = {cfg.getDouble("Component.StartBudget"), blocked_s, "Component.StartBudget"};
+  b.execute = {cfg.getDouble("Component.ExecuteBudget"), blocked_s, "Component.ExecuteBudget"};
+  b.plan = {cfg.getDouble("Component.PlanBudget"), blocked_s, "Component.PlanBudget"};
+  b.run = {cfg.getDouble("Component.RunBudget"), cfg.getDouble("Component.RunBlockedLimit")};
+  return b;
+}
+
 template <class Algorithm>
 class ExerciseComponent {
  public:
@@ -79,6 +90,8 @@ class ExerciseComponent {
   void leave() { loop_->leave(); }
   // Why the simulator is gone (it ended the run, or its clock stopped), or "" (LockstepClient's).
   std::string simulatorGone() const { return loop_->simulatorGone(); }
+  // Started by `aula run`: the launcher watches the simulator's process (LockstepClient).
+  void watchedByLauncher() { loop_->watchedByLauncher(); }
 
   int generation() const { return episode_->generation(); }
   lcmbus::Bus& bus() { return bus_; }  // the window's speed control (SIM_CONTROL)
@@ -132,8 +145,7 @@ class ExerciseComponent {
     pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
     motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
                                             cfg.getDouble(p + ".MaxW"));
-    host_ = std::make_unique<Host>(names.component, names.name, algorithm_name_, *motors_,
-                                   cfg.getDouble("Component.ExecuteBudget"));
+    host_ = std::make_unique<Host>(names.component, names.name, algorithm_name_, *motors_, budgetsOf(cfg));
     episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.name, *host_);
     host_->setOnHung([this] {  // the stuck call may still read these: never written again
       pose_->detach();
@@ -150,7 +162,7 @@ class ExerciseComponent {
   }
 
   void step() {
-    if (!host_->call(runSeed(), "execute()", [this](Algorithm& a) { execute(a); })) {
+    if (!host_->call(runSeed(), "execute()", CallKind::Execute, [this](Algorithm& a) { execute(a); })) {
       setRunning(false);
     }
   }

@@ -8,7 +8,7 @@
 // not watch, since a replay pauses and ends.
 //
 // Component needs poll(), leave(), containHangs(), reportCrashesTo(fd), algorithm().hung(),
-// simulatorGone(); Window needs Window(Component&). The launcher's `--crash-fd` pipe gets a
+// simulatorGone(), watchedByLauncher(); Window needs Window(Component&). The launcher's `--crash-fd` pipe gets a
 // crash's one line before the component dies of it.
 // A component that can find once running that its task is impossible (TeleTaxi: a destination the
 // taxi cannot reach from where it stands) also has `std::optional<std::string> refusal() const`:
@@ -63,8 +63,9 @@ inline int endWithoutSimulator(const ProcessSetup& setup, const std::string& why
 
 template <class Window, class Component, class Screenshot>
 int runComponent(ProcessSetup& setup, Component& component, int argc, char** argv, Screenshot screenshot) {
-  if (setup.command_line.flag("crash-fd")) {
+  if (setup.command_line.flag("crash-fd")) {  // started by `aula run`, which watches every process
     component.reportCrashesTo(static_cast<int>(setup.command_line.optionDouble("crash-fd", -1)));
+    component.watchedByLauncher();
   }
   if (setup.headless) {
     std::string gone;

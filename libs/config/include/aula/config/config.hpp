@@ -5,6 +5,7 @@
 
 #include <map>
 #include <stdexcept>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ class Config {
  public:
   Config() = default;
 
+  // A .cfg is a few KB; a file past this (or a device, a folder) is refused at once.
+  static constexpr uint64_t kMaxConfigBytes = 4u << 20;
   static Config fromFile(const std::string& path);
   static Config fromString(const std::string& text, const std::string& origin);
 

@@ -3,6 +3,7 @@
 // from an install prefix: $AULA_DATA_DIR, else <folder of the executable>/../share/aula (the
 // build tree has one too: symbolic links to the source's worlds/ and config/).
 
+#include <cstdint>
 #include <string>
 
 namespace aula::config {
@@ -36,5 +37,10 @@ void requireWritableFolder(const std::string& file_path, const std::string& what
 // a reader never sees half a file. Throws std::runtime_error naming the path, `what` ("report")
 // and the system's reason ("No space left on device").
 void writeFileAtomically(const std::string& path, const std::string& content, const std::string& what);
+
+// The whole of a small file a user names (a .cfg, a key, a result): refused at once with
+// ConfigError (exit 2) naming `what` and the path when it is missing, a folder, not a regular
+// file (a device such as /dev/zero, a FIFO: they may never end) or larger than `max_bytes`.
+std::string readSmallFile(const std::string& path, uint64_t max_bytes, const std::string& what);
 
 }  // namespace aula::config

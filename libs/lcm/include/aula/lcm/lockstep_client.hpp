@@ -64,6 +64,9 @@ class LockstepClient {
   // kSimulatorSilence of wall time (killed, crashed: a running simulator ticks at least every
   // 100 ms, paused, paced or waiting).
   static constexpr std::chrono::seconds kSimulatorSilence{2};
+  // Under a launcher (`aula run`), which sees at once when the simulator's process is gone,
+  // silence is never taken for its end: a stopped or starved simulator is waited for.
+  void watchedByLauncher() { silence_means_gone_ = false; }
   std::string simulatorGone(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now()) const;
 
  private:
@@ -98,6 +101,7 @@ class LockstepClient {
   std::chrono::steady_clock::time_point last_clock_{};  // wall time of our simulator's last tick
   std::string expected_world_sha256_, expected_world_path_;
   std::string world_mismatch_;  // set by a tick of another world
+  bool silence_means_gone_ = true;
 };
 
 }  // namespace aula::lcmbus

@@ -24,6 +24,10 @@ struct CalibrationSpec {
   // Settings the measure depends on besides the world (TeleTaxi.Destination): their values are
   // written in the file (Calibration.Setting.<key>), and a run with other values is refused.
   std::vector<std::string> context_keys;
+  // A report field every anchor run must have true ("parked", "reached"; "" for none): an anchor
+  // that failed would anchor the scale on a failure (FullMarkTime set to the timeout).
+  std::string success;
+  std::string other_anchor;  // the algorithm to suggest when the anchor fails ("" for none)
 };
 // The spec of `exercise`; nullopt when it has none (the message says what it calibrates instead).
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise);

@@ -63,8 +63,11 @@ struct GradeOptions {
 GradeRequest parseRequest(const GradeOptions& options);
 // The exercise's component settings as its own .cfg (in the data folder) and the defaults give them.
 config::Config componentSettings(const settings::Exercise& ex);
-// "1-5", "1,3,9", "2-3,7" -> the seeds, in order, without repeats.
-std::vector<long long> parseSeeds(const std::string& text);
+// The seeds of `option` ("--seeds"): "1-5", "1,4,9", "1-3,7"; each in 0..kMaxSeed, kMaxSeeds at
+// most in all; anything else throws ConfigError naming the option.
+inline constexpr long long kMaxSeed = 9000000000000000000LL;  // aula run --seed's range
+inline constexpr long long kMaxSeeds = 1000;
+std::vector<long long> parseSeeds(const std::string& text, const std::string& option);
 
 // A submission compiled (or not) into a plugin, or a student's Python file.
 struct Submission {

@@ -23,9 +23,9 @@ int chooseCpu(const std::string& choice, const std::vector<int>& allowed, int cu
 
 // "SIGSEGV" for a death by signal (exit code 128 + N), else "exit code N".
 std::string signalName(int code);
-// "component crashed (SIGSEGV)", "execute() did not return within 2 s", or "" when the
+// "component crashed (SIGSEGV)", "a call into the algorithm overran its budget", or "" when the
 // component's exit is not the student's doing.
-std::string componentFault(int code, double execute_budget_s);
+std::string componentFault(int code);
 
 // "component crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)": the `fault` the
 // exit code gives, where the component's own crash line (its --crash-fd) says where the same
@@ -63,7 +63,9 @@ struct ExitVerdict {
 // ends was ended by the algorithm (_exit(), quick_exit(), exit() from a thread of its own): the
 // referee is told so (kAlgorithmEndedMidRun), not left to find the component silent.
 extern const char* const kAlgorithmEndedMidRun;
-ExitVerdict onExit(const ExitEvent& event, double execute_budget_s, const std::string& program);
+// A budget overrun's reason is the component's own line ("overran execute() used more than 2 s of
+// CPU time ..."), when it said one.
+ExitVerdict onExit(const ExitEvent& event, const std::string& program);
 
 // Why a student's plugin is older than its sources ("" when it is not, or when its build folder
 // names no sources): the build's CMakeCache.txt names the project; any of its C++ sources or its

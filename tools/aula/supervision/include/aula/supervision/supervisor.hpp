@@ -27,7 +27,6 @@ struct Supervision {
   double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
   std::string exercise, report_path;
   std::string algorithm;               // what the component runs ("student", "libmy_algorithm.so")
-  double execute_budget_s = 2;         // Component.ExecuteBudget
   process::Placement placement;        // the three processes' CPU, batch when headless
   int watched_lcm_port = 0;            // in a private network: the run's LCM port, and datagrams to any
                                        // other are escape attempts (sandbox::DatagramWatch); 0: not watched
