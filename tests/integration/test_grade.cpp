@@ -335,7 +335,7 @@ TEST(GradeAClass, BadRequestsAreUsageErrors) {
   EXPECT_NE(readFile(out).find("not a folder"), std::string::npos) << readFile(out);
   writeFile(dir / "alice" / "MyAlgorithm.cpp", "");
   EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--seeds=5-1"}, out, 30), 2);
-  EXPECT_NE(readFile(out).find("--seeds: '5-1' counts down"), std::string::npos) << readFile(out);
+  EXPECT_NE(readFile(out).find("--seeds=5-1: '5-1' counts down"), std::string::npos) << readFile(out);
   EXPECT_EQ(runToEnd({aula, "grade", "vacuum", (dir / "alice").string(), "--engine=cloud"}, out, 30), 2);
   EXPECT_NE(readFile(out).find("--engine=cloud: local or slurm"), std::string::npos) << readFile(out);
   // The teacher's world or setting cannot run: the grade stops before any student's run.

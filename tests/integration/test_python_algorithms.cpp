@@ -110,6 +110,17 @@ TEST(PythonAlgorithms, TeletaxiPathFollowerPortEarnsTheCppReportByteForByte) {
   EXPECT_EQ(withoutAlgorithmName(python.report), withoutAlgorithmName(cpp.report));
 }
 
+// Slow but correct: 1.5 s of CPU at load (its imports) and 3 s in generatePath(), with the
+// default budgets (CPU time, never wall time): the fast planner's report, byte for byte.
+TEST(PythonAlgorithms, ASlowButCorrectPlannerEarnsTheFastOnesReport) {
+  const std::vector<std::string> trip = {"--TeleTaxi.Destination=220,240"};
+  const PyRun fast = runHeadless("teletaxi", kPython + "teletaxi_follow/MyAlgorithm.py", trip);
+  const PyRun slow = runHeadless("teletaxi", kPython + "teletaxi_slow/MyAlgorithm.py", trip, 600s);
+  ASSERT_EQ(slow.code.value_or(-1), 0) << describe(slow);
+  EXPECT_GT(jsonNumber(slow.report, "mark"), 0.0) << slow.report;
+  EXPECT_EQ(slow.report, fast.report);
+}
+
 // Autopark: the slot found with the right laser, two reversing arcs, centred with the front and
 // rear lasers (the mounts, the car's size and the status line read and written too).
 TEST(PythonAlgorithms, AutoparkReverseParkPortEarnsTheCppReportByteForByte) {

@@ -24,11 +24,11 @@ listener=$!
 for _ in $(seq 100); do [ -e "$work/ready" ] && break; sleep 0.1; done
 [ -e "$work/ready" ] || fail "python-lcm did not start"
 
-# Paced at 5x real time: lockstep waits for its clients, never for an observer, and a Python
-# decoder starved of CPU by other tests falls behind a run at 700x until the kernel's queue
-# overflows (a third of the poses lost, measured under load). 10x was enough until the reference
-# told its belief (a belief_t every period, a map every 10 s): under load it lost 11 of 1501.
-"$build/bin/aula" run vacuum --headless --rtf=5 --algorithm=reference --seed=3 --Vacuum.Referee.Duration=30 \
+# Paced at real time: lockstep waits for its clients, never for an observer, and a Python
+# decoder starved of CPU by other tests falls behind a faster run until the kernel's queue
+# overflows (a third of the poses lost at 700x, 11 of 1501 at 10x and 16 at 5x at load 10, with
+# the reference's belief maps). At 1x the decoder needs a fifth of a core.
+"$build/bin/aula" run vacuum --headless --rtf=1 --algorithm=reference --seed=3 --Vacuum.Referee.Duration=30 \
   --report="$work/report.json" --lcm-url="$url" >"$work/run.txt" 2>&1 || fail "the run failed"
 wait "$listener" || fail "python-lcm could not decode every message"
 listener=""
