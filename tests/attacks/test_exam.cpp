@@ -285,6 +285,8 @@ void expectTheRunSandboxHasNoGaps(const fs::path& dir, const std::map<std::strin
     EXPECT_EQ(shown.find(kTeacherToken), std::string::npos);
   }
   EXPECT_NE(data.find("withheld from the student's page"), std::string::npos) << data.substr(0, 4000);
+  // The referee's picture writes the failure in full: not on that page.
+  EXPECT_EQ(page.find("The referee's picture at the end"), std::string::npos);
 
   // Without the sandbox each gets through.
   if (have_key) {

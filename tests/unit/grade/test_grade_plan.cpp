@@ -241,11 +241,16 @@ TEST(StudentPage, KeepsNoQuoteOfTheWorldNoTeachersFolderAndCapsTheStudentsText) 
                 {"mark", 3.5}, {"settings", {"--calibration=/srv/grades/c.rubric.cfg"}}};
   run.trace_json = R"({"events": [{"t_s": 1.5, "kind": "fault", "text": ")" + std::string("<sdf version='1.6'><world name='held_out'>") +
                    R"("}], "samples": {"x_mm": [1, 2]}})";
+  run.picture_png = "a picture that writes the failure";
   const aula::grade::RunFiles shown = forTheStudent(run, withheld);
   EXPECT_EQ(shown.report["failure"], "(withheld from the student's page: it quotes the run's world)");
   EXPECT_EQ(shown.report["log"], "held_out-seed1.log");
   EXPECT_EQ(shown.report["mark"], 3.5);
   EXPECT_EQ(shown.report["settings"][0], "--calibration=c.rubric.cfg");
   EXPECT_EQ(shown.trace_json.find("sdf version"), std::string::npos) << shown.trace_json;
+  EXPECT_TRUE(shown.picture_png.empty());  // it writes the failure in full
   EXPECT_NE(shown.trace_json.find(R"("x_mm":[1,2])"), std::string::npos) << shown.trace_json;
+  // A failure of the student's own, short and with no path: shown as it is, with the picture.
+  run.report["failure"] = "execute() threw std::runtime_error: boom";
+  EXPECT_EQ(forTheStudent(run, withheld).picture_png, "a picture that writes the failure");
 }

@@ -89,6 +89,14 @@ std::string forTheStudent(const std::string& text, const std::vector<std::string
 }
 
 RunFiles forTheStudent(RunFiles run, const std::vector<std::string>& withheld) {
+  // The referee's picture writes the algorithm's failure in full: not on the page when that text
+  // is not the page's to show as it is.
+  for (const char* key : {"algorithm_error", "failure", "aborted"}) {
+    const auto text = run.report.find(key);
+    if (text != run.report.end() && text->is_string() && forTheStudent(text->get<std::string>(), withheld) != text->get<std::string>()) {
+      run.picture_png.clear();
+    }
+  }
   sanitize(run.report, withheld);
   run.title = forTheStudent(run.title, withheld);
   if (!run.trace_json.empty()) {

@@ -9,6 +9,8 @@
 //   the world or a model it includes): "(withheld: it quotes the run's world)";
 // - shortened to kStudentTextChars characters (the student's own output, capped);
 // - stripped of the teacher's folders: an absolute path is left as its file's name.
+// The referee's still picture, which writes the algorithm's failure in full, is left out when that
+// text is changed by the rules above.
 // The teacher's report.html keeps everything as it was.
 
 #include <aula/grade/run_page.hpp>
