@@ -20,7 +20,13 @@
 #   in turn (the first one rotating), ROUNDS times, so that a machine whose load changes weighs
 #   on the three alike. Prints each kind's throughput, the ratios and whether the three kinds'
 #   grades.csv are identical (the differing rows when not); and first one batch of `aula grade`.
-# Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox]
+# --compare=build: the class compiled and graded by `aula grade` with each submission's build in
+#   its sandbox (--build-sandbox=on, the default: bubblewrap, limits, no network) and out of it
+#   (--build-sandbox=off), each time into a fresh out folder (so every plugin is compiled), the two
+#   in turn (the first one rotating), ROUNDS times; prints each kind's compile time (until the
+#   grade says how many runs it plans), whole grade time, plugins compiled per minute and runs
+#   per minute, the ratios, and whether the two kinds' grades.csv are identical.
+# Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox|build]
 #        [--rounds=1] [--slice=10] [--jobs=2] [EXTRA aula grade options...]
 set -euo pipefail
 build="$(cd "$1" && pwd)"; students="${2:-30}"; seeds="${3:-5}"; shift $(( $# < 3 ? $# : 3 ))
@@ -35,7 +41,7 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
-case "$compare" in jobs|sandbox) ;; *) echo "grade_class.sh: --compare=$compare: jobs or sandbox" >&2; exit 2 ;; esac
+case "$compare" in jobs|sandbox|build) ;; *) echo "grade_class.sh: --compare=$compare: jobs, sandbox or build" >&2; exit 2 ;; esac
 src="$(cd "$(dirname "$0")/.." && pwd)"
 work="$(mktemp -d "${TMPDIR:-/tmp}/aula-grade-bench-XXXXXX")"
 trap 'rm -rf "$work"' EXIT
@@ -47,6 +53,44 @@ for i in $(seq -w 1 "$students"); do
     printf '\nnamespace aula::vacuum {\nstd::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return makeReferenceAlgorithm(seed); }\n}  // namespace aula::vacuum\n'
   } >"$work/class/student$i/MyAlgorithm.cpp"
 done
+
+if [ "$compare" = build ]; then
+  runs=$((10#$students * seeds))
+  printf 'class: %d students x %d seeds = %d vacuum runs on %d cores, --jobs=%d, compiled anew each time\n' \
+    "$((10#$students))" "$seeds" "$runs" "$(nproc)" "$jobs"
+  declare -A compile_s=([on]=0 [off]=0) grade_s=([on]=0 [off]=0)
+  kinds=(on off)
+  for ((round = 0; round < rounds; ++round)); do
+    for ((j = 0; j < 2; ++j)); do
+      kind=${kinds[(round + j) % 2]}
+      out="$work/build-$kind"
+      rm -rf "$out"
+      start=$(date +%s.%N)
+      # Each line of the grade's output with the seconds since the start: the compile step ends
+      # where the grade says how many runs it plans.
+      "$build/bin/aula" grade vacuum "$work"/class/* --seeds=1-"$seeds" --jobs="$jobs" --out="$out" \
+        --build-sandbox="$kind" "$@" | while IFS= read -r line; do
+          printf '%s %s\n' "$(echo "$(date +%s.%N) - $start" | bc -l)" "$line"
+        done >"$work/build-$kind.txt"
+      end=$(date +%s.%N)
+      compiled=$(grep -m1 ' [0-9]* runs: ' "$work/build-$kind.txt" | cut -d' ' -f1)
+      failed=$(grep -c 'did not compile\|refused' "$out/grades.csv" || true)
+      [ "$failed" = 0 ] || { echo "grade_class.sh: $failed submission(s) did not build with --build-sandbox=$kind" >&2; exit 1; }
+      compile_s[$kind]=$(echo "${compile_s[$kind]} + $compiled" | bc -l)
+      grade_s[$kind]=$(echo "${grade_s[$kind]} + $end - $start" | bc -l)
+      cp "$out/grades.csv" "$work/grades-build-$kind.csv"
+    done
+  done
+  for kind in on off; do
+    printf '  --build-sandbox=%-3s: compile %6.1f s (%5.1f plugins/min), whole grade %6.1f s (%5.1f runs/min) over %d round(s)\n' \
+      "$kind" "${compile_s[$kind]}" "$(echo "60 * $students * $rounds / ${compile_s[$kind]}" | bc -l)" \
+      "${grade_s[$kind]}" "$(echo "60 * $runs * $rounds / ${grade_s[$kind]}" | bc -l)" "$rounds"
+  done
+  same=$(cmp -s "$work/grades-build-on.csv" "$work/grades-build-off.csv" && echo "identical" || echo "DIFFERENT")
+  printf '  boxed / unboxed: compile time %.3f, whole grade time %.3f   grades.csv of the two: %s\n' \
+    "$(echo "${compile_s[on]} / ${compile_s[off]}" | bc -l)" "$(echo "${grade_s[on]} / ${grade_s[off]}" | bc -l)" "$same"
+  exit 0
+fi
 
 # Compiling is not grading: a first batch builds the plugins; the measured batches reuse that
 # build folder (their compile step is then a no-op of well under a second per student).

@@ -1,6 +1,7 @@
 // A student's vacuum algorithm that tries to leave its process from inside execute(), once, and
 // says on stderr what each try gave ("escape: <try>: done" or "escape: <try>: refused (...)"):
-// - write a file into the folder named by AULA_TEST_ESCAPE_DIR (a folder the test owns);
+// - write a file into escape-target-cpp beside the component's program (a folder the test owns;
+//   found from /proc/self/exe, since a sandboxed run has none of the test's environment);
 // - find the simulator and the referee among the processes it can see (/proc);
 // - open a TCP socket, and a Unix socket (the way out of a UDP-only sandbox);
 // - read another process's memory (ptrace the simulator or the referee if it sees one, else its
@@ -35,8 +36,10 @@ void say(const char* what, bool done, int error = 0) {
 }
 
 void tryEverything() {
-  if (const char* dir = std::getenv("AULA_TEST_ESCAPE_DIR")) {
-    const std::string path = std::string(dir) + "/escaped.txt";
+  {
+    std::error_code error;
+    const auto bin = std::filesystem::read_symlink("/proc/self/exe", error).parent_path();
+    const std::string path = (bin / "escape-target-cpp" / "escaped.txt").string();
     FILE* file = std::fopen(path.c_str(), "w");
     say("write a file outside", file != nullptr, errno);
     if (file != nullptr) std::fclose(file);

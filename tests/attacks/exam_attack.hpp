@@ -2,9 +2,13 @@
 // stderr what each try gave ("exam: <try>: done" / "exam: <try>: refused (<why>)"); then it
 // stays still. Which attack: AULA_EXAM_ATTACK, defined by the submission's MyAlgorithm.cpp that
 // includes this file (tests/attacks/test_exam.cpp writes one folder per attack):
-// - "read": read each file named in $AULA_EXAM_READ (colon-separated: a classmate's
+// The test's values come in the submission's own source (a graded run's environment is the
+// sandbox's, not the test's): AULA_EXAM_READ_LIST, AULA_EXAM_PORT_NUMBER, AULA_EXAM_WRITE_PATH
+// defined before this file is included; a plugin built without them (run without the sandbox,
+// the tests' control) reads $AULA_EXAM_READ, $AULA_EXAM_PORT, $AULA_EXAM_WRITE instead.
+// - "read": read each file named in AULA_EXAM_READ (colon-separated: a classmate's
 //   MyAlgorithm.cpp, the out folder's grades, a teacher's world, /home);
-// - "udp": send a datagram to 127.0.0.1 and to LCM's group on $AULA_EXAM_PORT, where a listener
+// - "udp": send a datagram to 127.0.0.1 and to LCM's group on AULA_EXAM_PORT, where a listener
 //   outside the run waits;
 // - "memory": allocate and touch 3 GB;
 // - "fork": start processes until refused, and keep trying;
@@ -21,10 +25,23 @@
 // - "_exit": _exit(0) from inside execute() (no atexit handler runs: the component's exit() watch
 //   never sees it);
 // - "flood": 4 MB to stdout in each execute(), without end;
-// - "detach": 20 children in sessions of their own, SIGTERM blocked, that would outlive the run.
+// - "detach": 20 children in sessions of their own, SIGTERM blocked, that would outlive the run;
+// - "keyring": read the key "aula-exam-secret" of the session keyring (keyctl), where the test
+//   put it: a teacher's session keys;
+// - "io_uring": set up an io_uring (whose requests make sockets without socket());
+// - "shared-memory": map 3 GB of shared memory and touch it, and fill a file in /dev/shm with
+//   256 MB;
+// - "fork-memory": three children, each with 800 MB of its own written (under the limit of one
+//   process, 2.4 GB together), that stay; said done once all three have written theirs;
+// - "world-in-exception": throw an exception whose message holds 2 KB of the run's world file (its
+//   path from the component's --Vacuum.World=), its path and the process's environment.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <arpa/inet.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/mman.h>
+#include <sys/syscall.h>
 #include <dlfcn.h>
 #include <elf.h>
 #include <link.h>
@@ -44,6 +61,7 @@
 #include <iterator>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,13 +71,41 @@ std::unique_ptr<VacuumAlgorithm> makeReferenceAlgorithm(uint64_t seed);
 
 namespace exam {
 
+// The test's value: the macro the submission defined, else the environment's variable.
+#define AULA_EXAM_SETTING(macro, variable) exam::setting(macro##_GIVEN, macro##_VALUE, variable)
+inline const char* setting(bool given, const char* value, const char* variable) {
+  return given ? value : std::getenv(variable);
+}
+#ifdef AULA_EXAM_READ_LIST
+#define AULA_EXAM_READ_GIVEN true
+#define AULA_EXAM_READ_VALUE AULA_EXAM_READ_LIST
+#else
+#define AULA_EXAM_READ_GIVEN false
+#define AULA_EXAM_READ_VALUE nullptr
+#endif
+#ifdef AULA_EXAM_PORT_NUMBER
+#define AULA_EXAM_PORT_GIVEN true
+#define AULA_EXAM_PORT_VALUE AULA_EXAM_PORT_NUMBER
+#else
+#define AULA_EXAM_PORT_GIVEN false
+#define AULA_EXAM_PORT_VALUE nullptr
+#endif
+#ifdef AULA_EXAM_WRITE_PATH
+#define AULA_EXAM_WRITE_GIVEN true
+#define AULA_EXAM_WRITE_VALUE AULA_EXAM_WRITE_PATH
+#else
+#define AULA_EXAM_WRITE_GIVEN false
+#define AULA_EXAM_WRITE_VALUE nullptr
+#endif
+
 inline void say(const std::string& what, bool done, int error = 0) {
   if (done) std::fprintf(stderr, "exam: %s: done\n", what.c_str());
   else std::fprintf(stderr, "exam: %s: refused (%s)\n", what.c_str(), std::strerror(error));
 }
 
 inline void readFiles() {
-  std::stringstream names(std::getenv("AULA_EXAM_READ") != nullptr ? std::getenv("AULA_EXAM_READ") : "");
+  const char* list = AULA_EXAM_SETTING(AULA_EXAM_READ, "AULA_EXAM_READ");
+  std::stringstream names(list != nullptr ? list : "");
   std::string path;
   while (std::getline(names, path, ':')) {
     errno = 0;
@@ -71,7 +117,7 @@ inline void readFiles() {
 }
 
 inline void sendDatagrams() {
-  const char* port = std::getenv("AULA_EXAM_PORT");
+  const char* port = AULA_EXAM_SETTING(AULA_EXAM_PORT, "AULA_EXAM_PORT");
   for (const char* address : {"127.0.0.1", "239.255.76.67"}) {
     const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
     sockaddr_in to{};
@@ -106,7 +152,7 @@ inline void tryPrivileges() {
   say("unmount /proc", ::umount2("/proc", MNT_DETACH) == 0, errno);
   say("remount / read-write", ::mount(nullptr, "/", nullptr, MS_REMOUNT | MS_BIND, nullptr) == 0, errno);
   say("make a user namespace", ::unshare(CLONE_NEWUSER) == 0, errno);
-  const char* target = std::getenv("AULA_EXAM_WRITE");
+  const char* target = AULA_EXAM_SETTING(AULA_EXAM_WRITE, "AULA_EXAM_WRITE");
   errno = 0;
   std::ofstream out(target != nullptr ? target : "/nonexistent");
   say("write " + std::string(target != nullptr ? target : ""), static_cast<bool>(out), errno != 0 ? errno : ENOENT);
@@ -202,6 +248,79 @@ inline void detachChildren() {
   say("detach 20 children", true);
 }
 
+// Each ends in "done" only when the key's payload was read.
+inline void readKeyring() {
+  const long key = ::syscall(SYS_keyctl, 10 /* KEYCTL_SEARCH */, -3 /* KEY_SPEC_SESSION_KEYRING */, "user",
+                             "aula-exam-secret", 0);
+  if (key < 0) return say("read the session keyring", false, errno);
+  char payload[256] = {};
+  const long read = ::syscall(SYS_keyctl, 11 /* KEYCTL_READ */, key, payload, sizeof payload - 1);
+  say("read the session keyring", read > 0, errno);
+  if (read > 0) std::fprintf(stderr, "exam: the key holds %s\n", payload);
+}
+
+inline void setUpIoUring() {
+  char params[120] = {};  // struct io_uring_params, zeroed
+  const long fd = ::syscall(SYS_io_uring_setup, 8, params);
+  say("set up an io_uring", fd >= 0, errno);
+  if (fd >= 0) ::close(static_cast<int>(fd));
+}
+
+inline void useSharedMemory() {
+  const size_t size = 3ull << 30;
+  void* block = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (block == MAP_FAILED) {
+    say("map 3 GB of shared memory", false, errno);
+  } else {
+    std::memset(block, 1, size);
+    say("map 3 GB of shared memory", true);
+    ::munmap(block, size);
+  }
+  const int fd = ::open("/dev/shm/aula-exam", O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  std::string chunk(1 << 20, 'x');
+  int written = 0, error = fd < 0 ? errno : 0;
+  while (fd >= 0 && written < 256 && ::write(fd, chunk.data(), chunk.size()) == static_cast<ssize_t>(chunk.size())) ++written;
+  if (fd >= 0 && written < 256) error = errno;
+  say("write 256 MB in /dev/shm", written == 256, error);
+  if (fd >= 0) ::close(fd);
+}
+
+// Starts the children; each writes a byte on `ready` once its memory is written.
+inline void forkMemory(int ready) {
+  for (int i = 0; i < 3; ++i) {
+    if (::fork() != 0) continue;
+    const size_t size = 800ull << 20;
+    void* block = ::mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (block != MAP_FAILED) std::memset(block, 1, size);
+    (void)!::write(ready, block != MAP_FAILED ? "y" : "n", 1);
+    for (;;) ::pause();
+  }
+}
+
+// Waits up to half a second (within an execute()) for the children's bytes: true when all three came.
+inline bool forkedMemoryReady(int ready, int& count) {
+  pollfd watched{ready, POLLIN, 0};
+  while (count < 3 && ::poll(&watched, 1, 500) > 0) {
+    char said = 0;
+    if (::read(ready, &said, 1) != 1) break;
+    if (said == 'y') ++count;
+  }
+  return count == 3;
+}
+
+[[noreturn]] inline void throwTheWorld() {
+  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
+  std::string world;
+  for (std::string arg; std::getline(cmdline, arg, '\0');) {
+    if (arg.rfind("--Vacuum.World=", 0) == 0) world = arg.substr(15);
+  }
+  std::ifstream in(world);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string environment;
+  for (char** variable = environ; *variable != nullptr; ++variable) environment += std::string(*variable) + " ";
+  throw std::runtime_error("the world " + world + " reads: " + text.substr(0, 2048) + " and the environment: " + environment);
+}
+
 class ExamAttack : public aula::vacuum::VacuumAlgorithm {
  public:
   explicit ExamAttack(uint64_t seed) {
@@ -218,6 +337,11 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     api.motors.sendW(0.0);
     const std::string attack = AULA_EXAM_ATTACK;
     if (attack == "flood") flood();
+    if (attack == "fork-memory" && done_ && ready_[0] >= 0 && forkedMemoryReady(ready_[0], ready_count_)) {
+      say("three children of 800 MB each", true);
+      ::close(ready_[0]);
+      ready_[0] = -1;
+    }
     if (done_) return;
     done_ = true;
     if (attack == "read") readFiles();
@@ -229,10 +353,17 @@ class ExamAttack : public aula::vacuum::VacuumAlgorithm {
     if (attack == "exit") std::exit(0);
     if (attack == "_exit") ::_exit(0);
     if (attack == "detach") detachChildren();
+    if (attack == "keyring") readKeyring();
+    if (attack == "io_uring") setUpIoUring();
+    if (attack == "shared-memory") useSharedMemory();
+    if (attack == "world-in-exception") throwTheWorld();
+    if (attack == "fork-memory" && ::pipe(ready_) == 0) forkMemory(ready_[1]);
   }
 
  private:
   bool done_ = false;
+  int ready_[2] = {-1, -1};  // fork-memory: the children's "written" line
+  int ready_count_ = 0;
   std::unique_ptr<aula::vacuum::VacuumAlgorithm> reference_;
 };
 

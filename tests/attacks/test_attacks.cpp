@@ -217,10 +217,11 @@ TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
 class Sandbox : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Sandbox, AStudentsAlgorithmCannotWriteSeeOrTraceOtherProcessesNorOpenOtherSockets) {
-  // A folder outside /tmp (the sandbox has a /tmp of its own), beside the test's binary.
-  const std::string dir = std::string(AULA_BIN_DIR) + "/escape-target-" + std::to_string(::getpid());
+  // A folder outside /tmp (the sandbox has a /tmp of its own), beside the component's program,
+  // where the attack looks for it (one per language: the two may run at once).
+  const bool python = GetParam().size() > 3 && GetParam().compare(GetParam().size() - 3, 3, ".py") == 0;
+  const std::string dir = std::string(AULA_BIN_DIR) + (python ? "/escape-target-python" : "/escape-target-cpp");
   std::filesystem::create_directories(dir);
-  ::setenv("AULA_TEST_ESCAPE_DIR", dir.c_str(), 1);  // inherited by the launcher and its children
   // What each try gives in the sandbox: a filesystem of only the run's own inputs (the folder is
   // not even there), the process namespace, seccomp.
   const std::vector<std::pair<std::string, std::string>> tries = {
@@ -247,7 +248,6 @@ TEST_P(Sandbox, AStudentsAlgorithmCannotWriteSeeOrTraceOtherProcessesNorOpenOthe
     EXPECT_EQ(std::filesystem::exists(dir + "/escaped.txt"), !sandboxed);
     EXPECT_NE(readFile(report).find("\"finished\": true"), std::string::npos) << readFile(report);
   }
-  ::unsetenv("AULA_TEST_ESCAPE_DIR");
   std::filesystem::remove_all(dir);
 }
 

@@ -11,10 +11,13 @@
 
 #include <arpa/inet.h>
 #include <fcntl.h>
+#include <sys/syscall.h>
+#include <zlib.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -85,28 +88,48 @@ std::map<std::string, std::map<std::string, std::string>> gradesOf(const std::st
 // python/exam_attack.py (sys.exit() in Python is an exception like any other, not the exit()
 // that C++'s "exit" tries).
 std::vector<std::string> attacksIn(const std::string& language) {
-  std::vector<std::string> attacks = {"read", "udp", "memory", "fork", "privilege", "reference", "reexec", "_exit", "flood"};
+  std::vector<std::string> attacks = {"read",   "udp",   "memory",  "fork",     "privilege",     "reference",
+                                      "reexec", "_exit", "flood",   "keyring",  "io_uring",      "shared-memory",
+                                      "world-in-exception", "fork-memory"};
   if (language == "cpp") attacks.insert(attacks.end(), {"exit", "find-reference"});
   return attacks;
 }
 
+// What the attacks are told, written into each submission (the sandbox clears the environment).
+struct Targets {
+  std::string read;   // files to read, colon-separated
+  std::string write;  // a file to write
+  int port = 9;       // a listener's port outside the run
+};
+
 // A student's folder whose algorithm tries `attack` ("none": a quiet student) in `language`.
-void writeSubmission(const fs::path& folder, const std::string& attack, const std::string& language) {
+void writeSubmission(const fs::path& folder, const std::string& attack, const std::string& language,
+                     const Targets& targets = {}) {
   fs::create_directories(folder);
   if (language == "python") {
-    std::ofstream(folder / "MyAlgorithm.py") << "AULA_EXAM_ATTACK = \"" << attack << "\"\n"
+    std::ofstream(folder / "MyAlgorithm.py") << "AULA_EXAM_ATTACK = \"" << attack << "\"\nAULA_EXAM_READ = \"" << targets.read
+                                             << "\"\nAULA_EXAM_WRITE = \"" << targets.write << "\"\nAULA_EXAM_PORT = \""
+                                             << targets.port << "\"\n"
                                              << readFile(std::string(AULA_SOURCE_DIR) + "/tests/attacks/python/exam_attack.py");
     return;
   }
+  // The attack's code beside it, a header of the student's own (the build sees only the folder).
+  fs::copy_file(std::string(AULA_SOURCE_DIR) + "/tests/attacks/exam_attack.hpp", folder / "exam_attack.hpp",
+                fs::copy_options::overwrite_existing);
   std::ofstream(folder / "MyAlgorithm.cpp") << (attack == "reference" ? "#define AULA_EXAM_REFERENCE 1\n" : "")
-                                            << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n#include \""
-                                            << AULA_SOURCE_DIR << "/tests/attacks/exam_attack.hpp\"\n";
+                                            << "#define AULA_EXAM_ATTACK \"" << attack << "\"\n"
+                                            << "#define AULA_EXAM_READ_LIST \"" << targets.read << "\"\n"
+                                            << "#define AULA_EXAM_WRITE_PATH \"" << targets.write << "\"\n"
+                                            << "#define AULA_EXAM_PORT_NUMBER \"" << targets.port << "\"\n"
+                                            << "#include \"exam_attack.hpp\"\n";
 }
 
-int grade(const std::vector<std::string>& folders, const fs::path& out, const std::string& log) {
+int grade(const std::vector<std::string>& folders, const fs::path& out, const std::string& log,
+          const std::vector<std::string>& more = {}) {
   std::vector<std::string> argv = {kAula, "grade", "vacuum"};
   argv.insert(argv.end(), folders.begin(), folders.end());
   argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun, kOutputLimit});
+  argv.insert(argv.end(), more.begin(), more.end());
   aula::process::ChildProcess child(argv, log, log);
   return child.wait(300s).value_or(-1);
 }
@@ -150,6 +173,140 @@ void expectEndedWithTheirReason(const std::map<std::string, std::map<std::string
   EXPECT_EQ(rows.at("flood").at("runs_tampered"), "0") << line("flood");
 }
 
+// `attack` run without the sandbox (`aula run`, no --sandbox), told its targets through the
+// environment: its log (dir/open-<attack>.log).
+std::string runWithoutSandbox(const fs::path& dir, const std::string& attack, const std::string& language) {
+  const std::string log = (dir / ("open-" + attack + ".log")).string();
+  const std::string algorithm = language == "python" ? (dir / "class" / attack / "MyAlgorithm.py").string()
+                                                     : std::string(AULA_EXAM_PLUGIN_DIR) + "/libaula_test_exam_" + attack + ".so";
+  // Writing 3 GB takes longer than one execute() may (2 s), or than the lockstep waits for the
+  // component (5 s), on a loaded machine: neither applies here.
+  aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", "--algorithm=" + algorithm, kShortRun,
+                                   "--Component.ExecuteBudget=0", "--Simulator.Lockstep.DropAfterMs=120000",
+                                   "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                  log, log);
+  const int code = run.wait(120s).value_or(-1);
+  // A run that throws ends with its fault; one that writes gigabytes may stall its lockstep
+  // (components' own watch on SIM_CLOCK) on a loaded machine: what it said is what counts.
+  const bool heavy = attack == "world-in-exception" || attack == "shared-memory" || attack == "fork-memory";
+  EXPECT_TRUE(code == 0 || heavy) << readFile(log);
+  return readFile(log);
+}
+
+// What a teacher's session holds that no run may see: a variable of the environment, and a key of
+// the session keyring (added by addSessionKey).
+constexpr const char* kTeacherToken = "teacher-token-4711";
+constexpr const char* kTeacherKey = "teacher-session-key-4711";
+
+// Adds "aula-exam-secret" (kTeacherKey) to this process's session keyring, which the runs it
+// starts inherit. False where the system allows no keyring (a container's filter).
+bool addSessionKey() {
+  const long key = ::syscall(SYS_add_key, "user", "aula-exam-secret", kTeacherKey, std::strlen(kTeacherKey),
+                             -3 /* KEY_SPEC_SESSION_KEYRING */);
+  return key >= 0;
+}
+
+// A page's run data block (zlib's deflate in base64, run_page.cpp) as the text it packs.
+std::string unpackedRunData(const std::string& html) {
+  const std::string open = "type='application/octet-stream' id='run'>";
+  const size_t begin = html.find(open);
+  if (begin == std::string::npos) return "";
+  const size_t from = begin + open.size(), to = html.find("</script>", from);
+  const std::string base64 = html.substr(from, to - from);
+  std::string packed;
+  int bits = 0;
+  unsigned value = 0;
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  for (const char c : base64) {
+    const size_t digit = alphabet.find(c);
+    if (digit == std::string::npos) continue;  // '=' and line breaks
+    value = (value << 6) | static_cast<unsigned>(digit);
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      packed += static_cast<char>((value >> bits) & 0xff);
+    }
+  }
+  z_stream stream{};
+  inflateInit(&stream);
+  stream.next_in = reinterpret_cast<Bytef*>(packed.data());
+  stream.avail_in = static_cast<uInt>(packed.size());
+  std::string text;
+  char chunk[65536];
+  int status = Z_OK;
+  while (status == Z_OK) {
+    stream.next_out = reinterpret_cast<Bytef*>(chunk);
+    stream.avail_out = sizeof chunk;
+    status = inflate(&stream, Z_NO_FLUSH);
+    text.append(chunk, sizeof chunk - stream.avail_out);
+  }
+  inflateEnd(&stream);
+  return text;
+}
+
+// The run sandbox's gaps of issue 39, closed: the keyring and io_uring refused and flagged, shared
+// memory past the limit refused, the teacher's environment and the run's world out of the
+// student's page. Each tried again without the sandbox, where it works: the test can fail.
+void expectTheRunSandboxHasNoGaps(const fs::path& dir, const std::map<std::string, std::map<std::string, std::string>>& rows,
+                                  const std::string& quiet_median, const std::string& language, bool have_key) {
+  auto line = [&](const std::string& student) { return rows.at(student).at("line"); };
+  auto result = [&](const std::string& student) {
+    return readFile((dir / "out" / "runs" / student / "vacuum-seed1.json").string());
+  };
+  // Refused and flagged, the mark left as earned.
+  for (const auto& [student, call] : std::map<std::string, std::string>{{"keyring", "keyctl"}, {"io_uring", "io_uring_setup"}}) {
+    expectRefused(dir / "out", student, {student == "keyring" ? "read the session keyring" : "set up an io_uring"});
+    EXPECT_EQ(rows.at(student).at("runs_tampered"), "1") << line(student);
+    EXPECT_NE(result(student).find("\"" + call + "\""), std::string::npos) << result(student);
+    EXPECT_EQ(rows.at(student).at("median"), quiet_median) << line(student);
+  }
+  // Shared memory counts: a 3 GB shared mapping is refused as a 3 GB heap is, and /dev/shm holds
+  // no more than the sandbox's own small tmpfs.
+  expectRefused(dir / "out", "shared-memory", {"map 3 GB of shared memory", "write 256 MB in /dev/shm"});
+  EXPECT_EQ(rows.at("shared-memory").at("runs_failed"), "0") << line("shared-memory");
+  EXPECT_EQ(rows.at("shared-memory").at("median"), quiet_median) << line("shared-memory");
+  // Processes of its own, each under the limit, over it together: the run ends with the reason.
+  EXPECT_NE(line("fork-memory").find("the algorithm used more than 2048 MB of memory (its processes together)"),
+            std::string::npos) << line("fork-memory");
+  // The world and the environment in an exception: the teacher's row has the exception (no teacher
+  // variable in it: the component's environment is the sandbox's), the student's page neither the
+  // world's text nor the teacher's folders.
+  const std::string thrown = line("world-in-exception");
+  EXPECT_NE(thrown.find("the world"), std::string::npos) << thrown;
+  EXPECT_EQ(result("world-in-exception").find(kTeacherToken), std::string::npos) << result("world-in-exception");
+  const std::string page = readFile((dir / "out" / "runs" / "world-in-exception" / "vacuum-seed1.html").string());
+  const std::string data = unpackedRunData(page);
+  ASSERT_FALSE(data.empty()) << "no run data in the student's page";
+  const std::string world = readFile(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world");
+  for (const std::string& shown : {page, data}) {
+    EXPECT_EQ(shown.find(world.substr(world.size() / 2, 40)), std::string::npos) << "the world is in the student's page";
+    EXPECT_EQ(shown.find("<sdf version"), std::string::npos) << "the world is in the student's page";
+    EXPECT_EQ(shown.find(dir.string()), std::string::npos) << "the teacher's folders are in the student's page";
+    EXPECT_EQ(shown.find(kTeacherToken), std::string::npos);
+  }
+  EXPECT_NE(data.find("withheld from the student's page"), std::string::npos) << data.substr(0, 4000);
+  // The referee's picture writes the failure in full: not on that page.
+  EXPECT_EQ(page.find("The referee's picture at the end"), std::string::npos);
+
+  // Without the sandbox each gets through.
+  if (have_key) {
+    const std::string keyring = runWithoutSandbox(dir, "keyring", language);
+    EXPECT_NE(keyring.find(std::string("exam: the key holds ") + kTeacherKey), std::string::npos) << keyring;
+  }
+  const std::string uring = runWithoutSandbox(dir, "io_uring", language);
+  EXPECT_NE(uring.find("exam: set up an io_uring: done"), std::string::npos) << uring;
+  const std::string shared = runWithoutSandbox(dir, "shared-memory", language);
+  EXPECT_NE(shared.find("exam: map 3 GB of shared memory: done"), std::string::npos) << shared;
+  EXPECT_NE(shared.find("exam: write 256 MB in /dev/shm: done"), std::string::npos) << shared;
+  ::unlink("/dev/shm/aula-exam");
+  const std::string forked = runWithoutSandbox(dir, "fork-memory", language);
+  EXPECT_NE(forked.find("exam: three children of 800 MB each: done"), std::string::npos) << forked;
+  EXPECT_EQ(forked.find("MB of memory"), std::string::npos) << forked;
+  const std::string open_world = runWithoutSandbox(dir, "world-in-exception", language);
+  EXPECT_NE(open_world.find(kTeacherToken), std::string::npos) << open_world.substr(0, 4000);
+  EXPECT_NE(open_world.find("<sdf version"), std::string::npos) << open_world.substr(0, 4000);
+}
+
 // An exam in `language` (GetParam()): a quiet student and an attacker per attack, in one class.
 class ExamIn : public ::testing::TestWithParam<std::string> {};
 
@@ -157,8 +314,6 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   const std::string language = GetParam();
   const fs::path dir = aula::testing::privateDir();
   const std::vector<std::string> attacks = attacksIn(language);
-  writeSubmission(dir / "class" / "quiet", "none", language);
-  for (const std::string& attack : attacks) writeSubmission(dir / "class" / attack, attack, language);
   fs::create_directories(dir / "teacher");
   fs::copy_file(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world", dir / "teacher" / "held_out.world");
   const std::string classmate = (dir / "class" / "quiet" / (language == "python" ? "MyAlgorithm.py" : "MyAlgorithm.cpp")).string();
@@ -166,10 +321,17 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
                                             (dir / "teacher" / "held_out.world").string(), "/home"};
   std::string joined;
   for (const std::string& target : targets) joined += (joined.empty() ? "" : ":") + target;
-  ::setenv("AULA_EXAM_READ", joined.c_str(), 1);
-  ::setenv("AULA_EXAM_WRITE", (dir / "out" / "grades.csv").c_str(), 1);
   Listener listener;
-  ::setenv("AULA_EXAM_PORT", std::to_string(listener.port()).c_str(), 1);
+  const Targets told{joined, (dir / "out" / "grades.csv").string(), listener.port()};
+  writeSubmission(dir / "class" / "quiet", "none", language);
+  for (const std::string& attack : attacks) writeSubmission(dir / "class" / attack, attack, language, told);
+  // The control runs below (no sandbox) are told the same through their environment.
+  ::setenv("AULA_EXAM_READ", told.read.c_str(), 1);
+  ::setenv("AULA_EXAM_WRITE", told.write.c_str(), 1);
+  ::setenv("AULA_EXAM_PORT", std::to_string(told.port).c_str(), 1);
+  // What a teacher's session holds: a variable of the environment and a key of the session keyring.
+  ::setenv("AULA_EXAM_TEACHER_TOKEN", kTeacherToken, 1);
+  const bool have_key = addSessionKey();
 
   // The quiet student alone: what her row must stay.
   ASSERT_EQ(grade({(dir / "class" / "quiet").string()}, dir / "alone", (dir / "alone.log").string()), 0)
@@ -222,15 +384,7 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
   // Without the sandbox the same reads and datagrams get through: the test can fail.
   for (const std::string attack : {"read", "udp", "find-reference"}) {
     if (attack == "find-reference" && language == "python") continue;
-    const std::string log = (dir / ("open-" + attack + ".log")).string();
-    const std::string algorithm = language == "python"  ? (dir / "class" / attack / "MyAlgorithm.py").string()
-                                  : attack == "read"    ? AULA_EXAM_READ_PLUGIN
-                                  : attack == "udp"     ? AULA_EXAM_UDP_PLUGIN
-                                                        : AULA_EXAM_FIND_REFERENCE_PLUGIN;
-    aula::process::ChildProcess run({kAula, "run", "vacuum", "--headless", "--algorithm=" + algorithm, kShortRun,
-                                     "--lcm-url=" + aula::testing::privateLcmUrl()},
-                                    log, log);
-    EXPECT_EQ(run.wait(120s).value_or(-1), 0) << readFile(log);
+    runWithoutSandbox(dir, attack, language);
   }
   const std::string open_log = readFile((dir / "open-read.log").string());
   EXPECT_NE(open_log.find("exam: read " + (dir / "teacher" / "held_out.world").string() + ": done"), std::string::npos)
@@ -240,14 +394,106 @@ TEST_P(ExamIn, EachRunSeesOnlyItselfAndNothingLeavesIt) {
     const std::string found = readFile((dir / "open-find-reference.log").string());
     EXPECT_NE(found.find("exam: load the reference's plugin: done"), std::string::npos) << found;
   }
+  expectTheRunSandboxHasNoGaps(dir, rows, alone.at("quiet").at("median"), language, have_key);
   ::unsetenv("AULA_EXAM_READ");
   ::unsetenv("AULA_EXAM_WRITE");
   ::unsetenv("AULA_EXAM_PORT");
+  ::unsetenv("AULA_EXAM_TEACHER_TOKEN");
   fs::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Exam, ExamIn, ::testing::Values("cpp", "python"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// The build is part of the exam (issue 39): a class of a quiet student and an attacker per attack
+// on the build, graded at once. A file name that would have run CMake code is refused in its
+// row; a classmate's file (included, or looked for with __has_include), the machine's identity and
+// the reference's plugin (.incbin) are out of the build's sight. Graded again with the build out
+// of its box (--build-sandbox=off), the same includes and .incbin work: the test can fail.
+TEST(Exam, TheBuildIsBoxed) {
+  const fs::path dir = aula::testing::privateDir();
+  const fs::path class_dir = dir / "class";
+  writeSubmission(class_dir / "quiet", "none", "cpp");
+  const std::string quiet_source = readFile((class_dir / "quiet" / "MyAlgorithm.cpp").string());
+  const std::string classmate = (class_dir / "quiet" / "MyAlgorithm.cpp").string();
+  const std::string reference = std::string(AULA_BIN_DIR) + "/../lib/aula/references/libaula_vacuum_reference.so";
+  ASSERT_TRUE(fs::exists(reference)) << reference;
+  // Each attacker: the quiet student's algorithm, with its attack before it.
+  const std::map<std::string, std::string> attacks = {
+      {"include-relative", "#include \"../quiet/MyAlgorithm.cpp\"\n"},
+      {"include-absolute", "#include \"" + classmate + "\"\n"},
+      {"has-include", "#if __has_include(\"" + classmate + "\")\n#error \"exam: a classmate's file is visible\"\n#endif\n" +
+                          quiet_source},
+      {"incbin-machine-id", "__asm__(\".pushsection .rodata\\n.incbin \\\"/etc/machine-id\\\"\\n.popsection\");\n" + quiet_source},
+      {"incbin-reference", "__asm__(\".pushsection .rodata\\n.incbin \\\"" + reference + "\\\"\\n.popsection\");\n" + quiet_source}};
+  for (const auto& [student, source] : attacks) {
+    fs::create_directories(class_dir / student);
+    fs::copy_file(class_dir / "quiet" / "exam_attack.hpp", class_dir / student / "exam_attack.hpp");
+    std::ofstream(class_dir / student / "MyAlgorithm.cpp") << source;
+  }
+  // A file name that, pasted into a build file, ends the string and runs the CMake script the
+  // student shipped beside it (found without a '/' in the name: ASCII 47).
+  const fs::path pwned = dir / "pwned";
+  writeSubmission(class_dir / "inject", "none", "cpp");
+  std::ofstream(class_dir / "inject" / "payload.cmake") << "file(WRITE \"" << pwned.string() << "\" \"ran\")\n";
+  const std::string injecting =
+      "MyAlgorithm.cpp\")\nstring(ASCII 47 S)\nfile(GLOB L \"..${S}..${S}..${S}class${S}inject${S}payload.cmake\")\n"
+      "include(${L})\n#.cpp";
+  std::ofstream(class_dir / "inject" / injecting) << "// nothing\n";
+  // A source that is a link to a classmate's.
+  fs::create_directories(class_dir / "link");
+  fs::create_symlink(classmate, class_dir / "link" / "MyAlgorithm.cpp");
+
+  ASSERT_EQ(grade({(class_dir / "quiet").string()}, dir / "alone", (dir / "alone.log").string()), 0)
+      << readFile((dir / "alone.log").string());
+  const auto alone = gradesOf((dir / "alone" / "grades.csv").string());
+  std::vector<std::string> folders = {(class_dir / "quiet").string(), (class_dir / "inject").string(),
+                                      (class_dir / "link").string()};
+  for (const auto& attack : attacks) folders.push_back((class_dir / attack.first).string());
+  // From the out folder's build/inject, the payload is at ../../../class/inject: the same depth.
+  ASSERT_EQ(grade(folders, dir / "out", (dir / "class.log").string(), {"--similarity=off"}), 0)
+      << readFile((dir / "class.log").string());
+  const auto rows = gradesOf((dir / "out" / "grades.csv").string());
+  auto line = [&](const std::string& student) { return rows.at(student).at("line"); };
+  EXPECT_EQ(line("quiet"), alone.at("quiet").at("line"));
+
+  EXPECT_FALSE(fs::exists(pwned)) << "the file name ran CMake code";
+  EXPECT_NE(line("inject").find("refused: MyAlgorithm.cpp\\x22)\\x0astring(ASCII 47 S)"), std::string::npos) << line("inject");
+  EXPECT_NE(line("inject").find("is not a plain source name"), std::string::npos) << line("inject");
+  EXPECT_NE(line("link").find("refused: MyAlgorithm.cpp is a symbolic link"), std::string::npos) << line("link");
+  for (const char* student : {"include-relative", "include-absolute", "incbin-machine-id", "incbin-reference"}) {
+    EXPECT_NE(line(student).find("did not compile"), std::string::npos) << line(student);
+    EXPECT_LT(std::stod(rows.at(student).at("median")), 0.01) << line(student);
+  }
+  EXPECT_EQ(rows.at("has-include").at("median"), alone.at("quiet").at("median")) << line("has-include");
+  EXPECT_EQ(rows.at("has-include").at("runs_failed"), "0") << line("has-include");
+  // Nothing of a student's name is in the build file.
+  EXPECT_EQ(readFile((dir / "out" / "build" / "inject" / "CMakeLists.txt").string()).find("MyAlgorithm"), std::string::npos);
+
+  // The same file name pasted into a build file, as aula grade once wrote it: it runs.
+  const fs::path pasted_project = dir / "out" / "build" / "pasted";  // ../../../class/inject from there too
+  fs::create_directories(pasted_project);
+  std::ofstream(pasted_project / "CMakeLists.txt") << "cmake_minimum_required(VERSION 3.16)\nproject(pasted NONE)\n"
+                                                   << "set(sources\n  \"" << injecting << "\")\n";
+  aula::process::ChildProcess pasted({"cmake", "-S", pasted_project.string(), "-B", (dir / "pasted-build").string()},
+                                     (dir / "pasted.log").string(), (dir / "pasted.log").string());
+  pasted.wait(60s);
+  EXPECT_TRUE(fs::exists(pwned)) << "the control did not run the payload: " << readFile((dir / "pasted.log").string());
+  // Out of its box, the build reads the class and the machine.
+  std::vector<std::string> open_folders;
+  for (const char* student : {"include-absolute", "has-include", "incbin-machine-id", "incbin-reference"}) {
+    open_folders.push_back((class_dir / student).string());
+  }
+  ASSERT_EQ(grade(open_folders, dir / "open", (dir / "open.log").string(), {"--similarity=off", "--build-sandbox=off"}), 0)
+      << readFile((dir / "open.log").string());
+  const auto open = gradesOf((dir / "open" / "grades.csv").string());
+  EXPECT_NE(open.at("has-include").at("line").find("a classmate's file is visible"), std::string::npos)
+      << open.at("has-include").at("line");
+  for (const char* student : {"include-absolute", "incbin-machine-id", "incbin-reference"}) {
+    EXPECT_EQ(open.at(student).at("median"), alone.at("quiet").at("median")) << open.at(student).at("line");
+  }
+  fs::remove_all(dir);
+}
 
 // Without the sandbox, a student's detached children (their own session, SIGTERM blocked) do not
 // outlive the run: the launcher is their subreaper and ends them.

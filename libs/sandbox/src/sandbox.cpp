@@ -1,10 +1,13 @@
 #include "aula/sandbox/sandbox.hpp"
 
+#include "aula/sandbox/forbidden_calls.hpp"
+
 #include <seccomp.h>
 
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -25,9 +28,12 @@ int seccompProgram() {
   for (const scmp_datum_t type : {SOCK_STREAM, SOCK_RAW, SOCK_RDM, SOCK_SEQPACKET, SOCK_PACKET}) {
     rc |= seccomp_rule_add(ctx.get(), refuse, SCMP_SYS(socket), 1, SCMP_A1(SCMP_CMP_MASKED_EQ, 0xf, type));
   }
-  // Another process's memory.
-  for (const int call : {SCMP_SYS(ptrace), SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev)}) {
-    rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ERRNO(EPERM), call, 0);
+  // The calls only an escape needs (another process's memory, mounts, io_uring, the keyring...):
+  // refused here too, for a process without the component's watch (forbidden_calls.hpp), which
+  // traps them first and says so.
+  for (const std::string& name : forbiddenCalls()) {
+    const int call = seccomp_syscall_resolve_name(name.c_str());
+    if (call != __NR_SCMP_ERROR) rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ERRNO(EPERM), call, 0);
   }
   if (rc != 0) throw std::runtime_error("sandbox: a seccomp rule could not be added");
   const int fd = memfd_create("aula-seccomp", MFD_CLOEXEC);
@@ -61,9 +67,26 @@ void systemBinds(std::vector<std::string>& out) {
 }
 
 std::vector<std::string> limitsPrefix(const Limits& limits) {
-  return {"prlimit", "--data=" + std::to_string(limits.memory_bytes),
-          "--nproc=" + std::to_string(limits.processes + kOwnThreads), "--fsize=" + std::to_string(limits.file_bytes),
-          "--"};
+  std::vector<std::string> out = {"prlimit", "--as=" + std::to_string(limits.memory_bytes),
+                                  "--nproc=" + std::to_string(limits.processes + kOwnThreads),
+                                  "--fsize=" + std::to_string(limits.file_bytes)};
+  if (limits.cpu_s > 0) out.push_back("--cpu=" + std::to_string(limits.cpu_s));
+  out.push_back("--");
+  return out;
+}
+
+// A cleared environment, then kKeptEnvironment from ours, the sandbox's own and `environment`.
+void environmentOf(const Confinement& confinement, std::vector<std::string>& out) {
+  out.insert(out.end(), {"--clearenv", "--setenv", "PATH", "/usr/local/bin:/usr/bin:/bin", "--setenv", "TMPDIR",
+                         kPrivateTmp, "--setenv", "HOME", kPrivateTmp, "--setenv", "XDG_CACHE_HOME", kPrivateCache,
+                         // One thread of numpy's BLAS: a run has one CPU, and each thread reserves
+                         // address space that the memory limit counts.
+                         "--setenv", "OPENBLAS_NUM_THREADS", "1", "--setenv", "OMP_NUM_THREADS", "1"});
+  for (const char* name : kKeptEnvironment) {
+    const char* value = std::getenv(name);
+    if (value != nullptr) out.insert(out.end(), {"--setenv", name, value});
+  }
+  for (const auto& [name, value] : confinement.environment) out.insert(out.end(), {"--setenv", name, value});
 }
 
 }  // namespace
@@ -73,19 +96,38 @@ std::vector<std::string> wrap(const std::vector<std::string>& argv, int seccomp_
   out.insert(out.end(), {bubblewrapPath(), "--unshare-user", "--uid", "65534", "--gid", "65534", "--disable-userns",
                          "--cap-drop", "ALL", "--unshare-pid", "--unshare-ipc", "--unshare-uts", "--unshare-cgroup-try",
                          "--die-with-parent", "--new-session"});
+  if (confinement.own_network) out.push_back("--unshare-net");
   systemBinds(out);
-  out.insert(out.end(), {"--dev", "/dev", "--proc", "/proc", "--size", std::to_string(confinement.limits.file_bytes),
-                         "--tmpfs", kPrivateTmp, "--dir", kPrivateCache, "--setenv", "TMPDIR", kPrivateTmp, "--setenv",
-                         "HOME", kPrivateTmp, "--setenv", "XDG_CACHE_HOME", kPrivateCache});
+  // /dev/shm: a small tmpfs of its own (the host's is shared and as large as the RAM).
+  out.insert(out.end(), {"--dev", "/dev", "--size", std::to_string(confinement.limits.shm_bytes), "--tmpfs", "/dev/shm",
+                         "--proc", "/proc", "--size", std::to_string(confinement.limits.file_bytes), "--tmpfs",
+                         kPrivateTmp, "--dir", kPrivateCache});
+  environmentOf(confinement, out);
+  for (const std::string& path : confinement.hidden) out.insert(out.end(), {"--perms", "0555", "--tmpfs", path});
   for (const std::string& path : confinement.read_only) out.insert(out.end(), {"--ro-bind", path, path});
   for (const auto& [host, inside] : confinement.read_only_at) out.insert(out.end(), {"--ro-bind", host, inside});
   for (const std::string& folder : confinement.folders) out.insert(out.end(), {"--dir", folder});
-  for (const auto& [name, value] : confinement.environment) out.insert(out.end(), {"--setenv", name, value});
-  // The folders made for the binds above are bwrap's own: read-only too (only /var/tmp is writable).
+  for (const auto& [host, inside] : confinement.writable_at) out.insert(out.end(), {"--bind", host, inside});
+  // The folders made for the binds above are bwrap's own: read-only too (only /var/tmp, /dev/shm
+  // and the writable binds, mounts of their own, stay writable).
   out.insert(out.end(), {"--remount-ro", "/"});
+  if (!confinement.working_dir.empty()) out.insert(out.end(), {"--chdir", confinement.working_dir});
   out.insert(out.end(), {"--seccomp", std::to_string(seccomp_child_fd), "--"});
   out.insert(out.end(), argv.begin(), argv.end());
   return out;
+}
+
+uint64_t memoryOf(const std::vector<int>& processes) {
+  uint64_t total_kb = 0;
+  for (const int pid : processes) {
+    std::ifstream rollup("/proc/" + std::to_string(pid) + "/smaps_rollup");
+    for (std::string line; std::getline(rollup, line);) {
+      if (line.rfind("Pss:", 0) != 0) continue;
+      total_kb += std::strtoull(line.c_str() + 4, nullptr, 10);
+      break;
+    }
+  }
+  return total_kb << 10;
 }
 
 std::string bubblewrapPath() {

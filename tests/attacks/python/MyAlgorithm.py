@@ -1,6 +1,8 @@
 # The Python port of escape_from_execute.cpp: a student's MyAlgorithm.py that tries to leave its
 # process from inside execute(), once, and says on stderr what each try gave ("escape: <try>:
-# done" or "escape: <try>: refused (...)"): write a file into AULA_TEST_ESCAPE_DIR, find the
+# done" or "escape: <try>: refused (...)"): write a file into escape-target-python beside the
+# component's program (found from /proc/self/exe: a sandboxed run has none of the test's
+# environment), find the
 # simulator and the referee in /proc, open a TCP and a Unix socket, ptrace another process.
 # Sandboxed (`aula run --sandbox`, `aula grade`) every try must be refused, as for C++.
 import ctypes
@@ -17,13 +19,12 @@ def say(what, done, error=0):
 
 
 def try_everything():
-    folder = os.environ.get("AULA_TEST_ESCAPE_DIR")
-    if folder:
-        try:
-            open(os.path.join(folder, "escaped.txt"), "w").close()
-            say("write a file outside", True)
-        except OSError as e:
-            say("write a file outside", False, e.errno)
+    folder = os.path.join(os.path.dirname(os.readlink("/proc/self/exe")), "escape-target-python")
+    try:
+        open(os.path.join(folder, "escaped.txt"), "w").close()
+        say("write a file outside", True)
+    except OSError as e:
+        say("write a file outside", False, e.errno)
     others = []
     for name in os.listdir("/proc"):
         if not name.isdigit():

@@ -1,8 +1,16 @@
 // aula grade's plan for a Python submission: a folder with MyAlgorithm.py and no MyAlgorithm.cpp
 // is not compiled; its .py files are copied into OUT/build/<student>, and its runs load the copy.
+//
+// And a submission's files as aula grade takes them (submission_build.hpp) and a student's page's text
+// (student_page.hpp): a plain source name is taken, anything else that ends as a source does (a
+// quote, a newline), a link or an oversized source refuses the submission with the reason; other
+// files are not used; the build project names no file. A student's page keeps no quote of the
+// run's world, no teacher's folder, and no more than its cap of the student's text.
 #include <aula/config/config.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/student_page.hpp>
+#include <aula/grade/submission_build.hpp>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +18,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -20,6 +29,11 @@ std::string scratch() {
   std::string pattern = (fs::temp_directory_path() / "aula_grade_plan_XXXXXX").string();
   if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
   return pattern;
+}
+
+std::string readAll(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -154,4 +168,113 @@ TEST(GradePlan, SeedsOutOfRangeAreRefusedNamingTheOption) {
   EXPECT_EQ(refusal("1-200000", "--seeds"), "--seeds=1-200000: '1-200000' is more than 1000 seeds");
   EXPECT_EQ(refusal("1-600,1000-1600", "--seeds"), "--seeds=1-600,1000-1600: more than 1000 seeds in all");
   EXPECT_EQ(refusal("1-1000", "--seeds"), "accepted");
+}
+
+TEST(SubmissionFiles, PlainSourcesAreTakenOthersNotUsedAndABadNameRefused) {
+  using aula::grade::isPlainSourceName;
+  for (const char* plain : {"MyAlgorithm.cpp", "helpers.hpp", "a_b-c.d.cc", "x.h", "_x.hh", "m.py", "m.cxx"}) {
+    EXPECT_TRUE(isPlainSourceName(plain)) << plain;
+  }
+  for (const char* bad : {"MyAlgorithm.cpp\")\nfile(STRINGS x L)\n#.cpp", "my algorithm.cpp", "-x.cpp", ".hidden.cpp",
+                          "a$b.cpp", "a;b.cpp", "x.cpp.txt", "x\x01.py", "é.cpp", "x.CPP"}) {
+    EXPECT_FALSE(isPlainSourceName(bad)) << bad;
+  }
+  const fs::path root = scratch();
+  fs::create_directories(root / "ana" / "build");
+  std::ofstream(root / "ana" / "MyAlgorithm.cpp") << "// ana\n";
+  std::ofstream(root / "ana" / "helpers.hpp") << "// helpers\n";
+  std::ofstream(root / "ana" / "CMakeLists.txt") << "project(x)\n";
+  std::ofstream(root / "ana" / "notes\nfile(x).txt") << "not a source: never used\n";
+  const auto ana = aula::grade::submissionFiles((root / "ana").string());
+  EXPECT_EQ(ana.refused, "");
+  EXPECT_EQ(ana.sources, (std::vector<std::string>{"MyAlgorithm.cpp", "helpers.hpp"}));
+  EXPECT_EQ(ana.unused, (std::vector<std::string>{"CMakeLists.txt", "build/", "notes\\x0afile(x).txt"}));
+
+  // Copied, and the copy left as it is when nothing changed (its time too: nothing rebuilds).
+  const fs::path copy = root / "out" / "src";
+  fs::create_directories(copy);
+  std::ofstream(copy / "stale.cpp") << "// a source ana no longer has\n";
+  ASSERT_EQ(aula::grade::copySources((root / "ana").string(), ana, copy.string()), "");
+  EXPECT_EQ(readAll(copy / "MyAlgorithm.cpp"), "// ana\n");
+  EXPECT_FALSE(fs::exists(copy / "stale.cpp"));
+  EXPECT_FALSE(fs::exists(copy / "CMakeLists.txt"));
+  const auto copied_at = fs::last_write_time(copy / "MyAlgorithm.cpp");
+  ASSERT_EQ(aula::grade::copySources((root / "ana").string(), ana, copy.string()), "");
+  EXPECT_EQ(fs::last_write_time(copy / "MyAlgorithm.cpp"), copied_at);
+
+  // The build file names nothing of the student's.
+  aula::grade::writeBuildProject((root / "out").string(), "vacuum", "/opt/aula/lib/cmake/Aula");
+  const std::string project = readAll(root / "out" / "CMakeLists.txt");
+  EXPECT_EQ(project.find("MyAlgorithm"), std::string::npos) << project;
+  EXPECT_EQ(project.find("ana"), std::string::npos) << project;
+  EXPECT_NE(project.find("PATHS [==[/opt/aula/lib/cmake/Aula]==]"), std::string::npos) << project;
+
+  // A name that would end a quoted CMake argument: the whole submission refused, the name escaped.
+  fs::create_directories(root / "ben");
+  std::ofstream(root / "ben" / "MyAlgorithm.cpp") << "// ben\n";
+  std::ofstream(root / "ben" / "MyAlgorithm.cpp\")\ninclude(${L})\n#.cpp") << "// x\n";
+  const auto ben = aula::grade::submissionFiles((root / "ben").string());
+  EXPECT_EQ(ben.refused,
+            "refused: MyAlgorithm.cpp\\x22)\\x0ainclude(${L})\\x0a#.cpp is not a plain source name (letters, digits, '_', "
+            "'.', '-' and .cpp, .cc, .cxx, .hpp, .h, .hh or .py)");
+  // A link to a classmate's file, and a source too large.
+  fs::create_directories(root / "cat");
+  fs::create_symlink(root / "ana" / "MyAlgorithm.cpp", root / "cat" / "MyAlgorithm.cpp");
+  EXPECT_EQ(aula::grade::submissionFiles((root / "cat").string()).refused,
+            "refused: MyAlgorithm.cpp is a symbolic link: a submission's sources are its own files");
+  fs::create_directories(root / "dan");
+  std::ofstream(root / "dan" / "MyAlgorithm.cpp") << std::string(aula::grade::kMaxSourceBytes + 1, ' ');
+  EXPECT_EQ(aula::grade::submissionFiles((root / "dan").string()).refused, "refused: MyAlgorithm.cpp is larger than 1 MiB");
+
+  // In a grade: a Python submission refused the same way, its row's reason, nothing copied.
+  fs::create_directories(root / "eve");
+  std::ofstream(root / "eve" / "MyAlgorithm.py") << "x = 1\n";
+  std::ofstream(root / "eve" / "evil'.py") << "x = 2\n";
+  aula::grade::GradeRequest request;
+  request.exercise = "vacuum";
+  request.submissions = {(root / "eve").string()};
+  request.out_dir = (root / "grade").string();
+  const auto graded = aula::grade::compileSubmissions(request, "/nonexistent");
+  ASSERT_EQ(graded.size(), 1u);
+  EXPECT_EQ(graded[0].compile_error.rfind("refused: evil\\x27.py is not a plain source name", 0), 0u) << graded[0].compile_error;
+  EXPECT_EQ(graded[0].plugin, "");
+  EXPECT_FALSE(fs::exists(root / "grade" / "build" / "eve" / "MyAlgorithm.py"));
+  fs::remove_all(root);
+}
+
+TEST(StudentPage, KeepsNoQuoteOfTheWorldNoTeachersFolderAndCapsTheStudentsText) {
+  const std::string world = "<?xml version='1.0'?>\n<sdf version='1.6'><world name='held_out'><model name='sofa'>"
+                            "<pose>1.25 3.5 0 0 0 0.7</pose></model></world></sdf>\n";
+  const std::vector<std::string> withheld = {world};
+  using aula::grade::forTheStudent;
+  EXPECT_EQ(forTheStudent("the algorithm threw std::runtime_error: " + world.substr(40, 40), withheld),
+            "(withheld from the student's page: it quotes the run's world)");
+  EXPECT_EQ(forTheStudent("the algorithm threw std::runtime_error: a sofa at 1.25 3.5", withheld),
+            "the algorithm threw std::runtime_error: a sofa at 1.25 3.5");
+  EXPECT_EQ(forTheStudent("cannot open /home/teacher/exam/held_out.world (errno 2)", withheld),
+            "cannot open held_out.world (errno 2)");
+  EXPECT_EQ(forTheStudent("--calibration=/srv/grades/calibrations/h.rubric.cfg", withheld), "--calibration=h.rubric.cfg");
+  EXPECT_EQ(forTheStudent("a speed of 0.3 m/s", withheld), "a speed of 0.3 m/s");
+  const std::string long_text(aula::grade::kStudentTextChars + 100, 'x');
+  EXPECT_EQ(forTheStudent(long_text, withheld), std::string(aula::grade::kStudentTextChars, 'x') + "... (100 characters more)");
+
+  // Every string of the report and of the trace, however deep.
+  aula::grade::RunFiles run;
+  run.title = "ana, held_out seed 1";
+  run.report = {{"failure", "the algorithm threw: " + world}, {"log", "/srv/grades/runs/ana/held_out-seed1.log"},
+                {"mark", 3.5}, {"settings", {"--calibration=/srv/grades/c.rubric.cfg"}}};
+  run.trace_json = R"({"events": [{"t_s": 1.5, "kind": "fault", "text": ")" + std::string("<sdf version='1.6'><world name='held_out'>") +
+                   R"("}], "samples": {"x_mm": [1, 2]}})";
+  run.picture_png = "a picture that writes the failure";
+  const aula::grade::RunFiles shown = forTheStudent(run, withheld);
+  EXPECT_EQ(shown.report["failure"], "(withheld from the student's page: it quotes the run's world)");
+  EXPECT_EQ(shown.report["log"], "held_out-seed1.log");
+  EXPECT_EQ(shown.report["mark"], 3.5);
+  EXPECT_EQ(shown.report["settings"][0], "--calibration=c.rubric.cfg");
+  EXPECT_EQ(shown.trace_json.find("sdf version"), std::string::npos) << shown.trace_json;
+  EXPECT_TRUE(shown.picture_png.empty());  // it writes the failure in full
+  EXPECT_NE(shown.trace_json.find(R"("x_mm":[1,2])"), std::string::npos) << shown.trace_json;
+  // A failure of the student's own, short and with no path: shown as it is, with the picture.
+  run.report["failure"] = "execute() threw std::runtime_error: boom";
+  EXPECT_EQ(forTheStudent(run, withheld).picture_png, "a picture that writes the failure");
 }

@@ -18,6 +18,7 @@
 #include <poll.h>
 #include <sys/mount.h>
 #include <sys/socket.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <sched.h>
 #include <unistd.h>
@@ -65,6 +66,23 @@ TEST(ForbiddenCalls, AreRefusedWithEpermAndSaidOnTheLine) {
     return 0;
   });
   EXPECT_EQ(out, "refused umount2\nrefused mount\nrefused unshare\n|ok");
+}
+
+// io_uring (whose requests make sockets past socket()'s rule) and the keyring (the caller's
+// session keys): refused and said as the other escape calls are.
+TEST(ForbiddenCalls, IoUringAndTheKeyringAreRefusedAndSaid) {
+  const std::string out = inWatchedChild([](int) {
+    char params[120] = {};
+    if (::syscall(SYS_io_uring_setup, 8, params) != -1 || errno != EPERM) return 1;
+    if (::syscall(SYS_io_uring_enter, 0, 0, 0, 0, nullptr, 0) != -1 || errno != EPERM) return 2;
+    if (::syscall(SYS_io_uring_register, 0, 0, nullptr, 0) != -1 || errno != EPERM) return 3;
+    if (::syscall(SYS_keyctl, 0 /* KEYCTL_GET_KEYRING_ID */, -3, 0) != -1 || errno != EPERM) return 4;
+    if (::syscall(SYS_add_key, "user", "aula", "x", 1, -3) != -1 || errno != EPERM) return 5;
+    if (::syscall(SYS_request_key, "user", "aula", nullptr, 0) != -1 || errno != EPERM) return 6;
+    return 0;
+  });
+  EXPECT_EQ(out, "refused io_uring_setup\nrefused io_uring_enter\nrefused io_uring_register\nrefused keyctl\n"
+                 "refused add_key\nrefused request_key\n|ok");
 }
 
 TEST(ForbiddenCalls, TheWatchCannotBeSilenced) {

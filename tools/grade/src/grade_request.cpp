@@ -127,6 +127,7 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.out_dir = fs::absolute(options.out_dir).lexically_normal().string();
   r.overrides = options.overrides;
   r.record = options.record;
+  r.build_sandbox = options.build_sandbox;
   r.similarity = options.similarity == "on" || (options.similarity == "auto" && r.submissions.size() >= 3);
   r.similarity_rules = options.similarity_rules;
   return r;

@@ -1,5 +1,7 @@
 #include "aula/grade/grades.hpp"
 
+#include "aula/grade/student_page.hpp"
+
 #include <aula/version.hpp>
 
 #include <aula/config/paths.hpp>
@@ -207,12 +209,15 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
   const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results, rules);
   config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results, similar), "the class report");
-  // A page per run, beside its result, for the teacher to hand to that student alone.
+  // A page per run, beside its result, for the teacher to hand to that student alone: with only
+  // what is theirs (student_page.hpp: no quote of the world, no teacher's folder, their text capped).
+  const WorldTexts world_texts(out_dir);
   for (const auto& r : results) {
     if (!r.contains("log") || !r["log"].is_string()) continue;
     fs::path page = r["log"].get<std::string>();
     page.replace_extension(".html");
-    config::writeFileAtomically(page.string(), runPageHtml(runFilesOf(r)), "the run's page");
+    const RunFiles theirs = forTheStudent(runFilesOf(r), world_texts.ofRun(r["log"].get<std::string>()));
+    config::writeFileAtomically(page.string(), runPageHtml(theirs), "the run's page");
   }
   return grades;
 }

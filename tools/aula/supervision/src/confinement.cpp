@@ -36,6 +36,10 @@ sandbox::Confinement componentConfinement(const ComponentFiles& files, const san
   c.read_only.insert(c.read_only.end(), files.runtime.begin(), files.runtime.end());
   c.read_only.insert(c.read_only.end(), files.world_inputs.begin(), files.world_inputs.end());
   if (!files.algorithm.empty()) c.read_only.push_back(files.algorithm);
+  // Installed under /usr (the .deb), the built-in algorithms' folder is in the system's bind: an
+  // empty folder there, with only the run's own built-in bound in it.
+  const std::string references = config::libDir() + "/" + config::kReferencesFolder;
+  if (references.rfind("/usr/", 0) == 0) c.hidden.push_back(references);
   // config::dataDir() looks for <data>/worlds: there, empty, beside whatever of it is bound.
   c.folders = {files.data_dir + "/worlds"};
   if (!files.world_cache_entry.empty()) {

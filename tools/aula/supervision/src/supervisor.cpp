@@ -165,8 +165,9 @@ class RunSupervisor {
   }
 
   // A sandboxed component past a limit the launcher counts: its output (stdout and stderr), its
-  // processes (bubblewrap's two aside, looked at every 100 ms). The run ends with that reason and
-  // the component is stopped at once (its whole process namespace dies with it).
+  // processes (bubblewrap's two aside, looked at every 100 ms) and the memory they use together.
+  // The run ends with that reason and the component is stopped at once (its whole process
+  // namespace dies with it).
   void checkLimits() {
     if (!run_.sandbox || children_.size() < 2 || told_referee_) return;
     const sandbox::Limits& limits = run_.confinement.limits;
@@ -177,8 +178,14 @@ class RunSupervisor {
     const auto now = std::chrono::steady_clock::now();
     if (why.empty() && now - processes_checked_ >= std::chrono::milliseconds(100)) {
       processes_checked_ = now;
-      const int started = static_cast<int>(process::descendantsOf(children_[1]->pid()).size()) - 2;
+      const std::vector<pid_t> processes = process::descendantsOf(children_[1]->pid());
+      const int started = static_cast<int>(processes.size()) - 2;
       if (started > limits.processes) why = "the algorithm started more than " + std::to_string(limits.processes) + " processes";
+      // Each process is held by its own address-space limit; with processes of its own, the
+      // component's are held together too (their proportional shares of every page).
+      if (why.empty() && started > 0 && sandbox::memoryOf(processes) > limits.memory_bytes) {
+        why = "the algorithm used more than " + std::to_string(limits.memory_bytes >> 20) + " MB of memory (its processes together)";
+      }
     }
     if (why.empty()) return;
     std::cerr << "aula: " << why << ": stopping it\n";

@@ -1,7 +1,7 @@
 #pragma once
 // Inside a graded run's sandbox, the component's own watch on what the student's code tries: the
 // system calls that only an escape needs (mount, umount2, unshare, setns, pivot_root, chroot,
-// ptrace, process_vm_readv/writev, kernel modules, reboot, bpf...) are refused with EPERM, as
+// ptrace, process_vm_readv/writev, kernel modules, reboot, bpf, io_uring, the keyring...) are refused with EPERM, as
 // the sandbox refuses them anyway, and each try is said on the launcher's private line
 // ("refused mount\n"), so that the run is flagged (the referee's "refused_system_calls").
 //
@@ -14,8 +14,14 @@
 // forbids (SIGSYS)".
 
 #include <string>
+#include <vector>
 
 namespace aula::sandbox {
+
+// The names of those calls ("mount", ..., "io_uring_setup", "keyctl"): the watch traps them, and
+// the sandbox's own filter (seccompProgram) refuses them too, for a process that has no watch (a
+// build, a component whose watch could not be set).
+std::vector<std::string> forbiddenCalls();
 
 // Installs the handler and the filter in this process (every thread); `line_fd` is the
 // launcher's private line. Returns "" when done, else why not (no seccomp here, an architecture

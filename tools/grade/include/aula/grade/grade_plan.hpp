@@ -38,6 +38,7 @@ struct GradeRequest {
   bool similarity = false;       // compare the submissions (similarity.csv, report.html's section)
   SimilarityRules similarity_rules;  // what flags a pair
   bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
+  bool build_sandbox = true;     // each C++ submission built in its sandbox (submission_build.hpp); off: to measure it
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
 
@@ -53,6 +54,7 @@ struct GradeOptions {
   std::string engine = "local";
   double wall_limit_s = 600;
   bool record = false;
+  bool build_sandbox = true;
   std::string similarity = "auto";       // on, off, or auto: on for a class of 3 or more
   SimilarityRules similarity_rules;
   std::vector<std::pair<std::string, std::string>> overrides;
@@ -79,8 +81,9 @@ struct Submission {
   std::string compile_error;  // "did not compile: <the compiler's first error lines>"
 };
 
-// Builds every submission as a plugin in OUT/build/<student>, `jobs` at once. A compile error
-// is that student's result and never stops the others. A folder with MyAlgorithm.py and no
+// Builds every submission as a plugin in OUT/build/<student>, `jobs` at once, each in a sandbox
+// of its own (submission_build.hpp: its files checked and copied, its names never in a build
+// file). A refused file or a compile error is that student's result and never stops the others. A folder with MyAlgorithm.py and no
 // MyAlgorithm.cpp is not compiled: its .py files are copied there (what runs cannot change
 // under the batch) and the copy of MyAlgorithm.py is what its runs load.
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix);
