@@ -16,8 +16,22 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace aula::grade {
+
+// One thing a run's result says went wrong or was refused, besides its mark: `kind` for the class
+// table ("failed", "non-finite commands", "tampering", "escape", "lost messages", "reloaded",
+// "ended early"), `text` for people. Every page shows each one as text; report.html flags the run.
+struct Diagnostic {
+  std::string kind, text;
+};
+std::vector<Diagnostic> runDiagnostics(const nlohmann::json& result);
+// The diagnostics as an HTML list (class 'diagnostics'), "" when there is none.
+std::string diagnosticsHtml(const std::vector<Diagnostic>& diagnostics);
+// `text` with each absolute path cut to its file name ("/home/t/out/runs/alice/x.log" -> "x.log"):
+// what a student's page may say of the teacher's machine.
+std::string withoutPaths(const std::string& text);
 
 struct RunFiles {
   std::string title;        // "alice, vacuum seed 3"
@@ -30,7 +44,8 @@ struct RunFiles {
 // "log" without its extension (runs/<student>/<world>-seed<k>).
 RunFiles runFilesOf(const nlohmann::json& result);
 
-// The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`).
+// The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`), for the
+// student: no absolute path of the teacher's machine in it (withoutPaths).
 std::string runPageHtml(const RunFiles& run);
 // `aula run --report-html=FILE.html`: the page of a single run from the referee's files (the trace
 // and the picture may be "" or missing: the page then has no player, or no still picture).
