@@ -123,10 +123,17 @@ std::vector<long long> undelta(const nlohmann::json& deltas) {
   return out;
 }
 
-// Where the trace puts the robot at `t_s` (linear between its samples, as the player draws it).
+// Where the trace puts the robot at `t_s` (linear between its samples, then towards the last
+// pose graded, its "final", as the player draws it).
 std::pair<double, double> tracedPosition(const nlohmann::json& trace, double t_s) {
   const auto xs = undelta(trace["samples"]["x_mm"]), ys = undelta(trace["samples"]["y_mm"]);
   const double period = trace["samples"]["period_s"].get<double>();
+  const double last = (xs.size() - 1) * period;
+  const nlohmann::json& fin = trace["final"];
+  if (t_s > last && fin["traced"].get<bool>() && fin["t_s"].get<double>() > last + 1e-9) {
+    const double b = std::min(1.0, (t_s - last) / (fin["t_s"].get<double>() - last));
+    return {xs.back() + b * (1000 * fin["pose"][0].get<double>() - xs.back()), ys.back() + b * (1000 * fin["pose"][1].get<double>() - ys.back())};
+  }
   const double f = std::clamp(t_s / period, 0.0, static_cast<double>(xs.size() - 1));
   const size_t i = static_cast<size_t>(std::floor(f)), j = std::min(i + 1, xs.size() - 1);
   const double a = f - i;
@@ -184,7 +191,11 @@ const char* kProbe = R"JS(
     const c = document.querySelector('.player');
     if (!c || !c.player) { setTimeout(wait, 20); return; }
     try { probe(c.player); } catch (e) { out.error = String(e); }
-    document.body.dataset.probe = JSON.stringify(out);
+    // A new #t= on the open page moves the player there.
+    const p = c.player, asked = Math.round(p.end * 0.25 * 1000) / 1000;
+    const rest = location.hash.replace(/&?t=[0-9.]+/, '');
+    location.hash = (rest && rest !== '#' ? rest + '&' : '#') + 't=' + asked;
+    setTimeout(() => { out.hashAsked = asked; out.hashTime = p.time; document.body.dataset.probe = JSON.stringify(out); }, 200);
   };
   wait();
 })();
@@ -253,6 +264,7 @@ void expectAGoodPage(const GradedRun& run, const std::string& page_path, const s
     EXPECT_EQ(probe["panel"].size(), 1u) << "the mark panel moved while playing through the events: " << probe["panel"].dump();
     EXPECT_TRUE(probe["followed"].get<bool>()) << "the event list lost the current event";
     EXPECT_LE(probe["width"][0].get<int>(), probe["width"][1].get<int>()) << "the page scrolls sideways: " << probe["width"].dump();
+    EXPECT_NEAR(probe["hashTime"].get<double>(), probe["hashAsked"].get<double>(), 1e-6) << "#t= on an open page";
     EXPECT_TRUE(probe["spacePlays"].get<bool>());
     EXPECT_TRUE(probe["spacePauses"].get<bool>());
     const double end = probe["end"].get<double>(), base = end / 2;
@@ -298,6 +310,19 @@ void expectPlayerAtEvent(const GradedRun& run, const std::vector<std::string>& k
   EXPECT_NEAR(std::stod(attribute(page.dom, "robot-y-mm")), event["y_mm"].get<double>(), 150.0) << event.dump();
   EXPECT_NEAR(std::stod(attribute(page.dom, "breakdown-sum")), run.result["mark"].get<double>(), 1e-3);
   EXPECT_NE(page.dom.find("<canvas"), std::string::npos);
+}
+
+// A browser without DecompressionStream: the page says so where the player would be, quietly.
+void expectAMessageWithoutDecompression(const std::string& page_path) {
+  std::string html = readFile(page_path);
+  const auto body = html.find("<body>");
+  ASSERT_NE(body, std::string::npos);
+  html.insert(body + 6, "<script>window.DecompressionStream = undefined;</script>");
+  std::ofstream(page_path + ".old-browser.html") << html;
+  const Page page = loadInChromium("file://" + page_path + ".old-browser.html");
+  EXPECT_NE(page.dom.find("This browser cannot play the run: it lacks DecompressionStream"), std::string::npos)
+      << page.dom.substr(0, 2000);
+  EXPECT_TRUE(consoleLines(page.console).empty()) << page.console;
 }
 
 bool hasEvent(const nlohmann::json& trace, const std::string& kind) {
@@ -346,6 +371,7 @@ TEST(RunPage, APythonExceptionIsInThePage) {
   EXPECT_TRUE(hasEvent(run.trace, "fault")) << run.trace["events"].dump();
   std::ofstream(run.stem + ".html") << aula::grade::runPageHtml(aula::grade::runFilesOf(run.result));
   expectAGoodPage(run, run.stem + ".html");
+  expectAMessageWithoutDecompression(run.stem + ".html");
 }
 
 TEST(RunPage, TeleTaxiPlayerInChromium) {

@@ -162,7 +162,7 @@ const AulaPlayer = (() => {
       this.followBox = el('input', {type: 'checkbox', 'aria-keyshortcuts': 'F'});
       this.followBox.addEventListener('change', () => { this.follow = this.followBox.checked; this.draw(); });
       followLabel.append(this.followBox, ' follow the robot');
-      this.slider = el('input', {type: 'range', min: 0, max: this.end, step: this.period, value: 0, class: 'time',
+      this.slider = el('input', {type: 'range', min: 0, max: this.end, step: 'any', value: 0, class: 'time',
                                  'aria-label': 'sim time, s'});
       this.slider.addEventListener('input', () => { this.pause(); this.seek(Number(this.slider.value)); });
       this.clock = el('span', {class: 'clock'});
@@ -292,14 +292,23 @@ const AulaPlayer = (() => {
       return false;
     }
 
-    // The pose at `t`: linear between the two samples around it (the heading the short way).
+    // The pose at `t`: linear between the two samples around it (the heading the short way); after
+    // the last sample, towards the last pose the referee graded (the trace's "final", at its time).
     poseAt(t) {
       const f = Math.min(Math.max(t / this.period, 0), this.n - 1);
       const i = Math.floor(f), j = Math.min(i + 1, this.n - 1), a = f - i;
+      const last = (this.n - 1) * this.period, fin = this.trace.final;
+      if (t > last && fin && fin.traced && fin.t_s > last + 1e-9) {
+        const b = Math.min(1, (t - last) / (fin.t_s - last)), k = this.n - 1;
+        let dyaw = fin.pose[2] * 1000 - this.yaws[k];
+        dyaw -= 2000 * Math.PI * Math.round(dyaw / (2000 * Math.PI));
+        return {x: this.xs[k] + b * (fin.pose[0] * 1000 - this.xs[k]), y: this.ys[k] + b * (fin.pose[1] * 1000 - this.ys[k]),
+                yaw: this.yaws[k] + b * dyaw, sample: k, final: b >= 1};
+      }
       let dyaw = this.yaws[j] - this.yaws[i];
       dyaw -= 2000 * Math.PI * Math.round(dyaw / (2000 * Math.PI));
       return {x: this.xs[i] + a * (this.xs[j] - this.xs[i]), y: this.ys[i] + a * (this.ys[j] - this.ys[i]),
-              yaw: this.yaws[i] + a * dyaw, sample: i};
+              yaw: this.yaws[i] + a * dyaw, sample: i, final: false};
     }
     px(x_m, y_m) { return [(x_m - this.ox) / this.res * this.scale, (this.oy - y_m) / this.res * this.scale]; }
     len(m) { return m / this.res * this.scale; }
@@ -429,7 +438,12 @@ const AulaPlayer = (() => {
         caption(ctx, [rows.parked || rows.time, 'distances: ' + rows.distances].filter(Boolean), this.canvas.width);
       }
       let text = fmt(t, 1) + ' / ' + fmt(this.end, 1) + ' s';
-      if (this.coverage) text += ', coverage ' + fmt(this.coverage[Math.min(pose.sample, this.coverage.length - 1)] / 100, 2) + ' %';
+      if (this.coverage) {
+        // At the last pose graded, the referee's own figure (the report's); before it, the samples'.
+        const cp = pose.final || t >= this.end - 1e-9 ? st.coverage_percent
+                                                      : this.coverage[Math.min(pose.sample, this.coverage.length - 1)] / 100;
+        text += ', coverage ' + fmt(cp, 2) + ' %';
+      }
       this.clock.textContent = text;
       this.cursor.style.left = (100 * t / Math.max(this.end, 1e-9)) + '%';
       const s = this.status;
