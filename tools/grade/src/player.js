@@ -461,7 +461,8 @@ const AulaPlayer = (() => {
       s.dataset.playing = this.playing ? 'yes' : 'no';
       s.dataset.errors = errors.length;
       s.dataset.errorText = errors.join(' | ');
-      s.dataset.resources = performance.getEntriesByType('resource').length;
+      // Requests for anything not a file beside the page (the class page's pictures are): none, ever.
+      s.dataset.resources = performance.getEntriesByType('resource').filter(e => !e.name.startsWith('file:')).length;
     }
   }
 

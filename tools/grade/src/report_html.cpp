@@ -111,6 +111,7 @@ h2 { border-bottom: 1px solid #ddd; padding-bottom: 4px; }
 .run button { margin: 4px 0; }
 .run.open { width: 100%; }
 .run .watch { margin-top: 6px; }
+.run img.still { max-width: 100%; height: auto; display: block; }
 tr.flagged td.name { color: #b71c1c; }
 ul.flagged-runs { overflow-wrap: anywhere; }
 details.pair pre { overflow-x: auto; max-width: 100%; }
@@ -295,9 +296,9 @@ void writeFlagged(std::ostringstream& html, const std::vector<nlohmann::json>& r
   html << "</ul>\n";
 }
 
-// One run's card: its mark, measures, diagnostics, its player (built when opened), and links to
-// its own page and the referee's still picture, files beside report.html (not inlined: a class's
-// pictures would be most of the page).
+// One run's card: its mark, measures, diagnostics, its player (built when opened), a link to its
+// own page and the referee's still picture, both files beside report.html (the picture loaded when
+// the card is scrolled to, not inlined: a class's pictures would be most of the page).
 void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string id = runId(r);
   const RunFiles files = runFilesOf(r);
@@ -313,9 +314,12 @@ void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   html << "<div class='watch'></div>";
   const std::string stem = relativeStem(r);
   if (!stem.empty()) {
-    html << "<div class='files'><a href='" << escapeHtml(urlPath(stem + ".html")) << "'>its page</a>";
-    if (!files.picture_png.empty()) html << " &middot; <a href='" << escapeHtml(urlPath(stem + ".png")) << "'>the referee's picture</a>";
-    html << "</div>";
+    html << "<div class='files'><a href='" << escapeHtml(urlPath(stem + ".html")) << "'>its page</a></div>";
+    if (!files.picture_png.empty()) {
+      const std::string png = escapeHtml(urlPath(stem + ".png"));
+      html << "<a href='" << png << "'><img class='still' loading='lazy' alt='the referee&#39;s picture of the run' src='" << png
+           << "'></a>";
+    }
   }
   html << "</div>\n";
 }

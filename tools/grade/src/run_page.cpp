@@ -132,8 +132,9 @@ std::string dataUri(const std::string& mime, const std::string& bytes) {
 }
 
 std::string noNetworkPolicy() {
+  // 'self' for images: report.html's still pictures are files beside it (on a file:// page, files only).
   return "<meta http-equiv='Content-Security-Policy' content=\"default-src 'none'; script-src 'unsafe-inline'; "
-         "style-src 'unsafe-inline'; img-src data:\">";
+         "style-src 'unsafe-inline'; img-src data: 'self'\">";
 }
 
 RunFiles runFilesOf(const nlohmann::json& result) {

@@ -59,7 +59,8 @@ void writeRunPage(const std::string& html_path, const std::string& report_path, 
 std::string playerStyle();
 std::string playerScript();
 std::string runDataBlock(const std::string& id, const RunFiles& run);
-// The page's Content-Security-Policy <meta>: inline scripts, styles and data: images only.
+// The page's Content-Security-Policy <meta>: inline scripts and styles, images inline (data:) or
+// beside the page ('self': report.html's still pictures), nothing else.
 std::string noNetworkPolicy();
 // Text for HTML: & < > " ' escaped.
 std::string escapeHtml(const std::string& text);
