@@ -4,8 +4,8 @@
 #   2. a trace's size (900 s vacuum; TeleTaxi; Autopark);
 #   3. a class of STUDENTS x 5 seeds x 3 worlds of 900 s vacuum runs (vacuum.world, house_3x2.world
 #      and a generated 4x3 house): report.html's size, and how long headless Chromium takes to
-#      load it (the page's own `load` time, and Chromium's whole wall time), and to open one run's
-#      player in it.
+#      load it (the page's own `load` time, and Chromium's whole wall time), and for one run's own
+#      page (what report.html shows in a frame) to open its player.
 # A run's three processes are started here as `aula run --headless` starts them (the launcher
 # does not pass --trace to the referee yet). With --screenshots it also writes the page's pictures
 # in docs/images (look at them before committing); --screenshots-only skips the measures.
@@ -144,11 +144,12 @@ for n in 1 2 3; do
   echo "load $n: the page's load event at $(grep -o 'data-loaded-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms;" \
        "Chromium's whole run (start, load, dump, quit) $(echo "$t1 - $t0" | bc -l | xargs printf '%.2f') s"
 done
-dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/report.html#run=student15/vacuum-seed3&t=450")"
-echo "opening one run's player in it: $(grep -o 'data-open-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms"
+# A run's player is its own page (report.html shows it in a frame): how long that page takes to open it.
+dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/runs/student15/vacuum-seed3.html#t=450")"
+echo "opening one run's player (its page): $(grep -o 'data-open-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms"
 fi
 
-if [ -n "$screenshots" ]; then
+if [ "$screenshots" = "--screenshots" ] || [ "$screenshots" = "--screenshots-only" ]; then
   echo "== screenshots in docs/images"
   out="$src/docs/images"
   mkdir -p "$work/alice/runs/alice" "$work/shots"

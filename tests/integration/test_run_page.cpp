@@ -81,13 +81,15 @@ struct Page {
 };
 
 // Headless Chromium, a fresh profile, nothing in the background: the DOM once `url` settled.
-Page loadInChromium(const std::string& url, int width_px = 1280) {
+// `frames`: the page's frames are readable from it (--allow-file-access-from-files: file:// pages
+// are otherwise each their own origin), so a probe can read the player in report.html's frame.
+Page loadInChromium(const std::string& url, int width_px = 1280, bool frames = false) {
   const std::string profile = aula::testing::privateDir();
   const auto out = aula::testing::runToEnd(
       {"/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
        "--disable-component-update", "--disable-sync", "--no-first-run", "--user-data-dir=" + profile,
        "--enable-logging=stderr", "--v=0", "--window-size=" + std::to_string(width_px) + ",900", "--hide-scrollbars",
-       "--virtual-time-budget=10000", "--dump-dom", url},
+       frames ? "--allow-file-access-from-files" : "--disable-extensions", "--virtual-time-budget=10000", "--dump-dom", url},
       90s);
   EXPECT_EQ(out.code.value_or(-1), 0) << out.output.substr(0, 3000);
   Page page;
@@ -151,16 +153,22 @@ const nlohmann::json& eventOf(const nlohmann::json& trace, const std::vector<std
   return none;
 }
 
-// Added to a copy of a page: once a player is built (the first one in the page), it plays the
-// run through every event (seeking just before and after each) and records where the mark panel
-// was, whether the event list kept the current event in view, what the keys did, and how wide the
-// page is; all into <body data-probe='JSON'>.
+// Added to a copy of a page: once a player is built (the first one in the page, or in the page's
+// frame: report.html shows a run's own page in one), it copies the player's status (data-t-s...)
+// into <div id='mirror'> of the page, then plays the run through every event (seeking just before
+// and after each) and records where the mark panel was, whether the event list kept the current
+// event in view, what the keys did, how wide the page (and the frame) are, and where a new #t=
+// took the player; all into <body data-probe='JSON'>.
 const char* kProbe = R"JS(
 (() => {
   const out = {};
-  const rect = e => { const r = e.getBoundingClientRect(); return [r.left + scrollX, r.top + scrollY, r.width, r.height].map(Math.round).join(','); };
-  const key = (k, shift) => document.dispatchEvent(new KeyboardEvent('keydown', {key: k, shiftKey: !!shift, bubbles: true}));
+  const rect = e => {
+    const w = e.ownerDocument.defaultView, r = e.getBoundingClientRect();
+    return [r.left + w.scrollX, r.top + w.scrollY, r.width, r.height].map(Math.round).join(',');
+  };
   function probe(p) {
+    const doc = p.root.ownerDocument;
+    const key = (k, shift) => doc.dispatchEvent(new KeyboardEvent('keydown', {key: k, shiftKey: !!shift, bubbles: true}));
     const panel = p.root.querySelector('.mark-panel');
     const rects = new Set();
     let followed = true;
@@ -177,7 +185,9 @@ const char* kProbe = R"JS(
     p.seek(p.end); look();
     out.panel = [...rects];
     out.followed = followed;
-    out.width = [document.documentElement.scrollWidth, document.documentElement.clientWidth];
+    const wide = d => [d.documentElement.scrollWidth, d.documentElement.clientWidth];
+    out.width = wide(document);
+    out.frameWidth = wide(doc);
     p.seek(0);
     key(' '); out.spacePlays = p.playing; key(' '); out.spacePauses = !p.playing;
     const base = p.end / 2;
@@ -187,15 +197,22 @@ const char* kProbe = R"JS(
     p.seek(0); key('n'); out.n = p.time; key('n'); out.n2 = p.time; key('p'); out.p = p.time;
     out.end = p.end;
   }
+  const playerIn = d => { const c = d && d.querySelector('.player'); return c && c.player; };
   const wait = () => {
-    const c = document.querySelector('.player');
-    if (!c || !c.player) { setTimeout(wait, 20); return; }
-    try { probe(c.player); } catch (e) { out.error = String(e); }
+    const frame = document.querySelector('iframe');
+    let p = playerIn(document);
+    try { p = p || playerIn(frame && frame.contentDocument); } catch (e) { out.frameError = String(e); }
+    if (!p) { setTimeout(wait, 20); return; }
+    const mirror = document.createElement('div');
+    mirror.id = 'mirror';
+    Object.assign(mirror.dataset, p.status.dataset);
+    document.body.appendChild(mirror);
+    try { probe(p); } catch (e) { out.error = String(e); }
     // A new #t= on the open page moves the player there.
-    const p = c.player, asked = Math.round(p.end * 0.25 * 1000) / 1000;
+    const asked = Math.round(p.end * 0.25 * 1000) / 1000;
     const rest = location.hash.replace(/&?t=[0-9.]+/, '');
     location.hash = (rest && rest !== '#' ? rest + '&' : '#') + 't=' + asked;
-    setTimeout(() => { out.hashAsked = asked; out.hashTime = p.time; document.body.dataset.probe = JSON.stringify(out); }, 200);
+    setTimeout(() => { out.hashAsked = asked; out.hashTime = p.time; document.body.dataset.probe = JSON.stringify(out); }, 300);
   };
   wait();
 })();
@@ -238,32 +255,43 @@ std::vector<double> eventTimesAfter(const nlohmann::json& trace, double t_s) {
 }
 
 // The page at 1280 px and at 400 px, probed: every number, diagnostic and event, the layout, the
-// keys. `hash`: what opens the run's player in it ("" for a run's own page).
-void expectAGoodPage(const GradedRun& run, const std::string& page_path, const std::string& hash = "") {
+// keys. `hash`: what opens the run's player in it ("" for a run's own page; report.html's
+// "#run=ID": its frame). Returns the DOM at 1280 px (its #mirror: the player's status as it opened).
+std::string expectAGoodPage(const GradedRun& run, const std::string& page_path, const std::string& hash = "") {
   const std::string probed = page_path + ".probed.html";
   writeProbed(page_path, probed);
+  std::string first_dom;
   for (const int width : {1280, 400}) {
     SCOPED_TRACE("at " + std::to_string(width) + " px: " + page_path);
-    const Page page = loadInChromium("file://" + probed + hash, width);
-    ASSERT_FALSE(page.dom.empty()) << page.console;
+    const Page page = loadInChromium("file://" + probed + hash, width, !hash.empty());
+    if (first_dom.empty()) first_dom = page.dom;
+    if (page.dom.empty()) ADD_FAILURE() << page.console;
     EXPECT_TRUE(consoleLines(page.console).empty()) << "a console message (an error, a blocked request):\n" << page.console;
     EXPECT_EQ(attribute(page.dom, "errors"), "0") << attribute(page.dom, "error-text");
     EXPECT_EQ(attribute(page.dom, "resources"), "0") << "the page loads nothing";
-    ASSERT_FALSE(attribute(page.dom, "breakdown-sum").empty()) << "the player was built\n" << page.dom.substr(0, 3000);
+    if (attribute(page.dom, "breakdown-sum").empty()) {
+      ADD_FAILURE() << "the player was built\n" << page.dom.substr(0, 3000);
+      continue;
+    }
     EXPECT_NEAR(std::stod(attribute(page.dom, "breakdown-sum")), run.result["mark"].get<double>(), 1e-3);
     EXPECT_EQ(page.dom.find("class=\"missed mismatch\""), std::string::npos) << "the page says its rows do not make the mark";
     for (const auto& d : aula::grade::runDiagnostics(run.result)) {
       EXPECT_NE(page.dom.find(asDomText(aula::grade::withoutPaths(d.text))), std::string::npos) << "diagnostic missing: " << d.text;
     }
     for (const auto& e : run.trace["events"]) {
+      if (!hash.empty()) break;  // in the frame: its own page, checked on its own
       EXPECT_NE(page.dom.find(asDomText(aula::grade::withoutPaths(e["text"].get<std::string>()))), std::string::npos) << e.dump();
     }
     const nlohmann::json probe = probeOf(page.dom);
-    ASSERT_TRUE(probe.is_object()) << "the probe ran";
+    if (!probe.is_object()) {
+      ADD_FAILURE() << "the probe ran";
+      continue;
+    }
     EXPECT_FALSE(probe.contains("error")) << probe.dump();
     EXPECT_EQ(probe["panel"].size(), 1u) << "the mark panel moved while playing through the events: " << probe["panel"].dump();
     EXPECT_TRUE(probe["followed"].get<bool>()) << "the event list lost the current event";
     EXPECT_LE(probe["width"][0].get<int>(), probe["width"][1].get<int>()) << "the page scrolls sideways: " << probe["width"].dump();
+    EXPECT_LE(probe["frameWidth"][0].get<int>(), probe["frameWidth"][1].get<int>()) << "the frame scrolls sideways";
     EXPECT_NEAR(probe["hashTime"].get<double>(), probe["hashAsked"].get<double>(), 1e-6) << "#t= on an open page";
     EXPECT_TRUE(probe["spacePlays"].get<bool>());
     EXPECT_TRUE(probe["spacePauses"].get<bool>());
@@ -282,6 +310,7 @@ void expectAGoodPage(const GradedRun& run, const std::string& page_path, const s
   if (hash.empty()) {
     EXPECT_EQ(readFile(page_path).find(run.dir), std::string::npos) << "the page names " << run.dir;
   }
+  return first_dom;
 }
 
 // `from_files`: the page as `aula run --report-html` makes it (writeRunPage, from the referee's
@@ -409,15 +438,16 @@ TEST(RunPage, ClassPageOpensARunLazily) {
     EXPECT_EQ(attribute(page.dom, "t-s"), "") << "no player is built before a run is opened";
     EXPECT_NE(page.dom.find("Flagged runs (0)"), std::string::npos);
   }
+  // #run=ID&t=: that run's own page in a frame, its player there; the run's page is probed in the
+  // frame, with the class page's style around it.
   const nlohmann::json& event = eventOf(run.trace, {"bump", "stuck", "mark", "end"});
   const double t_s = event["t_s"].get<double>();
-  const Page page = loadInChromium("file://" + report + "#run=dave/vacuum-seed1&t=" + urlTime(t_s));
-  EXPECT_TRUE(consoleLines(page.console).empty()) << page.console;
-  ASSERT_FALSE(attribute(page.dom, "t-s").empty()) << page.dom.substr(0, 2000);
+  const std::string dom = expectAGoodPage(run, report, "#run=dave/vacuum-seed1&t=" + urlTime(t_s));
+  ASSERT_FALSE(attribute(dom, "t-s").empty()) << dom.substr(0, 2000);
+  EXPECT_NEAR(std::stod(attribute(dom, "t-s")), t_s, 1e-3);
   const auto [x_mm, y_mm] = tracedPosition(run.trace, t_s);
-  EXPECT_NEAR(std::stod(attribute(page.dom, "robot-x-mm")), x_mm, 1.0);
-  EXPECT_NEAR(std::stod(attribute(page.dom, "robot-y-mm")), y_mm, 1.0);
-  EXPECT_NEAR(std::stod(attribute(page.dom, "breakdown-sum")), run.result["mark"].get<double>(), 1e-3);
-  // The run's page in report.html is probed too: the layout and keys hold with the class's style.
-  expectAGoodPage(run, report, "#run=dave/vacuum-seed1");
+  EXPECT_NEAR(std::stod(attribute(dom, "robot-x-mm")), x_mm, 1.0);
+  EXPECT_NEAR(std::stod(attribute(dom, "robot-y-mm")), y_mm, 1.0);
+  EXPECT_NE(dom.find("<iframe class=\"player-frame\""), std::string::npos);
+  EXPECT_LT(fs::file_size(report), 200u * 1024u) << "no run's data in the class page: each run's page has it";
 }

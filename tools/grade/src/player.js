@@ -509,7 +509,6 @@ const AulaPlayer = (() => {
     const t = /(?:^#|&)t=([0-9.]+)/.exec(location.hash), run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
     return {t: t ? Number(t[1]) : null, run: run ? decodeURIComponent(run[1]) : null};
   }
-  function hashTime() { return hashParts().t; }
   // Follows the address, now and on every change: `open(run)` gives the player (a promise), which is
   // paused at `#t=` when there is one.
   function followHash(open) {
@@ -528,5 +527,5 @@ const AulaPlayer = (() => {
   }
   // When the page had loaded, for the bench (docs/performance.md).
   window.addEventListener('load', () => { document.body.dataset.loadedMs = Math.round(performance.now()); });
-  return {openRun, hashTime, followHash, errors};
+  return {openRun, followHash, errors};
 })();

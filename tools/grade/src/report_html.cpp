@@ -111,6 +111,7 @@ h2 { border-bottom: 1px solid #ddd; padding-bottom: 4px; }
 .run button { margin: 4px 0; }
 .run.open { width: 100%; }
 .run .watch { margin-top: 6px; }
+.run iframe.player-frame { width: 100%; height: 80vh; border: 1px solid #ccc; box-sizing: border-box; }
 .run img.still { max-width: 100%; height: auto; display: block; }
 tr.flagged td.name { color: #b71c1c; }
 ul.flagged-runs { overflow-wrap: anywhere; }
@@ -145,16 +146,39 @@ function filterStudents() {
 }
 document.getElementById('filter-text').addEventListener('input', filterStudents);
 document.getElementById('filter-flagged').addEventListener('change', filterStudents);
-// A run's player, built when it is opened (its data is decoded then, not at load).
-function watch(id) {
+// A run's player: its own page (runs/<student>/<world>-seed<k>.html, beside this one) in a frame,
+// made when it is opened; at `t` (s) when given (a new #t= on an open page moves its player).
+function watch(id, t) {
   const card = document.getElementById('card-' + id);
-  if (!card || !document.getElementById('data-' + id)) return null;
+  const button = card && card.querySelector('button.open-run');
+  if (!button) return;
   card.classList.add('open');
-  return AulaPlayer.openRun('data-' + id, card.querySelector('.watch'));
+  let frame = card.querySelector('iframe');
+  if (!frame) {
+    frame = document.createElement('iframe');
+    frame.className = 'player-frame';
+    frame.title = 'the run\'s player: ' + id;
+    card.querySelector('.watch').appendChild(frame);
+  }
+  frame.src = button.dataset.page + (t !== null && t !== undefined ? '#t=' + t : '');
 }
 document.querySelectorAll('button.open-run').forEach(b => b.addEventListener('click', () => watch(b.dataset.run)));
+// A run's page in a frame says how tall it is: the frame takes that height (no scrollbar in a scrollbar).
+window.addEventListener('message', e => {
+  if (!e.data || typeof e.data.aulaPageHeight !== 'number') return;
+  document.querySelectorAll('iframe.player-frame').forEach(f => {
+    if (f.contentWindow === e.source) f.style.height = Math.min(4000, Math.ceil(e.data.aulaPageHeight) + 4) + 'px';
+  });
+});
 // #run=ID&t=SECONDS: that run's player, paused there (on load, and whenever the address changes).
-AulaPlayer.followHash(run => run ? watch(run) : null);
+function followHash() {
+  const t = /(?:^#|&)t=([0-9.]+)/.exec(location.hash), run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
+  if (run) watch(decodeURIComponent(run[1]), t ? Number(t[1]) : null);
+}
+window.addEventListener('hashchange', followHash);
+followHash();
+// When the page had loaded, for the bench (docs/performance.md).
+window.addEventListener('load', () => { document.body.dataset.loadedMs = Math.round(performance.now()); });
 )";
 
 // A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
@@ -209,7 +233,7 @@ void writeHead(std::ostringstream& html, const std::vector<StudentGrade>& grades
   }
   html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
        << "<meta name='viewport' content='width=device-width, initial-scale=1'>" << noNetworkPolicy() << "<title>Aula grades: "
-       << escapeHtml(exercise) << "</title><style>" << kStyle << playerStyle() << "</style></head><body>\n"
+       << escapeHtml(exercise) << "</title><style>" << kStyle << "</style></head><body>\n"
        << "<h1>Aula grades: " << escapeHtml(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
        << " runs, " << failed << " failed"
        << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages or forbidden system calls, refused)" : "")
@@ -296,9 +320,10 @@ void writeFlagged(std::ostringstream& html, const std::vector<nlohmann::json>& r
   html << "</ul>\n";
 }
 
-// One run's card: its mark, measures, diagnostics, its player (built when opened), a link to its
-// own page and the referee's still picture, both files beside report.html (the picture loaded when
-// the card is scrolled to, not inlined: a class's pictures would be most of the page).
+// One run's card: its mark, measures, diagnostics, its player (its own page in a frame, made when
+// opened), a link to that page and the referee's still picture, both files beside report.html
+// (the picture loaded when the card is scrolled to). Neither is inlined: a class's pictures and
+// traces would be most of the page, and each run's page has its trace already.
 void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string id = runId(r);
   const RunFiles files = runFilesOf(r);
@@ -307,12 +332,12 @@ void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string measures = measuresOf(r);
   if (!measures.empty()) html << "<div>" << escapeHtml(measures) << "</div>";
   html << diagnosticsHtml(runDiagnostics(r));
-  if (!files.trace_json.empty()) {
-    html << "<div><button type='button' class='open-run' data-run='" << escapeHtml(id) << "'>Watch the run</button></div>"
-         << runDataBlock("data-" + id, files);
+  const std::string stem = relativeStem(r);
+  if (!files.trace_json.empty() && !stem.empty()) {
+    html << "<div><button type='button' class='open-run' data-run='" << escapeHtml(id) << "' data-page='"
+         << escapeHtml(urlPath(stem + ".html")) << "'>Watch the run</button></div>";
   }
   html << "<div class='watch'></div>";
-  const std::string stem = relativeStem(r);
   if (!stem.empty()) {
     html << "<div class='files'><a href='" << escapeHtml(urlPath(stem + ".html")) << "'>its page</a></div>";
     if (!files.picture_png.empty()) {
@@ -348,7 +373,7 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
   writeFlagged(html, results);
   html << more;
   writeRuns(html, results);
-  html << "<script>" << playerScript() << kSortScript << "</script>\n</body></html>\n";
+  html << "<script>" << kSortScript << "</script>\n</body></html>\n";
   return html.str();
 }
 

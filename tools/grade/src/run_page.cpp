@@ -132,9 +132,9 @@ std::string dataUri(const std::string& mime, const std::string& bytes) {
 }
 
 std::string noNetworkPolicy() {
-  // 'self' for images: report.html's still pictures are files beside it (on a file:// page, files only).
+  // 'self' for images and frames: report.html's still pictures and run pages are files beside it.
   return "<meta http-equiv='Content-Security-Policy' content=\"default-src 'none'; script-src 'unsafe-inline'; "
-         "style-src 'unsafe-inline'; img-src data: 'self'\">";
+         "style-src 'unsafe-inline'; img-src data: 'self'; frame-src 'self'\">";
 }
 
 RunFiles runFilesOf(const nlohmann::json& result) {
@@ -150,21 +150,28 @@ RunFiles runFilesOf(const nlohmann::json& result) {
   return run;
 }
 
-// The player's style and script, player.css and player.js beside this file, compiled in
-// (tools/grade/CMakeLists.txt): everything the player draws comes from the trace (the map,
-// run-length encoded; the poses, delta-encoded mm and mrad at period_s; the exercise's state; the events).
-std::string playerStyle() { return kPlayerStyleCss; }
-std::string playerScript() { return kPlayerScriptJs; }
+namespace {
 
+// The run's data block, its id `id`: the report as it is, the trace as the referee wrote it, one
+// JSON object, deflated. The page's player (player.js, compiled in: tools/grade/CMakeLists.txt)
+// draws everything from it (the map, run-length encoded; the poses, delta-encoded mm and mrad at
+// period_s; the exercise's state; the events; the breakdown's rows).
 std::string runDataBlock(const std::string& id, const RunFiles& run) {
   if (run.trace_json.empty()) return "";
-  // The report as it is, the trace as the referee wrote it: one JSON object, deflated.
   const std::string payload = "{\"report\": " + run.report.dump() + ", \"trace\": " + run.trace_json + "}";
   QByteArray packed = qCompress(QByteArray(payload.data(), static_cast<int>(payload.size())), 9);
   packed.remove(0, 4);  // qCompress's length prefix: the rest is a zlib stream ("deflate" to a browser)
   return "<script type='application/octet-stream' id='" + escapeHtml(id) + "'>" + packed.toBase64().toStdString() +
          "</script>\n";
 }
+
+// In report.html's frame, the page tells it how tall it is (report_html.cpp's message listener).
+constexpr const char* kTellTheFrame =
+    "if (window.parent !== window && window.ResizeObserver) {\n"
+    "  new ResizeObserver(() => parent.postMessage({aulaPageHeight: document.documentElement.scrollHeight}, '*'))"
+    ".observe(document.body);\n}\n";
+
+}  // namespace
 
 std::string runPageHtml(const RunFiles& given) {
   // The student's copy: the teacher's paths cut to file names, in the text and in the data.
@@ -195,7 +202,8 @@ std::string runPageHtml(const RunFiles& given) {
   }
   html << "<script>" << kPlayerScriptJs << "</script>\n";
   if (!run.trace_json.empty()) {
-    html << "<script>\nAulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player')));\n</script>\n";
+    html << "<script>\nAulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player')));\n"
+         << kTellTheFrame << "</script>\n";
   }
   html << "</body></html>\n";
   return html.str();
