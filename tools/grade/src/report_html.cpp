@@ -177,8 +177,17 @@ function followHash() {
 }
 window.addEventListener('hashchange', followHash);
 followHash();
-// When the page had loaded, for the bench (docs/performance.md).
-window.addEventListener('load', () => { document.body.dataset.loadedMs = Math.round(performance.now()); });
+// When the page had loaded, for the bench (docs/performance.md); then the still pictures, each
+// when its card comes near the screen (not before: 450 pictures would hold the page's load).
+window.addEventListener('load', () => {
+  document.body.dataset.loadedMs = Math.round(performance.now());
+  const near = new IntersectionObserver(entries => entries.forEach(e => {
+    if (!e.isIntersecting) return;
+    e.target.src = e.target.dataset.src;
+    near.unobserve(e.target);
+  }), {rootMargin: '800px'});
+  document.querySelectorAll('img.still[data-src]').forEach(img => near.observe(img));
+});
 )";
 
 // A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
@@ -322,7 +331,7 @@ void writeFlagged(std::ostringstream& html, const std::vector<nlohmann::json>& r
 
 // One run's card: its mark, measures, diagnostics, its player (its own page in a frame, made when
 // opened), a link to that page and the referee's still picture, both files beside report.html
-// (the picture loaded when the card is scrolled to). Neither is inlined: a class's pictures and
+// (the picture loaded when its card comes near the screen, after the page's load). Neither is inlined: a class's pictures and
 // traces would be most of the page, and each run's page has its trace already.
 void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string id = runId(r);
@@ -342,8 +351,7 @@ void writeCard(std::ostringstream& html, const nlohmann::json& r) {
     html << "<div class='files'><a href='" << escapeHtml(urlPath(stem + ".html")) << "'>its page</a></div>";
     if (!files.picture_png.empty()) {
       const std::string png = escapeHtml(urlPath(stem + ".png"));
-      html << "<a href='" << png << "'><img class='still' loading='lazy' alt='the referee&#39;s picture of the run' src='" << png
-           << "'></a>";
+      html << "<a href='" << png << "'><img class='still' alt='the referee&#39;s picture of the run' data-src='" << png << "'></a>";
     }
   }
   html << "</div>\n";
