@@ -159,7 +159,7 @@ if [ "$screenshots" = "--screenshots" ] || [ "$screenshots" = "--screenshots-onl
   # An Autopark run that touches a parked car when it sets off, stopped at that contact.
   run3 Autopark autopark autopark-referee autopark.world 1 "$work/shots/p" --report="$work/alice/runs/alice/autopark-seed1.report.json" \
     --picture="$work/alice/runs/alice/autopark-seed1.png" --trace="$work/alice/runs/alice/autopark-seed1.trace.json" \
-    -- --Simulator.StartPose.car=-7,-1.0,0 >/dev/null
+    -- --Simulator.StartPose.car=-7,-1.5,0 >/dev/null
   # An Autopark run that did not park: 12 s are not enough (the page's breakdown, at its end).
   run3 Autopark autopark autopark-referee autopark.world 2 "$work/shots/q" --report="$work/alice/runs/alice/autopark-seed2.report.json" \
     --picture="$work/alice/runs/alice/autopark-seed2.png" --trace="$work/alice/runs/alice/autopark-seed2.trace.json" \
@@ -207,6 +207,18 @@ EOF
     "file://$work/alice/runs/alice/autopark-seed2.html#t=99999"
   chrome --window-size=400,1400 --virtual-time-budget=5000 --screenshot="$out/player_phone.png" \
     "file://$work/alice/runs/alice/vacuum-seed3.html#t=450"
-  chrome --window-size=1280,1100 --virtual-time-budget=8000 --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
-  echo "written: $out/{player_vacuum,player_autopark_contact,player_autopark_not_parked,player_phone,report_overview}.png: look at each"
+  # Zoomed 4x and following the robot: the player's own controls, set by a line added to a copy.
+  python3 - "$work/alice/runs/alice/vacuum-seed3.html" "$work/alice/zoom.html" <<'EOF2'
+import sys
+page = open(sys.argv[1]).read()
+end = page.rindex("</body>")
+set_zoom = ("<script>setTimeout(() => { const p = document.querySelector('.player').player; p.zoomSelect.value = 4; "
+            "p.zoomSelect.dispatchEvent(new Event('change')); p.followBox.checked = true; "
+            "p.followBox.dispatchEvent(new Event('change')); }, 300);</script>")
+open(sys.argv[2], "w").write(page[:end] + set_zoom + page[end:])
+EOF2
+  chrome --window-size=1280,760 --virtual-time-budget=5000 --screenshot="$out/player_zoom_follow.png" "file://$work/alice/zoom.html#t=450"
+  # The pictures load after the page's load: the compositor's last frame has them.
+  chrome --window-size=1280,1500 --virtual-time-budget=20000 --run-all-compositor-stages-before-draw --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
+  echo "written: $out/{player_vacuum,player_autopark_contact,player_autopark_not_parked,player_phone,player_zoom_follow,report_overview}.png: look at each"
 fi
