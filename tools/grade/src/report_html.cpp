@@ -5,8 +5,6 @@
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/run_page.hpp>
 
-#include <QByteArray>
-
 #include <array>
 #include <cctype>
 #include <cmath>
