@@ -2,13 +2,15 @@
 # The grading page's players, measured in one script run (docs/performance.md):
 #   1. the cost of the referee's --trace: full 900 s vacuum runs, with and without it, alternated;
 #   2. a trace's size (900 s vacuum; TeleTaxi; Autopark);
-#   3. a class of STUDENTS x 5 vacuum runs: report.html's size, and how long headless Chromium
-#      takes to load it (the page's own `load` time, and Chromium's whole wall time), and to open
-#      one run's player in it.
+#   3. a class of STUDENTS x 5 seeds x 3 worlds of 900 s vacuum runs (vacuum.world, house_3x2.world
+#      and a generated 4x3 house): report.html's size, and how long headless Chromium takes to
+#      load it (the page's own `load` time, and Chromium's whole wall time), and for one run's own
+#      page (what report.html shows in a frame) to open its player.
 # A run's three processes are started here as `aula run --headless` starts them (the launcher
 # does not pass --trace to the referee yet). With --screenshots it also writes the page's pictures
 # in docs/images (look at them before committing); --screenshots-only skips the measures.
-# Usage: bench/run_pages.sh BUILD_DIR [STUDENTS=30] [--screenshots|--screenshots-only]
+# --class runs section 3 alone.
+# Usage: bench/run_pages.sh BUILD_DIR [STUDENTS=30] [--screenshots|--screenshots-only|--class]
 set -euo pipefail
 build="$(cd "$1" && pwd)"; students="${2:-30}"; screenshots="${3:-}"
 src="$(cd "$(dirname "$0")/.." && pwd)"
@@ -22,6 +24,7 @@ trap 'rm -rf "$work"' EXIT
 run3() {
   local section="$1" component="$2" referee="$3" world="$4" seed="$5" stem="$6"
   shift 6
+  case "$world" in /*) ;; *) world="$worlds/$world" ;; esac  # a world of the data folder, or a path
   local cfg algorithm="${ALGORITHM:-reference}"
   case "$section" in
     Vacuum) cfg=vacuumCleaner.cfg ;; TeleTaxi) cfg=teleTaxi.cfg ;; Autopark) cfg=autopark.cfg; algorithm="${ALGORITHM:-reactive}" ;;
@@ -32,13 +35,13 @@ run3() {
   [ $# -gt 0 ] && shift && sim_args=("$@")
   local url="udpm://239.255.76.67:$((20000 + RANDOM % 20000))?ttl=0&recv_buf_size=4194304"
   local t0 cpu0; t0=$(date +%s.%N); children_cpu >"$work/cpu0"; cpu0=$(cat "$work/cpu0")
-  "$bin/aula-sim" "$worlds/$world" --lockstep --Simulator.Lockstep.WaitForClients=2 --rtf=0 --Simulator.Seed="$seed" \
+  "$bin/aula-sim" "$world" --lockstep --Simulator.Lockstep.WaitForClients=2 --rtf=0 --Simulator.Seed="$seed" \
     --lcm-url="$url" ${sim_args[@]+"${sim_args[@]}"} >"$stem.sim.txt" 2>&1 &
   local sim=$!
-  "$bin/$referee" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$worlds/$world" ${referee_args[@]+"${referee_args[@]}"} \
+  "$bin/$referee" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$world" ${referee_args[@]+"${referee_args[@]}"} \
     >"$stem.referee.txt" 2>&1 &
   local ref=$!
-  "$bin/$component" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$worlds/$world" "--$section.Autostart=true" \
+  "$bin/$component" --config="$cfg" --headless --lcm-url="$url" "--$section.World=$world" "--$section.Autostart=true" \
     "--$section.Algorithm=$algorithm" \
     >"$stem.component.txt" 2>&1 &
   local comp=$!
@@ -66,7 +69,7 @@ chrome() {
     --disable-sync --no-first-run --user-data-dir="$profile" --hide-scrollbars "$@" 2>/dev/null
 }
 
-if [ "$screenshots" != "--screenshots-only" ]; then
+if [ "$screenshots" != "--screenshots-only" ] && [ "$screenshots" != "--class" ]; then
 echo "== 1. the cost of --trace: 900 s vacuum runs (reference), seeds 1-5 twice, each without and with it, alternated"
 mkdir -p "$work/cost"
 : >"$work/cost/without"; : >"$work/cost/with"
@@ -95,33 +98,45 @@ run3 Autopark autopark autopark-referee autopark.world 1 "$work/park" --trace="$
 grep -q "mark" "$work/taxi.referee.txt" && grep -q "mark" "$work/park.referee.txt" || { echo "a run did not end with a mark"; exit 1; }
 echo "teletaxi: $(stat -c %s "$work/taxi.trace.json") bytes; autopark: $(stat -c %s "$work/park.trace.json") bytes"
 
-echo "== 3. a class of $students x 5 vacuum runs: report.html"
-# Each student's five runs are the five seeds above (report, trace, picture): the page's size and
-# load time depend on the runs' files, not on who ran them.
-for seed in 1 2 3 4 5; do
-  run3 Vacuum vacuum-cleaner vacuum-cleaner-referee vacuum.world "$seed" "$work/cost/c$seed" \
-    --report="$work/cost/c$seed.json" --picture="$work/cost/c$seed.png" >/dev/null
+fi
+
+if [ "$screenshots" != "--screenshots-only" ]; then
+echo "== 3. a class of $students x 5 seeds x 3 worlds: report.html"
+# Each student's fifteen runs are the fifteen runs made here (report, trace, picture): the page's
+# size and load time depend on the runs' files, not on who ran them.
+mkdir -p "$work/class-runs"
+python3 "$src/worlds/tools/make_house.py" --out "$work/house_g7.world" --seed 7 --rooms-x 4 --rooms-y 3 >/dev/null
+for world in vacuum house_3x2 house_g7; do
+  world_file="$world.world"; [ "$world" = house_g7 ] && world_file="$work/house_g7.world"
+  for seed in 1 2 3 4 5; do
+    stem="$work/class-runs/$world-seed$seed"
+    run3 Vacuum vacuum-cleaner vacuum-cleaner-referee "$world_file" "$seed" "$stem" \
+      --report="$stem.report.json" --picture="$stem.png" --trace="$stem.trace.json" >/dev/null
+  done
 done
 class="$work/class"
 for i in $(seq -w 1 "$students"); do
   mkdir -p "$class/runs/student$i"
-  for seed in 1 2 3 4 5; do
-    stem="$class/runs/student$i/vacuum-seed$seed"
-    python3 - "$work/cost/c$seed.json" "$stem" "student$i" <<'EOF'
+  for report in "$work"/class-runs/*.report.json; do
+    from="${report%.report.json}"; name="$(basename "$from")"
+    stem="$class/runs/student$i/$name"
+    python3 - "$report" "$stem" "student$i" "${name%-seed*}.world" <<'EOF2'
 import json, sys
 report = json.load(open(sys.argv[1]))
-report.update({"student": sys.argv[3], "log": sys.argv[2] + ".log"})
+report.update({"student": sys.argv[3], "log": sys.argv[2] + ".log", "graded_world": sys.argv[4]})
 json.dump(report, open(sys.argv[2] + ".json", "w"), indent=2)
-EOF
-    cp "$work/cost/b$seed.trace.json" "$stem.trace.json"
-    cp "$work/cost/c$seed.png" "$stem.png"
+EOF2
+    cp "$from.trace.json" "$stem.trace.json"
+    cp "$from.png" "$stem.png"
   done
 done
 t0=$(date +%s.%N)
 "$bin/aula" grade --collect "$class" >/dev/null
 t1=$(date +%s.%N)
 echo "aula grade --collect: $(echo "$t1 - $t0" | bc -l | xargs printf '%.2f') s"
-echo "report.html: $(stat -c %s "$class/report.html") bytes; a run's page: $(stat -c %s "$class/runs/student01/vacuum-seed3.html") bytes"
+echo "report.html: $(stat -c %s "$class/report.html") bytes ($(ls "$class"/runs/*/*.json | grep -vc 'trace') runs);" \
+     "a run's page: $(stat -c %s "$class/runs/student01/vacuum-seed3.html") bytes;" \
+     "the folder: $(du -sb "$class" | cut -f1) bytes"
 for n in 1 2 3; do
   t0=$(date +%s.%N)
   dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/report.html")"
@@ -129,11 +144,12 @@ for n in 1 2 3; do
   echo "load $n: the page's load event at $(grep -o 'data-loaded-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms;" \
        "Chromium's whole run (start, load, dump, quit) $(echo "$t1 - $t0" | bc -l | xargs printf '%.2f') s"
 done
-dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/report.html#run=student15/vacuum-seed3&t=450")"
-echo "opening one run's player in it: $(grep -o 'data-open-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms"
+# A run's player is its own page (report.html shows it in a frame): how long that page takes to open it.
+dom="$(chrome --virtual-time-budget=30000 --dump-dom "file://$class/runs/student15/vacuum-seed3.html#t=450")"
+echo "opening one run's player (its page): $(grep -o 'data-open-ms="[0-9]*"' <<<"$dom" | grep -o '[0-9]*') ms"
 fi
 
-if [ -n "$screenshots" ]; then
+if [ "$screenshots" = "--screenshots" ] || [ "$screenshots" = "--screenshots-only" ]; then
   echo "== screenshots in docs/images"
   out="$src/docs/images"
   mkdir -p "$work/alice/runs/alice" "$work/shots"
@@ -143,7 +159,11 @@ if [ -n "$screenshots" ]; then
   # An Autopark run that touches a parked car when it sets off, stopped at that contact.
   run3 Autopark autopark autopark-referee autopark.world 1 "$work/shots/p" --report="$work/alice/runs/alice/autopark-seed1.report.json" \
     --picture="$work/alice/runs/alice/autopark-seed1.png" --trace="$work/alice/runs/alice/autopark-seed1.trace.json" \
-    -- --Simulator.StartPose.car=-7,-1.0,0 >/dev/null
+    -- --Simulator.StartPose.car=-7,-1.5,0 >/dev/null
+  # An Autopark run that did not park: 12 s are not enough (the page's breakdown, at its end).
+  run3 Autopark autopark autopark-referee autopark.world 2 "$work/shots/q" --report="$work/alice/runs/alice/autopark-seed2.report.json" \
+    --picture="$work/alice/runs/alice/autopark-seed2.png" --trace="$work/alice/runs/alice/autopark-seed2.trace.json" \
+    --Autopark.Referee.Timeout=12 >/dev/null
   # A small class whose marks differ: six students, two seeds, each student's episode shorter or
   # longer (the reference as everyone's algorithm; the overview's histograms and spreads are real).
   i=0
@@ -183,6 +203,22 @@ EOF
     "file://$work/alice/runs/alice/vacuum-seed3.html#t=450"
   chrome --window-size=1280,620 --virtual-time-budget=5000 --screenshot="$out/player_autopark_contact.png" \
     "file://$work/alice/runs/alice/autopark-seed1.html#t=$contact"
-  chrome --window-size=1280,1100 --virtual-time-budget=8000 --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
-  echo "written: $out/{player_vacuum,player_autopark_contact,report_overview}.png: look at each"
+  chrome --window-size=1280,760 --virtual-time-budget=5000 --screenshot="$out/player_autopark_not_parked.png" \
+    "file://$work/alice/runs/alice/autopark-seed2.html#t=99999"
+  chrome --window-size=400,1400 --virtual-time-budget=5000 --screenshot="$out/player_phone.png" \
+    "file://$work/alice/runs/alice/vacuum-seed3.html#t=450"
+  # Zoomed 4x and following the robot: the player's own controls, set by a line added to a copy.
+  python3 - "$work/alice/runs/alice/vacuum-seed3.html" "$work/alice/zoom.html" <<'EOF2'
+import sys
+page = open(sys.argv[1]).read()
+end = page.rindex("</body>")
+set_zoom = ("<script>setTimeout(() => { const p = document.querySelector('.player').player; p.zoomSelect.value = 4; "
+            "p.zoomSelect.dispatchEvent(new Event('change')); p.followBox.checked = true; "
+            "p.followBox.dispatchEvent(new Event('change')); }, 300);</script>")
+open(sys.argv[2], "w").write(page[:end] + set_zoom + page[end:])
+EOF2
+  chrome --window-size=1280,760 --virtual-time-budget=5000 --screenshot="$out/player_zoom_follow.png" "file://$work/alice/zoom.html#t=450"
+  # The pictures load after the page's load: the compositor's last frame has them.
+  chrome --window-size=1280,1500 --virtual-time-budget=20000 --run-all-compositor-stages-before-draw --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
+  echo "written: $out/{player_vacuum,player_autopark_contact,player_autopark_not_parked,player_phone,player_zoom_follow,report_overview}.png: look at each"
 fi

@@ -149,18 +149,20 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
             std::string::npos)
       << thrower2;
 
-  // The teacher's page: every student in the table, the referee's picture of each run that ran,
-  // and each run's log (--record).
+  // The teacher's page: every student in the table, a link to the referee's picture of each run
+  // that ran (the file beside it, not inlined), and each run's log (--record).
   const std::string html = readFile((out / "report.html").string());
   for (const char* student : {"good", "lazy", "broken", "thrower"}) {
     EXPECT_NE(html.find(std::string("<td class='name'><a href='#") + student + "'>"), std::string::npos) << student;
   }
   size_t pictures = 0;
-  for (size_t at = html.find("src='data:image/png;base64,"); at != std::string::npos;
-       at = html.find("src='data:image/png;base64,", at + 1)) {
+  for (size_t at = html.find("<img class='still' alt="); at != std::string::npos;
+       at = html.find("<img class='still' alt=", at + 1)) {
     ++pictures;
   }
   EXPECT_EQ(pictures, 6u) << "one picture per run that ran (the broken submission never ran)";
+  EXPECT_NE(html.find("data-src='runs/good/vacuum-seed1.png'>"), std::string::npos) << "a file beside report.html";
+  EXPECT_EQ(html.find("data:image/png"), std::string::npos) << "no picture inlined in the class's page";
   EXPECT_NE(html.find("the referee's rubric: default"), std::string::npos) << "the preset the reports name";
   EXPECT_NE(html.find("<th>coverage_percent</th>"), std::string::npos);
   EXPECT_NE(html.find("<div>coverage_percent "), std::string::npos) << "each run's raw measure";

@@ -119,6 +119,60 @@ std::string markFormula(const ParkingScores& s, ParkingCase c, double contact_co
   return text;
 }
 
+std::string distancesText(const ParkingMeasures& m, ParkingCase c, const ParkingRefereeSettings& s) {
+  char text[200];
+  if (!s.thesis_scale && c != ParkingCase::Parked) {
+    std::snprintf(text, sizeof text, "not graded: not parked (gaps front %.2f m, rear %.2f m, curb %.2f m)", m.front_gap_m,
+                  m.rear_gap_m, m.curb_gap_m);
+  } else if (!m.inside_slot) {
+    std::snprintf(text, sizeof text, "not graded: not inside the slot");
+  } else {
+    std::snprintf(text, sizeof text, "front %.2f m (%.0f), rear %.2f m (%.0f), curb %.2f m (%.0f) of 100 each; a centred car: %.2f m",
+                  m.front_gap_m, gapScore(m.front_gap_m, m.ideal_gap_m, s), m.rear_gap_m, gapScore(m.rear_gap_m, m.ideal_gap_m, s),
+                  m.curb_gap_m, curbScore(m.curb_gap_m, s), m.ideal_gap_m);
+  }
+  return text;
+}
+
+std::vector<referee::MarkTerm> parkingMarkTerms(const ParkingMeasures& m, ParkingCase c, double park_time_s,
+                                                const ParkingContacts& contacts, const ParkingRefereeSettings& s) {
+  const ParkingScores scores = scoreParking(m, c, park_time_s, contacts, s);
+  const bool parked = c == ParkingCase::Parked;
+  const bool graded = s.thesis_scale || parked;
+  char angle[96], time[96], contact_text[160];
+  if (!graded) {
+    std::snprintf(angle, sizeof angle, "not graded: not parked (%.1f deg to the curb)", m.yaw_error_deg);
+  } else if (!m.inside_slot) {
+    std::snprintf(angle, sizeof angle, "not graded: not inside the slot (%.1f deg to the curb)", m.yaw_error_deg);
+  } else {
+    std::snprintf(angle, sizeof angle, "%.1f deg to the curb", m.yaw_error_deg);
+  }
+  std::snprintf(time, sizeof time, "%s in %.1f s (full under %.4g s)", parked ? "parked" : "not parked", park_time_s, s.full_time_s);
+  std::snprintf(contact_text, sizeof contact_text, "%lld collision(s), %.1f s in contact, %.1f mm deep", contacts.count,
+                contacts.duration_s, 1e3 * contacts.depth_m);
+  std::vector<referee::MarkTerm> rows = {{"angle", angle, 0.025 * scores.angle, 2.5},
+                                         {"time", time, 0.025 * scores.time, 2.5},
+                                         {"distances", distancesText(m, c, s), 0.025 * scores.distance, 2.5}};
+  if (s.thesis_scale) {
+    rows.push_back({"collisions", std::string(contact_text) + (contacts.count ? ": the term is lost" : ""), 0.025 * scores.collision, 2.5});
+    return rows;
+  }
+  char rule[160];
+  if (parked) {
+    std::snprintf(rule, sizeof rule, "parked in the slot");
+  } else {
+    std::snprintf(rule, sizeof rule, "%s: the rubric gives %.2f, whatever the terms", caseText(c).c_str(), s.not_parked_mark);
+  }
+  rows.push_back({"parked", rule, parked ? 2.5 : s.not_parked_mark, 2.5});
+  const double cost = contactCost(contacts, s);
+  char factor[224];
+  std::snprintf(factor, sizeof factor, "%s: the mark x (1 - cost %.2f)", contact_text, cost);
+  referee::MarkTerm keep{"contacts", factor};
+  keep.factor = 1.0 - cost;
+  rows.push_back(keep);
+  return rows;
+}
+
 ParkingScores scoreParking(const ParkingMeasures& m, ParkingCase c, double park_time_s, const ParkingContacts& contacts,
                            const ParkingRefereeSettings& s) {
   ParkingScores out;

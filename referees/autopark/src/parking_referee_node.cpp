@@ -61,6 +61,15 @@ std::string touched(const world::WorldSpec& world, const ParkingScene& scene, do
   return name;
 }
 
+// What a contact costs, by the rubric's scale (the breakdown's "contacts" row has the total).
+std::string contactEffect(long long before, const ParkingRefereeSettings& s) {
+  if (s.thesis_scale) return before == 0 ? "the collision term's 2.5 points are lost" : "already lost: no more points off";
+  char text[160];
+  std::snprintf(text, sizeof text, "costs %.0f %% of the mark, and %.0f %% more a second in contact, %.0f %% a cm deep",
+                100 * s.contact_share, 100 * s.contact_share_per_s, 100 * s.contact_share_per_cm);
+  return text;
+}
+
 }  // namespace
 
 void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
@@ -75,8 +84,8 @@ void ParkingRefereeNode::onContact(int64_t utime, bool pressed) {
   if (referee_->collisions() > before) {
     char text[128];
     std::snprintf(text, sizeof text, "collision %lld: touching %s", referee_->collisions(), touched(world_, scene_, referee_->x(), referee_->y(), referee_->yawRad()).c_str());
-    trace().addEvent(utime, "contact", text, before == 0 ? "the collision term's 2.5 points are lost" : "already lost: no more points off");
-    if (before == 0) trace().events().back().points = -2.5;
+    trace().addEvent(utime, "contact", text, contactEffect(before, referee_->settings()));
+    if (before == 0 && referee_->settings().thesis_scale) trace().events().back().points = -2.5;
     open_contact_ = static_cast<long>(trace().events().size()) - 1;
     // Say where, so a student can see which part of the manoeuvre touched something.
     std::fprintf(stderr, "autopark-referee [%.2f s]: collision %lld, car at x %.2f y %.2f yaw %.1f deg\n",
@@ -112,30 +121,26 @@ void ParkingRefereeNode::traceEnd(int64_t utime) {
     e.duration_s = std::max(0.0, trace().timeS(utime) - e.t_s);
     open_contact_ = -1;
   }
-  char text[160], effect[96];
-  std::snprintf(text, sizeof text, "%s after %.1f s", r.parked() ? "parked" : "time's up, not parked", r.elapsedS());
-  std::snprintf(effect, sizeof effect, "time: %.1f of 2.5 points", 0.025 * s.time);
-  // At the moment the clock stopped (the car at rest in the slot), not when the referee was sure.
-  referee::TraceEvent& end = trace().addEvent(utime, r.parked() ? "parked" : "end", text, effect);
-  end.points = 0.025 * s.time;
-  end.t_s = r.elapsedS();
-  auto term = [&](const char* kind, const std::string& what, double score) {
-    std::snprintf(effect, sizeof effect, "%.3g of %s points", 0.025 * score, kind);
-    referee::TraceEvent& e = trace().addEvent(utime, "measure", what, effect);
-    e.points = 0.025 * score;
+  // The end, then each row of the mark (the breakdown's), at the moment the clock stopped (the car
+  // at rest in the slot), not when the referee was sure.
+  const auto rows = parkingMarkTerms(m, r.parkingCase(), r.elapsedS(), r.contacts(), r.settings());
+  char text[200];
+  std::snprintf(text, sizeof text, "%s after %.1f s", caseText(r.parkingCase()).c_str(), r.elapsedS());
+  trace().addEvent(utime, r.parked() ? "parked" : "end", text, "").t_s = r.elapsedS();
+  for (const referee::MarkTerm& row : rows) {
+    char effect[96];
+    if (row.factor >= 0) {
+      std::snprintf(effect, sizeof effect, "the mark x %.2f", row.factor);
+    } else {
+      std::snprintf(effect, sizeof effect, "%.2f of %.3g points", row.points, row.of);
+    }
+    referee::TraceEvent& e = trace().addEvent(utime, "measure", row.term + ": " + row.measure, effect);
+    if (row.factor < 0) e.points = row.points;
     e.t_s = r.elapsedS();  // graded where the car stopped
-  };
-  std::snprintf(text, sizeof text, "angle to the curb %.1f deg", m.yaw_error_deg);
-  term("2.5", text, s.angle);
-  if (m.inside_slot) {
-    std::snprintf(text, sizeof text, "gaps: front %.2f m (%.0f), rear %.2f m (%.0f), curb %.2f m (%.0f) of 100 each; a centred car: %.2f m",
-                  m.front_gap_m, gapScore(m.front_gap_m, m.ideal_gap_m, r.settings()), m.rear_gap_m,
-                  gapScore(m.rear_gap_m, m.ideal_gap_m, r.settings()), m.curb_gap_m, curbScore(m.curb_gap_m, r.settings()),
-                  m.ideal_gap_m);
-  } else {
-    std::snprintf(text, sizeof text, "not inside the slot: no gap is graded");
   }
-  term("2.5", text, s.distance);
+  std::snprintf(text, sizeof text, "the mark: %s = %.2f", markFormula(s, r.parkingCase(), contactCost(r.contacts(), r.settings()),
+                r.settings()).c_str(), s.mark);
+  trace().addEvent(utime, "mark", text, "").t_s = r.elapsedS();
   trace().stop();
 }
 
@@ -252,25 +257,12 @@ void ParkingRefereeNode::addTrace(referee::Report& out) const {
   state.set("parked", r.parked());
   state.set("inside_slot", m.inside_slot);
   state.set("gaps_m", std::vector<double>{m.front_gap_m, m.rear_gap_m, m.curb_gap_m});
-  state.set("gap_scores", std::vector<double>{gapScore(m.front_gap_m, m.ideal_gap_m, r.settings()),
-                                             gapScore(m.rear_gap_m, m.ideal_gap_m, r.settings()),
-                                             curbScore(m.curb_gap_m, r.settings())});
   state.set("ideal_gap_m", m.ideal_gap_m);
   state.set("yaw_error_deg", m.yaw_error_deg);
   state.set("collisions", r.collisions());
   state.set("contact_time_s", r.contactS());
   out.set("state", state);
-  const ParkingScores s = r.scores();
-  char angle[64], time[64], gaps[96], contacts[64];
-  std::snprintf(angle, sizeof angle, "%.1f deg to the curb", m.yaw_error_deg);
-  std::snprintf(time, sizeof time, "%s in %.1f s (full under %.4g s)", r.parked() ? "parked" : "not parked", r.elapsedS(),
-                r.settings().full_time_s);
-  std::snprintf(gaps, sizeof gaps, "front %.2f m, rear %.2f m, curb %.2f m", m.front_gap_m, m.rear_gap_m, m.curb_gap_m);
-  std::snprintf(contacts, sizeof contacts, "%lld collision(s), %.1f s in contact", r.collisions(), r.contactS());
-  out.setJson("breakdown", referee::breakdownJson({{"angle", angle, 0.025 * s.angle, 2.5},
-                                                   {"time", time, 0.025 * s.time, 2.5},
-                                                   {"distances", gaps, 0.025 * s.distance, 2.5},
-                                                   {"collisions", contacts, 0.025 * s.collision, 2.5}}));
+  out.setJson("breakdown", referee::breakdownJson(parkingMarkTerms(m, r.parkingCase(), r.elapsedS(), r.contacts(), r.settings())));
 }
 
 }  // namespace aula::autopark

@@ -70,10 +70,12 @@ void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string&
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
     end_.reset();
+    non_finite_event_ = -1;
     startNewEpisode(msg->utime);
   }
   onEpisode(*msg);
   if (!had_fault && !outcome_.fault().empty()) traceFault(msg->utime);
+  traceNonFinite(msg->utime);
   announce(msg->utime);
 }
 
@@ -102,6 +104,13 @@ std::string RefereeNode::clockText(double elapsed_s) const {
 void RefereeNode::traceFault(int64_t utime) {
   trace_.addEvent(utime, "fault", "the student's algorithm failed: " + outcome_.fault(),
                   "grading stops here: the mark is what was earned so far");
+}
+
+void RefereeNode::traceNonFinite(int64_t utime) {
+  if (non_finite_event_ >= 0 || outcome_.nonFiniteCommands() <= 0 || !trace_.started()) return;
+  trace_.addEvent(utime, "non-finite", "a motor command that is not a finite number (NaN or infinite)",
+                  "refused: the robot was sent 0 instead; no points off, but the robot does not move");
+  non_finite_event_ = static_cast<long>(trace_.events().size()) - 1;
 }
 
 void RefereeNode::algorithmFailed(const std::string& fault) {
@@ -176,6 +185,10 @@ std::string RefereeNode::traceJson() const {
   out.set("sim_time_s", gradedTimeS());
   addTrace(out);
   RunTrace whole = trace_;
+  if (non_finite_event_ >= 0 && non_finite_event_ < static_cast<long>(whole.events().size())) {
+    whole.events()[non_finite_event_].text = "motor commands that are not finite numbers (NaN or infinite) from here: " +
+                                             std::to_string(outcome_.nonFiniteCommands()) + " in all";
+  }
   // What the gate refused or lost, known at the end: flagged at the end.
   const int64_t end_utime = clock_->simTimeUs();
   for (const auto& [channel, count] : outcome_.truth().tampering()) {

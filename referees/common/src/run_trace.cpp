@@ -151,10 +151,17 @@ std::string breakdownJson(const std::vector<MarkTerm>& terms) {
   std::string out = "[";
   for (size_t i = 0; i < terms.size(); ++i) {
     const MarkTerm& t = terms[i];
-    out += (i ? ",\n " : "\n ") + std::string("{\"term\": ") + jsonString(t.term) + ", \"measure\": " + jsonString(t.measure) +
-           ", \"points\": " + formatNumber(t.points) + ", \"of\": " + formatNumber(t.of) + "}";
+    out += (i ? ",\n " : "\n ") + std::string("{\"term\": ") + jsonString(t.term) + ", \"measure\": " + jsonString(t.measure);
+    out += t.factor >= 0 ? ", \"factor\": " + formatNumber(t.factor) + "}"
+                         : ", \"points\": " + formatNumber(t.points) + ", \"of\": " + formatNumber(t.of) + "}";
   }
   return out + (terms.empty() ? "]" : "\n]");
+}
+
+double breakdownTotal(const std::vector<MarkTerm>& terms) {
+  double total = 0;
+  for (const MarkTerm& t : terms) total = t.factor >= 0 ? total * t.factor : total + t.points;
+  return total;
 }
 
 }  // namespace aula::referee

@@ -194,3 +194,36 @@ TEST(ParkingReferee, TurningOnTheSpotIsNotStandingStill) {
   }
   EXPECT_FALSE(r.finished());
 }
+
+// The player's breakdown rows (parkingMarkTerms), read top to bottom, make scoreParking's mark in
+// every case, on both scales, with and without contacts: the not-parked rule and the contacts'
+// factor are rows of their own, so no page recomputes the rubric.
+TEST(ParkingScores, TheBreakdownsTotalIsTheMark) {
+  const ParkingContacts none, one{1, 0.4, 0.003}, many{4, 6.0, 0.02};
+  for (const bool thesis : {false, true}) {
+    ParkingRefereeSettings s;
+    s.thesis_scale = thesis;
+    for (const double x : {7.25, 6.05, 20.0}) {  // centred, off centre, outside the slot
+      const ParkingMeasures m = measureParking(handScene(), x, -3, 10 * kDeg);
+      for (const ParkingCase c : {ParkingCase::Parked, ParkingCase::ParkedElsewhere, ParkingCase::DroveOff,
+                                  ParkingCase::StayedStill, ParkingCase::GaveUp}) {
+        for (const ParkingContacts& contacts : {none, one, many}) {
+          const double mark = scoreParking(m, c, 120, contacts, s).mark;
+          const auto rows = parkingMarkTerms(m, c, 120, contacts, s);
+          EXPECT_NEAR(aula::referee::breakdownTotal(rows), mark, 1e-9)
+              << "thesis " << thesis << ", x " << x << ", case " << caseName(c) << ", contacts " << contacts.count;
+        }
+      }
+    }
+  }
+  // Not parked on the default scale: the rule's row says so and carries the mark; the terms are 0.
+  ParkingRefereeSettings s;
+  const auto rows = parkingMarkTerms(measureParking(handScene(), 7.25, -3, 0), ParkingCase::StayedStill, 300, none, s);
+  ASSERT_EQ(rows.size(), 5u);
+  EXPECT_EQ(rows[3].term, "parked");
+  EXPECT_DOUBLE_EQ(rows[3].points, s.not_parked_mark);
+  EXPECT_NE(rows[3].measure.find("NOT parked"), std::string::npos) << rows[3].measure;
+  EXPECT_NE(rows[2].measure.find("not graded: not parked"), std::string::npos) << rows[2].measure;
+  EXPECT_DOUBLE_EQ(rows[2].points, 0.0);
+  EXPECT_DOUBLE_EQ(rows[4].factor, 1.0);
+}

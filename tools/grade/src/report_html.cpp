@@ -5,9 +5,8 @@
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/run_page.hpp>
 
-#include <QByteArray>
-
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -91,24 +90,30 @@ std::string histogramSvg(const std::vector<double>& marks, const std::string& wh
 }
 
 constexpr const char* kStyle = R"(
-body { font-family: sans-serif; margin: 24px; color: #222; }
-table { border-collapse: collapse; margin: 12px 0; }
-th, td { border: 1px solid #ccc; padding: 4px 8px; text-align: right; }
-th { background: #eef2f8; cursor: pointer; user-select: none; }
-th:after { content: ' \2195'; color: #999; }
+body { font-family: sans-serif; margin: 16px; color: #222; }
+table.sortable { border-collapse: collapse; margin: 12px 0; }
+table.sortable th, table.sortable td { border: 1px solid #ccc; padding: 4px 8px; text-align: right; }
+table.sortable th { background: #eef2f8; cursor: pointer; user-select: none; }
+table.sortable th:after { content: ' \2195'; color: #999; }
+.table-box { overflow-x: auto; max-width: 100%; }
 td.name, td.why { text-align: left; }
-td.why { color: #b71c1c; max-width: 520px; }
+td.why { color: #b71c1c; max-width: 520px; overflow-wrap: anywhere; }
 .runs { display: flex; flex-wrap: wrap; gap: 10px; }
-.run { border: 1px solid #ccc; padding: 6px; width: 320px; font-size: 13px; }
-.run img { width: 100%; image-rendering: auto; }
-.run .failed { color: #b71c1c; }
+.run { border: 1px solid #ccc; padding: 6px; width: 320px; max-width: 100%; box-sizing: border-box; font-size: 13px; overflow-wrap: anywhere; }
+.run .failed, .run ul.diagnostics { color: #b71c1c; }
+.run ul.diagnostics { margin: 4px 0; padding-left: 18px; }
 h2 { border-bottom: 1px solid #ddd; padding-bottom: 4px; }
 .worlds { display: flex; flex-wrap: wrap; gap: 16px; }
+.worlds svg { max-width: 100%; height: auto; }
 .filter { margin: 8px 0; }
 .run button { margin: 4px 0; }
 .run.open { width: 100%; }
 .run .watch { margin-top: 6px; }
+.run iframe.player-frame { width: 100%; height: 80vh; border: 1px solid #ccc; box-sizing: border-box; }
+.run img.still { max-width: 100%; height: auto; display: block; }
 tr.flagged td.name { color: #b71c1c; }
+ul.flagged-runs { overflow-wrap: anywhere; }
+details.pair pre { overflow-x: auto; max-width: 100%; }
 )";
 
 // Click a header to sort by it (numbers as numbers); again to reverse.
@@ -139,18 +144,48 @@ function filterStudents() {
 }
 document.getElementById('filter-text').addEventListener('input', filterStudents);
 document.getElementById('filter-flagged').addEventListener('change', filterStudents);
-// A run's player, built when it is opened (its data is decoded then, not at load).
-function watch(id) {
+// A run's player: its own page (runs/<student>/<world>-seed<k>.html, beside this one) in a frame,
+// made when it is opened; at `t` (s) when given (a new #t= on an open page moves its player).
+function watch(id, t) {
   const card = document.getElementById('card-' + id);
+  const button = card && card.querySelector('button.open-run');
+  if (!button) return;
   card.classList.add('open');
-  return AulaPlayer.openRun('data-' + id, card.querySelector('.watch'));
+  let frame = card.querySelector('iframe');
+  if (!frame) {
+    frame = document.createElement('iframe');
+    frame.className = 'player-frame';
+    frame.title = 'the run\'s player: ' + id;
+    card.querySelector('.watch').appendChild(frame);
+  }
+  frame.src = button.dataset.page + (t !== null && t !== undefined ? '#t=' + t : '');
 }
 document.querySelectorAll('button.open-run').forEach(b => b.addEventListener('click', () => watch(b.dataset.run)));
-// #run=ID&t=SECONDS: that run's player, paused there.
-{
-  const m = /run=([^&]+)/.exec(location.hash);
-  if (m) watch(decodeURIComponent(m[1])).then(p => { const t = AulaPlayer.hashTime(); if (t !== null) p.seek(t); });
+// A run's page in a frame says how tall it is: the frame takes that height (no scrollbar in a scrollbar).
+window.addEventListener('message', e => {
+  if (!e.data || typeof e.data.aulaPageHeight !== 'number') return;
+  document.querySelectorAll('iframe.player-frame').forEach(f => {
+    if (f.contentWindow === e.source) f.style.height = Math.min(4000, Math.ceil(e.data.aulaPageHeight) + 4) + 'px';
+  });
+});
+// #run=ID&t=SECONDS: that run's player, paused there (on load, and whenever the address changes).
+function followHash() {
+  const t = /(?:^#|&)t=([0-9.]+)/.exec(location.hash), run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
+  if (run) watch(decodeURIComponent(run[1]), t ? Number(t[1]) : null);
 }
+window.addEventListener('hashchange', followHash);
+followHash();
+// When the page had loaded, for the bench (docs/performance.md); then the still pictures, each
+// when its card comes near the screen (not before: 450 pictures would hold the page's load).
+window.addEventListener('load', () => {
+  document.body.dataset.loadedMs = Math.round(performance.now());
+  const near = new IntersectionObserver(entries => entries.forEach(e => {
+    if (!e.isIntersecting) return;
+    e.target.src = e.target.dataset.src;
+    near.unobserve(e.target);
+  }), {rootMargin: '800px'});
+  document.querySelectorAll('img.still[data-src]').forEach(img => near.observe(img));
+});
 )";
 
 // A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
@@ -159,7 +194,33 @@ std::string runId(const nlohmann::json& r) {
          std::to_string(r.value("seed", 0LL));
 }
 
-bool flagged(const nlohmann::json& r) { return !failureOf(r).empty() || !tamperingOf(r).empty(); }
+// Flagged: anything the report says went wrong or was refused (runDiagnostics), not only a failure.
+bool flagged(const nlohmann::json& r) { return !runDiagnostics(r).empty(); }
+
+// The run's files beside report.html (the layout collect writes: runs/<student>/<world>-seed<k>.*),
+// relative to it: "runs/alice/vacuum-seed1" for a result whose log is ".../runs/alice/vacuum-seed1.log".
+std::string relativeStem(const nlohmann::json& r) {
+  if (!r.contains("log") || !r["log"].is_string()) return "";
+  fs::path log = r["log"].get<std::string>();
+  log.replace_extension();
+  return "runs/" + log.parent_path().filename().string() + "/" + log.filename().string();
+}
+
+// "%2F" for '/', and so on: a relative link whose names came from the students' folders.
+std::string urlPath(const std::string& path) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || std::string("/-_.~").find(static_cast<char>(c)) != std::string::npos) {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -170,16 +231,20 @@ void writeHead(std::ostringstream& html, const std::vector<StudentGrade>& grades
   std::string exercise;  // from any referee's report (a run that never started has none)
   int failed = 0;
   int tampered = 0;
+  int diagnosed = 0;
   for (const auto& r : results) {
+    diagnosed += flagged(r) ? 1 : 0;
     if (exercise.empty()) exercise = r.value("exercise", "");
     failed += failureOf(r).empty() ? 0 : 1;
     tampered += tamperingOf(r).empty() ? 0 : 1;
   }
-  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>" << noNetworkPolicy() << "<title>Aula grades: "
-       << escapeHtml(exercise) << "</title><style>" << kStyle << playerStyle() << "</style></head><body>\n"
+  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
+       << "<meta name='viewport' content='width=device-width, initial-scale=1'>" << noNetworkPolicy() << "<title>Aula grades: "
+       << escapeHtml(exercise) << "</title><style>" << kStyle << "</style></head><body>\n"
        << "<h1>Aula grades: " << escapeHtml(exercise) << "</h1>\n<p>" << grades.size() << " students, " << results.size()
        << " runs, " << failed << " failed"
        << (tampered > 0 ? ", " + std::to_string(tampered) + " with tampering (forged messages or forbidden system calls, refused)" : "")
+       << ", " << diagnosed << " flagged (any diagnostic: a failure, non-finite commands, tampering, lost messages...)"
        << ". The mark of a student is the median over every world and seed"
        << (presetsOf(results).empty() ? std::string() : "; the referee's rubric: " + escapeHtml(presetsOf(results)))
        << ". Beside it, the median of each raw measure. Open a run to watch it and see where its points went.</p>\n";
@@ -207,18 +272,33 @@ void writeOverview(std::ostringstream& html, const std::vector<StudentGrade>& gr
   html << "</div>\n";
 }
 
+// Each student's runs' diagnostic kinds ("failed, non-finite commands"): the table's flags.
+std::map<std::string, std::string> flagsByStudent(const std::vector<nlohmann::json>& results) {
+  std::map<std::string, std::set<std::string>> kinds;
+  for (const auto& r : results) {
+    for (const Diagnostic& d : runDiagnostics(r)) kinds[r.value("student", std::string("?"))].insert(d.kind);
+  }
+  std::map<std::string, std::string> out;
+  for (const auto& [student, set] : kinds) {
+    for (const std::string& kind : set) out[student] += (out[student].empty() ? "" : ", ") + kind;
+  }
+  return out;
+}
+
 // The students' table, sortable and filtered in the page.
-void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& grades) {
+void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {
+  const auto flags = flagsByStudent(results);
   html << "<div class='filter'><label>student <input id='filter-text' type='search' placeholder='name'></label> "
-       << "<label><input id='filter-flagged' type='checkbox'> flagged only (failed or tampered)</label></div>\n"
-       << "<table class='sortable students'><thead><tr><th>student</th><th>median</th><th>spread</th><th>min</th><th>max</th>";
+       << "<label><input id='filter-flagged' type='checkbox'> flagged only (failed, tampered, or any other diagnostic)</label></div>\n"
+       << "<div class='table-box'><table class='sortable students'><thead><tr><th>student</th><th>median</th><th>spread</th><th>min</th><th>max</th>";
   if (!grades.empty()) {
     for (const auto& [world, value] : grades.front().world_medians) html << "<th>" << escapeHtml(world) << "</th>";
     for (const auto& [measure, value] : grades.front().measure_medians) html << "<th>" << escapeHtml(measure) << "</th>";
   }
-  html << "<th>language</th><th>runs</th><th>failed</th><th>tampered</th><th>why</th></tr></thead><tbody>\n";
+  html << "<th>language</th><th>runs</th><th>failed</th><th>tampered</th><th>flags</th><th>why</th></tr></thead><tbody>\n";
   for (const auto& g : grades) {
-    const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0;
+    const auto flag = flags.find(g.student);
+    const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0 || flag != flags.end();
     html << "<tr data-student='" << escapeHtml(g.student) << "'" << (is_flagged ? " class='flagged'" : "")
          << "><td class='name'><a href='#" << escapeHtml(g.student) << "'>" << escapeHtml(g.student) << "</a></td><td>"
          << twoDecimals(g.median) << "</td><td>" << twoDecimals(g.max - g.min) << "</td><td>" << twoDecimals(g.min) << "</td><td>"
@@ -226,9 +306,10 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
     for (const auto& [world, value] : g.world_medians) html << "<td>" << twoDecimals(value) << "</td>";
     for (const auto& [measure, value] : g.measure_medians) html << "<td>" << twoDecimals(value) << "</td>";
     html << "<td>" << escapeHtml(g.language) << "</td><td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
-         << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
+         << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(flag == flags.end() ? "" : flag->second)
+         << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
   }
-  html << "</tbody></table>\n";
+  html << "</tbody></table></div>\n";
 }
 
 // The flagged runs, each a link to its card.
@@ -239,31 +320,37 @@ void writeFlagged(std::ostringstream& html, const std::vector<nlohmann::json>& r
   }
   html << "<h3>Flagged runs (" << flagged_runs.size() << ")</h3>\n<ul class='flagged-runs'>";
   for (const nlohmann::json* r : flagged_runs) {
-    const std::string reason = failureOf(*r).empty() ? tamperingOf(*r) : failureOf(*r);
+    std::string reason;
+    for (const Diagnostic& d : runDiagnostics(*r)) reason += (reason.empty() ? "" : "; ") + d.text;
     html << "<li><a href='#card-" << escapeHtml(runId(*r)) << "'>" << escapeHtml(runId(*r)) << "</a>: " << escapeHtml(reason) << "</li>";
   }
   html << "</ul>\n";
 }
 
-// One run's card: its mark, measures, failure, forgeries, its player (built when opened) and picture.
+// One run's card: its mark, measures, diagnostics, its player (its own page in a frame, made when
+// opened), a link to that page and the referee's still picture, both files beside report.html
+// (the picture loaded when its card comes near the screen, after the page's load). Neither is inlined: a class's pictures and
+// traces would be most of the page, and each run's page has its trace already.
 void writeCard(std::ostringstream& html, const nlohmann::json& r) {
   const std::string id = runId(r);
   const RunFiles files = runFilesOf(r);
-  const std::string failure = failureOf(r);
   html << "<div class='run' id='card-" << escapeHtml(id) << "'><b>" << escapeHtml(gradedWorldOf(r))
        << ", seed " << r.value("seed", 0LL) << ": " << twoDecimals(r.value("mark", 0.0)) << "</b>";
   const std::string measures = measuresOf(r);
   if (!measures.empty()) html << "<div>" << escapeHtml(measures) << "</div>";
-  if (!failure.empty()) html << "<div class='failed'>" << escapeHtml(failure) << "</div>";
-  const std::string tampering = tamperingOf(r);
-  if (!tampering.empty()) html << "<div class='failed'>" << escapeHtml(tampering) << "</div>";
-  if (!files.trace_json.empty()) {
-    html << "<div><button type='button' class='open-run' data-run='" << escapeHtml(id) << "'>Watch the run</button></div>"
-         << runDataBlock("data-" + id, files);
+  html << diagnosticsHtml(runDiagnostics(r));
+  const std::string stem = relativeStem(r);
+  if (!files.trace_json.empty() && !stem.empty()) {
+    html << "<div><button type='button' class='open-run' data-run='" << escapeHtml(id) << "' data-page='"
+         << escapeHtml(urlPath(stem + ".html")) << "'>Watch the run</button></div>";
   }
   html << "<div class='watch'></div>";
-  if (!files.picture_png.empty()) {
-    html << "<img alt='the referee&apos;s picture of the run' src='" << dataUri("image/png", files.picture_png) << "'>";
+  if (!stem.empty()) {
+    html << "<div class='files'><a href='" << escapeHtml(urlPath(stem + ".html")) << "'>its page</a></div>";
+    if (!files.picture_png.empty()) {
+      const std::string png = escapeHtml(urlPath(stem + ".png"));
+      html << "<a href='" << png << "'><img class='still' alt='the referee&#39;s picture of the run' data-src='" << png << "'></a>";
+    }
   }
   html << "</div>\n";
 }
@@ -288,11 +375,11 @@ std::string reportHtml(const std::vector<StudentGrade>& grades, const std::vecto
   std::ostringstream html;
   writeHead(html, grades, results);
   writeOverview(html, grades, results);
-  writeStudents(html, grades);
+  writeStudents(html, grades, results);
   writeFlagged(html, results);
   html << more;
   writeRuns(html, results);
-  html << "<script>" << playerScript() << kSortScript << "</script>\n</body></html>\n";
+  html << "<script>" << kSortScript << "</script>\n</body></html>\n";
   return html.str();
 }
 

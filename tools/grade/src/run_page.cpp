@@ -9,6 +9,7 @@
 
 #include <QByteArray>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -45,7 +46,84 @@ std::string escapeHtml(const std::string& text) {
 
 namespace {
 
+bool endsAPath(char c) {
+  return std::isspace(static_cast<unsigned char>(c)) || std::string("'\"()<>,:;=[]{}\\`").find(c) != std::string::npos;
+}
 
+// "3 on CH, 1 on CH2" from {"CH": 3, "CH2": 1} (a count, or any value as JSON).
+std::string countsText(const nlohmann::json& counts, const std::string& joiner) {
+  std::string out;
+  if (!counts.is_object()) return counts.dump();
+  for (const auto& [name, count] : counts.items()) {
+    out += (out.empty() ? "" : ", ") + (count.is_number() ? count.dump() : std::string("?")) + joiner + name;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string withoutPaths(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size();) {
+    if (text[i] != '/' || (i > 0 && !endsAPath(text[i - 1]))) {
+      out += text[i++];
+      continue;
+    }
+    size_t end = i;
+    while (end < text.size() && !endsAPath(text[end])) ++end;
+    const size_t last = text.rfind('/', end - 1);
+    out += last > i ? text.substr(last + 1, end - last - 1) : text.substr(i, end - i);  // "/x/y" -> "y"; "/x" stays
+    i = end;
+  }
+  return out;
+}
+
+std::vector<Diagnostic> runDiagnostics(const nlohmann::json& r) {
+  std::vector<Diagnostic> out;
+  auto text = [&](const char* key) { return r.contains(key) && r[key].is_string() ? r[key].get<std::string>() : std::string(); };
+  const std::string failure = text("failure");
+  if (!failure.empty()) out.push_back({"failed", "the run failed: " + failure});
+  const std::string fault = text("algorithm_error");
+  if (!fault.empty() && fault != failure) out.push_back({"failed", "the algorithm failed: " + fault});
+  const std::string aborted = text("aborted");
+  if (!aborted.empty() && aborted != failure) out.push_back({"failed", "the run was aborted: " + aborted});
+  if (r.contains("non_finite_commands") && r["non_finite_commands"].is_number() && r["non_finite_commands"].get<double>() > 0) {
+    out.push_back({"non-finite commands", r["non_finite_commands"].dump() +
+                                              " motor commands were not finite numbers (NaN or infinite): each was refused and 0 sent"});
+  }
+  if (r.contains("tampering")) {
+    out.push_back({"tampering", "forged or refused messages (not graded; the run is flagged): " + countsText(r["tampering"], " on ")});
+  }
+  if (r.contains("escape_attempts")) {
+    out.push_back({"escape", "tried to get out of the run (it went nowhere; the run is flagged): " +
+                                 countsText(r["escape_attempts"], " x ")});
+  }
+  if (r.contains("truth_gaps")) {
+    out.push_back({"lost messages", "messages the referee did not receive (it graded without them): " + countsText(r["truth_gaps"], " on ")});
+  }
+  if (r.contains("reloads") && r["reloads"].is_number() && r["reloads"].get<double>() > 0) {
+    out.push_back({"reloaded", "the algorithm was reloaded " + r["reloads"].dump() + " time(s): the last episode was graded"});
+  }
+  if (r.value("finished", true) == false && failure.empty() && fault.empty() && aborted.empty()) {
+    out.push_back({"ended early", "the run ended before the end of its episode"});
+  }
+  return out;
+}
+
+std::string diagnosticsHtml(const std::vector<Diagnostic>& diagnostics) {
+  if (diagnostics.empty()) return "";
+  std::string html = "<ul class='diagnostics'>";
+  for (const Diagnostic& d : diagnostics) html += "<li>" + escapeHtml(d.text) + "</li>";
+  return html + "</ul>";
+}
+
+namespace {
+
+// The page around the player: its margins, the diagnostics, the still at its own size at most.
+constexpr const char* kPageStyle =
+    "body { font-family: sans-serif; margin: 12px; } h1 { font-size: 1.4em; overflow-wrap: anywhere; } "
+    "ul.diagnostics { color: #b71c1c; overflow-wrap: anywhere; } img.still { max-width: 100%; height: auto; }";
 
 }  // namespace
 
@@ -54,8 +132,9 @@ std::string dataUri(const std::string& mime, const std::string& bytes) {
 }
 
 std::string noNetworkPolicy() {
+  // 'self' for images and frames: report.html's still pictures and run pages are files beside it.
   return "<meta http-equiv='Content-Security-Policy' content=\"default-src 'none'; script-src 'unsafe-inline'; "
-         "style-src 'unsafe-inline'; img-src data:\">";
+         "style-src 'unsafe-inline'; img-src data: 'self'; frame-src 'self'\">";
 }
 
 RunFiles runFilesOf(const nlohmann::json& result) {
@@ -71,15 +150,14 @@ RunFiles runFilesOf(const nlohmann::json& result) {
   return run;
 }
 
-// The player's style and script, player.css and player.js beside this file, compiled in
-// (tools/grade/CMakeLists.txt): everything the player draws comes from the trace (the map,
-// run-length encoded; the poses, delta-encoded mm and mrad at period_s; the exercise's state; the events).
-std::string playerStyle() { return kPlayerStyleCss; }
-std::string playerScript() { return kPlayerScriptJs; }
+namespace {
 
+// The run's data block, its id `id`: the report as it is, the trace as the referee wrote it, one
+// JSON object, deflated. The page's player (player.js, compiled in: tools/grade/CMakeLists.txt)
+// draws everything from it (the map, run-length encoded; the poses, delta-encoded mm and mrad at
+// period_s; the exercise's state; the events; the breakdown's rows).
 std::string runDataBlock(const std::string& id, const RunFiles& run) {
   if (run.trace_json.empty()) return "";
-  // The report as it is, the trace as the referee wrote it: one JSON object, deflated.
   const std::string payload = "{\"report\": " + run.report.dump() + ", \"trace\": " + run.trace_json + "}";
   QByteArray packed = qCompress(QByteArray(payload.data(), static_cast<int>(payload.size())), 9);
   packed.remove(0, 4);  // qCompress's length prefix: the rest is a zlib stream ("deflate" to a browser)
@@ -87,29 +165,45 @@ std::string runDataBlock(const std::string& id, const RunFiles& run) {
          "</script>\n";
 }
 
-std::string runPageHtml(const RunFiles& run) {
+// In report.html's frame, the page tells it how tall it is (report_html.cpp's message listener).
+constexpr const char* kTellTheFrame =
+    "if (window.parent !== window && window.ResizeObserver) {\n"
+    "  new ResizeObserver(() => parent.postMessage({aulaPageHeight: document.documentElement.scrollHeight}, '*'))"
+    ".observe(document.body);\n}\n";
+
+}  // namespace
+
+std::string runPageHtml(const RunFiles& given) {
+  // The student's copy: the teacher's paths cut to file names, in the text and in the data.
+  RunFiles run = given;
+  run.report = nlohmann::json::parse(withoutPaths(given.report.dump()));
+  run.report.erase("log");
+  run.title = withoutPaths(given.title);
+  run.trace_json = withoutPaths(given.trace_json);
   const nlohmann::json& r = run.report;
+  const std::string exercise = r.value("exercise", std::string());
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>" << noNetworkPolicy() << "<title>Aula run: "
-       << escapeHtml(run.title) << "</title><style>body { font-family: sans-serif; margin: 20px; }" << kPlayerStyleCss
-       << "</style></head><body>\n<h1>" << escapeHtml(run.title) << ": " << escapeHtml(r.value("exercise", std::string("?")))
-       << ", mark " << std::fixed;
+  html << "<!DOCTYPE html>\n<html lang='en'><head><meta charset='utf-8'>"
+       << "<meta name='viewport' content='width=device-width, initial-scale=1'>" << noNetworkPolicy() << "<title>Aula run: "
+       << escapeHtml(run.title) << "</title><style>" << kPageStyle << kPlayerStyleCss << "</style></head><body>\n<h1>"
+       << escapeHtml(run.title) << (exercise.empty() ? "" : ": " + escapeHtml(exercise)) << ", mark " << std::fixed;
   html.precision(2);
-  html << r.value("mark", 0.0) << " / 10</h1>\n";
-  if (r.contains("failure")) html << "<p class='missed'>" << escapeHtml(r["failure"].get<std::string>()) << "</p>\n";
+  html << r.value("mark", 0.0) << " / 10</h1>\n" << diagnosticsHtml(runDiagnostics(r));
   if (run.trace_json.empty()) {
-    html << "<p>This run has no trace (the referee was not asked for one): its still picture only.</p>\n";
+    html << "<p>" << (r.contains("failure") ? "This run has no replay: it stopped before the referee could trace it (see above)."
+                                            : "This run has no trace (the referee was not asked for one).")
+         << (run.picture_png.empty() ? "" : " The referee's picture of its end is below.") << "</p>\n";
   } else {
     html << "<div id='player'>Opening the run...</div>\n" << runDataBlock("run", run);
   }
   if (!run.picture_png.empty()) {
-    html << "<h2>The referee's picture at the end</h2>\n<img alt='the referee&#39;s picture of the run' src='"
+    html << "<h2>The referee's picture at the end</h2>\n<img class='still' alt='the referee&#39;s picture of the run' src='"
          << dataUri("image/png", run.picture_png) << "'>\n";
   }
   html << "<script>" << kPlayerScriptJs << "</script>\n";
   if (!run.trace_json.empty()) {
-    html << "<script>\nAulaPlayer.openRun('run', document.getElementById('player')).then(p => {\n"
-            "  const t = AulaPlayer.hashTime();\n  if (t !== null) p.seek(t);\n});\n</script>\n";
+    html << "<script>\nAulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player')));\n"
+         << kTellTheFrame << "</script>\n";
   }
   html << "</body></html>\n";
   return html.str();

@@ -27,12 +27,14 @@
 
 #include <aula/config/config.hpp>
 #include <aula/referee/run_picture.hpp>
+#include <aula/referee/run_trace.hpp>
 #include <aula/scoring/parking_geometry.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace aula::autopark {
 
@@ -79,6 +81,15 @@ ParkingScores scoreParking(const ParkingMeasures& m, ParkingCase c, double park_
 // The mark's formula with its numbers: "0.025 x (angle 100 + time 100 + distances 100.0 + 100) x
 // (1 - contacts 0.12)", "not parked 1.00 x (1 - contacts 0.00)", or the thesis's.
 std::string markFormula(const ParkingScores& s, ParkingCase c, double contact_cost, const ParkingRefereeSettings& settings);
+// The mark's rows for the player (referee::MarkTerm), in the rubric's own arithmetic: angle, time,
+// distances and, scale parked, "parked" (2.5 when parked, not_parked_mark when not, the other terms
+// then 0) then the contacts' factor (1 - cost); scale thesis, the four terms. Their total
+// (referee::breakdownTotal) is scoreParking's mark.
+std::vector<referee::MarkTerm> parkingMarkTerms(const ParkingMeasures& m, ParkingCase c, double park_time_s,
+                                                const ParkingContacts& contacts, const ParkingRefereeSettings& s);
+// The distances term's measure: each gap with its score, or why none is graded ("not inside the
+// slot", "not parked"): what the player writes over the map.
+std::string distancesText(const ParkingMeasures& m, ParkingCase c, const ParkingRefereeSettings& s);
 // The D terms: 100, 50 or 0 for one gap to a parked car (`ideal_gap_m`: the slot's g*), and for
 // the curb distance.
 double gapScore(double gap_m, double ideal_gap_m, const ParkingRefereeSettings& s);

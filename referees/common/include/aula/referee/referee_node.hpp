@@ -124,6 +124,8 @@ class RefereeNode {
   void onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg);
   void announce(int64_t utime);  // the end once to the window, the status to the component
   void traceFault(int64_t utime);  // the fault just learnt, in the trace
+  // The first motor command that was not a finite number, in the trace (its total at the end).
+  void traceNonFinite(int64_t utime);
   void announceEnd();              // the end, once: kept (episodeEnd) and told to the window
 
   std::string exercise_, robot_name_;
@@ -135,6 +137,7 @@ class RefereeNode {
   int64_t episode_from_utime_ = -1;        // truth at or before this sim time is the last episode's
   RunOutcome outcome_;
   RunTrace trace_;
+  long non_finite_event_ = -1;  // the trace's event of the first non-finite command, -1: none
   std::unique_ptr<StatusSender> status_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;

@@ -34,6 +34,8 @@ class RunOutcome {
   const std::string& fault() const { return fault_; }
   const std::string& aborted() const { return aborted_; }
   int generation() const { return generation_; }
+  // The motor commands the component refused so far (not finite numbers, sent as 0).
+  int64_t nonFiniteCommands() const { return non_finite_commands_; }
   // What was let through to grading and what was forged (a graded run's key, set by the node).
   TruthGate& truth() { return truth_; }
   const TruthGate& truth() const { return truth_; }

@@ -32,11 +32,14 @@ struct TraceEvent {
   double points = 0;         // points this event earned (>0) or cost (<0), when it is a rubric term's moment
 };
 
-// One term of the mark, as the rubric sums it: what was measured, the points it earned of the
-// most it could. The terms sum to the report's mark.
+// One row of the mark, in the rubric's order: a term (what was measured, the points it earned of
+// the most it could), added; or a rule that scales what the rows above it add up to (`factor`
+// >= 0: contacts that cost a share of the mark). Read top to bottom, the rows make the report's
+// mark: the page shows them and their total, and computes nothing of its own.
 struct MarkTerm {
   std::string term, measure;
   double points = 0, of = 0;
+  double factor = -1;  // >= 0: this row multiplies the total so far (points and of unused)
 };
 
 class RunTrace {
@@ -92,7 +95,9 @@ Report traceMap(const cv::Mat& occupancy, const geometry::MapTransform& transfor
 // The footprint the player draws: a disc, or a box length x width (along the heading).
 Report traceDisc(double radius_m);
 Report traceBox(double length_m, double width_m);
-// [{"term", "measure", "points", "of"}, ...]
+// [{"term", "measure", "points", "of"} or {"term", "measure", "factor"}, ...]
 std::string breakdownJson(const std::vector<MarkTerm>& terms);
+// The rows' total as the page shows it: the terms added, each rule's factor applied in order.
+double breakdownTotal(const std::vector<MarkTerm>& terms);
 
 }  // namespace aula::referee

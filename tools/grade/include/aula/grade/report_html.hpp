@@ -1,8 +1,10 @@
 #pragma once
-// report.html: one self-contained page (pictures inlined as data: URIs, no network) for a
-// teacher: the class's marks as a histogram, a sortable table of students, and for each run its
-// mark, its failure and the referee's picture of it (runs/<student>/<world>-seed<k>.png when
-// the referee drew one). Deterministic: the same results give the same bytes.
+// report.html: one page (no network) for a teacher: the class's marks as a histogram, a sortable
+// table of students with each one's flags (run_page.hpp's runDiagnostics), and for each run its
+// mark, its diagnostics, its player (the trace inlined, decoded when opened), a link to its own
+// page and the referee's picture, both files beside report.html (runs/<student>/<world>-seed<k>
+// .html, .png; the picture loaded lazily): the pictures are not inlined, so a class of 450 runs
+// stays a few MB. Deterministic: the same results give the same bytes.
 
 #include <aula/grade/grades.hpp>
 

@@ -7,8 +7,8 @@
 // mark's breakdown (each rubric term: its measure, points and points missed).
 //
 // The data of a run travels compressed (zlib's deflate, base64) in a <script type="application/
-// octet-stream"> block and is decoded only when the run is opened, so a class page of 150 runs
-// loads as fast as one without players. `page.html#t=SECONDS` opens the player paused at that
+// octet-stream"> block, decoded when the page opens. report.html shows a run's page in a frame,
+// made when the run is opened, so a class page of 450 runs loads as fast as one without players. `page.html#t=SECONDS` opens the player paused at that
 // sim time. The player writes what it shows into its status element's data-* attributes
 // (data-t-s, data-robot-x-mm, data-robot-y-mm, data-robot-yaw-mrad, data-breakdown-sum,
 // data-errors): what the browser tests read back.
@@ -16,8 +16,22 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace aula::grade {
+
+// One thing a run's result says went wrong or was refused, besides its mark: `kind` for the class
+// table ("failed", "non-finite commands", "tampering", "escape", "lost messages", "reloaded",
+// "ended early"), `text` for people. Every page shows each one as text; report.html flags the run.
+struct Diagnostic {
+  std::string kind, text;
+};
+std::vector<Diagnostic> runDiagnostics(const nlohmann::json& result);
+// The diagnostics as an HTML list (class 'diagnostics'), "" when there is none.
+std::string diagnosticsHtml(const std::vector<Diagnostic>& diagnostics);
+// `text` with each absolute path cut to its file name ("/home/t/out/runs/alice/x.log" -> "x.log"):
+// what a student's page may say of the teacher's machine.
+std::string withoutPaths(const std::string& text);
 
 struct RunFiles {
   std::string title;        // "alice, vacuum seed 3"
@@ -30,7 +44,8 @@ struct RunFiles {
 // "log" without its extension (runs/<student>/<world>-seed<k>).
 RunFiles runFilesOf(const nlohmann::json& result);
 
-// The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`).
+// The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`), for the
+// student: no absolute path of the teacher's machine in it (withoutPaths).
 std::string runPageHtml(const RunFiles& run);
 // `aula run --report-html=FILE.html`: the page of a single run from the referee's files (the trace
 // and the picture may be "" or missing: the page then has no player, or no still picture).
@@ -38,13 +53,9 @@ std::string runPageHtml(const RunFiles& run);
 void writeRunPage(const std::string& html_path, const std::string& report_path, const std::string& trace_path,
                   const std::string& picture_path);
 
-// For a page of many runs (report.html): the player's style and script, once per page, and one
-// run's data block, its id `id`. playerScript() defines openRun(id, container): the run's player
-// built into `container` the first time it is asked for.
-std::string playerStyle();
-std::string playerScript();
-std::string runDataBlock(const std::string& id, const RunFiles& run);
-// The page's Content-Security-Policy <meta>: inline scripts, styles and data: images only.
+// The page's Content-Security-Policy <meta>: inline scripts and styles; images inline (data:) or
+// beside the page, and frames beside the page ('self': report.html's still pictures and the runs'
+// own pages it shows in a frame; on a file:// page, files only); nothing else.
 std::string noNetworkPolicy();
 // Text for HTML: & < > " ' escaped.
 std::string escapeHtml(const std::string& text);
