@@ -22,10 +22,13 @@
 #   grades.csv are identical (the differing rows when not); and first one batch of `aula grade`.
 # --compare=build: the class compiled and graded by `aula grade` with each submission's build in
 #   its sandbox (--build-sandbox=on, the default: bubblewrap, limits, no network) and out of it
-#   (--build-sandbox=off), each time into a fresh out folder (so every plugin is compiled), the two
+#   (--build-sandbox=off), each time into a fresh out folder (so every plugin is compiled; no
+#   calibration: --calibration-seeds=off), the two
 #   in turn (the first one rotating), ROUNDS times; prints each kind's compile time (until the
 #   grade says how many runs it plans), whole grade time, plugins compiled per minute and runs
-#   per minute, the ratios, and whether the two kinds' grades.csv are identical.
+#   per minute, the ratios, and whether the two kinds' grades.csv are identical (the differing
+#   rows when not). (Not CPU time: a process in bubblewrap's own PID namespace is reaped there,
+#   and its time never reaches the grade's rusage.)
 # Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox|build]
 #        [--rounds=1] [--slice=10] [--jobs=2] [EXTRA aula grade options...]
 set -euo pipefail
@@ -69,7 +72,7 @@ if [ "$compare" = build ]; then
       # Each line of the grade's output with the seconds since the start: the compile step ends
       # where the grade says how many runs it plans.
       "$build/bin/aula" grade vacuum "$work"/class/* --seeds=1-"$seeds" --jobs="$jobs" --out="$out" \
-        --build-sandbox="$kind" "$@" | while IFS= read -r line; do
+        --build-sandbox="$kind" --calibration-seeds=off "$@" | while IFS= read -r line; do
           printf '%s %s\n' "$(echo "$(date +%s.%N) - $start" | bc -l)" "$line"
         done >"$work/build-$kind.txt"
       end=$(date +%s.%N)
@@ -89,6 +92,7 @@ if [ "$compare" = build ]; then
   same=$(cmp -s "$work/grades-build-on.csv" "$work/grades-build-off.csv" && echo "identical" || echo "DIFFERENT")
   printf '  boxed / unboxed: compile time %.3f, whole grade time %.3f   grades.csv of the two: %s\n' \
     "$(echo "${compile_s[on]} / ${compile_s[off]}" | bc -l)" "$(echo "${grade_s[on]} / ${grade_s[off]}" | bc -l)" "$same"
+  [ "$same" = identical ] || diff "$work/grades-build-on.csv" "$work/grades-build-off.csv" | sed 's/^/    /' | cut -c1-300
   exit 0
 fi
 

@@ -186,8 +186,8 @@ def fork_memory():
 
 
 def fork_memory_ready(read_end, count):
-    """Waits up to half a second for the children's bytes: the count of those that came."""
-    while count < 3 and select.select([read_end], [], [], 0.5)[0]:
+    """Waits up to 0.1 s for the children's bytes: the count of those that came."""
+    while count < 3 and select.select([read_end], [], [], 0.1)[0]:
         count += os.read(read_end, 1) == b"y"
     return count
 
