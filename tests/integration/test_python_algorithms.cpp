@@ -335,9 +335,9 @@ TEST(RoboticsAcademyPrograms, WhatTheVacuumLacksIsSaidAtTheStudentsLine) {
 TEST(RoboticsAcademyPrograms, AutoparkProgramIsGradedByAulaGrade) {
   const fs::path dir = aula::testing::privateDir();
   fs::create_directories(dir / "class");
-  fs::copy(kPython + kPython + "ra_autopark/MyAlgorithm.py", dir / "class" / "ra_student", fs::copy_options::recursive);
+  fs::copy(kPython + "ra_autopark", dir / "class" / "ra_student", fs::copy_options::recursive);
   const aula::testing::Outcome graded =
-      aula::testing::runToEnd({std::string(AULA_BIN_DIR) + "/aula", "grade", "autopark", (dir / "class").string(),
+      aula::testing::runToEnd({std::string(AULA_BIN_DIR) + "/aula", "grade", "autopark", (dir / "class" / "ra_student").string(),
                                "--seeds=1", "--out=" + (dir / "out").string()},
                               600s);
   ASSERT_EQ(graded.code.value_or(-1), 0) << graded.output;
@@ -345,4 +345,9 @@ TEST(RoboticsAcademyPrograms, AutoparkProgramIsGradedByAulaGrade) {
   ASSERT_NE(csv.find("ra_student,"), std::string::npos) << csv;
   const std::string result = readFile((dir / "out" / "runs" / "ra_student" / "autopark-seed1.json").string());
   EXPECT_NE(result.find("\"parked\": true"), std::string::npos) << result << "\n" << csv;
+  EXPECT_NE(result.find("\"sandboxed\": true"), std::string::npos) << result;
+  // What the program printed is kept beside its report, in the run's log. Measured: mark 10.00.
+  const std::string log = readFile((dir / "out" / "runs" / "ra_student" / "autopark-seed1.log").string());
+  EXPECT_NE(log.find("parked at ("), std::string::npos) << log;
+  fs::remove_all(dir);
 }

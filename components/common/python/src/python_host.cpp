@@ -135,8 +135,15 @@ PythonAlgorithm::Call::~Call() {
   it.worker = 0;
 }
 
+void PythonAlgorithm::keepThreadState(py::gil_scoped_acquire& gil) {
+  thread_local bool kept = false;
+  if (!kept) gil.inc_ref();  // one reference never released: the state lives as long as the thread
+  kept = true;
+}
+
 PythonAlgorithm::PythonAlgorithm(uint64_t seed, const char* api_module) {
   py::gil_scoped_acquire gil;
+  keepThreadState(gil);
   Call running;
   try {
     py::module_::import(api_module);  // the API's types

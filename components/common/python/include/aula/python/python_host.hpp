@@ -69,6 +69,7 @@ class PythonAlgorithm {
   template <class Api>
   void call(const char* method, Api& api) {
     py::gil_scoped_acquire gil;
+    keepThreadState(gil);
     run(method, py::cast(&api, py::return_value_policy::reference), api.clock.utime());
   }
   // A program in RoboticsAcademy's shape (no class MyAlgorithm) rather than Aula's.
@@ -81,6 +82,10 @@ class PythonAlgorithm {
     ~Call();
   };
   static std::string describe(py::error_already_set& e);
+  // The calling thread's Python thread state, kept for the thread's life: pybind11 makes a new one
+  // at each acquire on a thread Python did not start (the window's AlgorithmThread) and deletes
+  // it at release, and a paused greenlet belongs to the thread state it ran on.
+  static void keepThreadState(py::gil_scoped_acquire& gil);
   void run(const char* method, py::object api, int64_t utime);  // under the GIL
 
   py::object runner_;  // host.py's Runner
