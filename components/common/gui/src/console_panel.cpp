@@ -22,8 +22,12 @@ ConsolePanel::ConsolePanel(QWidget* parent) : QWidget(parent) {
   view_->setReadOnly(true);
   view_->setMaximumBlockCount(kMaxLines);
   view_->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-  view_->setLineWrapMode(QPlainTextEdit::NoWrap);
-  view_->setFixedHeight(7 * view_->fontMetrics().lineSpacing() + 8);
+  view_->setLineWrapMode(QPlainTextEdit::WidgetWidth);  // the panel is narrow: a long line wraps
+  // Three lines at least, so that the windows' other panels keep their room; more when there is room.
+  const int line_px = view_->fontMetrics().lineSpacing();
+  view_->setMinimumHeight(3 * line_px + 8);
+  view_->setMaximumHeight(8 * line_px + 8);
+  view_->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
   layout->addWidget(title_);
   layout->addWidget(view_);
   setVisible(false);  // until a Python program is loaded
