@@ -22,7 +22,7 @@
 #
 # The clock: time.time(), time.time_ns(), time.monotonic(), time.monotonic_ns(), time.sleep(),
 # time.gmtime()/localtime()/ctime()/strftime() without a time, datetime.datetime.now()/utcnow()/
-# today() and datetime.date.today() are the simulator's: seconds since the simulation started (the
+# today()/fromtimestamp() and datetime.date.today() are the simulator's: seconds since the simulation started (the
 # epoch, 1970-01-01 00:00:00 UTC, is the simulation's start), the same on every machine.
 # time.perf_counter() and time.process_time() stay real, for profiling.
 import datetime as _datetime
@@ -91,6 +91,12 @@ class _SimDatetime(_real.datetime):
     @classmethod
     def today(cls):
         return cls.now()
+    @classmethod
+    def fromtimestamp(cls, t, tz=None):
+        # No time zone: a sim time read back as the same date and time on every machine.
+        if tz is None:
+            return cls._of(_real.datetime(1970, 1, 1) + _datetime.timedelta(seconds=t))
+        return cls._of(_real.datetime.fromtimestamp(t, tz))
     @classmethod
     def _of(cls, d):
         return cls(d.year, d.month, d.day, d.hour, d.minute, d.second, d.microsecond, d.tzinfo, fold=d.fold)

@@ -36,6 +36,7 @@ check(0.5 - 1e-9 <= time.time() - t3 < 0.5 + PERIOD, f"a busy wait of 0.5 s took
 now = datetime.datetime.now()
 check(abs((now - datetime.datetime(1970, 1, 1)).total_seconds() - time.time()) < 1e-6, f"datetime.now() is {now}")
 check(dt.now() == now and datetime.date.today() == datetime.date(1970, 1, 1), "from datetime import datetime")
+check(dt.fromtimestamp(time.time()) == now, f"datetime.fromtimestamp(time.time()) is {dt.fromtimestamp(time.time())}")
 p0, t4 = time.perf_counter(), time.time()
 sum(range(200000))
 check(time.perf_counter() > p0 and time.time() == t4, "perf_counter is not real, or time.time() moved")
