@@ -129,7 +129,7 @@ def missing(module, name, offered):
 def wait_until(ready):
     """Waits period by period until ready() holds (RoboticsAcademy's HAL waits for a first scan)."""
     runner = _host._runner
-    while not ready() and runner is not None and runner.is_program and runner.program is not None:
+    while not ready() and runner is not None and runner.is_program and runner.program is not None and not runner.forked():
         import greenlet
         if greenlet.getcurrent() is not runner.program:
             return

@@ -66,8 +66,9 @@ def _sleep(seconds):
     if seconds != seconds or seconds < 0:
         raise ValueError("sleep length must be non-negative")
     runner = _runner
-    if runner is None or greenlet.getcurrent() is not runner.program:
-        # Another thread, or no program running: there is no sim time to wait on here.
+    if runner is None or greenlet.getcurrent() is not runner.program or runner.forked():
+        # Another thread, no program running, or a child the program forked: there is no sim time
+        # to wait on here (a child must never switch back into the component's code).
         _real.sleep(seconds)
         return
     runner.sleep_us(round(seconds * 1e6))
@@ -221,6 +222,7 @@ class Runner:
         self.clock_reads = 0
         self.closing = False
         self.seed = seed
+        self.pid = os.getpid()       # the component's process (a fork's child is not it)
         if not self.is_program:
             self._run_module()
             cls = self.module.__dict__.get("MyAlgorithm")
@@ -259,8 +261,14 @@ class Runner:
                 self.program = None
                 self.finished = self.is_program
 
+    def forked(self):
+        """In a child process the program forked: its copy of the component must never run on."""
+        return os.getpid() != self.pid
+
     def wait_period(self):
-        """Back to the caller until the next control period."""
+        """Back to the caller until the next control period (in a forked child: no wait at all)."""
+        if self.forked():
+            return
         if self.closing:
             raise greenlet.GreenletExit()
         self.caller.switch()
