@@ -102,7 +102,7 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "cmake, g++, binutils, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap, python3, python3-numpy, python3-opencv")
+    "cmake, g++, binutils, libeigen3-dev, libopencv-dev, liblcm-dev, bubblewrap, python3, python3-numpy, python3-opencv, python3-greenlet")
 # aula grade --engine=slurm submits with sbatch; report.html screenshots use a browser.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "slurm-client")
 include(CPack)

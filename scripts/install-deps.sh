@@ -23,7 +23,7 @@ build_packages=(
   # to run: the sandbox, a run's private network, the generators
   libgl1-mesa-dri bubblewrap iproute2 procps python3
   # the embedded Python of a student's MyAlgorithm.py
-  python3-dev pybind11-dev python3-numpy python3-opencv
+  python3-dev pybind11-dev python3-numpy python3-opencv python3-greenlet
 )
 test_packages=(xvfb xauth xdotool openbox bc python3-pip chromium lintian)
 slurm_packages=(slurmctld slurmd slurm-client munge)

@@ -6,6 +6,8 @@
 //   interrupted inside Python, NaN commands, a missing module; each on stderr and in the report.
 // - Determinism: `random` and numpy seeded from the run's seed; the user's environment ignored;
 //   a recorded run regrades to the same report.
+// - Programs in RoboticsAcademy's shape (`import HAL, GUI`, `while True:`, `time.sleep`), unchanged,
+//   each doing its job; the simulator's clock in both shapes; under `aula grade` (issue 41).
 #include "test_support.hpp"
 
 #include <aula/belief_t.hpp>
@@ -80,7 +82,7 @@ void expectPythonFault(const PyRun& run, const std::string& message) {
   EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
 }
 
-const std::vector<std::string> kShortVacuum = {"--Vacuum.Referee.Duration=20"};
+const std::vector<std::string> kShortVacuum = kShortVacuum;
 
 }  // namespace
 
@@ -267,4 +269,96 @@ TEST(PythonAlgorithms, StubsNameExactlyWhatEachExerciseBindsAndTemplatesRun) {
     EXPECT_FALSE(shipped.report.empty()) << describe(shipped);
     EXPECT_FALSE(jsonString(shipped.report, "algorithm_error").has_value()) << describe(shipped);
   }
+}
+
+// Programs written to today's RoboticsAcademy pages (`import HAL`, `import GUI`, top-level code,
+// `while True:`, `time.time()` timers, `time.sleep()`), unchanged (issue 41): each exercise's does
+// its job, with the marks it reaches; the same seed, the same report; the clock and the pacing in
+// both shapes of program; what Aula's world lacks is said in the student's line; `aula grade`.
+namespace {
+void expectCleanRun(const PyRun& run) {
+  ASSERT_EQ(run.code.value_or(-1), 0) << describe(run);
+  EXPECT_EQ(run.report.find("algorithm_error"), std::string::npos) << describe(run);
+  EXPECT_NE(run.report.find("\"algorithm\": \"MyAlgorithm.py\""), std::string::npos) << run.report;
+}
+}  // namespace
+
+// The vacuum with time.time() timers (spiral 40 s, back 0.6 s, turn 0.8-2.4 s from `random`):
+// its 900 s without an error, the same report twice for one seed. Measured: 33.33 %, mark 4.17.
+TEST(RoboticsAcademyPrograms, VacuumWithTimersRunsIts900SecondsTheSameTwice) {
+  const PyRun first = runHeadless("vacuum", kPython + "ra_vacuum/MyAlgorithm.py", {"--seed=1"});
+  const PyRun second = runHeadless("vacuum", kPython + "ra_vacuum/MyAlgorithm.py", {"--seed=1"});
+  expectCleanRun(first);
+  expectCleanRun(second);
+  EXPECT_NE(first.report.find("\"finished\": true"), std::string::npos) << first.report;
+  EXPECT_GT(jsonNumber(first.report, "coverage_percent"), 15.0) << first.report;
+  EXPECT_GT(jsonNumber(first.report, "bumps"), 0.0) << first.report;  // its timers ran: it backed off and turned
+  EXPECT_EQ(first.report, second.report);
+  // What it printed, with its sim-time stamps, on the component's output.
+  EXPECT_NE(first.output.find("started at 00:00:"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find(", backing off, then turning "), std::string::npos) << first.output;
+}
+
+// TeleTaxi: a wavefront planner on GUI.getMap / getTargetPose / worldToGrid, its path shown with
+// GUI.showPath and followed with HAL.getPose3d: it reaches the destination.
+TEST(RoboticsAcademyPrograms, TeletaxiWavefrontReachesTheDestination) {
+  const PyRun run = runHeadless("teletaxi", kPython + "ra_teletaxi/MyAlgorithm.py", {"--seed=1"});
+  expectCleanRun(run);
+  EXPECT_NE(run.report.find("\"reached\": true"), std::string::npos) << describe(run);
+  EXPECT_GE(jsonNumber(run.report, "mark"), 8.0) << run.report;
+  EXPECT_NE(run.output.find("wave reached the taxi: True"), std::string::npos) << run.output;
+}
+
+// Autopark: a state machine on HAL.getRightLaserData / getFrontLaserData / getBackLaserData and
+// getPose3d, with a time.time() pause: it parks.
+TEST(RoboticsAcademyPrograms, AutoparkStateMachineParks) {
+  const PyRun run = runHeadless("autopark", kPython + "ra_autopark/MyAlgorithm.py", {"--seed=1"});
+  expectCleanRun(run);
+  EXPECT_NE(run.report.find("\"parked\": true"), std::string::npos) << describe(run);
+  EXPECT_GE(jsonNumber(run.report, "mark"), 7.0) << run.report;
+  EXPECT_NE(run.output.find("slot found: "), std::string::npos) << run.output;
+}
+
+// The clock is the simulator's and the pacing as documented, in RoboticsAcademy's shape (sleep,
+// a second HAL read, a busy wait on time.time(), datetime) and in Aula's (time.time() is
+// api.time_s(), a sleep inside execute() waits in sim time). Each program raises if not.
+TEST(RoboticsAcademyPrograms, TheClockIsTheSimulatorsInBothShapes) {
+  const PyRun program = runHeadless("vacuum", kPython + "ra_clock/MyAlgorithm.py", kShortVacuum, 120s);
+  expectCleanRun(program);
+  EXPECT_NE(program.output.find("CLOCK OK at "), std::string::npos) << describe(program);
+  const PyRun classic = runHeadless("vacuum", kPython + "clock_in_execute/MyAlgorithm.py", kShortVacuum, 120s);
+  expectCleanRun(classic);
+  EXPECT_NE(classic.output.find("EXECUTE CLOCK OK"), std::string::npos) << describe(classic);
+}
+
+// HAL.getPose3d().x in the vacuum: the run stops at the student's line, saying what exists.
+TEST(RoboticsAcademyPrograms, WhatTheVacuumLacksIsSaidAtTheStudentsLine) {
+  const PyRun run = runHeadless("vacuum", kPython + "ra_no_position/MyAlgorithm.py", kShortVacuum, 120s);
+  ASSERT_TRUE(run.code.has_value()) << describe(run);
+  EXPECT_NE(*run.code, 0) << describe(run);
+  EXPECT_NE(run.report.find("MyAlgorithm.py:7: AttributeError: HAL.getPose3d().x: the vacuum cleaner has no "
+                            "localization in Aula: getPose3d() gives .yaw (rad) and .timeStamp (s) only"),
+            std::string::npos)
+      << describe(run);
+}
+
+// Under `aula grade`: the Autopark program as a student's submission, graded.
+TEST(RoboticsAcademyPrograms, AutoparkProgramIsGradedByAulaGrade) {
+  const fs::path dir = aula::testing::privateDir();
+  fs::create_directories(dir / "class");
+  fs::copy(kPython + "ra_autopark", dir / "class" / "ra_student", fs::copy_options::recursive);
+  const aula::testing::Outcome graded =
+      aula::testing::runToEnd({std::string(AULA_BIN_DIR) + "/aula", "grade", "autopark", (dir / "class" / "ra_student").string(),
+                               "--seeds=1", "--out=" + (dir / "out").string()},
+                              600s);
+  ASSERT_EQ(graded.code.value_or(-1), 0) << graded.output;
+  const std::string csv = readFile((dir / "out" / "grades.csv").string());
+  ASSERT_NE(csv.find("ra_student,"), std::string::npos) << csv;
+  const std::string result = readFile((dir / "out" / "runs" / "ra_student" / "autopark-seed1.json").string());
+  EXPECT_NE(result.find("\"parked\": true"), std::string::npos) << result << "\n" << csv;
+  EXPECT_NE(result.find("\"sandboxed\": true"), std::string::npos) << result;
+  // What the program printed is kept beside its report, in the run's log. Measured: mark 10.00.
+  const std::string log = readFile((dir / "out" / "runs" / "ra_student" / "autopark-seed1.log").string());
+  EXPECT_NE(log.find("parked at ("), std::string::npos) << log;
+  fs::remove_all(dir);
 }

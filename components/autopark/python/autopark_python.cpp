@@ -46,7 +46,8 @@ PYBIND11_EMBEDDED_MODULE(aula_autopark, m) {
       .def_readonly("min_turn_radius_m", &AutoparkApi::min_turn_radius_m)
       .def_readonly("turn_centre_x_m", &AutoparkApi::turn_centre_x_m)
       .def_readonly("wheelbase_m", &AutoparkApi::wheelbase_m)
-      .def_readwrite("status", &AutoparkApi::status);
+      .def_readwrite("status", &AutoparkApi::status)
+      .def("time_s", &AutoparkApi::time_s);
 }
 
 AULA_PYTHON_HOST_ENTRY_POINTS(autopark, aula::autopark::AutoparkAlgorithm, PythonAutopark)

@@ -4,6 +4,7 @@
 //                                         .distanceData[i] (mm), beam i at .angle(i) (rad, -90..90 deg)
 //   api.mount1 / mount2 / mount3          where each laser sits on the car (x forward, y left)
 //   api.motors.sendV(v), sendW(w)         m/s and rad/s (clamped to Autopark.MaxV / MaxW)
+//   api.time_s()                          sim time of this period, seconds (time your moves with it)
 // Find the free slot beside the curb between the parked cars and park in it, parallel to the
 // curb. The reference solutions: `aula run autopark --algorithm=reactive` or `--algorithm=planner`.
 #include <aula/autopark/autopark_algorithm.hpp>

@@ -44,3 +44,5 @@ class AutoparkApi:
     wheelbase_m: float
     # What your algorithm says about where it stands: the window shows it under the car's numbers.
     status: str
+    # Sim time of this control period, seconds since the simulation started (= time.time()).
+    def time_s(self) -> float: ...

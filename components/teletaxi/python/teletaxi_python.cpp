@@ -17,7 +17,12 @@ using aula::teletaxi::TaxiApi;
 class PythonTaxi : public aula::teletaxi::TaxiAlgorithm {
  public:
   explicit PythonTaxi(uint64_t seed) : algorithm_(seed, "aula_teletaxi") {}
-  void generatePath(TaxiApi& api) override { algorithm_.call("generatePath", api); }
+  // A program in RoboticsAcademy's shape plans at its top and drives in its loop: "Generate Path"
+  // runs it until it first waits (its path shown), and the taxi moves only at GO!.
+  void generatePath(TaxiApi& api) override {
+    algorithm_.call("generatePath", api);
+    if (algorithm_.isProgram()) api.motors.stop();
+  }
   void execute(TaxiApi& api) override { algorithm_.call("execute", api); }
 
  private:
@@ -68,7 +73,8 @@ PYBIND11_EMBEDDED_MODULE(aula_teletaxi, m) {
       .def_property_readonly("motors", [](TaxiApi& api) -> aula::component::Motors& { return api.motors; }, ref)
       .def_property_readonly("grid", [](TaxiApi& api) -> Grid& { return api.grid; }, ref)
       .def_property_readonly("sensor", [](TaxiApi& api) -> aula::component::Pose3d& { return api.sensor; }, ref)
-      .def_property_readonly("vel", [](TaxiApi& api) -> aula::component::Motors& { return api.vel; }, ref);
+      .def_property_readonly("vel", [](TaxiApi& api) -> aula::component::Motors& { return api.vel; }, ref)
+      .def("time_s", &TaxiApi::time_s);
 }
 
 AULA_PYTHON_HOST_ENTRY_POINTS(teletaxi, aula::teletaxi::TaxiAlgorithm, PythonTaxi)

@@ -15,6 +15,7 @@
 //  execute(api) runs every control period (80 ms of simulated time) after "GO!":
 //      api.sensor.getRobotX(), getRobotY(), getRobotTheta()   metres, radians
 //      api.vel.setV(v_mps), api.vel.setW(w_radps)             clamped to MaxV / MaxW
+//      api.time_s()                                          sim time of this call, seconds
 //
 //  Until you write something, this template keeps the taxi still.
 // ============================================================================================

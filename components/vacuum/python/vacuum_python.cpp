@@ -27,7 +27,8 @@ PYBIND11_EMBEDDED_MODULE(aula_vacuum, m) {
       .def_property_readonly("bumper", [](VacuumApi& api) -> aula::component::Bumper& { return api.bumper; }, ref)
       .def_property_readonly("motors", [](VacuumApi& api) -> aula::component::Motors& { return api.motors; }, ref)
       .def_property_readonly("belief", [](VacuumApi& api) -> aula::component::Belief& { return api.belief; }, ref)
-      .def_readonly("period_s", &VacuumApi::period_s);
+      .def_readonly("period_s", &VacuumApi::period_s)
+      .def("time_s", &VacuumApi::time_s);
 }
 
 AULA_PYTHON_HOST_ENTRY_POINTS(vacuum, aula::vacuum::VacuumAlgorithm, PythonVacuum)

@@ -7,6 +7,7 @@
 //                                           beam i at .angle(i), from -pi/2 (right) to +pi/2 (left)
 //      api.bumper.getBumperData().state     1 while the bumper is pressed
 //      api.motors.sendV(v_mps), sendW(w_radps)   clamped to MaxV / MaxW of the .cfg
+//      api.time_s()                         sim time of this period, seconds (time your moves with it)
 //
 //  Ideas from real Roombas: an outward spiral, following walls, crossing rooms with random
 //  turns, escaping from corners. Until you write something, this template stays still.

@@ -23,3 +23,5 @@ class VacuumApi:
     @property
     def belief(self) -> Belief: ...  # setPose(), setMap(): what you believe, shown, never graded
     period_s: float  # the control period (sim seconds between execute() calls)
+    # Sim time of this control period, seconds since the simulation started (= time.time()).
+    def time_s(self) -> float: ...

@@ -6,85 +6,50 @@
 
 #include <dlfcn.h>
 
+#include <mutex>
 #include <stdexcept>
 
 namespace aula::python {
 namespace {
 
-// What runs in Python: the student's file loaded afresh, and a fault said in the student's lines.
-constexpr const char* kHostCode = R"PY(
-import os, sys, traceback, types
+// What runs in Python is host.py (the student's file on a greenlet, the sim clock, faults in
+// the student's lines) and aula_ra.py (RoboticsAcademy's types for the exercises' HAL and GUI),
+// compiled in as text (embed_sources.cmake).
+const Source& hostSource(const char* name) {
+  for (const Source& source : hostSources()) {
+    if (std::string(source.name) == name) return source;
+  }
+  throw std::logic_error(std::string("the Python host has no ") + name + ".py");
+}
 
-class ExecuteBudgetExceeded(BaseException):
-    """Raised inside a call that overran Component.ExecuteBudget. Not an Exception, so that the
-    student's own `except Exception:` does not swallow it."""
+// What the student's code printed, for the window's console: the last kConsoleBytes (from a
+// line's start) kept between two takes; headless nobody takes, and the text is trimmed only when
+// twice that has piled up, so that a print costs the same however long the run.
+constexpr size_t kConsoleBytes = 64 * 1024;
+std::mutex console_mutex;
+std::string console_text;
+bool console_dropped = false;
 
-budget_text = ""
+void trimConsole() {
+  if (console_text.size() <= kConsoleBytes) return;
+  size_t cut = console_text.size() - kConsoleBytes;
+  const size_t line = console_text.find('\n', cut);
+  cut = line == std::string::npos ? cut : line + 1;
+  console_text.erase(0, cut);
+  console_dropped = true;
+}
 
-class NotAnAlgorithm(Exception):
-    pass
-
-def _mine(filename, folder):
-    return bool(filename) and os.path.dirname(os.path.abspath(filename)) == folder
-
-def load(path, seed):
-    folder = os.path.dirname(path)
-    # The student's own modules are read afresh too (hot reload).
-    for name, module in list(sys.modules.items()):
-        if _mine(getattr(module, "__file__", None), folder):
-            del sys.modules[name]
-    if folder in sys.path:
-        sys.path.remove(folder)
-    sys.path.insert(0, folder)
-    with open(path, "rb") as f:
-        source = f.read()
-    code = compile(source, path, "exec", dont_inherit=True)
-    import random, numpy
-    random.seed(seed)
-    numpy.random.seed(seed % 2**32)
-    # default_rng() without a seed: the next generator of the run's seed sequence, not the OS's entropy.
-    unseeded = getattr(numpy.random, "_aula_unseeded_default_rng", numpy.random.default_rng)
-    numpy.random._aula_unseeded_default_rng = unseeded
-    sequence = numpy.random.SeedSequence(seed)
-    numpy.random.default_rng = lambda given=None: unseeded(sequence.spawn(1)[0] if given is None else given)
-    module = types.ModuleType("MyAlgorithm")
-    module.__file__ = path
-    sys.modules["MyAlgorithm"] = module
-    exec(code, module.__dict__)
-    cls = module.__dict__.get("MyAlgorithm")
-    if not isinstance(cls, type):
-        raise NotAnAlgorithm("no class MyAlgorithm: define class MyAlgorithm with __init__(self, seed) "
-                             "and execute(self, api)")
-    return cls
-
-def describe(exc, tb, path):
-    folder = os.path.dirname(path)
-    if isinstance(exc, SyntaxError) and _mine(exc.filename, folder):
-        text = f"{os.path.basename(exc.filename)}:{exc.lineno}: {type(exc).__name__}: {exc.msg}"
-        line = (exc.text or "").strip()
-        return text + (f" (`{line}`)" if line else "")
-    if isinstance(exc, ExecuteBudgetExceeded):
-        what = budget_text + ": interrupted here"
-    elif isinstance(exc, ModuleNotFoundError):
-        what = (f"ModuleNotFoundError: no module named '{exc.name}' (Aula's Python has Debian's standard "
-                "library, numpy and cv2)")
-    else:
-        message = str(exc)
-        what = type(exc).__name__ + (": " + message if message else "")
-    frames = [f for f in traceback.extract_tb(tb if tb is not None else exc.__traceback__) if _mine(f.filename, folder)]
-    if not frames:
-        return f"{os.path.basename(path)}: {what}"
-    last = frames[-1]
-    trail = "; ".join(f"{os.path.basename(f.filename)}:{f.lineno} in {f.name}: `{(f.line or '').strip()}`"
-                      for f in frames[-3:])
-    return f"{os.path.basename(last.filename)}:{last.lineno}: {what} (traceback, most recent call last: {trail})"
-)PY";
+void keepPrinted(const std::string& text) {
+  std::lock_guard<std::mutex> lock(console_mutex);
+  console_text += text;
+  if (console_text.size() > 2 * kConsoleBytes) trimConsole();
+}
 
 // The process's one interpreter, never shut down (numpy cannot start twice), and never freed:
 // Python objects must not be released after the interpreter's own exit handlers.
 struct Interpreter {
   std::string file;            // the student's .py
-  py::dict helpers;            // kHostCode's globals
+  py::module_ helpers;         // host.py, as the module _aula_host
   py::object budget_exceeded;  // its ExecuteBudgetExceeded
   unsigned long worker = 0;    // the thread inside a call (under the GIL), 0 when none
 };
@@ -132,8 +97,15 @@ void startInterpreter() {
       if (dir.rfind(AULA_PYTHON_PREFIX "/lib/python3", 0) == 0) kept.append(entry);
     }
     sys.attr("path") = kept;
-    py::exec(kHostCode, it->helpers);
-    it->budget_exceeded = it->helpers["ExecuteBudgetExceeded"];
+    py::module_ host = py::module_::import("types").attr("ModuleType")("_aula_host");
+    sys.attr("modules")["_aula_host"] = host;
+    const Source& code = hostSource("host");
+    const py::module_ builtins = py::module_::import("builtins");
+    builtins.attr("exec")(builtins.attr("compile")(code.text, "<aula:host.py>", "exec"), host.attr("__dict__"));
+    it->helpers = host;
+    it->budget_exceeded = host.attr("ExecuteBudgetExceeded");
+    host.attr("install_clock")();
+    host.attr("install_console")(py::cpp_function([](const std::string& text) { keepPrinted(text); }));
   }
   interpreterSlot() = it;
   (void)PyEval_SaveThread();  // every call takes the GIL again, from whichever thread it runs on
@@ -146,6 +118,7 @@ std::string setFile(const std::string& path) {
     if (interpreterSlot() == nullptr) startInterpreter();
     py::gil_scoped_acquire gil;
     interpreter().file = path;
+    interpreter().helpers.attr("preload")(path);
   } catch (const std::exception& e) {
     return std::string("cannot start Python: ") + e.what();
   }
@@ -156,7 +129,7 @@ void interrupt(const std::string& why) {
   py::gil_scoped_acquire gil;  // the student's loop yields it every few ms
   Interpreter& it = interpreter();
   if (it.worker == 0) return;  // it returned meanwhile
-  it.helpers["budget_text"] = why;
+  it.helpers.attr("budget_text") = why;
   PyThreadState_SetAsyncExc(it.worker, it.budget_exceeded.ptr());
 }
 
@@ -168,13 +141,22 @@ PythonAlgorithm::Call::~Call() {
   it.worker = 0;
 }
 
+void PythonAlgorithm::keepThreadState(py::gil_scoped_acquire& gil) {
+  thread_local bool kept = false;
+  if (!kept) gil.inc_ref();  // one reference never released: the state lives as long as the thread
+  kept = true;
+}
+
 PythonAlgorithm::PythonAlgorithm(uint64_t seed, const char* api_module) {
   py::gil_scoped_acquire gil;
+  keepThreadState(gil);
   Call running;
   try {
     py::module_::import(api_module);  // the API's types
-    const py::object cls = interpreter().helpers["load"](interpreter().file, seed);
-    self_ = cls(seed);
+    py::list modules;                  // RoboticsAcademy's HAL and GUI, and what they share
+    modules.append(py::make_tuple("aula_ra", hostSource("aula_ra").text));
+    for (const Source& source : exerciseSources()) modules.append(py::make_tuple(source.name, source.text));
+    runner_ = interpreter().helpers.attr("Runner")(interpreter().file, seed, modules);
   } catch (py::error_already_set& e) {
     throw component::AlgorithmFault(describe(e));
   }
@@ -182,13 +164,42 @@ PythonAlgorithm::PythonAlgorithm(uint64_t seed, const char* api_module) {
 
 PythonAlgorithm::~PythonAlgorithm() {
   py::gil_scoped_acquire gil;
-  self_ = py::object();
+  try {
+    runner_.attr("close")();
+  } catch (py::error_already_set&) {
+    // the program's last words (a paused program ended here); nothing to report to
+  }
+  runner_ = py::object();
+}
+
+bool PythonAlgorithm::isProgram() const {
+  py::gil_scoped_acquire gil;
+  return runner_.attr("is_program").cast<bool>();
+}
+
+void PythonAlgorithm::run(const char* method, py::object api, int64_t utime) {
+  Call running;
+  try {
+    runner_.attr("call")(method, api, utime);
+  } catch (py::error_already_set& e) {
+    throw component::AlgorithmFault(describe(e));
+  }
+}
+
+std::string takeConsole() {
+  std::lock_guard<std::mutex> lock(console_mutex);
+  trimConsole();
+  std::string text = console_dropped ? "[... earlier output dropped: the console keeps the last 64 KB]\n" : "";
+  text += console_text;
+  console_text.clear();
+  console_dropped = false;
+  return text;
 }
 
 std::string PythonAlgorithm::describe(py::error_already_set& e) {
   std::string text;
   try {
-    text = interpreter().helpers["describe"](e.value(), e.trace(), interpreter().file).cast<std::string>();
+    text = interpreter().helpers.attr("describe")(e.value(), e.trace(), interpreter().file).cast<std::string>();
   } catch (py::error_already_set& inner) {
     text = std::string(e.what()) + " (and describing it failed: " + inner.what() + ")";
   }

@@ -50,6 +50,10 @@ struct AutoparkApi {
   // What the algorithm says about where it stands ("slot too short for a reactive park: 5.0 m,
   // need 5.9 m"): the window shows it under the car's numbers.
   std::string status{};
+  component::SimClock clock{};  // the sim time of this period (the component sets it)
+
+  // Sim time of this control period, seconds since the simulation started.
+  double time_s() const { return clock.time_s(); }
 };
 
 class AutoparkAlgorithm {

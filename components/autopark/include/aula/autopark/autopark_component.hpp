@@ -21,7 +21,10 @@ class AutoparkComponent : public component::ExerciseComponent<AutoparkAlgorithm>
   const std::string& robotName() const { return startPose().robot; }  // the car in the world
 
  private:
-  void execute(AutoparkAlgorithm& algorithm) override { algorithm.execute(*api_); }
+  void execute(AutoparkAlgorithm& algorithm) override {
+    api_->clock.set(simTimeUs());
+    algorithm.execute(*api_);
+  }
   void detachSensors() override {
     for (component::LaserProxy* laser : {front_.get(), rear_.get(), right_.get()}) laser->detach();
   }

@@ -17,16 +17,18 @@
 //   3: the Python hosts (the laser keeps its buffers, issue 31).
 //   4: the references left the API (issue 28).
 //   5: the vacuum API's belief (the algorithm's own pose and map, shown; issue 26).
+//   6: the sim clock in every API, api.time_s() (issue 41).
 //
 // A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
 // Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
-// exports them, plus two of its own:
+// exports them, plus three of its own:
 //
 //   const char* aula_python_set_file(const char* path);  // the .py its factory loads; error text or nullptr
 //   void        aula_python_interrupt(const char* why);  // raises inside a call that overran its budget
+//   const char* aula_python_take_console();              // what the student printed since the last take
 
-#define AULA_ALGORITHM_ABI_VERSION 5
-#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "546cdcb40e76fccf092aa5dc1d4f20e21661195a545370eb397e3cd8dc2a474e"
+#define AULA_ALGORITHM_ABI_VERSION 6
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "c122f7d0b2ff8c77746744ceb53f8734e71ec984f0d00ccfc1472459a2c9f47d"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 #include <stdexcept>

@@ -18,6 +18,10 @@ struct TaxiApi {
   // The original names.
   component::Pose3d& sensor;
   component::Motors& vel;
+  component::SimClock clock{};  // the sim time of this call (the component sets it)
+
+  // Sim time of this call, seconds since the simulation started.
+  double time_s() const { return clock.time_s(); }
 
   TaxiApi(component::Pose3d& p, component::Motors& m, Grid& g)
       : pose3d(p), motors(m), grid(g), sensor(p), vel(m) {}

@@ -47,7 +47,10 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   const desktop::Placement& gridWindow() const { return grid_window_; }
 
  private:
-  void execute(TaxiAlgorithm& algorithm) override { algorithm.execute(*api_); }
+  void execute(TaxiAlgorithm& algorithm) override {
+    api_->clock.set(simTimeUs());
+    algorithm.execute(*api_);
+  }
   void beforeTick(int64_t utime) override;
   // Autostart (TeleTaxi.Autostart): generate the path and GO! as soon as the destination and
   // the taxi's pose are known.

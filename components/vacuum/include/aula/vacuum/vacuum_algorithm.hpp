@@ -28,6 +28,10 @@ struct VacuumApi {
   component::Motors& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
   component::Belief& belief;  // setPose(), setMap(): what the algorithm believes, shown, never graded
   double period_s;                 // the control period (sim seconds between execute() calls)
+  component::SimClock clock{};     // the sim time of this period (the component sets it)
+
+  // Sim time of this control period, seconds since the simulation started.
+  double time_s() const { return clock.time_s(); }
 };
 
 class VacuumAlgorithm {

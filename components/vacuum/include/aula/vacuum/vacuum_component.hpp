@@ -28,7 +28,10 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
   const component::Belief& belief() const { return belief_; }
 
  private:
-  void execute(VacuumAlgorithm& algorithm) override { algorithm.execute(*api_); }
+  void execute(VacuumAlgorithm& algorithm) override {
+    api_->clock.set(simTimeUs());
+    algorithm.execute(*api_);
+  }
   // A new algorithm believes nothing yet.
   bool startNewEpisode() override {
     belief_ = component::Belief{};

@@ -7,7 +7,15 @@
 //   no python from PATH), its path cut to Debian's stdlib and dist-packages (numpy, cv2), started
 //   once and never shut down (numpy cannot start twice);
 // - the student's file, read and run afresh for every new algorithm (hot reload), its folder
-//   first on sys.path (its own modules, dropped again on reload);
+//   first on sys.path (its own modules, dropped again on reload), in either shape: Aula's
+//   (class MyAlgorithm, execute(api) every period) or RoboticsAcademy's (`import HAL, GUI`, a
+//   program run from its top with `while True:` and `time.sleep`); the student's code runs on a
+//   greenlet of the calling thread, and waiting for sim time returns the call (host.py says when);
+// - Python's clock is the simulator's (time.time, monotonic, sleep, datetime.now: host.py);
+// - the exercise's HAL and GUI modules (RoboticsAcademy's names, components/<exercise>/python/),
+//   made afresh for every algorithm;
+// - what the student prints goes to the component's stdout/stderr as before and to the window's
+//   console (takeConsole);
 // - `random` and numpy's global generator seeded with the run's seed before the file runs, and
 //   numpy's default_rng() without a seed drawing from the run's seed sequence;
 // - every Python exception, a SyntaxError at load included, becomes an AlgorithmFault in the
@@ -20,11 +28,27 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace aula::python {
 namespace py = pybind11;
 
-// The file the host's factory loads; starts the interpreter on first use. Error text or "".
+// A Python module's text, compiled in (embed_sources.cmake): host.py and aula_ra.py in
+// hostSources(), the exercise's HAL.py and GUI.py in exerciseSources() (each host module's own).
+struct Source {
+  const char* name;  // the module's name ("HAL")
+  const char* text;
+};
+const std::vector<Source>& hostSources();
+const std::vector<Source>& exerciseSources();
+
+// What the student's code printed since the last take (stdout and stderr, in order), at most the
+// last 64 KB (a line says when more was dropped). Any thread.
+std::string takeConsole();
+
+// The file the host's factory loads; starts the interpreter on first use and imports the heavy
+// modules the file imports (numpy, cv2: host.py's preload), outside any call's budget. Error
+// text or "".
 std::string setFile(const std::string& path);
 // Raises `why` inside the call now running (from another thread; waits for the GIL).
 void interrupt(const std::string& why);
@@ -39,18 +63,17 @@ class PythonAlgorithm {
   PythonAlgorithm(const PythonAlgorithm&) = delete;
   PythonAlgorithm& operator=(const PythonAlgorithm&) = delete;
 
-  // self.<method>(api), the api object passed by reference (never copied, never owned by
-  // Python). Throws AlgorithmFault.
+  // self.<method>(api) (RoboticsAcademy's shape: the program on until it waits), the api object
+  // passed by reference (never copied, never owned by Python), at the api's sim time. Throws
+  // AlgorithmFault.
   template <class Api>
   void call(const char* method, Api& api) {
     py::gil_scoped_acquire gil;
-    Call running;
-    try {
-      self_.attr(method)(py::cast(&api, py::return_value_policy::reference));
-    } catch (py::error_already_set& e) {
-      throw component::AlgorithmFault(describe(e));
-    }
+    keepThreadState(gil);
+    run(method, py::cast(&api, py::return_value_policy::reference), api.clock.utime());
   }
+  // A program in RoboticsAcademy's shape (no class MyAlgorithm) rather than Aula's.
+  bool isProgram() const;
 
  private:
   // Marks this thread as the one to interrupt while a call runs (under the GIL).
@@ -59,8 +82,13 @@ class PythonAlgorithm {
     ~Call();
   };
   static std::string describe(py::error_already_set& e);
+  // The calling thread's Python thread state, kept for the thread's life: pybind11 makes a new one
+  // at each acquire on a thread Python did not start (the window's AlgorithmThread) and deletes
+  // it at release, and a paused greenlet belongs to the thread state it ran on.
+  static void keepThreadState(py::gil_scoped_acquire& gil);
+  void run(const char* method, py::object api, int64_t utime);  // under the GIL
 
-  py::object self_;
+  py::object runner_;  // host.py's Runner
 };
 
 // The student's class behind an exercise's interface whose one method is execute(Api&)
@@ -78,7 +106,7 @@ class PythonExecuteAlgorithm : public Algorithm {
 }  // namespace aula::python
 
 // The entry points of the exercise's host module: the three of algorithm_plugin.hpp, the factory
-// making `PythonClass(seed)` (an ALGORITHM), and the two of the Python host.
+// making `PythonClass(seed)` (an ALGORITHM), and the three of the Python host.
 #define AULA_PYTHON_HOST_ENTRY_POINTS(EXERCISE, ALGORITHM, PythonClass)                                        \
   AULA_PLUGIN_EXPORT int aula_algorithm_abi_version() { return AULA_ALGORITHM_ABI_VERSION; }                  \
   AULA_PLUGIN_EXPORT const char* aula_algorithm_exercise() { return #EXERCISE; }                             \
@@ -88,4 +116,9 @@ class PythonExecuteAlgorithm : public Algorithm {
     error = aula::python::setFile(path);                                                                      \
     return error.empty() ? nullptr : error.c_str();                                                           \
   }                                                                                                           \
-  AULA_PLUGIN_EXPORT void aula_python_interrupt(const char* why) { aula::python::interrupt(why); }
+  AULA_PLUGIN_EXPORT void aula_python_interrupt(const char* why) { aula::python::interrupt(why); }            \
+  AULA_PLUGIN_EXPORT const char* aula_python_take_console() {                                                \
+    static std::string text;                                                                                  \
+    text = aula::python::takeConsole();                                                                       \
+    return text.c_str();                                                                                      \
+  }
