@@ -1,4 +1,4 @@
-// What a process pays at start for its world: reading the SDF (libsdformat) and drawing the
+// What a process pays at start for its world: reading the SDF (cached per user) and drawing the
 // occupancy map from it (aula_world), for the city and the house. Maps are cached per user,
 // so the raster is paid once per world content; the SDF read every start.
 #include <aula/world/occupancy_map.hpp>

@@ -2,7 +2,6 @@
 #   bin/                     every program (aula, aula-sim, the components and referees, tools)
 #   lib/aula/algorithms/     the in-tree templates, built as plugins (--algorithm=student)
 #   lib/aula/references/     the built-in algorithms, a plugin each (--algorithm=reference...)
-#   lib/aula/libaula_world_sdf.so  the SDF reader, opened on a miss of the parsed-world cache
 #   lib/aula/libaula_sim_view.so   aula-sim --gui's 3D view, opened only with --gui
 #   lib/aula/python/         the Python hosts, one per exercise (--algorithm=PATH.py)
 #   include/aula/            the student API (plain-data devices, the plugin ABI, the three
@@ -25,7 +24,7 @@ install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
         LIBRARY DESTINATION lib/aula/algorithms)
 get_property(_builtins GLOBAL PROPERTY AULA_BUILTIN_ALGORITHMS)
 install(TARGETS ${_builtins} LIBRARY DESTINATION lib/aula/references)
-install(TARGETS aula_world_sdf aula_sim_view LIBRARY DESTINATION lib/aula)
+install(TARGETS aula_sim_view LIBRARY DESTINATION lib/aula)
 install(TARGETS aula_teletaxi_python aula_vacuum_python aula_autopark_python LIBRARY DESTINATION lib/aula/python)
 
 # The API a plugin compiles against (AULA_API_HEADERS, cmake/AulaApi.cmake). Not the proxies: they
@@ -81,8 +80,8 @@ file(WRITE ${PROJECT_BINARY_DIR}/changelog.Debian
 execute_process(COMMAND gzip -9nf ${PROJECT_BINARY_DIR}/changelog.Debian)
 install(FILES ${PROJECT_BINARY_DIR}/changelog.Debian.gz DESTINATION ${CMAKE_INSTALL_DATADIR}/doc/aula)
 
-# cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps (libpython3.11
-# too); a student's plugin build needs a compiler, CMake and the headers the API includes; a
+# cpack -G DEB: aula_<version>_amd64.deb. Runtime Depends come from dpkg-shlibdeps (libpython3.11 or
+# 3.13 too); a student's plugin build needs a compiler, CMake and the headers the API includes; a
 # student's MyAlgorithm.py, Debian's python3 with numpy and cv2 (the embedded interpreter's); a
 # component names a crash's lines in the student's plugin with /usr/bin/addr2line (binutils).
 set(CPACK_PACKAGE_NAME aula)

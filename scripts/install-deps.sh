@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs Aula's dependencies with apt (Debian 12), by set, so each command installs only its own:
+# Installs Aula's dependencies with apt (Debian 12 "bookworm" or Debian 13 "trixie", told apart by
+# /etc/os-release), by set, so each command installs only its own:
 #   scripts/install-deps.sh build   to build and run Aula (what `./aula run` and `./aula build` need)
 #   scripts/install-deps.sh test    the above, plus what the tests drive: Xvfb, openbox, Chromium, lintian,
 #                                   the python-lcm wheel, and a single-node Slurm (the Slurm tests)
@@ -12,7 +13,7 @@ build_packages=(
   build-essential cmake ninja-build pkg-config git ccache dpkg-dev
   libdart-all-dev libdart-collision-bullet-dev libdart-utils-dev libdart-gui-osg-dev
   libdart-external-lodepng-dev libdart-external-imgui-dev
-  libsdformat-dev
+  libtinyxml2-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libompl-dev
   qtbase5-dev libqt5charts5-dev
@@ -26,6 +27,17 @@ build_packages=(
   python3-dev pybind11-dev python3-numpy python3-opencv python3-greenlet
 )
 test_packages=(xvfb xauth xdotool openbox bc python3-pip chromium lintian)
+
+# What differs between the releases. Aula reads SDF with its own reader (libs/world, on tinyxml2)
+# on both; Debian 12's libsdformat is only the oracle of that reader's test (WorldSdfOracle), and
+# Debian 13 has no libsdformat at all. Everything else has the same package names on both.
+release_id="unknown"
+if [ -r /etc/os-release ]; then release_id="$(. /etc/os-release && echo "${ID:-unknown}-${VERSION_ID:-unknown}")"; fi
+case "$release_id" in
+  debian-12) test_packages+=(libsdformat-dev) ;;
+  debian-13) ;;
+  *) echo "install-deps: $release_id is neither Debian 12 nor 13; trying Debian 13's package names" >&2 ;;
+esac
 slurm_packages=(slurmctld slurmd slurm-client munge)
 
 set_name="${1:-all}"

@@ -32,9 +32,12 @@ AULA_MODULE_API void* aula_sim_view_open(const dart::simulation::WorldPtr& world
     auto skeleton = world->getSkeleton(i);
     const bool statics = skeleton->getName().rfind("statics", 0) == 0;
     for (std::size_t b = 0; b < skeleton->getNumBodyNodes(); ++b) {
-      for (auto* node : skeleton->getBodyNode(b)->getShapeNodesWith<dart::dynamics::VisualAspect>()) {
-        node->getVisualAspect()->setColor(statics ? Eigen::Vector3d(0.75, 0.75, 0.78)
-                                                  : Eigen::Vector3d(0.95, 0.55, 0.1));
+      // By index: getShapeNodesWith() is deprecated in DART 6.13 (eachShapeNodeWith is not in 6.12).
+      auto* body = skeleton->getBodyNode(b);
+      for (std::size_t n = 0; n < body->getNumShapeNodes(); ++n) {
+        if (auto* visual = body->getShapeNode(n)->getVisualAspect()) {
+          visual->setColor(statics ? Eigen::Vector3d(0.75, 0.75, 0.78) : Eigen::Vector3d(0.95, 0.55, 0.1));
+        }
       }
     }
   }

@@ -22,7 +22,7 @@ for path in ./usr/bin/aula ./usr/bin/aula-sim ./usr/bin/vacuum-cleaner ./usr/bin
   grep -q " $path\$" <<<"$contents" || { echo "missing from $deb: $path"; exit 1; }
 done
 depends="$(dpkg-deb -f "$deb" Depends)"
-for lib in libdart libsdformat liblcm libqt5widgets libopencv-core libpython3.11 python3-numpy python3-opencv python3-greenlet binutils; do
+for lib in libdart liblcm libqt5widgets libopencv-core "libpython3\.[0-9]*" python3-numpy python3-opencv python3-greenlet binutils; do
   grep -q "$lib" <<<"$depends" || { echo "Depends lacks $lib (dpkg-shlibdeps): $depends"; exit 1; }
 done
 grep -q "cmake" <<<"$depends" || { echo "Depends lacks what a plugin build needs: $depends"; exit 1; }

@@ -248,7 +248,8 @@ void PhysicsWorld::refreshNearStatics(bool force) {
   // Detach the old shapes from the collision group while they still exist: DART 6.12 would
   // otherwise destroy their collision objects after the shape frames are gone (use after free).
   const auto group = world_->getConstraintSolver()->getCollisionGroup();
-  for (auto* node : near_body_->getShapeNodes()) group->removeShapeFrame(node);
+  // By index: getShapeNodes() is deprecated in DART 6.13 (eachShapeNode is not in 6.12).
+  for (std::size_t n = 0; n < near_body_->getNumShapeNodes(); ++n) group->removeShapeFrame(near_body_->getShapeNode(n));
   near_body_->removeAllShapeNodes();
   for (const int i : near_set_) {
     auto* node = near_body_->createShapeNodeWith<CollisionAspect, DynamicsAspect>(statics_[i].shape, statics_[i].name);

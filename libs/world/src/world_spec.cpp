@@ -1,5 +1,5 @@
-// Aula's plain WorldSpec of a Gazebo-style SDF world: from the parsed-world cache, else parsed by
-// the SDF module (world_sdf.cpp).
+// Aula's plain WorldSpec of a Gazebo-style SDF world: from the parsed-world cache, else read by
+// Aula's SDF reader (world_sdf.cpp).
 #include "aula/world/world_spec.hpp"
 
 #include "world_cache.hpp"
@@ -8,9 +8,6 @@
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/config/settings.hpp>
-
-
-#include <dlfcn.h>
 
 #include <cerrno>
 #include <cmath>
@@ -190,16 +187,6 @@ std::vector<std::string> modelSearchPath(const std::string& world_path) {
     // No installed data (a test binary with AULA_DATA_DIR unset): the other folders still count.
   }
   return folders;
-}
-
-void parseSdfWorld(const std::string& path, const std::vector<std::string>& folders, WorldSpec& spec,
-                   std::vector<std::string>& inputs) {
-  const std::string module = config::libDir() + "/libaula_world_sdf.so";
-  void* library = dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);  // kept: sdformat's globals live on
-  if (library == nullptr) throw WorldError(path + ": cannot load Aula's SDF reader: " + dlerror());
-  auto parse = reinterpret_cast<decltype(&aula_world_parse_sdf)>(dlsym(library, "aula_world_parse_sdf"));
-  if (parse == nullptr) throw WorldError(path + ": " + module + " has no aula_world_parse_sdf");
-  parse(path, folders, spec, inputs);
 }
 
 WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path) {

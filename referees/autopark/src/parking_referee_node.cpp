@@ -53,8 +53,10 @@ std::string touched(const world::WorldSpec& world, const ParkingScene& scene, do
     nearest_m = d;
     name = object.name.substr(0, object.name.find("::"));
     if (object.name == scene.curb_name) name = "the curb";
-    for (const auto& [parked, what] : {std::make_pair(&scene.rear_car, "the car behind the slot"),
-                                       std::make_pair(&scene.front_car, "the car in front of the slot")}) {
+    // A named array, not a braced list of make_pair temporaries (GCC 14's -Wdangling-reference).
+    const std::pair<const geometry::OrientedBox*, const char*> neighbours[] = {
+        {&scene.rear_car, "the car behind the slot"}, {&scene.front_car, "the car in front of the slot"}};
+    for (const auto& [parked, what] : neighbours) {
       if (std::hypot(parked->centre.x_m - at.x(), parked->centre.y_m - at.y()) < 0.05) name = what;
     }
   }

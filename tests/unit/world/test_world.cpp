@@ -149,6 +149,10 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
   EXPECT_TRUE(contains(mesh, "model 'statue', link 'body', collision 'shape': only <box> and <cylinder>")) << mesh;
   const std::string links = errorOf(kData + "two_links.world");
   EXPECT_TRUE(contains(links, "model 'wobbly': a robot (non-static model) must have exactly one <link>")) << links;
+  // Each names the file and line of the element at fault, in the world or in the model it includes.
+  EXPECT_TRUE(contains(mesh, "(" + kData + "mesh_obstacle.world:7)")) << mesh;
+  EXPECT_TRUE(contains(links, "(" + kData + "models/two_links/model.sdf:3)")) << links;
+  EXPECT_TRUE(contains(missing, "(" + kData + "missing_model.world:4)")) << missing;
   const std::string xml = errorOf(kData + "malformed.world");
   EXPECT_TRUE(contains(xml, "malformed.world:4: malformed XML")) << xml;
   const std::string misspelt = errorOf(kData + "misspelt_key.world");
@@ -195,6 +199,28 @@ TEST(LoadWorld, AWorldOrModelThatIncludesItselfIsRefusedAtOnce) {
   EXPECT_TRUE(contains(error, "<include><uri>loop.world</uri>: give model://NAME (found on the model path) or an "
                               "absolute path"))
       << error;
+}
+
+TEST(LoadWorld, ATypoInTheSdfIsNamedWithItsFileAndLine) {
+  const std::string dir = freshDir();
+  const std::string head = "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n<world name=\"w\">\n";
+  const std::string box = "<link name=\"l\"><collision name=\"c\"><geometry><box><size>1 1 1</size></box></geometry>"
+                          "</collision></link>";
+  const std::vector<std::pair<std::string, std::string>> typos = {
+      {"<model name=\"m\">\n<static>ture</static>" + box + "</model>", "model 'm': <static>ture</static> is not a boolean (true/false) (" + dir + "/typo.world:5)"},
+      {"<model name=\"m\"><static>true</static>\n<pose>1 2 3 0 0</pose>" + box + "</model>", "model 'm': <pose> needs 6 numbers, x y z roll pitch yaw (" + dir + "/typo.world:5)"},
+      {"<model name=\"m\"><static>true</static>\n<pose>1 2 3 0 0 0.5x</pose>" + box + "</model>", "is not a list of numbers (" + dir + "/typo.world:5)"},
+      {"<model name=\"m\"><static>true</static>\n\n<pose relative_to=\"f\">1 2 3 0 0 0</pose>" + box + "</model>",
+       "model 'm': <pose relative_to=\"f\"> is not supported; give poses relative to the parent element (" + dir + "/typo.world:6)"},
+      {"<model name=\"m\"><static>true</static>" + box + "</model>\n<model name=\"m\"><static>true</static>" + box + "</model>",
+       "two models named 'm' (" + dir + "/typo.world:5)"},
+      {"<model><static>true</static>" + box + "</model>", "<model> needs a name attribute (" + dir + "/typo.world:4)"},
+  };
+  for (const auto& [model, said] : typos) {
+    writeText(dir + "/typo.world", head + model + "\n</world>\n</sdf>\n");
+    const std::string error = errorOf(dir + "/typo.world");
+    EXPECT_TRUE(contains(error, said)) << error;
+  }
 }
 
 TEST(LoadWorld, ModelUrisNeverResolveInTheWorkingDirectory) {

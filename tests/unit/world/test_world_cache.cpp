@@ -1,5 +1,7 @@
 // The parsed-world cache ($XDG_CACHE_HOME/aula/worlds): a cached spec equals the parsed one
 // exactly, and an edited world or model file is parsed again.
+#include "expect_same_world.hpp"
+
 #include <aula/world/world_spec.hpp>
 
 #include <gtest/gtest.h>
@@ -32,17 +34,6 @@ class WorldCache : public ::testing::Test {
   fs::path root_;
 };
 
-void expectSame(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  EXPECT_TRUE(a.matrix() == b.matrix()) << a.matrix() << "\n!=\n" << b.matrix();
-}
-
-void expectSame(const Shape& a, const Shape& b) {
-  EXPECT_EQ(a.kind, b.kind);
-  EXPECT_TRUE(a.box_size_m == b.box_size_m);
-  EXPECT_EQ(a.radius_m, b.radius_m);
-  EXPECT_EQ(a.length_m, b.length_m);
-}
-
 void write(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
   std::ofstream(path) << text;
@@ -64,32 +55,8 @@ TEST_F(WorldCache, TheCachedSpecEqualsTheParsedOneExactly) {
     const std::size_t written = entries();
     const WorldSpec cached = loadWorld(path);
     EXPECT_EQ(entries(), written);
-    EXPECT_EQ(cached.name, parsed.name);
-    EXPECT_EQ(cached.source_path, parsed.source_path);
-    EXPECT_EQ(cached.sha256, parsed.sha256);
-    EXPECT_EQ(cached.physics_step_s, parsed.physics_step_s);
-    ASSERT_EQ(cached.statics.size(), parsed.statics.size()) << name;
-    for (std::size_t i = 0; i < parsed.statics.size(); ++i) {
-      EXPECT_EQ(cached.statics[i].name, parsed.statics[i].name);
-      expectSame(cached.statics[i].pose, parsed.statics[i].pose);
-      expectSame(cached.statics[i].shape, parsed.statics[i].shape);
-    }
-    ASSERT_EQ(cached.robots.size(), parsed.robots.size()) << name;
-    for (std::size_t r = 0; r < parsed.robots.size(); ++r) {
-      const RobotSpec &a = cached.robots[r], &b = parsed.robots[r];
-      EXPECT_EQ(a.name, b.name);
-      EXPECT_EQ(a.mass_kg, b.mass_kg);
-      expectSame(a.pose, b.pose);
-      expectSame(a.shape_offset, b.shape_offset);
-      expectSame(a.shape, b.shape);
-      ASSERT_EQ(a.plugins.size(), b.plugins.size());
-      for (std::size_t p = 0; p < b.plugins.size(); ++p) {
-        EXPECT_EQ(a.plugins[p].name, b.plugins[p].name);
-        EXPECT_EQ(a.plugins[p].type, b.plugins[p].type);
-        EXPECT_EQ(a.plugins[p].owner, b.plugins[p].owner);
-        EXPECT_EQ(a.plugins[p].params, b.plugins[p].params);
-      }
-    }
+    SCOPED_TRACE(name);
+    aula::world::testing::expectSameWorld(cached, parsed);
   }
   EXPECT_EQ(entries(), 3u);
 }

@@ -55,7 +55,7 @@ std::vector<std::vector<std::string>> windowPlaces(const RunSettings& run, bool 
 config::Config settingsOf(const cli::Arguments& args);
 
 // The exercise named by a command's EXERCISE argument; a usage error listing them otherwise.
-const settings::Exercise& exerciseArgument(const std::string& name, const std::string& command);
+AULA_NO_DANGLING const settings::Exercise& exerciseArgument(const std::string& name, const std::string& command);
 
 // The folder of the running `aula` (its sibling programs, its install prefix's parent).
 std::string binDir();

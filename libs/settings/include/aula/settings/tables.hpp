@@ -4,6 +4,7 @@
 // only the keys that process declares, and `aula config` prints the effective values.
 // Channel names are not settings: they come from the robot's plugins in the world.
 
+#include <aula/config/no_dangling.hpp>
 #include <aula/config/settings.hpp>
 
 #include <string>
@@ -42,8 +43,8 @@ const std::vector<Exercise>& exercises();
 const Exercise* exerciseOfProgram(const std::string& program);
 const Exercise* exerciseNamed(const std::string& name);
 // The exercise an exercise's own code names ("vacuum"); throws std::logic_error if unknown.
-const Exercise& requireExercise(const std::string& name);
+AULA_NO_DANGLING const Exercise& requireExercise(const std::string& name);
 // The table of a program ("aula-sim", "vacuum-cleaner", ...); throws std::logic_error if unknown.
-const config::SettingsTable& tableOf(const std::string& program);
+AULA_NO_DANGLING const config::SettingsTable& tableOf(const std::string& program);
 
 }  // namespace aula::settings

@@ -3,6 +3,8 @@
 // declared on them. Plain data, no sdformat or DART types, so that the simulator, the map
 // generator, the laser caster and the referees all share one description.
 
+#include <aula/config/no_dangling.hpp>
+
 #include <Eigen/Geometry>
 
 #include <map>
@@ -131,8 +133,9 @@ std::string sha256OfFile(const std::string& path);
 // that a fixed model changes the hash wherever the files lie. `inputs`: every file read.
 std::string worldSha256(const std::string& world_path, const std::vector<std::string>& inputs);
 
-// The robot `name` of a world, or a WorldError naming the world and the robots it has.
-const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name);
+// The robot `name` of a world, or a WorldError naming the world and the robots it has (a reference
+// into `world`, never into `name`).
+AULA_NO_DANGLING const RobotSpec& requireRobot(const WorldSpec& world, const std::string& name);
 // The channel of the robot's plugin of `type` (and instance name, when given), or a WorldError
 // saying what the exercise needs from the robot. Robot channels are named here, in the world.
 std::string channelOf(const RobotSpec& robot, const std::string& type, const std::string& name = "");

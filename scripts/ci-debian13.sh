@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# CI's Debian 13 ("trixie") stage (.ci/run calls it after the Debian 12 stages): this checkout's
+# HEAD, cloned into a Debian 13 root, with its dependencies from scripts/install-deps.sh, built
+# with AULA_WERROR, its unit tests (ctest -L unit), and one headless run of each exercise's
+# reference. Needs root (debootstrap, chroot, mount).
+#
+# The root is made once with `debootstrap --variant=minbase trixie` and kept, with its installed
+# packages and its own ccache, in AULA_DEBIAN13_ROOT (default /var/cache/aula-ci/trixie): a warm
+# stage installs nothing and rebuilds from the cache. Delete that folder to start cold.
+#   scripts/ci-debian13.sh            the whole stage
+#   AULA_DEBIAN13_ROOT=DIR scripts/ci-debian13.sh
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+root="${AULA_DEBIAN13_ROOT:-/var/cache/aula-ci/trixie}"
+start_s=$SECONDS
+say() { echo "ci-debian13 [$((SECONDS - start_s)) s]: $*"; }
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "ci-debian13: needs root (debootstrap, chroot and mount); run it as root or with sudo" >&2
+  exit 2
+fi
+
+# 1. The root: made once (about 2 minutes), then reused. A half-made one is made again.
+if [ ! -f "$root/.aula-debian13-ready" ]; then
+  command -v debootstrap >/dev/null || { apt-get update -qq && apt-get install -y -qq debootstrap >/dev/null; }
+  rm -rf "$root.partial"
+  mkdir -p "$(dirname "$root")"
+  say "making a Debian 13 root in $root (debootstrap --variant=minbase trixie)"
+  debootstrap --variant=minbase trixie "$root.partial" >"$(dirname "$root")/debootstrap.log" 2>&1 ||
+    { tail -20 "$(dirname "$root")/debootstrap.log"; exit 1; }
+  rm -rf "$root"
+  mv "$root.partial" "$root"
+  touch "$root/.aula-debian13-ready"
+else
+  say "reusing the Debian 13 root in $root"
+fi
+
+# 2. Its kernel file systems, each rbind made a slave so that unmounting never reaches the host's
+# /dev; unmounted on every exit.
+mounted=()
+cleanup() {
+  local m
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do m="${mounted[$i]}"; umount -R "$m" 2>/dev/null || umount -lR "$m" || true; done
+}
+trap cleanup EXIT
+mountpoint -q "$root/proc" || { mount -t proc proc "$root/proc"; mounted+=("$root/proc"); }
+for fs in sys dev; do
+  if ! mountpoint -q "$root/$fs"; then
+    mount --rbind "/$fs" "$root/$fs"
+    mount --make-rslave "$root/$fs"
+    mounted+=("$root/$fs")
+  fi
+done
+cp /etc/resolv.conf "$root/etc/resolv.conf"
+
+# 3. This checkout's HEAD as a clean clone inside the root (the build folder is kept between
+# stages: ccache does the rest).
+commit="$(git -C "$here" rev-parse HEAD)"
+src="$root/src/aula"
+if [ ! -d "$src/.git" ]; then
+  rm -rf "$src"
+  mkdir -p "$root/src"
+  git clone --quiet --no-checkout "$here" "$src"
+fi
+git -C "$src" fetch --quiet "$here" "$commit"
+git -C "$src" checkout --quiet --force --detach "$commit"
+git -C "$src" clean --quiet -fdx -e build/
+say "cloned $commit into $src"
+
+in_root() { chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
+  CCACHE_DIR=/var/cache/ccache TMPDIR=/tmp bash -c "cd /src/aula && $1"; }
+
+# 4. Dependencies: only what the stage builds and runs (`build`), from Debian 13's own packages.
+in_root "scripts/install-deps.sh build"
+say "dependencies installed"
+
+# 5. Build with warnings as errors, through the root's own ccache.
+in_root "cmake --preset default -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache >/dev/null &&
+  cmake --build build -j\$(nproc) >build/ci-build.log 2>&1 || { tail -60 build/ci-build.log; exit 1; }"
+say "built ($(in_root "ccache -s 2>/dev/null | grep -E '^ *Hits' | head -1 | tr -s ' '"))"
+
+# 6. The unit tests.
+in_root "ctest --test-dir build -L unit -j\$(nproc) --output-on-failure --timeout 600 >build/ci-unit.log 2>&1 ||
+  { grep -E 'tests passed|Failed|\\*\\*\\*' build/ci-unit.log | tail -40; exit 1; }; grep 'tests passed' build/ci-unit.log"
+say "unit tests passed"
+
+# 7. One headless run of each exercise's reference, on a port of its own; the mark must be there.
+for exercise in vacuum teletaxi autopark; do
+  in_root "build/bin/aula run $exercise --headless --algorithm=reference --seed=1 \
+    --lcm-url='udpm://239.255.76.67:0?ttl=0' --report=/tmp/ci-$exercise.json >/tmp/ci-$exercise.log 2>&1 ||
+    { tail -30 /tmp/ci-$exercise.log; exit 1; }
+    grep -q '\"mark\"' /tmp/ci-$exercise.json || { echo 'no mark in the report'; cat /tmp/ci-$exercise.json; exit 1; }"
+  say "$exercise: $(in_root "grep -E '\"(mark|coverage_percent)\"' /tmp/ci-$exercise.json | tr -d ' \n'")"
+done
+say "Debian 13 stage passed in $((SECONDS - start_s)) s"
