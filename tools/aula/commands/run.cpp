@@ -225,20 +225,6 @@ std::string isolate() {
   return "partial";
 }
 
-// The run's bus: --lcm-url, the .cfg's Aula.LcmUrl or LCM_DEFAULT_URL when one of them chooses,
-// else one of its own, so that two runs on one machine never hear each other. Port 0: a free
-// port the OS hands out, now, for all three processes.
-std::string runBus(const Arguments& args, const RunSettings& run) {
-  config::CommandLine chosen;
-  if (args.given("lcm-url")) chosen.options["lcm-url"] = args.text("lcm-url");
-  const config::Config& cfg = run.component();
-  const char* env = std::getenv("LCM_DEFAULT_URL");
-  const bool someone_chose = args.given("lcm-url") || (cfg.has("Aula.LcmUrl") && cfg.origin("Aula.LcmUrl") != "default") ||
-                             (env != nullptr && *env != '\0');
-  const std::string url = someone_chose ? lcmbus::resolveUrl(chosen, cfg) : "udpm://239.255.76.67:0?ttl=0";
-  return lcmbus::withFreePort(url);
-}
-
 int runExercise(const Arguments& args) {
   const Exercise& ex = exerciseArgument(args.positional(0), "run");
   bool headless = args.flag("headless");

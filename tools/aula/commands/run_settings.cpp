@@ -2,11 +2,13 @@
 
 #include <aula/config/paths.hpp>
 #include <aula/grade/calibration.hpp>
+#include <aula/lcm/bus.hpp>
 #include <aula/desktop/window_layout.hpp>
 #include <aula/desktop/work_area.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -209,6 +211,17 @@ std::string binDir() {
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   return error ? std::string(".") : self.parent_path().string();
+}
+
+std::string runBus(const cli::Arguments& args, const RunSettings& run) {
+  config::CommandLine chosen;
+  if (args.given("lcm-url")) chosen.options["lcm-url"] = args.text("lcm-url");
+  const config::Config& cfg = run.component();
+  const char* env = std::getenv("LCM_DEFAULT_URL");
+  const bool someone_chose = args.given("lcm-url") || (cfg.has("Aula.LcmUrl") && cfg.origin("Aula.LcmUrl") != "default") ||
+                             (env != nullptr && *env != '\0');
+  const std::string url = someone_chose ? lcmbus::resolveUrl(chosen, cfg) : "udpm://239.255.76.67:0?ttl=0";
+  return lcmbus::withFreePort(url);
 }
 
 }  // namespace aula::commands

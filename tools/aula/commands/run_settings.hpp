@@ -54,6 +54,11 @@ std::vector<std::vector<std::string>> windowPlaces(const RunSettings& run, bool 
 // The command line's --Section.Key=value settings as a Config with their origins.
 config::Config settingsOf(const cli::Arguments& args);
 
+// The run's bus: --lcm-url, the .cfg's Aula.LcmUrl or LCM_DEFAULT_URL when one of them chooses,
+// else one of its own, so that two runs on one machine never hear each other. Port 0: a free
+// port the OS hands out, now, for all three processes.
+std::string runBus(const cli::Arguments& args, const RunSettings& run);
+
 // The exercise named by a command's EXERCISE argument; a usage error listing them otherwise.
 AULA_NO_DANGLING const settings::Exercise& exerciseArgument(const std::string& name, const std::string& command);
 

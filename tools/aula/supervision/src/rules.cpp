@@ -145,6 +145,19 @@ std::string staleBuild(const std::string& plugin_path) {
   return "";
 }
 
+std::string limitPassed(const sandbox::Limits& limits, uint64_t output_bytes, const std::vector<pid_t>* processes) {
+  if (output_bytes > limits.output_bytes) {
+    return "the algorithm printed more than " + std::to_string(limits.output_bytes >> 20) + " MB (stdout and stderr)";
+  }
+  if (processes == nullptr) return "";
+  const int started = static_cast<int>(processes->size()) - 2;
+  if (started > limits.processes) return "the algorithm started more than " + std::to_string(limits.processes) + " processes";
+  if (started > 0 && sandbox::memoryOf(*processes) > limits.memory_bytes) {
+    return "the algorithm used more than " + std::to_string(limits.memory_bytes >> 20) + " MB of memory (its processes together)";
+  }
+  return "";
+}
+
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why) {
   nlohmann::ordered_json report;
   report["exercise"] = exercise;

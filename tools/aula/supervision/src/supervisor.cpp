@@ -13,6 +13,7 @@
 #include <aula/supervision/rules.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <csignal>
 #include <iostream>
 #include <memory>
@@ -28,11 +29,6 @@
 
 namespace aula::supervision {
 namespace {
-
-std::string programName(const std::string& path) {
-  const auto slash = path.rfind('/');
-  return slash == std::string::npos ? path : path.substr(slash + 1);
-}
 
 void writeAbortedReport(const Supervision& run, const std::string& why) {
   if (run.report_path.empty()) return;
@@ -170,23 +166,12 @@ class RunSupervisor {
   // namespace dies with it).
   void checkLimits() {
     if (!run_.sandbox || children_.size() < 2 || told_referee_) return;
-    const sandbox::Limits& limits = run_.confinement.limits;
-    std::string why;
-    if (output_ && output_->bytesRead() > limits.output_bytes) {
-      why = "the algorithm printed more than " + std::to_string(limits.output_bytes >> 20) + " MB (stdout and stderr)";
-    }
     const auto now = std::chrono::steady_clock::now();
-    if (why.empty() && now - processes_checked_ >= std::chrono::milliseconds(100)) {
-      processes_checked_ = now;
-      const std::vector<pid_t> processes = process::descendantsOf(children_[1]->pid());
-      const int started = static_cast<int>(processes.size()) - 2;
-      if (started > limits.processes) why = "the algorithm started more than " + std::to_string(limits.processes) + " processes";
-      // Each process is held by its own address-space limit; with processes of its own, the
-      // component's are held together too (their proportional shares of every page).
-      if (why.empty() && started > 0 && sandbox::memoryOf(processes) > limits.memory_bytes) {
-        why = "the algorithm used more than " + std::to_string(limits.memory_bytes >> 20) + " MB of memory (its processes together)";
-      }
-    }
+    std::vector<pid_t> processes;
+    const bool look = now - processes_checked_ >= std::chrono::milliseconds(100);
+    if (look) processes_checked_ = now, processes = process::descendantsOf(children_[1]->pid());
+    const std::string why =
+        limitPassed(run_.confinement.limits, output_ ? output_->bytesRead() : 0, look ? &processes : nullptr);
     if (why.empty()) return;
     std::cerr << "aula: " << why << ": stopping it\n";
     tellReferee(why);
@@ -246,7 +231,7 @@ class RunSupervisor {
       event.crash_line = crash_text_;
       event.refused = escapes_.lastRefused();
     }
-    const std::string name = programName(run_.lines[i][0]);  // the program, not its sandbox's wrapper
+    const std::string name = std::filesystem::path(run_.lines[i][0]).filename().string();  // the program, not its sandbox's wrapper
     const ExitVerdict verdict = supervision::onExit(event, name);
     if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
     if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";

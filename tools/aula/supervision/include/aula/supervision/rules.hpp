@@ -3,7 +3,11 @@
 // CPU its processes share, what a process's exit code means, and the report written for a
 // referee that cannot write its own.
 
+#include <aula/sandbox/sandbox.hpp>
+
 #include <nlohmann/json.hpp>
+
+#include <sys/types.h>
 
 #include <optional>
 #include <string>
@@ -71,6 +75,12 @@ ExitVerdict onExit(const ExitEvent& event, const std::string& program);
 // names no sources): the build's CMakeCache.txt names the project; any of its C++ sources or its
 // CMakeLists.txt changed after the plugin was built means the build failed or was not run.
 std::string staleBuild(const std::string& plugin_path);
+
+// Why a sandboxed component is past a limit the launcher counts, or "": its output (stdout and
+// stderr), its processes (bubblewrap's two aside) and, with processes of its own, their memory
+// together (each is held by its own address-space limit too). `processes`: the component's
+// process tree, or nullptr when it was not looked at this time.
+std::string limitPassed(const sandbox::Limits& limits, uint64_t output_bytes, const std::vector<pid_t>* processes);
 
 // The report of a run whose referee cannot write one: no mark, and why.
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why);
