@@ -1,4 +1,4 @@
-# aula_add_algorithm(NAME name EXERCISE vacuum|teletaxi|autopark SOURCES file.cpp ...)
+# aula_add_algorithm(NAME name EXERCISE exercise SOURCES file.cpp ...)
 #
 # Builds a student's algorithm as a plugin (lib<name>.so) that an Aula component loads with
 # --algorithm=PATH.so. The student's sources define makeStudentAlgorithm(...) exactly as in the
@@ -18,7 +18,7 @@ set(_AULA_ALGORITHM_DIR "${CMAKE_CURRENT_LIST_DIR}")
 function(aula_add_algorithm)
   cmake_parse_arguments(ARG "" "NAME;EXERCISE;OUTPUT_DIRECTORY;HEADER;MAKE" "SOURCES;LIBS" ${ARGN})
   if(NOT ARG_NAME OR NOT ARG_EXERCISE OR (NOT ARG_SOURCES AND NOT ARG_LIBS))
-    message(FATAL_ERROR "aula_add_algorithm(NAME name EXERCISE vacuum|teletaxi|autopark SOURCES ...): "
+    message(FATAL_ERROR "aula_add_algorithm(NAME name EXERCISE exercise SOURCES ...): "
                         "NAME, EXERCISE and SOURCES are required")
   endif()
   # The exercise's API target says what a plugin implements (aula_declare_algorithm_api).
@@ -28,7 +28,7 @@ function(aula_add_algorithm)
     set(_api aula_${ARG_EXERCISE}_api)
   else()
     message(FATAL_ERROR "aula_add_algorithm(${ARG_NAME}): no exercise '${ARG_EXERCISE}' (no target "
-                        "Aula::${ARG_EXERCISE}_api); the exercises are vacuum, teletaxi and autopark")
+                        "Aula::${ARG_EXERCISE}_api); `aula --help` lists the exercises")
   endif()
   get_target_property(AULA_HEADER ${_api} AULA_ALGORITHM_HEADER)
   get_target_property(AULA_CLASS ${_api} AULA_ALGORITHM_CLASS)
@@ -73,17 +73,19 @@ function(aula_declare_algorithm_api)
     EXPORT_PROPERTIES "AULA_ALGORITHM_HEADER;AULA_ALGORITHM_CLASS;AULA_ALGORITHM_MAKE")
 endfunction()
 
-# A component exports to the plugins it loads only the student API (aula_plugin_exports.list),
-# not its own symbols (-rdynamic would give a plugin the references and everything else).
+# A component exports to the plugins it loads only the student API (the common patterns of
+# aula_plugin_exports.list.in and its exercise's own, aula_exercise_exports_list), not its own
+# symbols (-rdynamic would give a plugin the references and everything else).
 # API_LIBS: the static libraries holding the API's code, linked whole: the component itself may
 # not call every API function (only the references, plugins of their own, called some), and a
 # student's plugin must find each one (build.ComponentsExportOnlyTheStudentApi checks it).
 function(aula_export_plugin_api target)
-  cmake_parse_arguments(ARG "" "" "API_LIBS" ${ARGN})
-  target_link_options(${target} PRIVATE "LINKER:--dynamic-list=${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list")
+  cmake_parse_arguments(ARG "" "EXERCISE" "API_LIBS" ${ARGN})
+  aula_exercise_exports_list(${ARG_EXERCISE} _list)
+  target_link_options(${target} PRIVATE "LINKER:--dynamic-list=${_list}")
   foreach(_lib ${ARG_API_LIBS})
     target_link_options(${target} PRIVATE "LINKER:--whole-archive,$<TARGET_FILE:${_lib}>,--no-whole-archive")
     target_link_libraries(${target} PRIVATE ${_lib})
   endforeach()
-  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/cmake/aula_plugin_exports.list)
+  set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${_list})
 endfunction()

@@ -17,15 +17,31 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client aula-replay
-    teletaxi teletaxi-referee vacuum-cleaner vacuum-cleaner-referee autopark autopark-referee)
+# Each declared exercise's programs, template plugin and Python host (aula_exercise).
+set(_exercise_programs)
+set(_exercise_students)
+set(_exercise_pythons)
+set(_exercise_apis)
+foreach(_exercise ${AULA_EXERCISES})
+  foreach(_key COMPONENT REFEREE)
+    get_property(_target GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_${_key})
+    list(APPEND _exercise_programs ${_target})
+  endforeach()
+  get_property(_target GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_STUDENT)
+  list(APPEND _exercise_students ${_target})
+  get_property(_target GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_PYTHON)
+  list(APPEND _exercise_pythons ${_target})
+  get_property(_target GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_API)
+  list(APPEND _exercise_apis ${_target})
+  set_target_properties(${_target} PROPERTIES EXPORT_NAME ${_exercise}_api)
+endforeach()
+set(AULA_PROGRAMS aula aula-sim aula-mapgen aula-demo-client aula-replay ${_exercise_programs})
 install(TARGETS ${AULA_PROGRAMS} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS aula_teletaxi_student aula_vacuum_student aula_autopark_student
-        LIBRARY DESTINATION lib/aula/algorithms)
+install(TARGETS ${_exercise_students} LIBRARY DESTINATION lib/aula/algorithms)
 get_property(_builtins GLOBAL PROPERTY AULA_BUILTIN_ALGORITHMS)
 install(TARGETS ${_builtins} LIBRARY DESTINATION lib/aula/references)
 install(TARGETS aula_sim_view LIBRARY DESTINATION lib/aula)
-install(TARGETS aula_teletaxi_python aula_vacuum_python aula_autopark_python LIBRARY DESTINATION lib/aula/python)
+install(TARGETS ${_exercise_pythons} LIBRARY DESTINATION lib/aula/python)
 
 # The API a plugin compiles against (AULA_API_HEADERS, cmake/AulaApi.cmake). Not the proxies: they
 # feed the devices from Aula's bus, a library a plugin never links.
@@ -38,10 +54,8 @@ endforeach()
 install(DIRECTORY ${PROJECT_BINARY_DIR}/lcmtypes/lcmgen/aula DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
 # find_package(Aula)
-foreach(_exercise component vacuum teletaxi autopark)
-  set_target_properties(aula_${_exercise}_api PROPERTIES EXPORT_NAME ${_exercise}_api)
-endforeach()
-install(TARGETS aula_component_api aula_vacuum_api aula_teletaxi_api aula_autopark_api EXPORT AulaTargets)
+set_target_properties(aula_component_api PROPERTIES EXPORT_NAME component_api)
+install(TARGETS aula_component_api ${_exercise_apis} EXPORT AulaTargets)
 # Always lib/ (not the multiarch libdir): programs find their plugins at <bin>/../lib/aula.
 set(AULA_CMAKE_DIR lib/cmake/Aula)
 install(EXPORT AulaTargets NAMESPACE Aula:: DESTINATION ${AULA_CMAKE_DIR})
@@ -60,10 +74,15 @@ configure_file(${_src}/cmake/aula_algorithm_entry.cpp.in ${PROJECT_BINARY_DIR}/a
 # Data.
 install(DIRECTORY ${_src}/worlds ${_src}/config DESTINATION ${CMAKE_INSTALL_DATADIR}/aula
         PATTERN "__pycache__" EXCLUDE)
-foreach(_exercise teletaxi vacuum autopark)
-  install(FILES ${_src}/components/${_exercise}/student/MyAlgorithm.cpp ${_src}/components/${_exercise}/student/MyAlgorithm.py
-          ${_src}/components/${_exercise}/student/aula_${_exercise}.pyi ${_src}/components/common/python/aula_devices.pyi
-          DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise})
+# The student templates (`aula new`): each exercise's TEMPLATES folder, its links followed.
+foreach(_exercise ${AULA_EXERCISES})
+  get_property(_templates GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_TEMPLATES)
+  file(GLOB _files LIST_DIRECTORIES false ${_templates}/*)
+  foreach(_file ${_files})
+    get_filename_component(_name ${_file} NAME)
+    file(REAL_PATH ${_file} _real)
+    install(FILES ${_real} DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise} RENAME ${_name})
+  endforeach()
 endforeach()
 
 # The user's documentation, where `aula --help` and the docs' links point (config::docDir), and

@@ -1,11 +1,14 @@
 # aula_api_headers_sha256(OUT ROOT DIR:FILE...): the SHA-256 of the plugin API's headers (FILE
 # relative to ROOT), their comments and the run of white space left out (neither changes a
-# layout), the ABI header itself (algorithm_plugin.hpp, which records the hash) left out.
+# layout; the entries sorted), the ABI header itself (algorithm_plugin.hpp, which records the hash) left out.
 # Also a script, for the test that shows the hash follows the API and only the API:
 #   cmake -DROOT=DIR -DHEADERS="dir:file;..." -P aula_api_hash.cmake   prints the hash
 function(aula_api_headers_sha256 out root)
   set(_all "")
-  foreach(_entry ${ARGN})
+  # In the entries' order, sorted: the exercises declare theirs in any order.
+  set(_entries ${ARGN})
+  list(SORT _entries)
+  foreach(_entry ${_entries})
     string(REGEX REPLACE "^[^:]*:" "" _file "${_entry}")
     if(_file MATCHES "algorithm_plugin\\.hpp$")
       continue()

@@ -17,7 +17,7 @@ if [ ! -f build-sanitize/build.ninja ]; then
 fi
 # Only what the run needs: the unit tests (their discovery runs them under the sanitizers too),
 # and the programs and student plugins of the three exercises.
-cmake --build build-sanitize -j"$(nproc)" --target aula_unit_tests aula_run_vacuum aula_run_teletaxi aula_run_autopark
+cmake --build build-sanitize -j"$(nproc)" --target aula_unit_tests aula_all_exercises
 ctest --test-dir build-sanitize -L unit -j"$(nproc)" --output-on-failure
 
 out="$(mktemp -d)"

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """A component exports to the plugins it loads only the student API (issue 28).
 
-Usage: check_plugin_exports.py NM EXPORTS_LIST COMPONENT[=PLUGIN,PLUGIN...]...
+Usage: check_plugin_exports.py NM EXPORTS_LIST@COMPONENT[=PLUGIN,PLUGIN...]...
 
 Each component's dynamic symbols (nm -D --defined-only, demangled) are checked against the
-linker dynamic list it is linked with (cmake/aula_plugin_exports.list): every symbol that names
+linker dynamic list it is linked with (build/plugin_exports/<exercise>.list: the common patterns
+of cmake/aula_plugin_exports.list.in and the exercise's own): every symbol that names
 Aula must match one of the list's patterns (globs on demangled names, as ld reads them). The
 others are what any program exports for the shared libraries it links (libc's and libstdc++'s
 copy relocations, template instances of the standard library's or OMPL's that a library also
@@ -43,15 +44,18 @@ def imports(nm, plugin):
 
 
 def main():
-    nm, list_path, arguments = sys.argv[1], sys.argv[2], sys.argv[3:]
-    programs = [a.split("=", 1)[0] for a in arguments]
-    plugins_of = {a.split("=", 1)[0]: a.split("=", 1)[1].split(",") for a in arguments if "=" in a}
-    c_names, cxx_globs = patterns(list_path)
-    if not cxx_globs:
-        print(f"FAIL: no extern \"C++\" patterns in {list_path}")
+    nm, arguments = sys.argv[1], sys.argv[2:]
+    if not arguments:
+        print("FAIL: no component to check")
         return 1
     failures = 0
-    for program in programs:
+    for argument in arguments:
+        list_path, rest = argument.split("@", 1)
+        program, _, plugins = rest.partition("=")
+        c_names, cxx_globs = patterns(list_path)
+        if not cxx_globs:
+            print(f"FAIL: no extern \"C++\" patterns in {list_path}")
+            return 1
         symbols = exports(nm, program)
         api = [s for s in symbols if s in c_names or any(fnmatch.fnmatchcase(s, g) for g in cxx_globs)]
         stray = [s for s in symbols if s not in api and "aula" in s.lower()]
@@ -64,7 +68,7 @@ def main():
         if not api:
             failures += 1
             print(f"FAIL: {name} exports nothing of the student API (is it linked with {list_path}?)")
-        for plugin in plugins_of.get(program, []):
+        for plugin in filter(None, plugins.split(",")):
             wanted = [s for s in imports(nm, plugin) if "aula" in s.lower()]
             missing = [s for s in wanted if s not in api]
             if missing:

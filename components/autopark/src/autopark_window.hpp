@@ -21,6 +21,10 @@
 
 namespace aula::autopark {
 
+// The street's geometry (libs/scoring), by its names here.
+using scoring::ParkingScene;
+using scoring::sceneNamesOf;
+
 class LaserView : public QWidget {
  public:
   explicit LaserView(const AutoparkComponent& component, QWidget* parent = nullptr);

@@ -25,6 +25,9 @@
 
 namespace aula::vacuum {
 
+// The referee's own coverage measure (libs/scoring), by its name here.
+using scoring::CoverageGrid;
+
 class CoveragePlot;
 
 class VacuumWindow : public QMainWindow {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace aula::vacuum {
+namespace aula::scoring {
 
 CoverageGrid::CoverageGrid(const cv::Mat& map, const geometry::MapTransform& transform, double start_x_m,
                            double start_y_m)
@@ -47,4 +47,4 @@ void CoverageGrid::markDisc(double x_m, double y_m, double radius_m) {
   }
 }
 
-}  // namespace aula::vacuum
+}  // namespace aula::scoring

@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-namespace aula::autopark {
+namespace aula::scoring {
 
 using geometry::OrientedBox;
 
@@ -170,4 +170,4 @@ bool parkedElsewhere(const ParkingScene& scene, const ParkingMeasures& m, double
   return !m.inside_slot && std::abs(y_m - scene.ideal_y_m) < lane_half_width && std::abs(m.yaw_error_deg) < 45.0;
 }
 
-}  // namespace aula::autopark
+}  // namespace aula::scoring

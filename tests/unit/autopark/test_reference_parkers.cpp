@@ -17,6 +17,7 @@
 #include <string>
 
 using namespace aula::autopark;
+using aula::scoring::ParkingScene;
 
 namespace {
 

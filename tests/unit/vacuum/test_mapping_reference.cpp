@@ -16,6 +16,7 @@
 #include <tuple>
 
 using namespace aula::vacuum;
+using aula::scoring::CoverageGrid;
 using aula::vacuum::mapping::MappingReference;
 
 namespace {

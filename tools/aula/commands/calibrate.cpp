@@ -7,6 +7,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/grade/calibration.hpp>
 #include <aula/grade/grade_plan.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <filesystem>
 #include <iostream>
@@ -51,13 +52,23 @@ int calibrateWorld(const cli::Arguments& args) {
   return 0;
 }
 
+// "autopark (park_time_s), ... or vacuum (coverage_percent)": what each declared exercise calibrates.
+std::string calibratedExercises() {
+  std::vector<std::string> items;
+  for (const auto& ex : settings::exercises()) {
+    if (ex.calibration) items.push_back(ex.name + " (its scale of " + ex.calibration->measure + ")");
+  }
+  std::string out;
+  for (size_t i = 0; i < items.size(); ++i) out += (i == 0 ? "" : i + 1 == items.size() ? " or " : ", ") + items[i];
+  return out;
+}
+
 }  // namespace
 
 cli::Command calibrate() {
   cli::Command c("calibrate", "calibrate an exercise's rubric for a world: the baseline's median a 5, the anchor's a 10 "
-                              "(TeleTaxi: the reference's driving time a speed mark of 10)");
-  c.positionals = {{"EXERCISE", "vacuum (its coverage scale), teletaxi (its speed scale, for the destination) or "
-                                "autopark (its time allowance)"}};
+                              "(with no baseline, the anchor's measure is worth a 10)");
+  c.positionals = {{"EXERCISE", calibratedExercises()}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("world", "FILE", "the world to calibrate (a .world file or a shipped world's name); required"))
       .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")

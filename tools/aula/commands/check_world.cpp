@@ -50,9 +50,9 @@ std::vector<std::string> exerciseProblems(const settings::Exercise& ex, const wo
               << robot_key << " = " << cfg.getString(robot_key) << " is not in the world)\n";
   }
   std::vector<std::string> missing = missingPlugins(ex, *robot);
-  if (ex.section == "Autopark") {  // the referee's street: its curb and parked cars
+  if (ex.referee_scene == "parking_street") {  // the referee's street: its curb and parked cars
     try {
-      autopark::ParkingScene::fromWorld(spec, robot->name, autopark::sceneNamesOf(ex.referee_settings->resolve(Config())));
+      scoring::ParkingScene::fromWorld(spec, robot->name, scoring::sceneNamesOf(ex.referee_settings->resolve(Config())));
     } catch (const world::WorldError& e) {
       missing.push_back(std::string("its street for the referee: ") + e.what());
     }
@@ -86,7 +86,7 @@ int checkWorldFile(const cli::Arguments& args) {
   if (args.given("exercise")) {
     const settings::Exercise* asked = settings::exerciseNamed(args.text("exercise"));
     if (asked == nullptr || asked->referee_settings == nullptr) {
-      throw config::ConfigError("aula check-world: --exercise=" + args.text("exercise") + ": teletaxi, vacuum or autopark");
+      throw config::ConfigError("aula check-world: --exercise=" + args.text("exercise") + ": " + settings::exerciseNames(false));
     }
   }
   const world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(args.positional(0), "aula check-world FILE"));
@@ -112,7 +112,7 @@ cli::Command checkWorld() {
   cli::Command c("check-world", "load a world, list its robots, sensors and channels, and say what each exercise would miss");
   c.positionals = {{"FILE", "an SDF world file"}};
   c.options.add(cli::valueOption("map", "FILE.png", "also draw the world's map from above (black: what a robot touches)"))
-      .add(cli::valueOption("exercise", "NAME", "check only this exercise (teletaxi, vacuum or autopark)"));
+      .add(cli::valueOption("exercise", "NAME", "check only this exercise (" + settings::exerciseNames(false) + ")"));
   c.details = "exit status: 0 when the world suits --exercise (without it: at least one exercise), 1 when it does not,\n"
               "2 when the world cannot be read\n";
   c.run = checkWorldFile;

@@ -3,6 +3,7 @@
 #include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <iostream>
 
@@ -32,7 +33,7 @@ int printConfig(const cli::Arguments& args) {
 
 cli::Command config() {
   cli::Command c("config", "print the effective settings of each process of an exercise and where each came from");
-  c.positionals = {{"EXERCISE", "teletaxi, vacuum, autopark or demo"}};
+  c.positionals = {{"EXERCISE", settings::exerciseNames(true)}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("world", "FILE", "the world the run would use"))
       .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"))

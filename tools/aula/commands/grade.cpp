@@ -4,6 +4,8 @@
 #include "run_settings.hpp"
 
 #include <aula/grade/grade_command.hpp>
+#include <aula/grade/generated_worlds.hpp>
+#include <aula/settings/tables.hpp>
 
 namespace aula::commands {
 namespace {
@@ -41,11 +43,11 @@ int gradeSubmissions(const cli::Arguments& args) {
 cli::Command grade() {
   const grade::SimilarityRules defaults;  // the similarity rules' defaults are declared once, there
   cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py) x world x seed, headless");
-  c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark", false, true},
+  c.positionals = {{"EXERCISE", settings::exerciseNames(false), false, true},
                    {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own); "
-                                 "generate:house:5,seed=7 (city for teletaxi, street for autopark) writes held-out worlds into OUT/worlds"))
+                                 "generate:KIND:5,seed=7 writes held-out worlds into OUT/worlds (" + grade::generatedWorldKinds() + ")"))
       .text("seeds", "1", "the seeds: 1-5, 1,4,9 or 2-3,7")
       .text("calibration-seeds", "1-10", "the seeds each world without a calibration file is calibrated on (the "
                                          "baseline's and the reference's runs, cached in OUT/calibrations); off: none")

@@ -5,6 +5,7 @@
 #include "run_settings.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -102,7 +103,7 @@ int createProject(const cli::Arguments& args) {
 
 cli::Command newProject() {
   cli::Command c("new", "start your own algorithm in DIR: MyAlgorithm.cpp (or .py) with the API at its top, and a README");
-  c.positionals = {{"EXERCISE", "teletaxi, vacuum or autopark"}, {"DIR", "a new folder (nothing is overwritten)"}};
+  c.positionals = {{"EXERCISE", settings::exerciseNames(false)}, {"DIR", "a new folder (nothing is overwritten)"}};
   c.options.flag("python", false, "MyAlgorithm.py and the API's .pyi stubs instead of MyAlgorithm.cpp and CMakeLists.txt");
   c.details = "C++:    cmake -S DIR -B DIR/build && cmake --build DIR/build\n"
               "        aula run EXERCISE --algorithm=DIR/build/libmy_algorithm.so\n"

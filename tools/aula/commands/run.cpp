@@ -9,6 +9,7 @@
 #include <aula/lcm/udpm_receiver.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/sandbox/sandbox.hpp>
+#include <aula/settings/tables.hpp>
 #include <aula/supervision/confinement.hpp>
 #include <aula/supervision/rules.hpp>
 #include <aula/supervision/run_recorder.hpp>
@@ -251,7 +252,7 @@ int runExercise(const Arguments& args) {
 
 cli::Command declare() {
   cli::Command c("run", "start an exercise: the simulator, the component (your algorithm) and the referee");
-  c.positionals = {{"EXERCISE", "teletaxi, vacuum, autopark or demo"}};
+  c.positionals = {{"EXERCISE", settings::exerciseNames(true)}};
   c.takes_settings = true;
   c.options.flag("headless", false, "no windows; lockstep, as fast as possible (or at --rtf); the run ends with the mark")
       .flag("sandbox", false, "run the component (the student's code) in bubblewrap, as `aula grade` does (docs/grading.md)")

@@ -124,18 +124,9 @@ void requireAnchorSucceeded(const Manifest& manifest, const CalibrationSpec& spe
 }  // namespace
 
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise) {
-  if (exercise == "vacuum") {
-    return CalibrationSpec{"vacuum", "coverage_percent", "bounce", "reference",
-                           {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}, {}, "", ""};
-  }
-  if (exercise == "teletaxi") {  // the speed scale: the reference's driving time to that destination
-    return CalibrationSpec{"teletaxi", "driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
-                           {"TeleTaxi.Destination"}, "reached", ""};
-  }
-  if (exercise == "autopark") {  // the time allowance: the thesis's reactive parker's time on that street
-    return CalibrationSpec{"autopark", "park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"}, {}, "parked", "planner"};
-  }
-  return std::nullopt;
+  const settings::Exercise* ex = settings::exerciseNamed(exercise);
+  if (ex == nullptr || !ex->calibration) return std::nullopt;
+  return CalibrationSpec{*ex->calibration, exercise};  // the exercise's own declaration
 }
 
 Calibration calibrate(const CalibrationRequest& request, const std::string& bin_dir) {

@@ -3,6 +3,7 @@
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <chrono>
 #include <cstdint>
@@ -37,19 +38,12 @@ std::string decimal(double value) {
   return text;
 }
 
-const char* exerciseOfKind(const std::string& kind) {
-  if (kind == "house") return "vacuum";
-  if (kind == "street") return "autopark";
-  if (kind == "city") return "teletaxi";
-  return "";
+// The exercise's own way of generating worlds (its declaration's WorldGenerator); nullptr if none.
+const settings::WorldGenerator* generatorOfExercise(const std::string& exercise) {
+  const settings::Exercise* ex = settings::exerciseNamed(exercise);
+  return ex != nullptr && ex->generator ? &*ex->generator : nullptr;
 }
 
-std::string generatorOf(const std::string& kind) {
-  return kind == "house" ? "make_house.py" : kind == "city" ? "make_city.py" : "make_autopark.py";
-}
-
-// The exercises' own map resolutions (Vacuum.Map.Resolution, TeleTaxi.Map.Resolution), 0.1 m a street.
-double mapResolutionOf(const std::string& kind) { return kind == "house" ? 0.05 : kind == "city" ? 1.25 : 0.1; }
 
 void runTool(const std::vector<std::string>& argv, const std::string& log, const std::string& what) {
   process::ChildProcess child(argv, log, log);
@@ -64,12 +58,19 @@ void runTool(const std::vector<std::string>& argv, const std::string& log, const
 
 }  // namespace
 
+std::string generatedWorldKinds() {
+  std::string out;
+  for (const auto& ex : settings::exercises()) {
+    if (ex.generator) out += (out.empty() ? "" : ", ") + ex.generator->kind + " for " + ex.name;
+  }
+  return out;
+}
+
 bool isGenerateItem(const std::string& item) { return item.rfind("generate:", 0) == 0; }
 
 WorldsToGenerate parseGenerate(const std::string& item, const std::string& seed_item, const std::string& exercise) {
   const std::string usage = "--worlds=" + item + (seed_item.empty() ? "" : "," + seed_item) +
-                            ": expected generate:KIND:N[,seed=S] (house for vacuum, city for teletaxi, street for autopark; N from 1 "
-                            "to 100)";
+                            ": expected generate:KIND:N[,seed=S] (" + generatedWorldKinds() + "; N from 1 to 100)";
   WorldsToGenerate what;
   const std::string rest = item.substr(std::string("generate:").size());
   const auto colon = rest.find(':');
@@ -88,9 +89,17 @@ WorldsToGenerate parseGenerate(const std::string& item, const std::string& seed_
     throw ConfigError(usage);
   }
   if (what.count < 1 || what.count > 100) throw ConfigError(usage);
-  const std::string of = exerciseOfKind(what.kind);
-  if (of.empty()) throw ConfigError(usage);
-  if (of != exercise) throw ConfigError("--worlds=" + item + ": a " + what.kind + " is a world of " + of + ", not of " + exercise);
+  const settings::WorldGenerator* own = generatorOfExercise(exercise);
+  if (own == nullptr || own->kind != what.kind) {
+    for (const auto& ex : settings::exercises()) {  // another exercise's kind: say whose
+      if (ex.generator && ex.generator->kind == what.kind) {
+        throw ConfigError("--worlds=" + item + ": a " + what.kind + " is a world of " + ex.name + ", not of " + exercise);
+      }
+    }
+    throw ConfigError(usage);
+  }
+  what.script = own->script;
+  what.map_resolution_m = own->map_resolution_m;
   return what;
 }
 
@@ -123,7 +132,7 @@ std::vector<std::string> generateWorlds(const WorldsToGenerate& what, const std:
                                         const std::string& mapgen) {
   const fs::path folder = fs::path(out_dir) / "worlds";
   fs::create_directories(folder);
-  const std::string generator = config::dataDir() + "/worlds/tools/" + generatorOf(what.kind);
+  const std::string generator = config::dataDir() + "/worlds/tools/" + what.script;
   std::vector<std::string> worlds;
   for (int index = 1; index <= what.count; ++index) {
     const std::string name = what.kind + "-seed" + std::to_string(what.seed) + "-" + std::to_string(index);
@@ -131,8 +140,8 @@ std::vector<std::string> generateWorlds(const WorldsToGenerate& what, const std:
     std::vector<std::string> argv = {python, generator, "--out", world};
     for (const std::string& argument : generatorArguments(what, index)) argv.push_back(argument);
     const std::string log = (folder / (name + ".log")).string();
-    runTool(argv, log, generatorOf(what.kind) + " for " + name);
-    runTool({mapgen, world, "--out", (folder / (name + ".png")).string(), "--resolution", decimal(mapResolutionOf(what.kind))},
+    runTool(argv, log, what.script + " for " + name);
+    runTool({mapgen, world, "--out", (folder / (name + ".png")).string(), "--resolution", decimal(what.map_resolution_m)},
             log, "aula-mapgen for " + name);
     fs::remove(log);
     worlds.push_back(world);

@@ -51,7 +51,7 @@ config::Config componentSettings(const settings::Exercise& ex) {
   const config::Config file = config::Config::fromFile(config::dataPath(ex.config_file));
   std::vector<const config::SettingsTable*> siblings;
   for (const auto* t : ex.tables()) {
-    if (t != ex.component_settings) siblings.push_back(t);
+    if (t != ex.component_settings.get()) siblings.push_back(t);
   }
   return ex.component_settings->resolve(file, siblings);
 }
@@ -91,7 +91,7 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.exercise = options.exercise;
   const settings::Exercise* ex = settings::exerciseNamed(r.exercise);
   if (ex == nullptr || ex->referee_settings == nullptr) {
-    throw ConfigError("aula grade: '" + r.exercise + "' is not an exercise with a referee (teletaxi, vacuum, autopark)");
+    throw ConfigError("aula grade: '" + r.exercise + "' is not an exercise with a referee (" + settings::exerciseNames(false) + ")");
   }
   std::set<std::string> students;
   for (const std::string& given : options.submissions) {

@@ -15,6 +15,10 @@ const AulaPlayer = (() => {
                    aborted: '#6a1b9a', tampering: '#6a1b9a', lost: '#6a1b9a', 'non-finite': '#6a1b9a'};
   const STEP_S = 1, BIG_STEP_S = 10;  // the arrow keys' steps (Shift: the big one)
   const ZOOMS = [1, 2, 4, 8];
+  // Each exercise's drawing, by name: {init(player), scene(player, ctx, t) under the trail, overlay(player,
+  // ctx, t) over the view, clock(player, pose, t) text after the time}. Filled by the exercises' player.js
+  // files, inlined here at build time (aula_exercise PLAYER; tools/grade/CMakeLists.txt).
+  const DRAWINGS = {};
 
   async function inflate(b64) {
     const bin = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
@@ -26,27 +30,6 @@ const AulaPlayer = (() => {
     let v = 0;
     for (let i = 0; i < a.length; ++i) { v += a[i]; out[i] = v; }
     return out;
-  }
-  // The vacuum's cleaned cells: per sample, a flat [col, row, col, row, ...] (cleaned_cells_trace.hpp).
-  function decodeCells(text) {
-    const samples = [[]];
-    const d = c => DIGITS.indexOf(c);
-    let col = 0, row = 0;
-    for (let i = 0; i < text.length;) {
-      const c = text[i];
-      if (c === ' ') { samples.push([]); ++i; continue; }
-      if (c === '~') {
-        col = (d(text[i + 1]) * 62 + d(text[i + 2])) * 62 + d(text[i + 3]);
-        row = (d(text[i + 4]) * 62 + d(text[i + 5])) * 62 + d(text[i + 6]);
-        i += 7;
-      } else {
-        col += d(c) - 31;
-        row += d(text[i + 1]) - 31;
-        i += 2;
-      }
-      samples[samples.length - 1].push(col, row);
-    }
-    return samples;
   }
   function mapCanvas(map) {
     const [w, h] = map.size_px;
@@ -99,6 +82,8 @@ const AulaPlayer = (() => {
     wrapped.forEach((l, i) => ctx.fillText(l, 10, 20 + 17 * i));
   }
 
+/* @AULA_EXERCISE_PLAYERS@ */
+
   let active = null;  // the player the keys drive: the last one opened or touched
 
   class Player {
@@ -117,13 +102,9 @@ const AulaPlayer = (() => {
       this.res = m.resolution_m; this.ox = m.origin_m[0]; this.oy = m.origin_m[1];
       this.map = mapCanvas(m);
       this.scale = Math.min(640 / m.size_px[0], 520 / m.size_px[1]);
-      if (t.exercise === 'vacuum') {
-        this.cells = decodeCells(t.state.cells);
-        this.coverage = undelta(t.state.coverage_cp);
-        this.cellLayer = el('canvas');
-        this.cellLayer.width = m.size_px[0]; this.cellLayer.height = m.size_px[1];
-        this.cellsPainted = 0;
-      }
+      // The exercise's own drawing (its player.js, declared by its aula_exercise): none draws nothing more.
+      this.drawing = DRAWINGS[t.exercise] || {};
+      if (this.drawing.init) this.drawing.init(this);
       this.time = 0; this.playing = false; this.speed = 10; this.current = -2;
       this.zoom = 1; this.follow = false;
       this.build();
@@ -319,17 +300,6 @@ const AulaPlayer = (() => {
       this.draw();
     }
 
-    paintCells(sample) {
-      const ctx = this.cellLayer.getContext('2d');
-      if (sample < this.cellsPainted) { ctx.clearRect(0, 0, this.cellLayer.width, this.cellLayer.height); this.cellsPainted = 0; }
-      const k = this.trace.state.cell_px;
-      ctx.fillStyle = 'rgb(90,175,240)';
-      for (; this.cellsPainted <= sample && this.cellsPainted < this.cells.length; ++this.cellsPainted) {
-        const c = this.cells[this.cellsPainted];
-        for (let i = 0; i < c.length; i += 2) ctx.fillRect(c[i] * k, c[i + 1] * k, k, k);
-      }
-    }
-
     box(ctx, x, y, yaw, length, width) {
       const c = Math.cos(yaw), s = Math.sin(yaw);
       ctx.beginPath();
@@ -358,7 +328,7 @@ const AulaPlayer = (() => {
 
     draw() {
       const ctx = this.canvas.getContext('2d');
-      const t = this.time, tr = this.trace, st = tr.state;
+      const t = this.time, tr = this.trace;
       const pose = this.poseAt(t);
       ctx.imageSmoothingEnabled = false;
       ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -369,30 +339,7 @@ const AulaPlayer = (() => {
       const [fu, fv] = this.follow && this.n > 0 ? this.px(pose.x / 1000, pose.y / 1000) : [W / 2, H / 2];
       ctx.setTransform(z, 0, 0, z, W / 2 - z * fu, H / 2 - z * fv);
       ctx.drawImage(this.map, 0, 0, this.canvas.width, this.canvas.height);
-      if (this.cells) {
-        this.paintCells(Math.floor(t / this.period + 1e-9));
-        ctx.globalAlpha = 0.85;
-        ctx.drawImage(this.cellLayer, 0, 0, this.canvas.width, this.canvas.height);
-        ctx.globalAlpha = 1;
-      }
-      if (tr.exercise === 'teletaxi') {
-        const [dx, dy] = this.px(st.destination_m[0], st.destination_m[1]);
-        ctx.strokeStyle = '#d32f2f'; ctx.lineWidth = 2;
-        ctx.beginPath(); ctx.arc(dx, dy, Math.max(3, this.len(st.arrival_radius_m)), 0, 2 * Math.PI); ctx.stroke();
-        ctx.fillStyle = '#d32f2f'; ctx.beginPath(); ctx.arc(dx, dy, 4, 0, 2 * Math.PI); ctx.fill();
-        const [sx, sy] = this.px(st.start_m[0], st.start_m[1]);
-        ctx.fillStyle = '#1565c0'; ctx.beginPath(); ctx.arc(sx, sy, 4, 0, 2 * Math.PI); ctx.fill();
-      }
-      if (tr.exercise === 'autopark') {
-        ctx.fillStyle = '#9aa7b8';
-        for (const b of [st.rear_car, st.front_car]) { this.box(ctx, b[0], b[1], b[2], b[3], b[4]); ctx.fill(); }
-        const [, cy] = this.px(0, st.curb_y_m);
-        ctx.strokeStyle = '#555'; ctx.lineWidth = 2;
-        ctx.beginPath(); ctx.moveTo(0, cy); ctx.lineTo(this.canvas.width, cy); ctx.stroke();
-        ctx.strokeStyle = '#2e7d32'; ctx.setLineDash([6, 4]);
-        this.box(ctx, st.ideal_pose[0], st.ideal_pose[1], st.ideal_pose[2], tr.robot.length_m, tr.robot.width_m);
-        ctx.stroke(); ctx.setLineDash([]);
-      }
+      if (this.drawing.scene) this.drawing.scene(this, ctx, t);
       // The trail to now.
       ctx.strokeStyle = '#ef6c00'; ctx.lineWidth = 2;
       ctx.beginPath();
@@ -432,18 +379,9 @@ const AulaPlayer = (() => {
         ctx.beginPath(); ctx.moveTo(u, v); ctx.lineTo(hx, hy); ctx.stroke();
       }
       ctx.setTransform(1, 0, 0, 1, 0, 0);
-      // At the end, the referee's own words for how the car stood (the breakdown's rows).
-      if (tr.exercise === 'autopark' && t >= this.end - 1e-9) {
-        const rows = Object.fromEntries(tr.breakdown.map(row => [row.term, row.measure]));
-        caption(ctx, [rows.parked || rows.time, 'distances: ' + rows.distances].filter(Boolean), this.canvas.width);
-      }
+      if (this.drawing.overlay) this.drawing.overlay(this, ctx, t);
       let text = fmt(t, 1) + ' / ' + fmt(this.end, 1) + ' s';
-      if (this.coverage) {
-        // At the last pose graded, the referee's own figure (the report's); before it, the samples'.
-        const cp = pose.final || t >= this.end - 1e-9 ? st.coverage_percent
-                                                      : this.coverage[Math.min(pose.sample, this.coverage.length - 1)] / 100;
-        text += ', coverage ' + fmt(cp, 2) + ' %';
-      }
+      if (this.drawing.clock) text += this.drawing.clock(this, pose, t);
       this.clock.textContent = text;
       this.cursor.style.left = (100 * t / Math.max(this.end, 1e-9)) + '%';
       const s = this.status;

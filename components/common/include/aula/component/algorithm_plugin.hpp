@@ -17,7 +17,9 @@
 //   3: the Python hosts (the laser keeps its buffers, issue 31).
 //   4: the references left the API (issue 28).
 //   5: the vacuum API's belief (the algorithm's own pose and map, shown; issue 26).
-//   6: the sim clock in every API, api.time_s() (issue 41).
+//   6: the sim clock in every API, api.time_s() (issue 41). Its hash re-recorded when each
+//      exercise came to declare its own headers (issue 43): the entries are hashed sorted now,
+//      the headers themselves unchanged.
 //
 // A student's Python file (PATH.py) sits behind the same three entry points: the exercise's
 // Python host module (<lib>/aula/python/libaula_<exercise>_python.so, components/common/python)
@@ -28,7 +30,7 @@
 //   const char* aula_python_take_console();              // what the student printed since the last take
 
 #define AULA_ALGORITHM_ABI_VERSION 6
-#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "c122f7d0b2ff8c77746744ceb53f8734e71ec984f0d00ccfc1472459a2c9f47d"
+#define AULA_ALGORITHM_ABI_HEADERS_SHA256 "17b430f51225dfb795b181f59033d1ba9e1c01939a851a7662856cee39c5486a"
 #define AULA_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 #include <stdexcept>

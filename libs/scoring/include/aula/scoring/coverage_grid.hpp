@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-namespace aula::vacuum {
+namespace aula::scoring {
 
 class CoverageGrid {
  public:
@@ -39,4 +39,4 @@ class CoverageGrid {
   int64_t cleaned_pixels_ = 0;
 };
 
-}  // namespace aula::vacuum
+}  // namespace aula::scoring

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace aula::autopark {
+namespace aula::scoring {
 
 // What names the street's parts when its geometry alone cannot say (Autopark.Referee.Curb: a
 // collision's name, last part or whole; Autopark.Referee.CarPrefix: the start of the parked cars'
@@ -72,4 +72,4 @@ bool offStreet(const ParkingScene& scene, double x_m, double y_m);
 // the free curb at the street's end, or another gap.
 bool parkedElsewhere(const ParkingScene& scene, const ParkingMeasures& m, double y_m);
 
-}  // namespace aula::autopark
+}  // namespace aula::scoring

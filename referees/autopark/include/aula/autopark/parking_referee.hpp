@@ -38,6 +38,16 @@
 
 namespace aula::autopark {
 
+// The street's geometry (libs/scoring), by its names here.
+using scoring::ParkingScene;
+using scoring::SceneNames;
+using scoring::sceneNamesOf;
+using scoring::ParkingMeasures;
+using scoring::measureParking;
+using scoring::contactDepthM;
+using scoring::offStreet;
+using scoring::parkedElsewhere;
+
 struct ParkingRefereeSettings {
   std::string rubric = "default";  // the preset of Autopark.Referee.Rubric, for the reports
   double timeout_s = 300.0;

@@ -18,6 +18,9 @@
 
 namespace aula::vacuum {
 
+// The referee's own coverage measure (libs/scoring), by its name here.
+using scoring::CoverageGrid;
+
 inline constexpr const char* kCellDigits = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz";
 
 class CleanedCellsTrace {

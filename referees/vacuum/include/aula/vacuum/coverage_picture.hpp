@@ -12,6 +12,9 @@
 
 namespace aula::vacuum {
 
+// The referee's own coverage measure (libs/scoring), by its name here.
+using scoring::CoverageGrid;
+
 // BGR colours of the map's pixels in the picture.
 inline const cv::Scalar kCleanedColour(240, 175, 90), kNotFloorColour(200, 200, 200);
 

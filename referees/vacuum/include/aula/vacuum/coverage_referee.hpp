@@ -15,6 +15,9 @@
 
 namespace aula::vacuum {
 
+// The referee's own coverage measure (libs/scoring), by its name here.
+using scoring::CoverageGrid;
+
 struct CoverageSettings {
   std::string rubric = "default";  // the preset of Vacuum.Referee.Rubric, for the reports
   double duration_s = 900.0;

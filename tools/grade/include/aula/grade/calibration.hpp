@@ -6,6 +6,7 @@
 // "default"; "fixed" and "original" never look at it.
 
 #include <aula/config/config.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <optional>
 #include <string>
@@ -14,20 +15,11 @@
 
 namespace aula::grade {
 
-// What one exercise calibrates: the report's measure that depends on the world, and the rubric
-// settings computed from the baseline's and the anchor's medians of it.
-struct CalibrationSpec {
+// What one exercise calibrates (its declaration's, aula/settings/tables.hpp): the report's measure
+// that depends on the world, and the rubric settings computed from the baseline's and the
+// anchor's medians of it.
+struct CalibrationSpec : settings::ExerciseCalibration {
   std::string exercise;
-  std::string measure;               // a report field: "coverage_percent"
-  std::string baseline, anchor;      // default algorithms; no baseline: a scale of one point, the anchor's
-  std::vector<std::string> rubric_keys;  // the referee's settings it writes (the baseline's first, if any)
-  // Settings the measure depends on besides the world (TeleTaxi.Destination): their values are
-  // written in the file (Calibration.Setting.<key>), and a run with other values is refused.
-  std::vector<std::string> context_keys;
-  // A report field every anchor run must have true ("parked", "reached"; "" for none): an anchor
-  // that failed would anchor the scale on a failure (FullMarkTime set to the timeout).
-  std::string success;
-  std::string other_anchor;  // the algorithm to suggest when the anchor fails ("" for none)
 };
 // The spec of `exercise`; nullopt when it has none (the message says what it calibrates instead).
 std::optional<CalibrationSpec> calibrationSpecOf(const std::string& exercise);

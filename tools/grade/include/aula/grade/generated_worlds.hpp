@@ -16,11 +16,15 @@
 namespace aula::grade {
 
 struct WorldsToGenerate {
-  std::string kind;  // house | street
+  std::string kind;              // house | city | street: the exercise's declared generator
+  std::string script;            // its generator in worlds/tools/ ("make_house.py")
+  double map_resolution_m = 0.1; // the map drawn of each world, to check it
   int count = 0;
   long long seed = 1;
 };
 
+// "house for vacuum, city for teletaxi, ...": every declared exercise's generated worlds.
+std::string generatedWorldKinds();
 // Does this --worlds item start a generation ("generate:...")?
 bool isGenerateItem(const std::string& item);
 // "generate:house:5" with its "seed=7" item (or "" for seed 1). Throws config::ConfigError

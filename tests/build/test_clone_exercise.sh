@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# An exercise is its own folders (docs/adding-an-exercise.md): copy every file whose path names
+# the vacuum exercise (tests aside) under a new name, with the name replaced inside those copies
+# only, and nothing else edited. The copy must build, be listed by `aula --help`, and its
+# reference must cover what vacuum's covers on the same world and seed.
+# Usage: test_clone_exercise.sh SOURCE_DIR BUILD_DIR (BUILD_DIR: the tree's own build, for vacuum's run)
+set -euo pipefail
+source_dir="$(cd "$1" && pwd)"
+build_dir="$(cd "$2" && pwd)"
+name=sweeper
+work="$(mktemp -d "${TMPDIR:-/tmp}/aula-clone.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+clone="$work/src"
+
+# 1. The tree as it is (tracked files and new ones git does not ignore), without its build.
+mkdir -p "$clone"
+(cd "$source_dir" && git ls-files -z --cached --others --exclude-standard) |
+  (cd "$source_dir" && xargs -0 cp --parents -P -t "$clone" 2>/dev/null || true)
+[ -f "$clone/CMakeLists.txt" ] || { echo "FAIL: could not copy the tree"; exit 1; }
+
+# 2. The clone: each path naming vacuum, outside tests/, copied under the new name; text files
+# get the name replaced (vacuum, Vacuum, VACUUM), pictures are copied as they are.
+copied=0
+while IFS= read -r -d '' path; do
+  case "$path" in tests/*) continue ;; esac
+  target="${path//vacuum/$name}"
+  target="${target//Vacuum/${name^}}"
+  mkdir -p "$clone/$(dirname "$target")"
+  if [ -L "$source_dir/$path" ]; then
+    cp -P "$source_dir/$path" "$clone/$target"
+  elif grep -Iq . "$source_dir/$path" 2>/dev/null; then
+    sed -e "s/vacuum/$name/g" -e "s/Vacuum/${name^}/g" -e "s/VACUUM/${name^^}/g" "$source_dir/$path" >"$clone/$target"
+  else
+    cp "$source_dir/$path" "$clone/$target"
+  fi
+  copied=$((copied + 1))
+done < <(cd "$source_dir" && git ls-files -z --cached --others --exclude-standard | grep -z -i vacuum)
+echo "copied $copied files naming vacuum as $name"
+[ "$copied" -gt 10 ] || { echo "FAIL: too few files name vacuum ($copied)"; exit 1; }
+
+# 3. Its build: what `./aula run $name` builds, nothing else. ccache when the machine has it.
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S "$clone" -B "$clone/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAULA_WERROR=ON "${launcher[@]}" \
+  >"$work/configure.log" 2>&1 || { tail -30 "$work/configure.log"; echo "FAIL: the clone does not configure"; exit 1; }
+cmake --build "$clone/build" --target "aula_run_$name" -j"$(nproc)" >"$work/build.log" 2>&1 ||
+  { grep -E 'error|FAILED' "$work/build.log" | head -30; echo "FAIL: the clone does not build"; exit 1; }
+echo "the clone builds aula_run_$name"
+
+# 4. Listed by the front door.
+"$clone/build/bin/aula" --help >"$work/help.txt"
+grep -q "^  $name " "$work/help.txt" || { cat "$work/help.txt"; echo "FAIL: aula --help does not list $name"; exit 1; }
+echo "aula --help lists $name"
+
+# 5. Its reference covers what vacuum's covers (same world, same seed), each run on a bus of its own.
+"$clone/build/bin/aula" run "$name" --headless --algorithm=reference --seed=1 --report="$work/$name.json" \
+  >"$work/$name.log" 2>&1 || { tail -20 "$work/$name.log"; echo "FAIL: aula run $name failed"; exit 1; }
+"$build_dir/bin/aula" run vacuum --headless --algorithm=reference --seed=1 --report="$work/vacuum.json" \
+  >"$work/vacuum.log" 2>&1 || { tail -20 "$work/vacuum.log"; echo "FAIL: aula run vacuum failed"; exit 1; }
+field() { python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2"; }
+clone_coverage="$(field "$work/$name.json" coverage_percent)"
+vacuum_coverage="$(field "$work/vacuum.json" coverage_percent)"
+echo "coverage: $name $clone_coverage %, vacuum $vacuum_coverage %"
+[ "$clone_coverage" = "$vacuum_coverage" ] || { echo "FAIL: the clone covers $clone_coverage %, vacuum $vacuum_coverage %"; exit 1; }
+[ "$(field "$work/$name.json" mark)" = "$(field "$work/vacuum.json" mark)" ] || { echo "FAIL: the marks differ"; exit 1; }
+echo "the clone $name covers what vacuum covers"
