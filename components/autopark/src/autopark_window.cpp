@@ -54,31 +54,19 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   lasers_ = new LaserView(component_, central);
   lasers_->setMinimumSize(420, 360);
   bottom->addWidget(lasers_, 1);
-  auto* side = new QVBoxLayout;
-  run_ = new gui::RunToggle(central);
-  status_ = new QLabel(central);
-  status_->setWordWrap(true);  // the algorithm's status can be a sentence
-  status_->setMinimumWidth(240);
-  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
-  referee_->setMaximumWidth(360);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  // Reload puts the robot back at its start: the teleoperator lets go of it too.
-  algorithm_ = new component::AlgorithmPanel(
-      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
-  side->addWidget(run_);
-  side->addWidget(new component::SimControlPanel(component_.bus(), central));
-  side->addWidget(algorithm_);
-  side->addWidget(referee_);
-  side->addWidget(status_);
-  side->addStretch(1);
-  bottom->addLayout(side);
+  auto* side = new component::SidePanel(component_, *teleop, central);
+  run_ = side->run();
+  algorithm_ = side->algorithm();
+  referee_ = side->referee();
+  status_ = side->status();
+  status_->setMinimumWidth(240);
+  referee_->setMaximumWidth(360);
+  side->layout()->addStretch(1);
+  bottom->addWidget(side);
   bottom->addWidget(teleop);
   layout->addLayout(bottom, 1);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
-    if (on) algorithm_->reloadIfRebuilt();
-    component_.setRunning(on);
-  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
   map_->setOverlay([this](QPainter& p) { drawCar(p); });
   // The trail is sampled on sim time (every control tick), not at the GUI's refresh rate.

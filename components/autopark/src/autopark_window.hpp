@@ -13,7 +13,7 @@
 #include <QLabel>
 #include <aula/component/algorithm_panel.hpp>
 #include <aula/component/referee_status_label.hpp>
-#include <aula/component/sim_control_panel.hpp>
+#include <aula/component/side_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
 

@@ -9,7 +9,6 @@
 #include <QApplication>
 #include <QHBoxLayout>
 #include <QPainter>
-#include <QVBoxLayout>
 
 #include <cmath>
 #include <cstdio>
@@ -29,30 +28,18 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   map_ = new gui::MapView(map.copy(), transform, central);
   map_->setMinimumSize(480, 480);  // the window's size is Vacuum.Window.Size; the map takes what is left
   layout->addWidget(map_, 1);
-  auto* side = new QVBoxLayout;
-  run_ = new gui::RunToggle(central);
-  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
-  status_ = new QLabel(central);
-  status_->setWordWrap(true);
-  status_->setMinimumWidth(260);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  // Reload puts the robot back at its start: the teleoperator lets go of it too.
-  algorithm_ = new component::AlgorithmPanel(
-      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
-  side->addWidget(run_);
-  side->addWidget(new component::SimControlPanel(component_.bus(), central));
-  side->addWidget(algorithm_);
-  side->addWidget(referee_);
-  side->addWidget(status_);
-  side->addWidget(teleop);
+  auto* side = new component::SidePanel(component_, *teleop, central);
+  run_ = side->run();
+  algorithm_ = side->algorithm();
+  referee_ = side->referee();
+  status_ = side->status();
+  status_->setMinimumWidth(260);
+  side->layout()->addWidget(teleop);
   plot_ = new CoveragePlot(component_.runDurationS(), central);
-  side->addWidget(plot_, 1);
-  layout->addLayout(side);
+  side->layout()->addWidget(plot_, 1);
+  layout->addWidget(side);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
-    if (on) algorithm_->reloadIfRebuilt();
-    component_.setRunning(on);
-  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),

@@ -8,7 +8,7 @@
 
 #include <aula/component/algorithm_panel.hpp>
 #include <aula/component/referee_status_label.hpp>
-#include <aula/component/sim_control_panel.hpp>
+#include <aula/component/side_panel.hpp>
 #include <aula/gui/map_view.hpp>
 #include <aula/gui/run_toggle.hpp>
 #include <aula/gui/teleoperator.hpp>

@@ -1,14 +1,11 @@
 #include "parking_referee_window.hpp"
 
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
-#include <QApplication>
 #include <QGridLayout>
 #include <QPushButton>
 
 #include <cmath>
-#include <memory>
 
 namespace aula::autopark {
 
@@ -83,21 +80,6 @@ void ParkingRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {clock_, mark_});
   }
-}
-
-void ParkingRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  auto ticks = std::make_shared<int>(0);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
-    refresh();
-    if (node_.finished() || ++*ticks > 600) {
-      poll->stop();
-      showMark();
-      gui::saveWidgetPng(*this, png_path);
-      QApplication::quit();
-    }
-  });
-  poll->start(100);
 }
 
 }  // namespace aula::autopark

@@ -19,7 +19,6 @@ class ParkingRefereeWindow : public QWidget {
  public:
   explicit ParkingRefereeWindow(ParkingRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();

@@ -1,10 +1,8 @@
 #include "taxi_referee_window.hpp"
 
 #include <aula/geometry/angles.hpp>
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
-#include <QApplication>
 #include <QGridLayout>
 #include <QPushButton>
 
@@ -72,21 +70,6 @@ void TaxiRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {clock_, mark_});
   }
-}
-
-void TaxiRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  auto ticks = std::make_shared<int>(0);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
-    refresh();
-    if (node_.finished() || ++*ticks > 300) {
-      poll->stop();
-      showMark();
-      gui::saveWidgetPng(*this, png_path);
-      QApplication::quit();
-    }
-  });
-  poll->start(100);
 }
 
 }  // namespace aula::teletaxi

@@ -17,7 +17,6 @@ class TaxiRefereeWindow : public QWidget {
  public:
   explicit TaxiRefereeWindow(TaxiRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();

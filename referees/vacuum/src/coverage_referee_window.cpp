@@ -1,11 +1,9 @@
 #include "coverage_referee_window.hpp"
 
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
 #include <aula/geometry/map_transform.hpp>
 
-#include <QApplication>
 #include <QFontMetrics>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -103,19 +101,6 @@ void CoverageRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {countdown_, mark_});
   }
-}
-
-void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll] {
-    if (!node_.finished()) return;
-    poll->stop();
-    refresh();
-    showMark();
-    gui::saveWidgetPng(*this, png_path);
-    QApplication::quit();
-  });
-  poll->start(50);
 }
 
 }  // namespace aula::vacuum

@@ -19,7 +19,6 @@ class CoverageRefereeWindow : public QWidget {
  public:
   explicit CoverageRefereeWindow(CoverageRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();
