@@ -55,15 +55,11 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   lasers_->setMinimumSize(420, 360);
   bottom->addWidget(lasers_, 1);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  auto* side = new component::SidePanel(component_, *teleop, central);
-  run_ = side->run();
-  algorithm_ = side->algorithm();
-  referee_ = side->referee();
-  status_ = side->status();
-  status_->setMinimumWidth(240);
-  referee_->setMaximumWidth(360);
-  side->layout()->addStretch(1);
-  bottom->addWidget(side);
+  side_ = new component::SidePanel(component_, *teleop, central);
+  side_->status()->setMinimumWidth(240);
+  side_->referee()->setMaximumWidth(360);
+  side_->layout()->addStretch(1);
+  bottom->addWidget(side_);
   bottom->addWidget(teleop);
   layout->addLayout(bottom, 1);
   setCentralWidget(central);
@@ -124,10 +120,9 @@ void AutoparkWindow::drawCar(QPainter& p) const {
 }
 
 void AutoparkWindow::refresh() {
-  run_->setRunning(component_.running());
-  referee_->setStatus(component_.refereeStatus().latest());
+  side_->show(component_.running(), component_.refereeStatus().latest());
   const auto& pose = component_.api().pose3d;
-  status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7\n%8")
+  side_->status()->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7\n%8")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(pose.getX(), 0, 'f', 2)
                        .arg(pose.getY(), 0, 'f', 2)

@@ -25,4 +25,9 @@ SidePanel::SidePanel(const AlgorithmHostBase& host, lcmbus::Bus& bus, std::funct
   });
 }
 
+void SidePanel::show(bool running, const std::optional<aula::referee_status_t>& referee) {
+  run_->setRunning(running);
+  referee_->setStatus(referee);
+}
+
 }  // namespace aula::component

@@ -16,6 +16,7 @@
 #include <QWidget>
 
 #include <functional>
+#include <optional>
 
 namespace aula::component {
 
@@ -31,7 +32,9 @@ class SidePanel : public QWidget {
                   },
                   [&component](bool on) { component.setRunning(on); }, parent) {}
 
-  gui::RunToggle* run() const { return run_; }
+  // At each refresh of the window: whether the algorithm runs, and the referee's latest word.
+  void show(bool running, const std::optional<aula::referee_status_t>& referee);
+
   AlgorithmPanel* algorithm() const { return algorithm_; }
   RefereeStatusLabel* referee() const { return referee_; }
   QLabel* status() const { return status_; }
