@@ -29,6 +29,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The docs whose lists are kept; adding-an-exercise.md names files a new exercise is to create.
 DOCS = ["README.md"] + sorted(p for p in glob.glob("docs/**/*.md", root_dir=ROOT, recursive=True)
                               if p != "docs/adding-an-exercise.md")
+PROGRAMS = ["aula-sim", "aula-replay", "aula-mapgen", "aula-demo-client", "teletaxi", "teletaxi-referee",
+            "vacuum-cleaner", "vacuum-cleaner-referee", "autopark", "autopark-referee"]
 TOP_FOLDERS = "bench cmake components config docs drivers lcmtypes libs referees scripts simulator tests tools worlds".split()
 
 
@@ -78,6 +80,11 @@ class Code:
             if m:
                 self.settings.add(m.group(1))
         self.sections = {key.split(".")[0] for key in self.settings}
+        # The other programs a doc may show with options: each one's --help names all it takes.
+        self.programs = {}
+        for name in PROGRAMS:
+            text = run([os.path.join(build, "bin", name), "--help"])
+            self.programs[name] = (text, set(re.findall(r"(?<![\w-])--([a-z][\w-]*)", text)) | {"help"})
 
     def options(self, command):
         """(syntax, help) of each option `aula COMMAND --help` declares."""
@@ -126,6 +133,7 @@ def generated(code):
     rows = ["| option | meaning |", "|---|---|"]
     rows += [f"| `{cell(syntax)}` | {cell(meaning)} |" for syntax, meaning in code.options("run") if syntax != "--help"]
     blocks["run-options"] = "\n".join(rows)
+    blocks["aula-sim-usage"] = "```\n" + code.programs["aula-sim"][0].split("\n  WORLD")[0].rstrip() + "\n```"
     blocks["libs"] = "\n".join(f"- `{folder}` (`{target}`): {what}" for folder, target, what in libraries())
     # A column per world and per measure: the helper names them <world> and <measure>.
     columns = [f"`{c}`..." if c.startswith("median_<") else f"`{c}`" for c in code.grades_columns()]
@@ -176,6 +184,19 @@ def check_commands_and_options(path, text, code, problems):
                     problems.append(f"{path}:{number}: `aula {command} --{option}` is not declared (aula {command} --help)")
 
 
+def check_program_options(path, text, code, problems):
+    """A program's command line in a doc (`aula-sim WORLD --rtf 0`, `build/bin/teletaxi --config=...`)."""
+    names = "|".join(re.escape(n) for n in sorted(code.programs, key=len, reverse=True))
+    for number, span in code_spans(text):
+        m = re.match(r"\s*(?:\./|build/bin/|\$build/bin/|<bin>/)?(%s)(\s.*)?$" % names, span)
+        if not m:
+            continue
+        program, rest = m.group(1), (m.group(2) or "").split("#")[0]
+        for option in re.findall(r"(?<![\w-])--([a-z][\w-]*)", rest):
+            if option not in code.programs[program][1]:
+                problems.append(f"{path}:{number}: `{program} --{option}` is not an option of {program} ({program} --help)")
+
+
 def declared_setting(key, code):
     if key in code.settings:
         return True
@@ -189,6 +210,8 @@ def check_settings(path, text, code, problems):
     for number, line in enumerate(text.splitlines(), 1):
         for m in pattern.finditer(line):
             key = m.group(1).rstrip(".")
+            if "Key" in key.split("."):  # `--Simulator.Key=value`: a placeholder, not a setting
+                continue
             if not declared_setting(key, code):
                 problems.append(f"{path}:{number}: setting {key} is not declared (aula config EXERCISE)")
 
@@ -239,6 +262,7 @@ def main():
                 open(full, "w").write(new)
                 print(f"{path}: regenerated")
         check_commands_and_options(path, new, code, problems)
+        check_program_options(path, new, code, problems)
         check_settings(path, new, code, problems)
         check_paths(path, new, problems)
         if path == "docs/architecture.md":
