@@ -8,7 +8,8 @@ their CMakeLists' first comment, the header grades.csv gets from `gradesCsv`). E
 doc names is checked where it stands:
   - every `aula COMMAND` and `aula COMMAND --option` in a code span or block is declared
     (`aula COMMAND --help`);
-  - every `Section.Key` of a settings section is declared (`aula config EXERCISE`, `aula-sim --help`);
+  - every `Section.Key` of a settings section is declared (`aula config EXERCISE`, `aula-sim --help`),
+    and a table row that gives a key's value gives the one `aula config` shows;
   - every command's row in docs/architecture.md's command table is a command, and each command
     has a row; its layer table has a row naming each library of libs/;
   - every path a doc names in backquotes (`libs/.../x.hpp`) exists.
@@ -70,11 +71,13 @@ class Code:
         self.exercises = [re.match(r"\s+(\S+)", l).group(1) for l in section(top, "exercises:")]
         self.help = {name: run([aula, name, "--help"]) for name, _ in self.commands}
         self.settings = set()
+        self.values = {}  # key -> the effective values `aula config` shows, over the exercises
         for exercise in self.exercises:
             for line in run([aula, "config", exercise]).splitlines():
-                m = re.match(r"\s+([A-Z][\w.]*) = ", line)
+                m = re.match(r"\s+([A-Z][\w.]*) = (.*?)    \[", line)
                 if m:
                     self.settings.add(m.group(1))
+                    self.values.setdefault(m.group(1), set()).add(m.group(2).strip())
         for line in run([os.path.join(build, "bin", "aula-sim"), "--help"]).splitlines():
             m = re.match(r"\s+([A-Z][\w.]*(?:\.\*)?)\s+\(", line)
             if m:
@@ -216,6 +219,17 @@ def check_settings(path, text, code, problems):
                 problems.append(f"{path}:{number}: setting {key} is not declared (aula config EXERCISE)")
 
 
+def check_setting_tables(path, text, code, problems):
+    """A table row `| `Key` | 2 s of CPU | ...`: the number it gives is the key's value in `aula config`."""
+    for number, line in enumerate(text.splitlines(), 1):
+        m = re.match(r"\|\s*`([A-Z][\w.]*)`\s*\|\s*(-?[0-9][0-9.]*)", line)
+        if not m or m.group(1) not in code.values:
+            continue
+        shown = {re.match(r"-?[0-9.]*", v).group(0) for v in code.values[m.group(1)]}
+        if len(shown) == 1 and float(m.group(2)) != float(shown.pop() or "nan"):
+            problems.append(f"{path}:{number}: {m.group(1)} is {sorted(code.values[m.group(1)])[0]} (aula config), the doc says {m.group(2)}")
+
+
 def check_paths(path, text, problems):
     top = "|".join(TOP_FOLDERS)
     for number, line in enumerate(text.splitlines(), 1):
@@ -264,6 +278,7 @@ def main():
         check_commands_and_options(path, new, code, problems)
         check_program_options(path, new, code, problems)
         check_settings(path, new, code, problems)
+        check_setting_tables(path, new, code, problems)
         check_paths(path, new, problems)
         if path == "docs/architecture.md":
             check_command_table(new, code, problems)
