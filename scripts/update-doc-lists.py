@@ -30,8 +30,6 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The docs whose lists are kept; adding-an-exercise.md names files a new exercise is to create.
 DOCS = ["README.md"] + sorted(p for p in glob.glob("docs/**/*.md", root_dir=ROOT, recursive=True)
                               if p != "docs/adding-an-exercise.md")
-PROGRAMS = ["aula-sim", "aula-replay", "aula-mapgen", "aula-demo-client", "teletaxi", "teletaxi-referee",
-            "vacuum-cleaner", "vacuum-cleaner-referee", "autopark", "autopark-referee"]
 TOP_FOLDERS = "bench cmake components config docs drivers lcmtypes libs referees scripts simulator tests tools worlds".split()
 
 
@@ -83,9 +81,12 @@ class Code:
             if m:
                 self.settings.add(m.group(1))
         self.sections = {key.split(".")[0] for key in self.settings}
-        # The other programs a doc may show with options: each one's --help names all it takes.
+        # The other programs a doc may show with options (the build's bin/ less aula, the tests and
+        # the benchmarks): each one's --help names all it takes.
         self.programs = {}
-        for name in PROGRAMS:
+        for name in sorted(os.listdir(os.path.join(build, "bin"))):
+            if name == "aula" or name.startswith(("test_", "bench_", "aula-test-")):
+                continue
             text = run([os.path.join(build, "bin", name), "--help"])
             self.programs[name] = (text, set(re.findall(r"(?<![\w-])--([a-z][\w-]*)", text)) | {"help"})
 
