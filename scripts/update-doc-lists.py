@@ -12,6 +12,8 @@ doc names is checked where it stands:
     and a table row that gives a key's value gives the one `aula config` shows;
   - every command's row in docs/architecture.md's command table is a command, and each command
     has a row; its layer table has a row naming each library of libs/;
+  - every `--option` standing alone is declared by an Aula program or used by Aula's code (what it
+    passes to bwrap, prlimit or sbatch, and between its own processes);
   - every path a doc names in backquotes (`libs/.../x.hpp`) exists.
 
   scripts/update-doc-lists.py [BUILD_DIR]          rewrite the generated blocks
@@ -201,6 +203,28 @@ def check_program_options(path, text, code, problems):
                 problems.append(f"{path}:{number}: `{program} --{option}` is not an option of {program} ({program} --help)")
 
 
+def source_text():
+    """Aula's own C++ sources, where the options it passes to other programs (bwrap, prlimit, sbatch)
+    and between its own processes (--control-fd) are written."""
+    text = []
+    for folder in ("components", "drivers", "libs", "referees", "simulator", "tools"):
+        for name in glob.glob(f"{folder}/**/*.[ch]pp", root_dir=ROOT, recursive=True):
+            text.append(open(os.path.join(ROOT, name), errors="replace").read())
+    return "\n".join(text)
+
+
+def check_loose_options(path, text, code, source, problems):
+    """A `--option` standing alone in a doc: an Aula program declares it, or Aula's code uses it."""
+    declared = set().union(*(code.option_names(name) for name, _ in code.commands),
+                           *(options for _, options in code.programs.values()))
+    for number, line in enumerate(text.splitlines(), 1):
+        for m in re.finditer(r"`--([a-z][\w-]*)", line):
+            option = m.group(1)
+            if option in declared or re.search(r'(--%s(?![\w-])|"%s")' % (re.escape(option), re.escape(option)), source):
+                continue
+            problems.append(f"{path}:{number}: `--{option}` is no option of any Aula program, nor used by Aula's code")
+
+
 def declared_setting(key, code):
     if key in code.settings:
         return True
@@ -264,6 +288,7 @@ def main():
     code = Code(build)
     blocks = generated(code)
     problems, used = [], set()
+    source = source_text()
     for path in DOCS:
         full = os.path.join(ROOT, path)
         text = open(full).read()
@@ -278,6 +303,7 @@ def main():
                 print(f"{path}: regenerated")
         check_commands_and_options(path, new, code, problems)
         check_program_options(path, new, code, problems)
+        check_loose_options(path, new, code, source, problems)
         check_settings(path, new, code, problems)
         check_setting_tables(path, new, code, problems)
         check_paths(path, new, problems)
