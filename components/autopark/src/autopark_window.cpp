@@ -54,31 +54,15 @@ AutoparkWindow::AutoparkWindow(AutoparkComponent& component)
   lasers_ = new LaserView(component_, central);
   lasers_->setMinimumSize(420, 360);
   bottom->addWidget(lasers_, 1);
-  auto* side = new QVBoxLayout;
-  run_ = new gui::RunToggle(central);
-  status_ = new QLabel(central);
-  status_->setWordWrap(true);  // the algorithm's status can be a sentence
-  status_->setMinimumWidth(240);
-  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
-  referee_->setMaximumWidth(360);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  // Reload puts the robot back at its start: the teleoperator lets go of it too.
-  algorithm_ = new component::AlgorithmPanel(
-      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
-  side->addWidget(run_);
-  side->addWidget(new component::SimControlPanel(component_.bus(), central));
-  side->addWidget(algorithm_);
-  side->addWidget(referee_);
-  side->addWidget(status_);
-  side->addStretch(1);
-  bottom->addLayout(side);
+  side_ = new component::SidePanel(component_, *teleop, central);
+  side_->status()->setMinimumWidth(240);
+  side_->referee()->setMaximumWidth(360);
+  side_->layout()->addStretch(1);
+  bottom->addWidget(side_);
   bottom->addWidget(teleop);
   layout->addLayout(bottom, 1);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
-    if (on) algorithm_->reloadIfRebuilt();
-    component_.setRunning(on);
-  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this, [this](double v, double w) { component_.teleoperate(v, w); });
   map_->setOverlay([this](QPainter& p) { drawCar(p); });
   // The trail is sampled on sim time (every control tick), not at the GUI's refresh rate.
@@ -136,10 +120,9 @@ void AutoparkWindow::drawCar(QPainter& p) const {
 }
 
 void AutoparkWindow::refresh() {
-  run_->setRunning(component_.running());
-  referee_->setStatus(component_.refereeStatus().latest());
+  side_->show(component_.running(), component_.refereeStatus().latest());
   const auto& pose = component_.api().pose3d;
-  status_->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7\n%8")
+  side_->status()->setText(QString("sim time %1 s\nx %2 m  y %3 m  yaw %4 deg\nv = %5 m/s   w = %6 rad/s\n%7\n%8")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(pose.getX(), 0, 'f', 2)
                        .arg(pose.getY(), 0, 'f', 2)

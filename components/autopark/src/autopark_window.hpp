@@ -8,12 +8,8 @@
 #include <aula/autopark/autopark_component.hpp>
 #include <aula/scoring/parking_geometry.hpp>
 #include <aula/gui/map_view.hpp>
-#include <aula/gui/run_toggle.hpp>
 
-#include <QLabel>
-#include <aula/component/algorithm_panel.hpp>
-#include <aula/component/referee_status_label.hpp>
-#include <aula/component/sim_control_panel.hpp>
+#include <aula/component/side_panel.hpp>
 #include <QMainWindow>
 #include <QTimer>
 
@@ -51,10 +47,7 @@ class AutoparkWindow : public QMainWindow {
   ParkingScene scene_;
   gui::MapView* map_ = nullptr;
   LaserView* lasers_ = nullptr;
-  gui::RunToggle* run_ = nullptr;
-  QLabel* status_ = nullptr;
-  component::RefereeStatusLabel* referee_ = nullptr;
-  component::AlgorithmPanel* algorithm_ = nullptr;
+  component::SidePanel* side_ = nullptr;  // Run, speed, algorithm, referee, status
   int shown_generation_ = 0;  // a new episode (hot reload) clears the trail
   QTimer timer_;
   std::deque<QPointF> trail_;  // recent positions (a ring of the last kTrail)

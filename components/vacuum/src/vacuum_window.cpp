@@ -9,7 +9,6 @@
 #include <QApplication>
 #include <QHBoxLayout>
 #include <QPainter>
-#include <QVBoxLayout>
 
 #include <cmath>
 #include <cstdio>
@@ -29,30 +28,14 @@ VacuumWindow::VacuumWindow(VacuumComponent& component) : component_(component) {
   map_ = new gui::MapView(map.copy(), transform, central);
   map_->setMinimumSize(480, 480);  // the window's size is Vacuum.Window.Size; the map takes what is left
   layout->addWidget(map_, 1);
-  auto* side = new QVBoxLayout;
-  run_ = new gui::RunToggle(central);
-  referee_ = new component::RefereeStatusLabel("Run my algorithm", central);
-  status_ = new QLabel(central);
-  status_->setWordWrap(true);
-  status_->setMinimumWidth(260);
   auto* teleop = new gui::Teleoperator(component_.maxV(), component_.maxW(), central);
-  // Reload puts the robot back at its start: the teleoperator lets go of it too.
-  algorithm_ = new component::AlgorithmPanel(
-      component_.algorithm(), [this, teleop] { teleop->stop(); return component_.reloadAlgorithm(); }, central);
-  side->addWidget(run_);
-  side->addWidget(new component::SimControlPanel(component_.bus(), central));
-  side->addWidget(algorithm_);
-  side->addWidget(referee_);
-  side->addWidget(status_);
-  side->addWidget(teleop);
+  side_ = new component::SidePanel(component_, *teleop, central);
+  side_->status()->setMinimumWidth(260);
+  side_->layout()->addWidget(teleop);
   plot_ = new CoveragePlot(component_.runDurationS(), central);
-  side->addWidget(plot_, 1);
-  layout->addLayout(side);
+  side_->layout()->addWidget(plot_, 1);
+  layout->addWidget(side_);
   setCentralWidget(central);
-  connect(run_, &gui::RunToggle::runningChanged, this, [this](bool on) {
-    if (on) algorithm_->reloadIfRebuilt();
-    component_.setRunning(on);
-  });
   connect(teleop, &gui::Teleoperator::velocityChanged, this,
           [this](double v, double w) { component_.teleoperate(v, w); });
   // The cleaned area is painted at every control tick of sim time (4 cm apart at full speed),
@@ -168,15 +151,14 @@ void VacuumWindow::drawBelief(QPainter& painter) const {
 void VacuumWindow::refresh() {
   const auto& pose = component_.truePose();
   if (pose.received()) map_->setRobot(pose.getX(), pose.getY(), pose.getYaw(), 2 * component_.robotRadiusM(), 2 * component_.robotRadiusM());
-  run_->setRunning(component_.running());
   const auto said = component_.refereeStatus().latest();
-  referee_->setStatus(said);
+  side_->show(component_.running(), said);
   if (said && said->finished && !end_said_) {
     end_said_ = true;
     std::fprintf(stderr, "vacuum-cleaner: this window counted %.2f %% of the floor cleaned since Run\n",
                  coverage_ ? coverage_->coveragePercent() : 0.0);
   }
-  status_->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s%5")
+  side_->status()->setText(QString("sim time %1 s\ncleaned %4 % of the floor since Run\nv = %2 m/s   w = %3 rad/s%5")
                        .arg(component_.simTimeUs() / 1e6, 0, 'f', 1)
                        .arg(component_.motors().getV(), 0, 'f', 2)
                        .arg(component_.motors().getW(), 0, 'f', 2)
@@ -186,7 +168,7 @@ void VacuumWindow::refresh() {
 
 void VacuumWindow::screenshotAfter(const QString& png_path, int64_t sim_us) {
   // The panel too: its own timer (250 ms of wall time) may not have shown a fault yet.
-  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); algorithm_->refresh(); },
+  gui::screenshotAtSimTime(*this, [this] { return component_.simTimeUs(); }, [this] { refresh(); side_->algorithm()->refresh(); },
                            png_path, sim_us);
 }
 

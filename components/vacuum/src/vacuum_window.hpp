@@ -6,16 +6,12 @@
 // what the algorithm says it believes (api.belief: its own map and pose, in its own frame, put
 // on the world where the truth was when it first said it), beside the truth.
 
-#include <aula/component/algorithm_panel.hpp>
-#include <aula/component/referee_status_label.hpp>
-#include <aula/component/sim_control_panel.hpp>
+#include <aula/component/side_panel.hpp>
 #include <aula/gui/map_view.hpp>
-#include <aula/gui/run_toggle.hpp>
 #include <aula/gui/teleoperator.hpp>
 #include <aula/scoring/coverage_grid.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
-#include <QLabel>
 #include <QMainWindow>
 #include <QTimer>
 
@@ -45,11 +41,8 @@ class VacuumWindow : public QMainWindow {
 
   VacuumComponent& component_;
   gui::MapView* map_ = nullptr;
-  gui::RunToggle* run_ = nullptr;
-  QLabel* status_ = nullptr;
-  component::RefereeStatusLabel* referee_ = nullptr;
   bool end_said_ = false;  // the window's own count, said once in the log at the referee's end
-  component::AlgorithmPanel* algorithm_ = nullptr;
+  component::SidePanel* side_ = nullptr;  // Run, speed, algorithm, referee, status
   int shown_generation_ = 0;  // a new episode (hot reload) clears the cleaned area
   QTimer timer_;
   CoveragePlot* plot_ = nullptr;

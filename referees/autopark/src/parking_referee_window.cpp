@@ -1,14 +1,11 @@
 #include "parking_referee_window.hpp"
 
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
-#include <QApplication>
 #include <QGridLayout>
 #include <QPushButton>
 
 #include <cmath>
-#include <memory>
 
 namespace aula::autopark {
 
@@ -19,9 +16,7 @@ ParkingRefereeWindow::ParkingRefereeWindow(ParkingRefereeNode& node) : node_(nod
   clock_->setStyleSheet("font-size: 28px; font-family: monospace;");
   distances_ = new QLabel(this);
   distances_->setStyleSheet("font-family: monospace;");
-  mark_ = new QLabel("Mark: -", this);
-  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
-  mark_->setWordWrap(true);
+  mark_ = new gui::MarkLabel(this);
   // Not the heading: the angle between the car's axis and the curb (a car parked backwards is aligned).
   orientation_ = new gui::Gauge("Angle to curb", "deg", -90, 90, 180, this);
   const QColor green(90, 190, 90), orange(240, 160, 40), red(220, 60, 60);
@@ -50,11 +45,7 @@ void ParkingRefereeWindow::refresh() {
   const ParkingReferee& r = node_.referee();
   const double t = r.elapsedS();
   clock_->setText(QString::fromStdString(node_.clockText(t)));  // stopped where the grading stopped
-  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
-    marked_episode_ = node_.episode();
-    mark_->setText("Mark: -");
-    gui::sayShown(*this, {clock_, mark_});
-  }
+  if (mark_->clearFor(node_.episode())) gui::sayShown(*this, {clock_, mark_});
   const ParkingMeasures& m = r.measures();
   distances_->setText(QString("Front car: %1 m\nRear car:  %2 m  (centred: %6 m each)\nCurb:      %3 m\nTo the ideal pose: %4 m\n%5")
                           .arg(m.front_gap_m, 5, 'f', 2)
@@ -83,21 +74,6 @@ void ParkingRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {clock_, mark_});
   }
-}
-
-void ParkingRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  auto ticks = std::make_shared<int>(0);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
-    refresh();
-    if (node_.finished() || ++*ticks > 600) {
-      poll->stop();
-      showMark();
-      gui::saveWidgetPng(*this, png_path);
-      QApplication::quit();
-    }
-  });
-  poll->start(100);
 }
 
 }  // namespace aula::autopark

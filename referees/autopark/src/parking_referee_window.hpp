@@ -6,6 +6,7 @@
 #include "parking_referee_node.hpp"
 
 #include <aula/gui/gauge.hpp>
+#include <aula/gui/mark_label.hpp>
 
 #include <QLabel>
 #include <QProgressBar>
@@ -19,15 +20,13 @@ class ParkingRefereeWindow : public QWidget {
  public:
   explicit ParkingRefereeWindow(ParkingRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();
   ParkingRefereeNode& node_;
   QLabel* clock_ = nullptr;
   QLabel* distances_ = nullptr;
-  QLabel* mark_ = nullptr;
-  int marked_episode_ = 0;  // a hot reload clears the mark
+  gui::MarkLabel* mark_ = nullptr;
   QProgressBar* collisions_ = nullptr;
   gui::Gauge* orientation_ = nullptr;
   QTimer timer_;

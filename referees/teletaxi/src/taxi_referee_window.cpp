@@ -1,10 +1,8 @@
 #include "taxi_referee_window.hpp"
 
 #include <aula/geometry/angles.hpp>
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
-#include <QApplication>
 #include <QGridLayout>
 #include <QPushButton>
 
@@ -18,9 +16,7 @@ TaxiRefereeWindow::TaxiRefereeWindow(TaxiRefereeNode& node) : node_(node) {
   clock_ = new QLabel(this);
   clock_->setStyleSheet("font-size: 28px; font-family: monospace;");
   distances_ = new QLabel(this);
-  mark_ = new QLabel("Mark: -", this);
-  mark_->setStyleSheet("font-size: 22px; font-weight: bold;");
-  mark_->setWordWrap(true);
+  mark_ = new gui::MarkLabel(this);
   speed_ = new gui::Gauge("Speed", "km/h", 0, 80, 270, this);
   speed_->setBands({{0, 50, QColor(90, 190, 90)}, {50, 65, QColor(240, 160, 40)}, {65, 80, QColor(220, 60, 60)}});
   heading_ = new gui::Gauge("Heading", "deg", -180, 180, 360, this);
@@ -46,11 +42,7 @@ void TaxiRefereeWindow::refresh() {
   const TaxiReferee& r = node_.referee();
   const double t = r.elapsedS();
   clock_->setText(QString::fromStdString(node_.clockText(t)));  // stopped where the grading stopped
-  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
-    marked_episode_ = node_.episode();
-    mark_->setText("Mark: -");
-    gui::sayShown(*this, {clock_, mark_});
-  }
+  if (mark_->clearFor(node_.episode())) gui::sayShown(*this, {clock_, mark_});
   distances_->setText(r.hasGoal() ? QString("Straight line start -> destination: %1 m\nTravelled: %2 m\nTo the destination: %3 m")
                                         .arg(r.straightDistanceM(), 0, 'f', 1)
                                         .arg(r.pathLengthM(), 0, 'f', 1)
@@ -72,21 +64,6 @@ void TaxiRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {clock_, mark_});
   }
-}
-
-void TaxiRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  auto ticks = std::make_shared<int>(0);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll, ticks] {
-    refresh();
-    if (node_.finished() || ++*ticks > 300) {
-      poll->stop();
-      showMark();
-      gui::saveWidgetPng(*this, png_path);
-      QApplication::quit();
-    }
-  });
-  poll->start(100);
 }
 
 }  // namespace aula::teletaxi

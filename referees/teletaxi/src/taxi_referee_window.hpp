@@ -5,6 +5,7 @@
 #include "taxi_referee_node.hpp"
 
 #include <aula/gui/gauge.hpp>
+#include <aula/gui/mark_label.hpp>
 
 #include <QLabel>
 #include <QTimer>
@@ -17,15 +18,13 @@ class TaxiRefereeWindow : public QWidget {
  public:
   explicit TaxiRefereeWindow(TaxiRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();
   TaxiRefereeNode& node_;
   QLabel* clock_ = nullptr;
   QLabel* distances_ = nullptr;
-  QLabel* mark_ = nullptr;
-  int marked_episode_ = 0;  // a hot reload clears the mark
+  gui::MarkLabel* mark_ = nullptr;
   gui::Gauge* speed_ = nullptr;
   gui::Gauge* heading_ = nullptr;
   QTimer timer_;

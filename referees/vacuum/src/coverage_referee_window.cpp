@@ -1,11 +1,9 @@
 #include "coverage_referee_window.hpp"
 
-#include <aula/gui/screenshot.hpp>
 #include <aula/gui/shown_text.hpp>
 
 #include <aula/geometry/map_transform.hpp>
 
-#include <QApplication>
 #include <QFontMetrics>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -42,16 +40,10 @@ CoverageRefereeWindow::CoverageRefereeWindow(CoverageRefereeNode& node) : node_(
   // The episode's elapsed sim time, over its whole length.
   clock_ = new gui::Gauge("episode", "s", 0, node_.referee().settings().duration_s, 270, this);
   clock_->setMinimumSize(170, 170);
-  mark_ = new QLabel("Mark: -", this);
-  QFont mark_font = mark_->font();  // a font, not a style sheet: its height is known now
-  mark_font.setPixelSize(22);
-  mark_font.setBold(true);
-  mark_->setFont(mark_font);
+  mark_ = new gui::MarkLabel(this);
   // The mark's line (coverage, bumps, the scale) is wider than the window: it wraps within two
   // lines kept from the start, so the window neither widens (820 -> 1076 px) nor reflows.
-  mark_->setWordWrap(true);
   mark_->setFixedHeight(2 * QFontMetrics(mark_->font()).lineSpacing() + 8);
-  mark_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   auto* show = new QPushButton("Show me my mark", this);
   // The clock's line shares the top row with the percentage: at the end it is "Time's up at
   // 900.00 s of sim time", wider than the gauge's column it was in (cut at the window's edge).
@@ -83,11 +75,7 @@ void CoverageRefereeWindow::refresh() {
                                                .arg(static_cast<int>(left) / 60, 2, 10, QChar('0'))
                                                .arg(static_cast<int>(left) % 60, 2, 10, QChar('0')));
   clock_->setValue(end ? end->graded_s : r.elapsedS());
-  if (node_.episode() != marked_episode_) {  // hot reload: the last episode's mark is not this one's
-    marked_episode_ = node_.episode();
-    mark_->setText("Mark: -");
-    gui::sayShown(*this, {countdown_, mark_});
-  }
+  if (mark_->clearFor(node_.episode())) gui::sayShown(*this, {countdown_, mark_});
 }
 
 void CoverageRefereeWindow::showMark() {
@@ -103,19 +91,6 @@ void CoverageRefereeWindow::showMark() {
     refresh();
     gui::sayShown(*this, {countdown_, mark_});
   }
-}
-
-void CoverageRefereeWindow::screenshotWhenFinished(const QString& png_path) {
-  auto* poll = new QTimer(this);
-  connect(poll, &QTimer::timeout, this, [this, png_path, poll] {
-    if (!node_.finished()) return;
-    poll->stop();
-    refresh();
-    showMark();
-    gui::saveWidgetPng(*this, png_path);
-    QApplication::quit();
-  });
-  poll->start(50);
 }
 
 }  // namespace aula::vacuum

@@ -5,6 +5,7 @@
 #include "coverage_referee_node.hpp"
 
 #include <aula/gui/gauge.hpp>
+#include <aula/gui/mark_label.hpp>
 #include <aula/gui/map_view.hpp>
 
 #include <QLabel>
@@ -19,19 +20,17 @@ class CoverageRefereeWindow : public QWidget {
  public:
   explicit CoverageRefereeWindow(CoverageRefereeNode& node);
   void showMark();
-  void screenshotWhenFinished(const QString& png_path);
 
  private:
   void refresh();
   CoverageRefereeNode& node_;
   gui::MapView* map_ = nullptr;
-  int shown_episode_ = 0;   // a hot reload clears the painted area
-  int marked_episode_ = 0;  // and the mark
+  int shown_episode_ = 0;  // a hot reload clears the painted area
   QLabel* percent_ = nullptr;
   QProgressBar* bar_ = nullptr;
   QLabel* countdown_ = nullptr;
   gui::Gauge* clock_ = nullptr;
-  QLabel* mark_ = nullptr;
+  gui::MarkLabel* mark_ = nullptr;
   QTimer timer_;
 };
 

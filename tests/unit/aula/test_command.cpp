@@ -17,7 +17,7 @@ Command example() {
   c.options.flag("headless", false, "no windows")
       .add(aula::cli::valueOption("report", "FILE.json", "the report"))
       .add(aula::cli::numberOption("duration", SettingType::Double, "s", 0, 1e6, "episode length", true))
-      .text("seeds", "1", "seeds")
+      .add(aula::cli::valueOption("seeds", "LIST", "seeds", "1"))
       .choice("engine", "local", {"local", "slurm"}, "where");
   c.run = [](const Arguments&) { return 0; };
   return c;
@@ -75,9 +75,18 @@ TEST(Command, SettingsOnlyWhereTheCommandTakesThem) {
 TEST(Command, HelpListsEveryDeclaredOption) {
   const std::string help = example().help();
   for (const char* line : {"usage: aula run EXERCISE [options] [--Section.Key=value ...]", "--headless", "--report=FILE.json",
-                           "--duration=SECONDS", "(0, 1000000] s", "--engine=VALUE", "one of: local, slurm", "(default 1)"}) {
+                           "--duration=SECONDS", "(0, 1000000] s", "--engine=local|slurm", "--seeds=LIST", "(default 1)"}) {
     EXPECT_NE(help.find(line), std::string::npos) << line << "\n" << help;
   }
+  EXPECT_EQ(help.find("VALUE"), std::string::npos) << help;
+}
+
+// A text option says what its value is (FILE, DIR, LIST); one declared without a placeholder
+// would print a generic "--out=VALUE", so its help is refused.
+TEST(Command, ATextOptionWithoutAPlaceholderIsRefused) {
+  Command c = example();
+  c.options.text("out", "grading", "the folder");
+  EXPECT_THROW(c.help(), std::logic_error);
 }
 
 TEST(CommandTable, DispatchesByNameAndAnswersHelpAndVersion) {

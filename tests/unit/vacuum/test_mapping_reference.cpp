@@ -69,7 +69,7 @@ CleanerRun drive(const std::string& world_file, double seconds) {
 
 // Measured, seed 1: vacuum.world p95 0.013 m, max 0.019 m, 85.6 %, 2 contacts; house_3x2.world
 // p95 0.014 m, max 0.054 m, 84.6 %, 18 contacts (before the lanes along walls: 83.8 % and 80.8 %,
-// max 0.273 m after a bump). In the simulator: docs/performance.md, "Mapping cleaner".
+// max 0.273 m after a bump). In the simulator: docs/performance.md, "Vacuum cleaner".
 TEST(MappingReference, KnowsWhereItIsAndCoversTwoHousesIn900s) {
   for (const auto& [world, min_coverage_percent, max_contacts] :
        {std::tuple{"vacuum.world", 80.0, 15}, std::tuple{"house_3x2.world", 78.0, 200}}) {

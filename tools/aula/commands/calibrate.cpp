@@ -71,12 +71,12 @@ cli::Command calibrate() {
   c.positionals = {{"EXERCISE", calibratedExercises()}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("world", "FILE", "the world to calibrate (a .world file or a shipped world's name); required"))
-      .text("seeds", "1-10", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7")
+      .add(cli::valueOption("seeds", "LIST", "the seeds each algorithm runs: 1-10, 1,4,9 or 2-3,7", "1-10"))
       .add(cli::valueOption("baseline", "ALGORITHM", "the algorithm worth a 5 (default: the exercise's baseline, bounce)"))
       .add(cli::valueOption("anchor", "ALGORITHM",
                             "the algorithm worth a 10 (default: the exercise's reference; e.g. classic, or a plugin PATH.so)"))
       .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
-      .text("out", "calibration", "the folder of the calibration's runs (reports, pictures; run again to resume)")
+      .add(cli::valueOption("out", "DIR", "the folder of the calibration's runs (reports, pictures; run again to resume)", "calibration"))
       .add(cli::valueOption("output", "FILE.cfg", "where to write the rubric (default: W.rubric.cfg beside the world)"));
   c.details = "aula run and aula grade apply W.rubric.cfg when the rubric preset is default; see docs/grading.md\n";
   c.run = calibrateWorld;

@@ -48,11 +48,13 @@ cli::Command grade() {
   c.takes_settings = true;
   c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own); "
                                  "generate:KIND:5,seed=7 writes held-out worlds into OUT/worlds (" + grade::generatedWorldKinds() + ")"))
-      .text("seeds", "1", "the seeds: 1-5, 1,4,9 or 2-3,7")
-      .text("calibration-seeds", "1-10", "the seeds each world without a calibration file is calibrated on (the "
-                                         "baseline's and the reference's runs, cached in OUT/calibrations); off: none")
+      .add(cli::valueOption("seeds", "LIST", "the seeds: 1-5, 1,4,9 or 2-3,7", "1"))
+      .add(cli::valueOption("calibration-seeds", "LIST|off",
+                            "the seeds each world without a calibration file is calibrated on (the baseline's and the "
+                            "reference's runs, cached in OUT/calibrations); off: none",
+                            "1-10"))
       .add(cli::numberOption("jobs", config::SettingType::Int, "", 1, 1024, "runs at once (default: one per CPU)"))
-      .text("out", "grading", "the folder of grades.csv, report.html, runs/ and build/ (run again to resume)")
+      .add(cli::valueOption("out", "DIR", "the folder of grades.csv, report.html, runs/ and build/ (run again to resume)", "grading"))
       .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")
       .real("wall-limit", 3600, "s", 1, 1e7, "each run's wall-clock backstop for a starved machine: past it the run is the machine's failure and is run again (the sim-time limit is the referee's)", true)
       .flag("record", false, "keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)")

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 namespace aula::cli {
 using config::ConfigError;
@@ -23,12 +24,22 @@ Command::Command(std::string name_, std::string summary_)
 
 namespace {
 
-// "--world=FILE": the placeholder is the declared unit for text (FILE, DIR, URL), else the type.
-std::string optionSyntax(const SettingSpec& spec) {
+// "--world=FILE", "--engine=local|slurm", "--jobs=N": what a value is, said in the option itself.
+// Text options declare their placeholder (valueOption: FILE, DIR, LIST); one that does not is a
+// mistake in the declaration, refused here so that no generic "--out=VALUE" reaches a user.
+std::string optionSyntax(const SettingSpec& spec, const std::string& command) {
   if (spec.type == SettingType::Bool) return "--" + spec.key;
-  std::string placeholder = spec.unit;
-  if (placeholder.empty() || spec.type == SettingType::Int || spec.type == SettingType::Double) {
-    placeholder = spec.unit == "s" ? "SECONDS" : spec.type == SettingType::Int ? "N" : spec.type == SettingType::Double ? "X" : "VALUE";
+  std::string placeholder;
+  if (spec.type == SettingType::Choice) {
+    for (const std::string& choice : spec.choices) placeholder += (placeholder.empty() ? "" : "|") + choice;
+  } else if (spec.type == SettingType::Int) {
+    placeholder = "N";
+  } else if (spec.type == SettingType::Double) {
+    placeholder = spec.unit == "s" ? "SECONDS" : "X";
+  } else if (spec.unit.empty()) {
+    throw std::logic_error("aula " + command + ": option --" + spec.key + " declares no placeholder (cli::valueOption)");
+  } else {
+    placeholder = spec.unit;
   }
   return "--" + spec.key + "=" + placeholder;
 }
@@ -71,11 +82,11 @@ std::string Command::help() const {
   for (const Positional& p : positionals) out << "  " << p.name << "  " << p.help << "\n";
   if (!options.specs().empty()) out << "options:\n";
   for (const SettingSpec& spec : options.specs()) {
-    out << "  " << optionSyntax(spec) << "\n      " << spec.help;
+    out << "  " << optionSyntax(spec, name) << "\n      " << spec.help;
     const bool numeric = spec.type == SettingType::Int || spec.type == SettingType::Double;
     if (!spec.default_value.empty() && spec.type != SettingType::Bool) out << " (default " << spec.default_value << ")";
     const std::string range = spec.rangeText();
-    if (!range.empty() && (numeric || spec.type == SettingType::Choice)) out << "; " << range;
+    if (!range.empty() && numeric) out << "; " << range;
     out << "\n";
   }
   out << "  --help\n      this help\n";
@@ -135,10 +146,12 @@ void Command::checkCount(const std::vector<std::string>& positional) const {
   }
 }
 
-config::SettingSpec valueOption(const std::string& name, const std::string& placeholder, const std::string& help) {
+config::SettingSpec valueOption(const std::string& name, const std::string& placeholder, const std::string& help,
+                                const std::string& default_value) {
   config::SettingSpec spec;
   spec.key = name;
   spec.unit = placeholder;
+  spec.default_value = default_value;
   spec.help = help;
   return spec;
 }

@@ -19,12 +19,14 @@
 //
 // Node needs finished(), endedEarly(), abort(reason), aborted(), poll(), peersGone(), leave(), deferSensorWakeUps(bus), summary(),
 // report(), writePicture(path), writeTrace(path), setOnFinished(hook);
-// Window needs Window(Node&), showMark(), screenshotWhenFinished(QString).
+// Window needs Window(Node&), showMark(); with `--screenshot=FILE.png` the window is saved when
+// the episode ends, its mark shown (gui::screenshotWhenFinished).
 
 #include <aula/app/bus_pump.hpp>
 #include <aula/app/main_window.hpp>
 #include <aula/app/process_setup.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/gui/screenshot.hpp>
 #include <aula/lcm/log_replay.hpp>
 #include <aula/process/exit_codes.hpp>
 #include <aula/process/line_pipe.hpp>
@@ -135,7 +137,8 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   quitWhenClosed(window);
   window.show();
   if (setup.command_line.flag("screenshot")) {
-    window.screenshotWhenFinished(QString::fromStdString(setup.command_line.option("screenshot")));
+    gui::screenshotWhenFinished(window, [&node] { return node.finished(); }, [&window] { window.showMark(); },
+                                QString::fromStdString(setup.command_line.option("screenshot")));
   }
   const int code = app.exec();
   node.leave();

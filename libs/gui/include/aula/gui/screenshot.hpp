@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 
@@ -25,5 +26,23 @@ inline void screenshotAtSimTime(QWidget& window, std::function<int64_t()> sim_ti
     QApplication::quit();
   });
   poll->start(20);
+}
+
+// Once `finished()` says the episode has ended: `last()` (the window's final mark), save the window
+// as png_path and quit the application (a referee window's `--screenshot=FILE.png`: the picture
+// shows the end of the run). A run that never ends is ended by its referee's own limits or its
+// peers' going; the wall-clock backstop only keeps a picture-taking process from waiting forever.
+inline void screenshotWhenFinished(QWidget& window, std::function<bool()> finished, std::function<void()> last,
+                                   const QString& png_path, std::chrono::milliseconds backstop = std::chrono::minutes(10)) {
+  auto* poll = new QTimer(&window);
+  const auto deadline = std::chrono::steady_clock::now() + backstop;
+  QObject::connect(poll, &QTimer::timeout, &window, [&window, finished, last, png_path, poll, deadline] {
+    if (!finished() && std::chrono::steady_clock::now() < deadline) return;
+    poll->stop();
+    last();
+    saveWidgetPng(window, png_path);
+    QApplication::quit();
+  });
+  poll->start(50);
 }
 }  // namespace aula::gui

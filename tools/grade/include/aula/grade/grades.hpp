@@ -35,7 +35,7 @@ std::string twoDecimals(double value);
 // destination's ("city-plaza" for city.world's destination "plaza").
 std::string gradedWorldOf(const nlohmann::json& result);
 // grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
-// runs_tampered, failures.
+// runs_tampered, failures, language, aula_version (docs/grading.md's list is generated from it).
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 // `similarity`: compare the class's submissions too (similarity.csv and report.html's section);

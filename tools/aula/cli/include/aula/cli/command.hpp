@@ -71,9 +71,11 @@ struct Command {
   void checkCount(const std::vector<std::string>& positional) const;
 };
 
-// Declaration helpers for options with no default: a value shown as `--name=PLACEHOLDER`, and a
-// number in [min, max] ((min, max] when min_exclusive) with its unit.
-config::SettingSpec valueOption(const std::string& name, const std::string& placeholder, const std::string& help);
+// Declaration helpers: a text value shown as `--name=PLACEHOLDER` (FILE, DIR, LIST: every text
+// option declares one; `help()` refuses one that does not), with a default or none, and a number
+// in [min, max] ((min, max] when min_exclusive) with its unit and no default.
+config::SettingSpec valueOption(const std::string& name, const std::string& placeholder, const std::string& help,
+                                const std::string& default_value = "");
 config::SettingSpec numberOption(const std::string& name, config::SettingType type, const std::string& unit, double min,
                                  double max, const std::string& help, bool min_exclusive = false);
 
