@@ -26,6 +26,7 @@
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/references.hpp>
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/autopark/reference_steps.hpp>
 #include <aula/autopark/street_search.hpp>
 #include <aula/autopark/two_arc_park.hpp>
 #include <aula/geometry/angles.hpp>
@@ -39,80 +40,17 @@ namespace {
 
 class ReactiveParker : public AutoparkAlgorithm {
  public:
+  // One control period: read the pose, run the present phase, say when the phase changes, drive.
   void execute(AutoparkApi& api) override {
     t_ += api.period_s;
-    const auto& front = api.laser1.getLaserData();
-    const auto& rear = api.laser2.getLaserData();
-    if (front.numLaser == 0 || rear.numLaser == 0 || api.laser3.getLaserData().numLaser == 0 || !api.pose3d.received()) return;
+    if (!sensorsReady(api)) return;
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
-    // The point the car turns about: it moves on arcs of radius |v / w|.
-    const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
     if (!search_) start(api, yaw);
-    double v = 0, w = 0;
-    switch (mode_) {
-      case Mode::Turn:
-        if (turn_.step(api, yaw, v, w)) mode_ = Mode::Search;
-        break;
-      case Mode::Search: {
-        if (search_->exhausted()) {
-          api.status = "no free slot on the street";
-          mode_ = Mode::Declined;
-          break;
-        }
-        const StreetSearch::Step step = search_->search(api, x, y, yaw);
-        if (step.slot) {
-          planFor(api, *step.slot);
-          break;
-        }
-        v = step.v_mps;
-        w = step.w_radps;
-        break;
-      }
-      case Mode::Approach: {
-        const double to_go = plan_.start_x_m - x;
-        if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(geometry::wrapAngle(yaw)) < 0.05) {
-          mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
-          if (zigzag_) zig_angle_ = zigzagAngle(api, y);
-          break;
-        }
-        v = std::clamp(0.8 * to_go, -kReverseMps, kCruiseMps);
-        if (std::abs(v) < 0.15) v = std::copysign(0.15, to_go);
-        w = search_->keepLane(v, y, yaw);
-        break;
-      }
-      case Mode::Arc1: {
-        v = -kManoeuvreMps;
-        w = kManoeuvreMps / plan_.radius_m;  // reversing, yaw grows: the rear swings right
-        const double remaining = pivot_y - plan_.goal_y_m;
-        if (remaining <= plan_.radius_m * (1 - std::cos(yaw)) || yaw > plan_.arc_rad + 0.1) mode_ = Mode::Arc2;
-        break;
-      }
-      case Mode::Arc2: {
-        v = -kManoeuvreMps;
-        w = -kManoeuvreMps / plan_.radius_m;
-        // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-        if (yaw <= 0.0 || rangeAhead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
-        break;
-      }
-      case Mode::Zigzag:
-        zigzag(api, x, y, yaw, v, w);
-        break;
-      case Mode::Centre:
-        centre(api, x, y, yaw, v, w);
-        break;
-      case Mode::Parked:
-      case Mode::Declined:
-      case Mode::Failed:
-        break;
-    }
-    if (mode_ != logged_mode_) {
-      // One line per phase, so a student can follow the manoeuvre in the terminal.
-      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
-                   geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
-      logged_mode_ = mode_;
-    }
-    api.motors.sendV(v);
-    api.motors.sendW(w);
+    Command command;
+    step(api, x, y, yaw, command);
+    logPhase(api, x, y, yaw);
+    api.motors.sendV(command.v_mps);
+    api.motors.sendW(command.w_radps);
   }
 
  private:
@@ -132,6 +70,96 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
+
+  // All three lasers and the pose have come in: nothing is decided on half the picture.
+  static bool sensorsReady(const AutoparkApi& api) {
+    return api.laser1.getLaserData().numLaser != 0 && api.laser2.getLaserData().numLaser != 0 &&
+           api.laser3.getLaserData().numLaser != 0 && api.pose3d.received();
+  }
+
+  // The present phase's command for this period (and the next phase, when it ends).
+  void step(AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    switch (mode_) {
+      case Mode::Turn:
+        if (turn_.step(api, yaw, c.v_mps, c.w_radps)) mode_ = Mode::Search;
+        break;
+      case Mode::Search:
+        searchStep(api, x, y, yaw, c);
+        break;
+      case Mode::Approach:
+        approachStep(api, x, y, yaw, c);
+        break;
+      case Mode::Arc1:
+        arc1Step(api, y, yaw, c);
+        break;
+      case Mode::Arc2:
+        arc2Step(api, yaw, c);
+        break;
+      case Mode::Zigzag:
+        zigzag(api, x, y, yaw, c.v_mps, c.w_radps);
+        break;
+      case Mode::Centre:
+        centre(api, x, y, yaw, c.v_mps, c.w_radps);
+        break;
+      case Mode::Parked:
+      case Mode::Declined:
+      case Mode::Failed:
+        break;
+    }
+  }
+
+  // SEARCH: drive down the street until the detector reports a slot, then plan for it.
+  void searchStep(AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    if (search_->exhausted()) {
+      api.status = "no free slot on the street";
+      mode_ = Mode::Declined;
+      return;
+    }
+    const StreetSearch::Step found = search_->search(api, x, y, yaw);
+    if (found.slot) {
+      planFor(api, *found.slot);
+      return;
+    }
+    c.v_mps = found.v_mps;
+    c.w_radps = found.w_radps;
+  }
+
+  // APPROACH: along the lane to where the arcs (or the multi-move park) start.
+  void approachStep(const AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    const double to_go = plan_.start_x_m - x;
+    if (atArcStart(to_go, y, search_->laneY(), yaw)) {
+      mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
+      if (zigzag_) zig_angle_ = zigzagAngle(api, y);
+      return;
+    }
+    c.v_mps = approachSpeed(to_go, kCruiseMps, kReverseMps);
+    c.w_radps = search_->keepLane(c.v_mps, y, yaw);
+  }
+
+  // ARC1: reversing, yaw grows, the rear swings right towards the curb.
+  void arc1Step(const AutoparkApi& api, double y, double yaw, Command& c) {
+    c.v_mps = -kManoeuvreMps;
+    c.w_radps = kManoeuvreMps / plan_.radius_m;
+    // The point the car turns about: it moves on arcs of radius |v / w|.
+    const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
+    if (firstArcDone(pivot_y - plan_.goal_y_m, plan_.radius_m, yaw, plan_.arc_rad)) mode_ = Mode::Arc2;
+  }
+
+  // ARC2: reversing, steering the other way until parallel to the curb.
+  void arc2Step(const AutoparkApi& api, double yaw, Command& c) {
+    c.v_mps = -kManoeuvreMps;
+    c.w_radps = -kManoeuvreMps / plan_.radius_m;
+    // Parallel to the curb, or the car behind is close: straighten up later, forwards.
+    if (yaw <= 0.0 || rangeAhead(api.laser2.getLaserData(), 0.35) < 0.35) mode_ = Mode::Centre;
+  }
+
+  // One line per phase, so a student can follow the manoeuvre in the terminal.
+  void logPhase(const AutoparkApi& api, double x, double y, double yaw) {
+    if (mode_ == logged_mode_) return;
+    std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
+                 geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
+    logged_mode_ = mode_;
+  }
 
   void start(const AutoparkApi& api, double yaw) {
     car_ = {api.car_length_m, api.car_width_m, api.turn_centre_x_m, api.min_turn_radius_m};
@@ -180,23 +208,17 @@ class ReactiveParker : public AutoparkAlgorithm {
     mode_ = Mode::Approach;
   }
 
+  // CENTRE: forward or back until the front and rear lasers see equal gaps, then say where it is.
   void centre(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
-    const auto& front = api.laser1.getLaserData();
-    const auto& rear = api.laser2.getLaserData();
-    const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
-    const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
-    const double yaw_error = geometry::wrapAngle(yaw);
-    const bool settled = std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03;
-    if (settled || ++centre_moves_ > 2000) {  // never oscillate forever
+    const double gap_front = rangeAhead(api.laser1.getLaserData(), 0.15);
+    const double gap_rear = rangeAhead(api.laser2.getLaserData(), 0.15);
+    if (centred(gap_front, gap_rear, yaw) || ++centre_moves_ > 2000) {  // never oscillate forever
       finish(api, x, y, yaw);
       return;
     }
-    v = std::clamp(0.8 * error, -0.5, 0.5);
-    if (std::abs(v) < 0.1) v = std::copysign(0.1, error);
-    // Straighten while moving: the yaw follows the sign of the motion.
-    const double limit = std::abs(v) / std::max(plan_.radius_m, api.min_turn_radius_m);
-    w = std::clamp(-2.0 * yaw_error * (v > 0 ? 1 : -1) * std::abs(v), -limit, limit);
-    if (std::abs(yaw_error) < 0.03) w = 0;
+    const Command c = centringCommand(gap_front, gap_rear, yaw, std::max(plan_.radius_m, api.min_turn_radius_m));
+    v = c.v_mps;
+    w = c.w_radps;
   }
 
   // Half the body's extent along the street, and how far its lowest corner is below its centre,
@@ -256,11 +278,8 @@ class ReactiveParker : public AutoparkAlgorithm {
 
   // PARKED only in the slot and parallel to it; anything else is said as it is.
   void finish(AutoparkApi& api, double x, double y, double yaw) {
-    const double half = api.car_length_m / 2;
-    const bool in_slot = x - half > slot_.rear_x_m - 0.1 && x + half < slot_.front_x_m + 0.1 &&
-                         std::abs(y - plan_.goal_y_m) < 0.4 && std::abs(geometry::wrapAngle(yaw)) < 0.1;
     char line[160];
-    if (in_slot) {
+    if (inSlot(slot_, plan_.goal_y_m, api.car_length_m, x, y, yaw)) {
       std::snprintf(line, sizeof line, "parked in the %.1f m slot", slot_.lengthM());
       mode_ = Mode::Parked;
     } else {
