@@ -47,7 +47,11 @@ class ReactiveParker : public AutoparkAlgorithm {
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
     if (!search_) start(api, yaw);
     Command command;
-    step(api, x, y, yaw, command);
+    if (overTime()) {
+      stalled(api, x, y);
+    } else {
+      step(api, x, y, yaw, command);
+    }
     logPhase(api, x, y, yaw);
     api.motors.sendV(command.v_mps);
     api.motors.sendW(command.w_radps);
@@ -70,6 +74,10 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
+  // The longest each phase may take, sim seconds: longer, it is stuck and says so (never a silent
+  // stall until the run's time is up). A search drives a long street both ways; a turn is short.
+  static constexpr double kSearchLimitS = 240, kTurnLimitS = 60, kManoeuvreLimitS = 150;
+  static constexpr double kBackOffClearM = 1.0;  // backing off for a run-up stops this near something behind
 
   // All three lasers and the pose have come in: nothing is decided on half the picture.
   static bool sensorsReady(const AutoparkApi& api) {
@@ -126,14 +134,37 @@ class ReactiveParker : public AutoparkAlgorithm {
 
   // APPROACH: along the lane to where the arcs (or the multi-move park) start.
   void approachStep(const AutoparkApi& api, double x, double y, double yaw, Command& c) {
-    const double to_go = plan_.start_x_m - x;
+    const double to_go = plan_.start_x_m - x, off_lane = y - search_->laneY();
     if (atArcStart(to_go, y, search_->laneY(), yaw)) {
       mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
       if (zigzag_) zig_angle_ = zigzagAngle(api, y);
       return;
     }
-    c.v_mps = approachSpeed(to_go, kCruiseMps, kReverseMps);
+    if (back_off_m_ <= 0 && arrivedOffLane(to_go, off_lane)) back_off_m_ = runUpM(off_lane);
+    if (back_off_m_ > 0 && (to_go >= back_off_m_ || rangeAhead(api.laser2.getLaserData(), 0.3) < kBackOffClearM)) {
+      back_off_m_ = 0;  // far enough behind the start (or something close behind): come again
+    }
+    c.v_mps = back_off_m_ > 0 ? -kReverseMps : approachSpeed(to_go, kCruiseMps, kReverseMps);
     c.w_radps = search_->keepLane(c.v_mps, y, yaw);
+  }
+
+  // Whether the present phase has run longer than it ever should.
+  bool overTime() const {
+    if (mode_ == Mode::Parked || mode_ == Mode::Declined || mode_ == Mode::Failed) return false;
+    const double limit = mode_ == Mode::Search ? kSearchLimitS : mode_ == Mode::Turn ? kTurnLimitS : kManoeuvreLimitS;
+    return t_ - phase_start_s_ > limit;
+  }
+
+  // Stuck: stop and say in which phase, for how long, and where (and where the slot is, if one).
+  void stalled(AutoparkApi& api, double x, double y) {
+    char line[200];
+    const int n = std::snprintf(line, sizeof line, "stalled: %.0f s in %s, stopped at x %.2f y %.2f", t_ - phase_start_s_,
+                                name(mode_), x, y);
+    if (mode_ != Mode::Search && mode_ != Mode::Turn && n > 0 && n < static_cast<int>(sizeof line)) {
+      std::snprintf(line + n, sizeof line - n, " (the slot: x %.2f to %.2f)", slot_.rear_x_m, slot_.front_x_m);
+    }
+    api.status = line;
+    mode_ = Mode::Failed;
   }
 
   // ARC1: reversing, yaw grows, the rear swings right towards the curb.
@@ -156,6 +187,7 @@ class ReactiveParker : public AutoparkAlgorithm {
   // One line per phase, so a student can follow the manoeuvre in the terminal.
   void logPhase(const AutoparkApi& api, double x, double y, double yaw) {
     if (mode_ == logged_mode_) return;
+    phase_start_s_ = t_;
     std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
                  geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
     logged_mode_ = mode_;
@@ -301,6 +333,8 @@ class ReactiveParker : public AutoparkAlgorithm {
   double zig_angle_ = kZigzagMaxRad;
   int zig_moves_ = 0;
   int centre_moves_ = 0;
+  double phase_start_s_ = 0;  // sim time the present phase began
+  double back_off_m_ = 0;     // > 0: backing off until this far behind the arcs' start
 };
 
 }  // namespace

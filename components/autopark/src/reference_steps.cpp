@@ -17,6 +17,10 @@ double approachSpeed(double to_go_m, double cruise_mps, double reverse_mps) {
   return v;
 }
 
+bool arrivedOffLane(double to_go_m, double off_lane_m) { return std::abs(to_go_m) < 0.5 && std::abs(off_lane_m) >= 0.3; }
+
+double runUpM(double off_lane_m) { return 4.0 * std::abs(off_lane_m) + 4.0; }
+
 bool firstArcDone(double remaining_m, double radius_m, double yaw_rad, double arc_rad) {
   return remaining_m <= radius_m * (1 - std::cos(yaw_rad)) || yaw_rad > arc_rad + 0.1;
 }
@@ -61,6 +65,7 @@ MappedStreet planningExtent(const MappedStreet& mapped, const Slot& slot, double
 ParkingPlannerOptions planOptions(unsigned seed, int attempt) {
   ParkingPlannerOptions options;
   options.seed = seed + static_cast<unsigned>(attempt);
+  options.repeatable = true;  // sim time is the only clock: a loaded machine must not change the plan
   if (attempt > 0) {
     options.escape_step_m = 0.02;
     options.escape_cell_m = 0.025;

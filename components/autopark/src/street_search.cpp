@@ -27,6 +27,16 @@ double clearanceAhead(const component::LaserData& scan, double half_width_m) {
   return nearest;
 }
 
+bool laneBlockedAhead(double x_m, double y_m, double yaw_rad, const LaserMount& mount, const component::LaserData& scan,
+                      int direction, double lane_y_m, double half_band_m, double within_m) {
+  bool blocked = false;
+  forEachEcho(x_m, y_m, yaw_rad, mount, scan, [&](double ex_m, double ey_m) {
+    const double ahead_m = direction * (ex_m - x_m);
+    if (ahead_m > 0 && ahead_m < within_m && std::abs(ey_m - lane_y_m) < half_band_m) blocked = true;
+  });
+  return blocked;
+}
+
 bool TurnRound::needed(double yaw_rad) { return std::abs(geometry::wrapAngle(yaw_rad)) > M_PI / 2; }
 
 bool TurnRound::step(const AutoparkApi& api, double yaw_rad, double& v_mps, double& w_radps) {
@@ -48,7 +58,7 @@ bool TurnRound::step(const AutoparkApi& api, double yaw_rad, double& v_mps, doub
 
 StreetSearch::StreetSearch(const AutoparkApi& api, Settings settings)
     : settings_(settings), detector_(settings.min_slot_length_m), car_width_m_(api.car_width_m),
-      lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
+      car_length_m_(api.car_length_m), lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
 
 void StreetSearch::addScans(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) {
   detector_.addScan(x_m, y_m, yaw_rad, api.mount1, api.laser1.getLaserData());
@@ -61,12 +71,9 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   Step step;
   step.slot = detector_.slot(x_m);
   if (step.slot) return step;
-  if (direction_ > 0 && rangeAhead(api.laser1.getLaserData(), 0.3) < settings_.street_end_m) {
-    direction_ = -1;
-    ++reversals_;
-  }
-  if (direction_ < 0 && rangeAhead(api.laser2.getLaserData(), 0.3) < settings_.street_end_m) {
-    direction_ = 1;
+  // At most one turn back a period: the way back is judged from the next scan.
+  if (streetEndAhead(api, x_m, y_m, yaw_rad)) {
+    direction_ = -direction_;
     ++reversals_;
   }
   step.v_mps = direction_ > 0 ? settings_.cruise_mps : -settings_.reverse_mps;
@@ -76,6 +83,14 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   if (!std::isfinite(lane_y_m_)) lane_y_m_ = y_m;  // nothing known yet: keep to the present line
   step.w_radps = keepLane(step.v_mps, y_m, yaw_rad);
   return step;
+}
+
+bool StreetSearch::streetEndAhead(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) const {
+  const bool forward = direction_ > 0;
+  const double lane_y = std::isfinite(lane_y_m_) ? lane_y_m_ : y_m;
+  return laneBlockedAhead(x_m, y_m, yaw_rad, forward ? api.mount1 : api.mount2,
+                          forward ? api.laser1.getLaserData() : api.laser2.getLaserData(), direction_, lane_y,
+                          car_width_m_ / 2 + settings_.lane_band_margin_m, car_length_m_ / 2 + settings_.street_end_m);
 }
 
 double StreetSearch::keepLane(double v_mps, double y_m, double yaw_rad) const {

@@ -91,6 +91,7 @@ TEST(PlannedSteps, ARetriedPlanSearchesFinerWithAnotherSeed) {
   const ParkingPlannerOptions first = planOptions(7, 0), second = planOptions(7, 1);
   EXPECT_EQ(first.seed, 7u);
   EXPECT_EQ(second.seed, 8u);
+  EXPECT_TRUE(first.repeatable && second.repeatable);  // never the wall clock
   EXPECT_DOUBLE_EQ(first.escape_step_m, ParkingPlannerOptions{}.escape_step_m);
   EXPECT_LT(second.escape_step_m, first.escape_step_m);
   EXPECT_LT(second.min_slot_clearance_m, first.min_slot_clearance_m);
@@ -106,4 +107,14 @@ TEST(PlannedSteps, TheBodysExtentHoldsEveryCornerOfThePath) {
   EXPECT_NEAR(body.max_x_m, 10 + car.length_m / 2, 1e-9);
   EXPECT_NEAR(body.min_y_m, -car.width_m / 2, 1e-9);
   EXPECT_NEAR(body.max_y_m, car.width_m / 2, 1e-9);
+}
+
+TEST(ReactiveSteps, ArrivedOffTheLaneItBacksOffFurtherTheFurtherOffItIs) {
+  EXPECT_TRUE(arrivedOffLane(0.2, 2.6));
+  EXPECT_TRUE(arrivedOffLane(-0.4, -0.5));
+  EXPECT_FALSE(arrivedOffLane(0.2, 0.1));  // on the lane: the arcs start
+  EXPECT_FALSE(arrivedOffLane(3.0, 2.6));  // still on its way: the lane keeping closes it
+  EXPECT_GT(runUpM(2.6), runUpM(0.5));
+  EXPECT_DOUBLE_EQ(runUpM(-1.0), runUpM(1.0));
+  EXPECT_GE(runUpM(0.3), 4.0);
 }

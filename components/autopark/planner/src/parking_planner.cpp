@@ -187,9 +187,10 @@ class EscapeSearch {
     return opt_.escape_heuristic_weight * std::max(0.0, opt_.exit_lateral_m - side * lateral(p));
   }
 
-  // Out of expansions, or out of time (the clock is read every 64 expansions only).
+  // Out of expansions, or out of time (the clock is read every 64 expansions only, and never when repeatable).
   bool budgetSpent(int expansions) const {
-    return expansions > opt_.escape_max_expansions || ((expansions & 63) == 0 && Clock::now() > deadline_);
+    if (expansions > opt_.escape_max_expansions) return true;
+    return !opt_.repeatable && (expansions & 63) == 0 && Clock::now() > deadline_;
   }
 
   // Drives one move up to escape_move_m, stopping before a collision or once the exit is reached.
@@ -308,6 +309,12 @@ std::vector<const ob::State*> shortcut(const ob::SpaceInformation& si, og::PathG
   return kept;
 }
 
+// When RRTConnect stops: after rrt_max_checks questions when repeatable (no clock), else after time_left_s.
+ob::PlannerTerminationCondition stopCondition(const ParkingPlanner::Options& opt, double time_left_s) {
+  if (!opt.repeatable) return ob::timedPlannerTerminationCondition(std::max(0.0, time_left_s));
+  return ob::PlannerTerminationCondition([asked = 0, most = opt.rrt_max_checks]() mutable { return ++asked > most; });
+}
+
 // OMPL: Reeds-Shepp RRTConnect from start to goal (rear-axle poses), then a deterministic greedy
 // shortcut. Appends the motions to `moves`.
 bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, const CarGeometry& car,
@@ -331,7 +338,7 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
     if (opt.deterministic_nn) planner->setNearestNeighbors<ompl::NearestNeighborsLinear>();  // GNAT draws randoms
     if (opt.range_m > 0) planner->setRange(opt.range_m);
     planner->setProblemDefinition(pdef);
-    const ob::PlannerStatus status = planner->solve(ob::timedPlannerTerminationCondition(std::max(0.0, time_left_s)));
+    const ob::PlannerStatus status = planner->solve(stopCondition(opt, time_left_s));
     if (status != ob::PlannerStatus::EXACT_SOLUTION) {
       message = std::string("RRTConnect: ") + status.asString();
       return false;

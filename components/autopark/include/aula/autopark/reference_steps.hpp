@@ -15,6 +15,12 @@ bool atArcStart(double to_go_m, double y_m, double lane_y_m, double yaw_rad);
 // The approach's speed to a point `to_go_m` ahead (behind when negative): slowing as it nears,
 // never so slow that friction stops it short.
 double approachSpeed(double to_go_m, double cruise_mps, double reverse_mps);
+// At the arcs' start but off the lane (0.3 m): a car steers no tighter than its radius, so it
+// cannot close that offset on the spot; it must back off along the lane and come again.
+bool arrivedOffLane(double to_go_m, double off_lane_m);
+// How far behind the arcs' start to back off to close an offset of `off_lane_m` on the way back:
+// the lane keeping needs about four metres of street per metre of offset, plus a car's length.
+double runUpM(double off_lane_m);
 // The first arc ends once what is left of the lateral offset is what the second arc removes,
 // R (1 - cos yaw), or once it has turned a little more than planned.
 bool firstArcDone(double remaining_m, double radius_m, double yaw_rad, double arc_rad);
