@@ -4,7 +4,8 @@
 //            grid of the street, 0.05 m cells; the SlotDetector finds the free slot.
 //   SURVEY   drive on until the car ahead of the slot is well in view, then stop.
 //   PLAN     ParkingPlanner (OMPL Reeds-Shepp RRTConnect to a searched escape pose; see
-//            docs/planner.md) from the stopped pose to the slot's centre, on the lasers' grid.
+//            docs/planner.md) from the stopped pose to the slot's centre, on the lasers' grid; its
+//            budgets are counts, never the wall clock, so a loaded machine plans the same path.
 //   TRACK    PathTracker drives the path, forward and reverse moves split at the cusps. A car that
 //            drifts off the path stops and plans again from where it is.
 //   PARKED   stop.
@@ -68,12 +69,6 @@ class PlannedParker : public AutoparkAlgorithm {
   static constexpr double kGridResolutionM = 0.025;
   static constexpr double kGridHalfLengthM = 70, kGridHalfWidthM = 15;
   static constexpr double kOffStreetToleranceM = 0.5;  // tracking: the body this far outside the mapped street stops the car
-
-  // All three lasers and the pose have come in: nothing is decided on half the picture.
-  static bool sensorsReady(const AutoparkApi& api) {
-    return api.laser1.getLaserData().numLaser != 0 && api.laser2.getLaserData().numLaser != 0 &&
-           api.laser3.getLaserData().numLaser != 0 && api.pose3d.received();
-  }
 
   // The present phase's command for this period (and the next phase, when it ends).
   void step(AutoparkApi& api, const Pose2D& pose, PathTracker::Command& c) {

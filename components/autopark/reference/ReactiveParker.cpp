@@ -16,13 +16,15 @@
 //             slot's line, turn straight and CENTRE.
 //   DECLINED  stop and say why ("slot too short for a reactive park: 5.0 m, need 5.9 m"; for the
 //             car that turns in place, shorter than the multi-move park needs).
-//   APPROACH  drive along the lane to where the arcs start.
+//   APPROACH  drive along the lane to where the arcs start; arrived there off the lane (a start
+//             beside or past the slot), back off along the lane and come again.
 //   ARC1      reverse steering right (the rear swings towards the curb) until the remaining
 //             lateral offset is what the second arc removes: R (1 - cos yaw);
 //   ARC2      reverse steering left until the car is parallel to the curb;
 //   CENTRE    forward or back, straight, until the front and rear lasers see equal gaps;
 //   PARKED    stop: only when the car is in the slot, parallel; anywhere else it is
-//   FAILED    stop and say where it ended.
+//   FAILED    stop and say where it ended; or, in any phase that runs longer than it ever should
+//             (a car that cannot move), "stalled", with the phase, how long and where.
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/references.hpp>
 #include <aula/autopark/car_geometry.hpp>
@@ -78,12 +80,6 @@ class ReactiveParker : public AutoparkAlgorithm {
   // stall until the run's time is up). A search drives a long street both ways; a turn is short.
   static constexpr double kSearchLimitS = 240, kTurnLimitS = 60, kManoeuvreLimitS = 150;
   static constexpr double kBackOffClearM = 1.0;  // backing off for a run-up stops this near something behind
-
-  // All three lasers and the pose have come in: nothing is decided on half the picture.
-  static bool sensorsReady(const AutoparkApi& api) {
-    return api.laser1.getLaserData().numLaser != 0 && api.laser2.getLaserData().numLaser != 0 &&
-           api.laser3.getLaserData().numLaser != 0 && api.pose3d.received();
-  }
 
   // The present phase's command for this period (and the next phase, when it ends).
   void step(AutoparkApi& api, double x, double y, double yaw, Command& c) {

@@ -7,6 +7,11 @@
 
 namespace aula::autopark {
 
+bool sensorsReady(const AutoparkApi& api) {
+  return api.laser1.getLaserData().numLaser != 0 && api.laser2.getLaserData().numLaser != 0 &&
+         api.laser3.getLaserData().numLaser != 0 && api.pose3d.received();
+}
+
 bool atArcStart(double to_go_m, double y_m, double lane_y_m, double yaw_rad) {
   return std::abs(to_go_m) < 0.05 && std::abs(y_m - lane_y_m) < 0.3 && std::abs(geometry::wrapAngle(yaw_rad)) < 0.05;
 }

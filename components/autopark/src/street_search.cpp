@@ -1,6 +1,7 @@
 #include "aula/autopark/street_search.hpp"
 
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/autopark/street_end.hpp>
 #include <aula/geometry/angles.hpp>
 
 #include <algorithm>
@@ -58,7 +59,7 @@ bool TurnRound::step(const AutoparkApi& api, double yaw_rad, double& v_mps, doub
 
 StreetSearch::StreetSearch(const AutoparkApi& api, Settings settings)
     : settings_(settings), detector_(settings.min_slot_length_m), car_width_m_(api.car_width_m),
-      car_length_m_(api.car_length_m), lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
+      lane_y_m_(std::numeric_limits<double>::quiet_NaN()) {}
 
 void StreetSearch::addScans(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) {
   detector_.addScan(x_m, y_m, yaw_rad, api.mount1, api.laser1.getLaserData());
@@ -72,7 +73,11 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   step.slot = detector_.slot(x_m);
   if (step.slot) return step;
   // At most one turn back a period: the way back is judged from the next scan.
-  if (streetEndAhead(api, x_m, y_m, yaw_rad)) {
+  const bool forward = direction_ > 0;
+  const double lane_y = std::isfinite(lane_y_m_) ? lane_y_m_ : y_m;  // the lane, or the present line
+  if (laneBlockedAhead(x_m, y_m, yaw_rad, forward ? api.mount1 : api.mount2,
+                       forward ? api.laser1.getLaserData() : api.laser2.getLaserData(), direction_, lane_y,
+                       api.car_width_m / 2 + kLaneBandMarginM, api.car_length_m / 2 + settings_.street_end_m)) {
     direction_ = -direction_;
     ++reversals_;
   }
@@ -83,14 +88,6 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   if (!std::isfinite(lane_y_m_)) lane_y_m_ = y_m;  // nothing known yet: keep to the present line
   step.w_radps = keepLane(step.v_mps, y_m, yaw_rad);
   return step;
-}
-
-bool StreetSearch::streetEndAhead(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) const {
-  const bool forward = direction_ > 0;
-  const double lane_y = std::isfinite(lane_y_m_) ? lane_y_m_ : y_m;
-  return laneBlockedAhead(x_m, y_m, yaw_rad, forward ? api.mount1 : api.mount2,
-                          forward ? api.laser1.getLaserData() : api.laser2.getLaserData(), direction_, lane_y,
-                          car_width_m_ / 2 + settings_.lane_band_margin_m, car_length_m_ / 2 + settings_.street_end_m);
 }
 
 double StreetSearch::keepLane(double v_mps, double y_m, double yaw_rad) const {

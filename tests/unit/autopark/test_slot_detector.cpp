@@ -1,7 +1,7 @@
 // Autopark's slot detector on synthetic scans: the three lasers of a car driving along the
 // street, ray-cast against the worlds' own geometry at the lasers' height.
 #include <aula/autopark/slot_detector.hpp>
-#include <aula/autopark/street_search.hpp>
+#include <aula/autopark/street_end.hpp>
 #include <aula/geometry/raycaster2d.hpp>
 #include <aula/world/obstacle_slice.hpp>
 #include <aula/world/world_spec.hpp>

@@ -8,6 +8,10 @@
 
 namespace aula::autopark {
 
+// All three lasers and the pose have come in: nothing is decided on half the picture (the one
+// step that reads the API).
+bool sensorsReady(const AutoparkApi& api);
+
 // ---- the reactive reference (two arcs, or a multi-move park) --------------------------------
 
 // Stopped at the arcs' start: on the spot along the street (5 cm), on the lane (0.3 m), straight (0.05 rad).

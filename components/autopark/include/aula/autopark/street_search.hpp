@@ -16,13 +16,6 @@ double rangeAhead(const component::LaserData& scan, double half_width_rad);
 // axis (the car's width), metres; the laser's max range when nothing is there.
 double clearanceAhead(const component::LaserData& scan, double half_width_m);
 
-// Something across the lane ahead in the direction of travel (+1: +x), within `within_m` of the
-// car's centre along the street: an echo of `scan` (a laser at `mount` on a car at x, y, yaw)
-// inside the band the car's body sweeps along the lane, lane_y_m +- half_band_m. Parked cars and
-// curbs lie outside that band, so a car yawed towards them does not take them for the street's end.
-bool laneBlockedAhead(double x_m, double y_m, double yaw_rad, const LaserMount& mount, const component::LaserData& scan,
-                      int direction, double lane_y_m, double half_band_m, double within_m);
-
 // A start facing the wrong way (the parked cars on the car's left): turn round to face +x before
 // searching, on the spot for a car that turns in place, or in the legs of a three-point turn for a
 // car-like one (forward steering one way, back steering the other, each leg until something is
@@ -46,8 +39,7 @@ class StreetSearch {
     double lane_clearance_m = 1.0;    // between the parked cars' side and the car's side
     double turn_radius_m = 5.0;       // steering never tighter than this
     double cruise_mps = 2.0, reverse_mps = 1.5;
-    double street_end_m = 4.0;        // turn back when something across the lane is this close ahead of the car's end
-    double lane_band_margin_m = 0.3;  // the band that counts as the lane: the car's width plus this either side
+    double street_end_m = 4.0;        // turn back when something across the lane is this close ahead of the car (street_end.hpp)
   };
   StreetSearch(const AutoparkApi& api, Settings settings);
 
@@ -62,8 +54,6 @@ class StreetSearch {
   // The search has driven the whole street both ways (turned back at both ends) and seen no slot:
   // driving on would only repeat it.
   bool exhausted() const { return reversals_ >= 2; }
-  // The street's end is close ahead in the present direction (something across the lane).
-  bool streetEndAhead(const AutoparkApi& api, double x_m, double y_m, double yaw_rad) const;
   // Steering that brings the car to the lane line, for a given speed (either sign).
   double keepLane(double v_mps, double y_m, double yaw_rad) const;
   // Fix the lane line (once a manoeuvre has been planned from it).
@@ -76,7 +66,7 @@ class StreetSearch {
  private:
   Settings settings_;
   SlotDetector detector_;
-  double car_width_m_, car_length_m_;
+  double car_width_m_;
   double lane_y_m_;
   bool lane_held_ = false;
   int direction_ = 1;
