@@ -205,11 +205,14 @@ def check_program_options(path, text, code, problems):
 
 def source_text():
     """Aula's own C++ sources, where the options it passes to other programs (bwrap, prlimit, sbatch)
-    and between its own processes (--control-fd) are written."""
+    and between its own processes (--control-fd) are written, and the world generators
+    (worlds/tools/*.py), whose options the docs' bench commands use."""
     text = []
     for folder in ("components", "drivers", "libs", "referees", "simulator", "tools"):
         for name in glob.glob(f"{folder}/**/*.[ch]pp", root_dir=ROOT, recursive=True):
             text.append(open(os.path.join(ROOT, name), errors="replace").read())
+    for name in glob.glob("worlds/tools/*.py", root_dir=ROOT):
+        text.append(open(os.path.join(ROOT, name), errors="replace").read())
     return "\n".join(text)
 
 

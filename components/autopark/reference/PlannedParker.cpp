@@ -4,7 +4,8 @@
 //            grid of the street, 0.05 m cells; the SlotDetector finds the free slot.
 //   SURVEY   drive on until the car ahead of the slot is well in view, then stop.
 //   PLAN     ParkingPlanner (OMPL Reeds-Shepp RRTConnect to a searched escape pose; see
-//            docs/planner.md) from the stopped pose to the slot's centre, on the lasers' grid.
+//            docs/planner.md) from the stopped pose to the slot's centre, on the lasers' grid; its
+//            budgets are counts, never the wall clock, so a loaded machine plans the same path.
 //   TRACK    PathTracker drives the path, forward and reverse moves split at the cusps. A car that
 //            drifts off the path stops and plans again from where it is.
 //   PARKED   stop.
@@ -20,6 +21,7 @@
 #include <aula/autopark/occupancy_grid.hpp>
 #include <aula/autopark/parking_planner.hpp>
 #include <aula/autopark/path_tracker.hpp>
+#include <aula/autopark/reference_steps.hpp>
 #include <aula/autopark/street_search.hpp>
 
 #include <algorithm>
@@ -35,87 +37,19 @@ class PlannedParker : public AutoparkAlgorithm {
  public:
   explicit PlannedParker(uint64_t seed) : seed_(static_cast<unsigned>(seed % 1000003 + 1)) {}
 
+  // One control period: read the pose, map what the lasers see while searching, run the present
+  // phase, say when the phase changes, drive.
   void execute(AutoparkApi& api) override {
     t_ += api.period_s;
-    if (api.laser1.getLaserData().numLaser == 0 || api.laser2.getLaserData().numLaser == 0 ||
-        api.laser3.getLaserData().numLaser == 0 || !api.pose3d.received()) {
-      return;
-    }
+    if (!sensorsReady(api)) return;
     const Pose2D pose{api.pose3d.getX(), api.pose3d.getY(), api.pose3d.getYaw()};
     if (!search_) start(api, pose);
     if (mode_ == Mode::Turn || mode_ == Mode::Search || mode_ == Mode::Survey) mapScans(api, pose);
-    double v = 0, w = 0;
-    switch (mode_) {
-      case Mode::Turn:
-        if (turn_.step(api, pose.yaw_rad, v, w)) mode_ = Mode::Search;
-        break;
-      case Mode::Search: {
-        if (search_->exhausted()) {
-          fail(api, "no free slot of %.1f m or more on the street", search_->detector().minLengthM());
-          break;
-        }
-        const StreetSearch::Step step = search_->search(api, pose.x_m, pose.y_m, pose.yaw_rad);
-        v = step.v_mps;
-        w = step.w_radps;
-        if (step.slot) {
-          slot_ = *step.slot;
-          direction_ = search_->direction();
-          mode_ = Mode::Survey;
-        }
-        break;
-      }
-      case Mode::Survey: {
-        // The slot's far end must be mapped before planning: drive on (in the search direction)
-        // until the car is past it, then stop for a moment so the planner starts from rest.
-        search_->addScans(api, pose.x_m, pose.y_m, pose.yaw_rad);
-        if (auto slot = search_->detector().slot(slot_.centreXM())) slot_ = *slot;
-        const double past = direction_ > 0 ? pose.x_m - slot_.front_x_m : slot_.rear_x_m - pose.x_m;
-        // Never into something: whatever is ahead in the direction of travel ends the survey.
-        const double clear = rangeAhead(direction_ > 0 ? api.laser1.getLaserData() : api.laser2.getLaserData(), 0.3);
-        if (past < kSurveyPastM && clear > kSurveyStopM) {
-          v = direction_ > 0 ? kSurveyMps : -kSurveyMps;
-          w = search_->keepLane(v, pose.y_m, pose.yaw_rad);
-        } else if ((still_s_ += api.period_s) >= kSettleS) {
-          mode_ = Mode::Plan;
-        }
-        break;
-      }
-      case Mode::Plan:
-        plan(api, pose);
-        break;
-      case Mode::Track: {
-        if (!mapped_.contains(footprint(pose, car_, -kOffStreetToleranceM))) {
-          fail(api, "off the mapped street at x %.2f y %.2f", pose.x_m, pose.y_m);
-          break;
-        }
-        const PathTracker::Command command = tracker_->update(pose);
-        v = command.v_mps;
-        w = command.w_radps;
-        if (command.done) {
-          mode_ = Mode::Parked;
-        } else if (std::abs(tracker_->lateralError_m()) > kReplanErrorM && replans_ < kMaxReplans) {
-          ++replans_;
-          v = w = 0;
-          still_s_ = 0;
-          mode_ = Mode::Settle;
-        }
-        break;
-      }
-      case Mode::Settle:
-        if ((still_s_ += api.period_s) >= kSettleS) mode_ = Mode::Plan;
-        break;
-      case Mode::Parked:
-      case Mode::Failed:
-        break;
-    }
-    if (mode_ != logged_mode_) {
-      std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), pose.x_m, pose.y_m,
-                   geometry::headingDeg(pose.yaw_rad), mode_ == Mode::Failed ? ": " : "",
-                   mode_ == Mode::Failed ? api.status.c_str() : "");
-      logged_mode_ = mode_;
-    }
-    api.motors.sendV(v);
-    api.motors.sendW(w);
+    PathTracker::Command command;
+    step(api, pose, command);
+    logPhase(api, pose);
+    api.motors.sendV(command.v_mps);
+    api.motors.sendW(command.w_radps);
   }
 
  private:
@@ -135,6 +69,91 @@ class PlannedParker : public AutoparkAlgorithm {
   static constexpr double kGridResolutionM = 0.025;
   static constexpr double kGridHalfLengthM = 70, kGridHalfWidthM = 15;
   static constexpr double kOffStreetToleranceM = 0.5;  // tracking: the body this far outside the mapped street stops the car
+
+  // The present phase's command for this period (and the next phase, when it ends).
+  void step(AutoparkApi& api, const Pose2D& pose, PathTracker::Command& c) {
+    switch (mode_) {
+      case Mode::Turn:
+        if (turn_.step(api, pose.yaw_rad, c.v_mps, c.w_radps)) mode_ = Mode::Search;
+        break;
+      case Mode::Search:
+        searchStep(api, pose, c);
+        break;
+      case Mode::Survey:
+        surveyStep(api, pose, c);
+        break;
+      case Mode::Plan:
+        plan(api, pose);
+        break;
+      case Mode::Track:
+        trackStep(api, pose, c);
+        break;
+      case Mode::Settle:
+        if ((still_s_ += api.period_s) >= kSettleS) mode_ = Mode::Plan;
+        break;
+      case Mode::Parked:
+      case Mode::Failed:
+        break;
+    }
+  }
+
+  // SEARCH: drive down the street (StreetSearch) until the detector reports a slot.
+  void searchStep(AutoparkApi& api, const Pose2D& pose, PathTracker::Command& c) {
+    if (search_->exhausted()) {
+      fail(api, "no free slot of %.1f m or more on the street", search_->detector().minLengthM());
+      return;
+    }
+    const StreetSearch::Step found = search_->search(api, pose.x_m, pose.y_m, pose.yaw_rad);
+    c.v_mps = found.v_mps;
+    c.w_radps = found.w_radps;
+    if (found.slot) {
+      slot_ = *found.slot;
+      direction_ = search_->direction();
+      mode_ = Mode::Survey;
+    }
+  }
+
+  // SURVEY: the slot's far end must be mapped before planning: drive on (in the search direction)
+  // until the car is past it, then stop for a moment so the planner starts from rest.
+  void surveyStep(AutoparkApi& api, const Pose2D& pose, PathTracker::Command& c) {
+    search_->addScans(api, pose.x_m, pose.y_m, pose.yaw_rad);
+    if (auto slot = search_->detector().slot(slot_.centreXM())) slot_ = *slot;
+    const double past = pastSlotM(slot_, direction_, pose.x_m);
+    // Never into something: whatever is ahead in the direction of travel ends the survey.
+    const double clear = rangeAhead(direction_ > 0 ? api.laser1.getLaserData() : api.laser2.getLaserData(), 0.3);
+    if (past < kSurveyPastM && clear > kSurveyStopM) {
+      c.v_mps = direction_ > 0 ? kSurveyMps : -kSurveyMps;
+      c.w_radps = search_->keepLane(c.v_mps, pose.y_m, pose.yaw_rad);
+    } else if ((still_s_ += api.period_s) >= kSettleS) {
+      mode_ = Mode::Plan;
+    }
+  }
+
+  // TRACK: follow the path; off the mapped street, stop; drifted off the path, stop and plan again.
+  void trackStep(AutoparkApi& api, const Pose2D& pose, PathTracker::Command& c) {
+    if (!mapped_.contains(footprint(pose, car_, -kOffStreetToleranceM))) {
+      fail(api, "off the mapped street at x %.2f y %.2f", pose.x_m, pose.y_m);
+      return;
+    }
+    c = tracker_->update(pose);
+    if (c.done) {
+      mode_ = Mode::Parked;
+    } else if (std::abs(tracker_->lateralError_m()) > kReplanErrorM && replans_ < kMaxReplans) {
+      ++replans_;
+      c.v_mps = c.w_radps = 0;
+      still_s_ = 0;
+      mode_ = Mode::Settle;
+    }
+  }
+
+  // One line per phase, so a student can follow the run in the terminal.
+  void logPhase(const AutoparkApi& api, const Pose2D& pose) {
+    if (mode_ == logged_mode_) return;
+    std::fprintf(stderr, "planner [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), pose.x_m, pose.y_m,
+                 geometry::headingDeg(pose.yaw_rad), mode_ == Mode::Failed ? ": " : "",
+                 mode_ == Mode::Failed ? api.status.c_str() : "");
+    logged_mode_ = mode_;
+  }
 
   // Stop for good and say why (printf-style).
   template <class... Args>
@@ -187,10 +206,8 @@ class PlannedParker : public AutoparkAlgorithm {
   // lasers mapped. Above the lane, where the lasers may not have reached, the grid ends a few
   // metres out (outside counts as occupied).
   OccupancyGrid planningGrid(const Pose2D& pose) const {
-    const double x0 = std::max(mapped_.min_x_m, std::min(pose.x_m, slot_.rear_x_m) - 12);
-    const double x1 = std::min(mapped_.max_x_m, std::max(pose.x_m, slot_.front_x_m) + 12);
-    const double y0 = slot_.curb_y_m - 0.5;
-    const double y1 = std::min(mapped_.max_y_m, std::max(pose.y_m, search_->laneY()) + car_.width_m / 2 + 3.0);
+    const MappedStreet e = planningExtent(mapped_, slot_, pose.x_m, pose.y_m, search_->laneY(), car_.width_m);
+    const double x0 = e.min_x_m, x1 = e.max_x_m, y0 = e.min_y_m, y1 = e.max_y_m;
     const double res = map_.resolution_m();
     OccupancyGrid grid(x0, y0, res, static_cast<int>(std::ceil((x1 - x0) / res)), static_cast<int>(std::ceil((y1 - y0) / res)));
     for (int row = 0; row < grid.height(); ++row) {
@@ -204,22 +221,12 @@ class PlannedParker : public AutoparkAlgorithm {
     return grid;
   }
 
+  // PLAN: a path from where the car stands to the slot's centre, on the lasers' grid; a plan that
+  // leaves the mapped street is refused. No path: settle and try again, a few times, then fail.
   void plan(AutoparkApi& api, const Pose2D& pose) {
     const Pose2D goal{slot_.centreXM(), slot_.curb_y_m + kCurbClearanceM + api.car_width_m / 2, 0.0};
-    ParkingPlanner::Options options;
-    options.seed = seed_ + static_cast<unsigned>(attempts_);
-    if (attempts_ > 0) {
-      // The way out of a tight slot may need finer moves than the first search tried: the lasers'
-      // map puts the cars' ends a cell nearer than they are.
-      options.escape_step_m = 0.02;
-      options.escape_cell_m = 0.025;
-      options.escape_cell_yaw_rad = 0.0087;
-      options.min_slot_clearance_m = 0.03;
-      options.slot_clearance_step_m = 0.02;
-      options.escape_max_expansions = 60000;
-    }
     const OccupancyGrid grid = planningGrid(pose);
-    PlannedPath path = ParkingPlanner(car_, options).plan(grid, pose, goal);
+    PlannedPath path = ParkingPlanner(car_, planOptions(seed_, attempts_)).plan(grid, pose, goal);
     ++attempts_;
     if (path.solved) {
       // The grid holds only the mapped street; a plan that leaves it anyway is refused.
@@ -229,24 +236,7 @@ class PlannedParker : public AutoparkAlgorithm {
         path.message = "refused: " + leaves;
       }
     }
-    // Where the car's body would go, so a log shows the plan stays on the street.
-    char within[120] = "";
-    if (!path.poses.empty()) {
-      MappedStreet body{grid.maxX_m(), grid.minX_m(), grid.maxY_m(), grid.minY_m()};
-      for (const Pose2D& p : path.poses) {
-        for (const auto& corner : footprint(p, car_, 0.0).corners()) {
-          body.min_x_m = std::min(body.min_x_m, corner.x());
-          body.max_x_m = std::max(body.max_x_m, corner.x());
-          body.min_y_m = std::min(body.min_y_m, corner.y());
-          body.max_y_m = std::max(body.max_y_m, corner.y());
-        }
-      }
-      std::snprintf(within, sizeof within, ", body within x %.2f to %.2f, y %.2f to %.2f", body.min_x_m, body.max_x_m,
-                    body.min_y_m, body.max_y_m);
-    }
-    std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s%s\n",
-                 path.solved ? "path" : "no path", goal.x_m, goal.y_m, path.planning_time_s * 1e3, path.cusps,
-                 path.length_m, within, path.message.empty() ? "" : ": ", path.message.c_str());
+    logPlan(grid, goal, path);
     if (!path.solved) {
       still_s_ = 0;
       if (attempts_ < kMaxReplans + 1) {
@@ -259,6 +249,19 @@ class PlannedParker : public AutoparkAlgorithm {
     path_ = path;
     tracker_.emplace(path_, car_);
     mode_ = Mode::Track;
+  }
+
+  // The plan in one line, with where the car's body would go, so a log shows it stays on the street.
+  void logPlan(const OccupancyGrid& grid, const Pose2D& goal, const PlannedPath& path) const {
+    char within[120] = "";
+    if (!path.poses.empty()) {
+      const MappedStreet body = bodyExtent(path, car_, {grid.maxX_m(), grid.minX_m(), grid.maxY_m(), grid.minY_m()});
+      std::snprintf(within, sizeof within, ", body within x %.2f to %.2f, y %.2f to %.2f", body.min_x_m, body.max_x_m,
+                    body.min_y_m, body.max_y_m);
+    }
+    std::fprintf(stderr, "planner: %s to (%.2f, %.2f) in %.1f ms wall, %d cusps, %.1f m%s%s%s\n",
+                 path.solved ? "path" : "no path", goal.x_m, goal.y_m, path.planning_time_s * 1e3, path.cusps,
+                 path.length_m, within, path.message.empty() ? "" : ": ", path.message.c_str());
   }
 
   unsigned seed_;

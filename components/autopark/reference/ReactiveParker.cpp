@@ -16,16 +16,19 @@
 //             slot's line, turn straight and CENTRE.
 //   DECLINED  stop and say why ("slot too short for a reactive park: 5.0 m, need 5.9 m"; for the
 //             car that turns in place, shorter than the multi-move park needs).
-//   APPROACH  drive along the lane to where the arcs start.
+//   APPROACH  drive along the lane to where the arcs start; arrived there off the lane (a start
+//             beside or past the slot), back off along the lane and come again.
 //   ARC1      reverse steering right (the rear swings towards the curb) until the remaining
 //             lateral offset is what the second arc removes: R (1 - cos yaw);
 //   ARC2      reverse steering left until the car is parallel to the curb;
 //   CENTRE    forward or back, straight, until the front and rear lasers see equal gaps;
 //   PARKED    stop: only when the car is in the slot, parallel; anywhere else it is
-//   FAILED    stop and say where it ended.
+//   FAILED    stop and say where it ended; or, in any phase that runs longer than it ever should
+//             (a car that cannot move), "stalled", with the phase, how long and where.
 #include <aula/autopark/autopark_algorithm.hpp>
 #include <aula/autopark/references.hpp>
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/autopark/reference_steps.hpp>
 #include <aula/autopark/street_search.hpp>
 #include <aula/autopark/two_arc_park.hpp>
 #include <aula/geometry/angles.hpp>
@@ -39,80 +42,21 @@ namespace {
 
 class ReactiveParker : public AutoparkAlgorithm {
  public:
+  // One control period: read the pose, run the present phase, say when the phase changes, drive.
   void execute(AutoparkApi& api) override {
     t_ += api.period_s;
-    const auto& front = api.laser1.getLaserData();
-    const auto& rear = api.laser2.getLaserData();
-    if (front.numLaser == 0 || rear.numLaser == 0 || api.laser3.getLaserData().numLaser == 0 || !api.pose3d.received()) return;
+    if (!sensorsReady(api)) return;
     const double x = api.pose3d.getX(), y = api.pose3d.getY(), yaw = api.pose3d.getYaw();
-    // The point the car turns about: it moves on arcs of radius |v / w|.
-    const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
     if (!search_) start(api, yaw);
-    double v = 0, w = 0;
-    switch (mode_) {
-      case Mode::Turn:
-        if (turn_.step(api, yaw, v, w)) mode_ = Mode::Search;
-        break;
-      case Mode::Search: {
-        if (search_->exhausted()) {
-          api.status = "no free slot on the street";
-          mode_ = Mode::Declined;
-          break;
-        }
-        const StreetSearch::Step step = search_->search(api, x, y, yaw);
-        if (step.slot) {
-          planFor(api, *step.slot);
-          break;
-        }
-        v = step.v_mps;
-        w = step.w_radps;
-        break;
-      }
-      case Mode::Approach: {
-        const double to_go = plan_.start_x_m - x;
-        if (std::abs(to_go) < 0.05 && std::abs(y - search_->laneY()) < 0.3 && std::abs(geometry::wrapAngle(yaw)) < 0.05) {
-          mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
-          if (zigzag_) zig_angle_ = zigzagAngle(api, y);
-          break;
-        }
-        v = std::clamp(0.8 * to_go, -kReverseMps, kCruiseMps);
-        if (std::abs(v) < 0.15) v = std::copysign(0.15, to_go);
-        w = search_->keepLane(v, y, yaw);
-        break;
-      }
-      case Mode::Arc1: {
-        v = -kManoeuvreMps;
-        w = kManoeuvreMps / plan_.radius_m;  // reversing, yaw grows: the rear swings right
-        const double remaining = pivot_y - plan_.goal_y_m;
-        if (remaining <= plan_.radius_m * (1 - std::cos(yaw)) || yaw > plan_.arc_rad + 0.1) mode_ = Mode::Arc2;
-        break;
-      }
-      case Mode::Arc2: {
-        v = -kManoeuvreMps;
-        w = -kManoeuvreMps / plan_.radius_m;
-        // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-        if (yaw <= 0.0 || rangeAhead(rear, 0.35) < 0.35) mode_ = Mode::Centre;
-        break;
-      }
-      case Mode::Zigzag:
-        zigzag(api, x, y, yaw, v, w);
-        break;
-      case Mode::Centre:
-        centre(api, x, y, yaw, v, w);
-        break;
-      case Mode::Parked:
-      case Mode::Declined:
-      case Mode::Failed:
-        break;
+    Command command;
+    if (overTime()) {
+      stalled(api, x, y);
+    } else {
+      step(api, x, y, yaw, command);
     }
-    if (mode_ != logged_mode_) {
-      // One line per phase, so a student can follow the manoeuvre in the terminal.
-      std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
-                   geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
-      logged_mode_ = mode_;
-    }
-    api.motors.sendV(v);
-    api.motors.sendW(w);
+    logPhase(api, x, y, yaw);
+    api.motors.sendV(command.v_mps);
+    api.motors.sendW(command.w_radps);
   }
 
  private:
@@ -132,6 +76,118 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
+  // The longest each phase may take, sim seconds: longer, it is stuck and says so (never a silent
+  // stall until the run's time is up). A search drives a long street both ways; a turn is short.
+  static constexpr double kSearchLimitS = 240, kTurnLimitS = 60, kManoeuvreLimitS = 150;
+  static constexpr double kBackOffClearM = 1.0;  // backing off for a run-up stops this near something behind
+
+  // The present phase's command for this period (and the next phase, when it ends).
+  void step(AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    switch (mode_) {
+      case Mode::Turn:
+        if (turn_.step(api, yaw, c.v_mps, c.w_radps)) mode_ = Mode::Search;
+        break;
+      case Mode::Search:
+        searchStep(api, x, y, yaw, c);
+        break;
+      case Mode::Approach:
+        approachStep(api, x, y, yaw, c);
+        break;
+      case Mode::Arc1:
+        arc1Step(api, y, yaw, c);
+        break;
+      case Mode::Arc2:
+        arc2Step(api, yaw, c);
+        break;
+      case Mode::Zigzag:
+        zigzag(api, x, y, yaw, c.v_mps, c.w_radps);
+        break;
+      case Mode::Centre:
+        centre(api, x, y, yaw, c.v_mps, c.w_radps);
+        break;
+      case Mode::Parked:
+      case Mode::Declined:
+      case Mode::Failed:
+        break;
+    }
+  }
+
+  // SEARCH: drive down the street until the detector reports a slot, then plan for it.
+  void searchStep(AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    if (search_->exhausted()) {
+      api.status = "no free slot on the street";
+      mode_ = Mode::Declined;
+      return;
+    }
+    const StreetSearch::Step found = search_->search(api, x, y, yaw);
+    if (found.slot) {
+      planFor(api, *found.slot);
+      return;
+    }
+    c.v_mps = found.v_mps;
+    c.w_radps = found.w_radps;
+  }
+
+  // APPROACH: along the lane to where the arcs (or the multi-move park) start.
+  void approachStep(const AutoparkApi& api, double x, double y, double yaw, Command& c) {
+    const double to_go = plan_.start_x_m - x, off_lane = y - search_->laneY();
+    if (atArcStart(to_go, y, search_->laneY(), yaw)) {
+      mode_ = zigzag_ ? Mode::Zigzag : Mode::Arc1;
+      if (zigzag_) zig_angle_ = zigzagAngle(api, y);
+      return;
+    }
+    if (back_off_m_ <= 0 && arrivedOffLane(to_go, off_lane)) back_off_m_ = runUpM(off_lane);
+    if (back_off_m_ > 0 && (to_go >= back_off_m_ || rangeAhead(api.laser2.getLaserData(), 0.3) < kBackOffClearM)) {
+      back_off_m_ = 0;  // far enough behind the start (or something close behind): come again
+    }
+    c.v_mps = back_off_m_ > 0 ? -kReverseMps : approachSpeed(to_go, kCruiseMps, kReverseMps);
+    c.w_radps = search_->keepLane(c.v_mps, y, yaw);
+  }
+
+  // Whether the present phase has run longer than it ever should.
+  bool overTime() const {
+    if (mode_ == Mode::Parked || mode_ == Mode::Declined || mode_ == Mode::Failed) return false;
+    const double limit = mode_ == Mode::Search ? kSearchLimitS : mode_ == Mode::Turn ? kTurnLimitS : kManoeuvreLimitS;
+    return t_ - phase_start_s_ > limit;
+  }
+
+  // Stuck: stop and say in which phase, for how long, and where (and where the slot is, if one).
+  void stalled(AutoparkApi& api, double x, double y) {
+    char line[200];
+    const int n = std::snprintf(line, sizeof line, "stalled: %.0f s in %s, stopped at x %.2f y %.2f", t_ - phase_start_s_,
+                                name(mode_), x, y);
+    if (mode_ != Mode::Search && mode_ != Mode::Turn && n > 0 && n < static_cast<int>(sizeof line)) {
+      std::snprintf(line + n, sizeof line - n, " (the slot: x %.2f to %.2f)", slot_.rear_x_m, slot_.front_x_m);
+    }
+    api.status = line;
+    mode_ = Mode::Failed;
+  }
+
+  // ARC1: reversing, yaw grows, the rear swings right towards the curb.
+  void arc1Step(const AutoparkApi& api, double y, double yaw, Command& c) {
+    c.v_mps = -kManoeuvreMps;
+    c.w_radps = kManoeuvreMps / plan_.radius_m;
+    // The point the car turns about: it moves on arcs of radius |v / w|.
+    const double pivot_y = y + api.turn_centre_x_m * std::sin(yaw);
+    if (firstArcDone(pivot_y - plan_.goal_y_m, plan_.radius_m, yaw, plan_.arc_rad)) mode_ = Mode::Arc2;
+  }
+
+  // ARC2: reversing, steering the other way until parallel to the curb.
+  void arc2Step(const AutoparkApi& api, double yaw, Command& c) {
+    c.v_mps = -kManoeuvreMps;
+    c.w_radps = -kManoeuvreMps / plan_.radius_m;
+    // Parallel to the curb, or the car behind is close: straighten up later, forwards.
+    if (yaw <= 0.0 || rangeAhead(api.laser2.getLaserData(), 0.35) < 0.35) mode_ = Mode::Centre;
+  }
+
+  // One line per phase, so a student can follow the manoeuvre in the terminal.
+  void logPhase(const AutoparkApi& api, double x, double y, double yaw) {
+    if (mode_ == logged_mode_) return;
+    phase_start_s_ = t_;
+    std::fprintf(stderr, "reactive [%.2f s]: %s at x %.2f y %.2f yaw %.1f deg%s%s\n", t_, name(mode_), x, y,
+                 geometry::headingDeg(yaw), api.status.empty() ? "" : ": ", api.status.c_str());
+    logged_mode_ = mode_;
+  }
 
   void start(const AutoparkApi& api, double yaw) {
     car_ = {api.car_length_m, api.car_width_m, api.turn_centre_x_m, api.min_turn_radius_m};
@@ -180,23 +236,17 @@ class ReactiveParker : public AutoparkAlgorithm {
     mode_ = Mode::Approach;
   }
 
+  // CENTRE: forward or back until the front and rear lasers see equal gaps, then say where it is.
   void centre(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
-    const auto& front = api.laser1.getLaserData();
-    const auto& rear = api.laser2.getLaserData();
-    const double gap_front = rangeAhead(front, 0.15), gap_rear = rangeAhead(rear, 0.15);
-    const double error = (gap_front - gap_rear) / 2;  // > 0: move forward
-    const double yaw_error = geometry::wrapAngle(yaw);
-    const bool settled = std::abs(error) < 0.1 && std::abs(yaw_error) < 0.03;
-    if (settled || ++centre_moves_ > 2000) {  // never oscillate forever
+    const double gap_front = rangeAhead(api.laser1.getLaserData(), 0.15);
+    const double gap_rear = rangeAhead(api.laser2.getLaserData(), 0.15);
+    if (centred(gap_front, gap_rear, yaw) || ++centre_moves_ > 2000) {  // never oscillate forever
       finish(api, x, y, yaw);
       return;
     }
-    v = std::clamp(0.8 * error, -0.5, 0.5);
-    if (std::abs(v) < 0.1) v = std::copysign(0.1, error);
-    // Straighten while moving: the yaw follows the sign of the motion.
-    const double limit = std::abs(v) / std::max(plan_.radius_m, api.min_turn_radius_m);
-    w = std::clamp(-2.0 * yaw_error * (v > 0 ? 1 : -1) * std::abs(v), -limit, limit);
-    if (std::abs(yaw_error) < 0.03) w = 0;
+    const Command c = centringCommand(gap_front, gap_rear, yaw, std::max(plan_.radius_m, api.min_turn_radius_m));
+    v = c.v_mps;
+    w = c.w_radps;
   }
 
   // Half the body's extent along the street, and how far its lowest corner is below its centre,
@@ -256,11 +306,8 @@ class ReactiveParker : public AutoparkAlgorithm {
 
   // PARKED only in the slot and parallel to it; anything else is said as it is.
   void finish(AutoparkApi& api, double x, double y, double yaw) {
-    const double half = api.car_length_m / 2;
-    const bool in_slot = x - half > slot_.rear_x_m - 0.1 && x + half < slot_.front_x_m + 0.1 &&
-                         std::abs(y - plan_.goal_y_m) < 0.4 && std::abs(geometry::wrapAngle(yaw)) < 0.1;
     char line[160];
-    if (in_slot) {
+    if (inSlot(slot_, plan_.goal_y_m, api.car_length_m, x, y, yaw)) {
       std::snprintf(line, sizeof line, "parked in the %.1f m slot", slot_.lengthM());
       mode_ = Mode::Parked;
     } else {
@@ -282,6 +329,8 @@ class ReactiveParker : public AutoparkAlgorithm {
   double zig_angle_ = kZigzagMaxRad;
   int zig_moves_ = 0;
   int centre_moves_ = 0;
+  double phase_start_s_ = 0;  // sim time the present phase began
+  double back_off_m_ = 0;     // > 0: backing off until this far behind the arcs' start
 };
 
 }  // namespace

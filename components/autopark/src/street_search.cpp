@@ -1,6 +1,7 @@
 #include "aula/autopark/street_search.hpp"
 
 #include <aula/autopark/car_geometry.hpp>
+#include <aula/autopark/street_end.hpp>
 #include <aula/geometry/angles.hpp>
 
 #include <algorithm>
@@ -25,6 +26,16 @@ double clearanceAhead(const component::LaserData& scan, double half_width_m) {
     if (ahead > 0 && std::abs(aside) <= half_width_m) nearest = std::min(nearest, ahead);
   }
   return nearest;
+}
+
+bool laneBlockedAhead(double x_m, double y_m, double yaw_rad, const LaserMount& mount, const component::LaserData& scan,
+                      int direction, double lane_y_m, double half_band_m, double within_m) {
+  bool blocked = false;
+  forEachEcho(x_m, y_m, yaw_rad, mount, scan, [&](double ex_m, double ey_m) {
+    const double ahead_m = direction * (ex_m - x_m);
+    if (ahead_m > 0 && ahead_m < within_m && std::abs(ey_m - lane_y_m) < half_band_m) blocked = true;
+  });
+  return blocked;
 }
 
 bool TurnRound::needed(double yaw_rad) { return std::abs(geometry::wrapAngle(yaw_rad)) > M_PI / 2; }
@@ -61,12 +72,13 @@ StreetSearch::Step StreetSearch::search(const AutoparkApi& api, double x_m, doub
   Step step;
   step.slot = detector_.slot(x_m);
   if (step.slot) return step;
-  if (direction_ > 0 && rangeAhead(api.laser1.getLaserData(), 0.3) < settings_.street_end_m) {
-    direction_ = -1;
-    ++reversals_;
-  }
-  if (direction_ < 0 && rangeAhead(api.laser2.getLaserData(), 0.3) < settings_.street_end_m) {
-    direction_ = 1;
+  // At most one turn back a period: the way back is judged from the next scan.
+  const bool forward = direction_ > 0;
+  const double lane_y = std::isfinite(lane_y_m_) ? lane_y_m_ : y_m;  // the lane, or the present line
+  if (laneBlockedAhead(x_m, y_m, yaw_rad, forward ? api.mount1 : api.mount2,
+                       forward ? api.laser1.getLaserData() : api.laser2.getLaserData(), direction_, lane_y,
+                       api.car_width_m / 2 + kLaneBandMarginM, api.car_length_m / 2 + settings_.street_end_m)) {
+    direction_ = -direction_;
     ++reversals_;
   }
   step.v_mps = direction_ > 0 ? settings_.cruise_mps : -settings_.reverse_mps;

@@ -196,6 +196,34 @@ TEST(ParkingPlanner, BlockedSlotFailsWithinTheTimeLimit) {
   EXPECT_LE(p2.planning_time_s, o.time_limit_s + 0.2);
 }
 
+// The references plan on sim time only: a repeatable plan's budgets are counts, so no clock (here a
+// time limit far too short to plan in) changes its path, and a blocked slot still ends.
+TEST(ParkingPlanner, ARepeatablePlanIsTheSameWhateverTheClockSays) {
+  const StreetScenario street = makeParallelParkingStreet(4.8);
+  const OccupancyGrid grid = street.makeGrid(0.05);
+  ParkingPlanner::Options o = options(2);
+  o.repeatable = true;
+  o.time_limit_s = 1e-9;
+  const PlannedPath hurried = ParkingPlanner(CarGeometry{}, o).plan(grid, street.start_centre, street.goal_centre);
+  o.time_limit_s = 100;
+  const PlannedPath leisurely = ParkingPlanner(CarGeometry{}, o).plan(grid, street.start_centre, street.goal_centre);
+  ASSERT_TRUE(hurried.solved) << hurried.message;
+  ASSERT_EQ(hurried.poses.size(), leisurely.poses.size());
+  for (size_t i = 0; i < hurried.poses.size(); ++i) {
+    EXPECT_EQ(hurried.poses[i].x_m, leisurely.poses[i].x_m);
+    EXPECT_EQ(hurried.poses[i].y_m, leisurely.poses[i].y_m);
+    EXPECT_EQ(hurried.poses[i].yaw_rad, leisurely.poses[i].yaw_rad);
+  }
+  o.repeatable = false;
+  o.time_limit_s = 1e-9;
+  EXPECT_FALSE(ParkingPlanner(CarGeometry{}, o).plan(grid, street.start_centre, street.goal_centre).solved);
+  const StreetScenario blocked = makeParallelParkingStreet(3.5);  // shorter than the car
+  ParkingPlanner::Options b = options(3);
+  b.repeatable = true;
+  b.use_escape = false;
+  EXPECT_FALSE(ParkingPlanner(CarGeometry{}, b).plan(blocked.makeGrid(0.05), blocked.start_centre, blocked.goal_centre).solved);
+}
+
 class PathTrackerSlot : public ::testing::TestWithParam<double> {};
 
 TEST_P(PathTrackerSlot, ClosedLoopAckermannParks) {

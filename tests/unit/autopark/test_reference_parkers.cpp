@@ -122,3 +122,23 @@ INSTANTIATE_TEST_SUITE_P(Streets, ReferenceParker,
                            for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                            return name;
                          });
+
+// Wheels that never turn: the reactive reference does not wait out the run in silence. Its search
+// ends, after its longest search, "stalled" with the phase, how long, and where the car stands.
+TEST(ReactiveParker, ACarThatCannotMoveSaysItIsStalledAndWhere) {
+  Street street("autopark.world");
+  std::unique_ptr<AutoparkAlgorithm> parker = makeReactiveAlgorithm(1);
+  double said_at_s = 0;
+  street.run(260, [&] {
+    parker->execute(street.api);
+    street.car.motors.sendV(0);  // blocked
+    street.car.motors.sendW(0);
+    said_at_s += kPeriodS;
+    return street.api.status.empty();
+  });
+  const std::string& status = street.api.status;
+  EXPECT_EQ(status.rfind("stalled: ", 0), 0u) << status;
+  EXPECT_NE(status.find(" in SEARCH, stopped at x -7.00 y 2.50"), std::string::npos) << status;
+  EXPECT_GT(said_at_s, 200.0);
+  EXPECT_LT(said_at_s, 250.0);
+}

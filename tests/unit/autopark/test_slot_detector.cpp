@@ -1,6 +1,7 @@
 // Autopark's slot detector on synthetic scans: the three lasers of a car driving along the
 // street, ray-cast against the worlds' own geometry at the lasers' height.
 #include <aula/autopark/slot_detector.hpp>
+#include <aula/autopark/street_end.hpp>
 #include <aula/geometry/raycaster2d.hpp>
 #include <aula/world/obstacle_slice.hpp>
 #include <aula/world/world_spec.hpp>
@@ -125,4 +126,33 @@ TEST(SlotDetector, AGapBetweenTheLastCarAndTheEndWallIsNotASlot) {
   ASSERT_TRUE(slot.has_value());
   EXPECT_NEAR(slot->centreXM(), 5.15, 0.1);
   EXPECT_NEAR(slot->lengthM(), 4.8, 0.15);
+}
+
+namespace {
+// One beam straight out of a laser at the car's centre, `range_m` long (0: no echo).
+aula::component::LaserData oneBeam(double range_m) {
+  aula::component::LaserData d;
+  d.numLaser = 1;
+  d.minRange = 0.1;
+  d.maxRange = 20.0;
+  d.values_m = {static_cast<float>(range_m > 0 ? range_m : 20.0)};
+  return d;
+}
+}  // namespace
+
+// The street's end is what blocks the lane, whatever the car's yaw: a parked car seen ahead by a
+// car yawed towards the curb is not the end, a wall across the lane is; behind counts only when
+// reversing.
+TEST(LaneBlockedAhead, OnlyWhatStandsInTheLaneEndsTheStreet) {
+  const LaserMount centre{0, 0, 0};
+  // From (0, 2.5), the lane at 2.5 +- 1.3 m, 6 m ahead counts.
+  EXPECT_TRUE(laneBlockedAhead(0, 2.5, 0.0, centre, oneBeam(3.0), +1, 2.5, 1.3, 6.0));
+  EXPECT_FALSE(laneBlockedAhead(0, 2.5, 0.0, centre, oneBeam(7.0), +1, 2.5, 1.3, 6.0));  // too far yet
+  EXPECT_FALSE(laneBlockedAhead(0, 2.5, 0.0, centre, oneBeam(0), +1, 2.5, 1.3, 6.0));    // no echo
+  // Yawed 35 degrees towards the curb: the echo 4 m out lies 2.3 m below the lane, on a parked car.
+  EXPECT_FALSE(laneBlockedAhead(0, 2.5, -0.61, centre, oneBeam(4.0), +1, 2.5, 1.3, 6.0));
+  // Facing +x, something 3 m ahead is not ahead of a car reversing towards -x.
+  EXPECT_FALSE(laneBlockedAhead(0, 2.5, 0.0, centre, oneBeam(3.0), -1, 2.5, 1.3, 6.0));
+  const LaserMount rear{0, 0, M_PI};
+  EXPECT_TRUE(laneBlockedAhead(0, 2.5, 0.0, rear, oneBeam(3.0), -1, 2.5, 1.3, 6.0));
 }

@@ -187,9 +187,10 @@ class EscapeSearch {
     return opt_.escape_heuristic_weight * std::max(0.0, opt_.exit_lateral_m - side * lateral(p));
   }
 
-  // Out of expansions, or out of time (the clock is read every 64 expansions only).
+  // Out of expansions, or out of time (the clock is read every 64 expansions only, and never when repeatable).
   bool budgetSpent(int expansions) const {
-    return expansions > opt_.escape_max_expansions || ((expansions & 63) == 0 && Clock::now() > deadline_);
+    if (expansions > opt_.escape_max_expansions) return true;
+    return !opt_.repeatable && (expansions & 63) == 0 && Clock::now() > deadline_;
   }
 
   // Drives one move up to escape_move_m, stopping before a collision or once the exit is reached.
@@ -264,12 +265,10 @@ void setState(ob::State* st, const Pose2D& p) {
   s->setYaw(geometry::wrapAngle(p.yaw_rad));
 }
 
-// OMPL: Reeds-Shepp RRTConnect from start to goal (rear-axle poses), then a deterministic greedy
-// shortcut. Appends the motions to `moves`.
-bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, const CarGeometry& car,
-                    const ParkingPlanner::Options& opt, const Pose2D& start, const Pose2D& goal,
-                    double time_left_s, std::vector<Move>& moves, std::string& message) {
-  const double radius = car.min_turn_radius_m;
+// The Reeds-Shepp space over the grid's extent, its states checked by the footprint checker at
+// motion_check_step_m, sampled with the plan's own seed.
+ob::SpaceInformationPtr reedsSheppSpace(const OccupancyGrid& grid, const FootprintChecker& checker, double radius,
+                                        const ParkingPlanner::Options& opt) {
   auto space = std::make_shared<ob::ReedsSheppStateSpace>(radius);
   ob::RealVectorBounds bounds(2);
   bounds.setLow(0, grid.minX_m());
@@ -290,12 +289,44 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
   });
   si->setStateValidityCheckingResolution(opt.motion_check_step_m / space->getMaximumExtent());
   si->setup();
+  return si;
+}
 
-  ob::ScopedState<> s(space), g(space);
+// Greedy shortcut: from each kept state jump to the farthest state reachable by a valid
+// Reeds-Shepp motion. Deterministic (OMPL's PathSimplifier draws from its own unseeded RNG).
+std::vector<const ob::State*> shortcut(const ob::SpaceInformation& si, og::PathGeometric& path) {
+  const auto& ps = path.getStates();
+  std::vector<const ob::State*> kept{ps.front()};
+  size_t i = 0;
+  while (i + 1 < ps.size()) {
+    size_t j = ps.size() - 1;
+    for (; j > i + 1; --j) {
+      if (si.checkMotion(ps[i], ps[j])) break;
+    }
+    kept.push_back(ps[j]);
+    i = j;
+  }
+  return kept;
+}
+
+// When RRTConnect stops: after rrt_max_checks questions when repeatable (no clock), else after time_left_s.
+ob::PlannerTerminationCondition stopCondition(const ParkingPlanner::Options& opt, double time_left_s) {
+  if (!opt.repeatable) return ob::timedPlannerTerminationCondition(std::max(0.0, time_left_s));
+  return ob::PlannerTerminationCondition([asked = 0, most = opt.rrt_max_checks]() mutable { return ++asked > most; });
+}
+
+// OMPL: Reeds-Shepp RRTConnect from start to goal (rear-axle poses), then a deterministic greedy
+// shortcut. Appends the motions to `moves`.
+bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, const CarGeometry& car,
+                    const ParkingPlanner::Options& opt, const Pose2D& start, const Pose2D& goal,
+                    double time_left_s, std::vector<Move>& moves, std::string& message) {
+  const double radius = car.min_turn_radius_m;
+  const ob::SpaceInformationPtr si = reedsSheppSpace(grid, checker, radius, opt);
+  const auto& space = *si->getStateSpace()->as<ob::ReedsSheppStateSpace>();
+  ob::ScopedState<> s(si->getStateSpace()), g(si->getStateSpace());
   setState(s.get(), start);
   setState(g.get(), goal);
 
-  std::vector<ob::State*> states;  // owned by `path` or the scoped states
   og::PathGeometric path(si);
   if (si->checkMotion(s.get(), g.get())) {
     path.append(s.get());
@@ -307,28 +338,15 @@ bool planReedsShepp(const OccupancyGrid& grid, const FootprintChecker& checker, 
     if (opt.deterministic_nn) planner->setNearestNeighbors<ompl::NearestNeighborsLinear>();  // GNAT draws randoms
     if (opt.range_m > 0) planner->setRange(opt.range_m);
     planner->setProblemDefinition(pdef);
-    const ob::PlannerStatus status = planner->solve(ob::timedPlannerTerminationCondition(std::max(0.0, time_left_s)));
+    const ob::PlannerStatus status = planner->solve(stopCondition(opt, time_left_s));
     if (status != ob::PlannerStatus::EXACT_SOLUTION) {
       message = std::string("RRTConnect: ") + status.asString();
       return false;
     }
     path = *pdef->getSolutionPath()->as<og::PathGeometric>();
   }
-
-  // Greedy shortcut: from each kept state jump to the farthest state reachable by a valid
-  // Reeds-Shepp motion. Deterministic (OMPL's PathSimplifier draws from its own unseeded RNG).
-  const auto& ps = path.getStates();
-  std::vector<const ob::State*> kept{ps.front()};
-  size_t i = 0;
-  while (i + 1 < ps.size()) {
-    size_t j = ps.size() - 1;
-    for (; j > i + 1; --j) {
-      if (si->checkMotion(ps[i], ps[j])) break;
-    }
-    kept.push_back(ps[j]);
-    i = j;
-  }
-  for (size_t k = 0; k + 1 < kept.size(); ++k) appendReedsShepp(*space, radius, kept[k], kept[k + 1], moves);
+  const std::vector<const ob::State*> kept = shortcut(*si, path);
+  for (size_t k = 0; k + 1 < kept.size(); ++k) appendReedsShepp(space, radius, kept[k], kept[k + 1], moves);
   return true;
 }
 

@@ -39,7 +39,7 @@ class StreetSearch {
     double lane_clearance_m = 1.0;    // between the parked cars' side and the car's side
     double turn_radius_m = 5.0;       // steering never tighter than this
     double cruise_mps = 2.0, reverse_mps = 1.5;
-    double street_end_m = 4.0;        // turn back when something is this close ahead
+    double street_end_m = 4.0;        // turn back when something across the lane is this close ahead of the car (street_end.hpp)
   };
   StreetSearch(const AutoparkApi& api, Settings settings);
 

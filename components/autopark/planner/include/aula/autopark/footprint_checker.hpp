@@ -6,9 +6,40 @@
 #include <aula/autopark/car_geometry.hpp>
 #include <aula/autopark/occupancy_grid.hpp>
 
+#include <array>
+#include <limits>
 #include <vector>
 
 namespace aula::autopark {
+
+// A convex quadrilateral (the car's box) read row by row: the x span it covers at a height, or
+// within a horizontal band, so a row of the grid can be tested with one prefix-sum lookup.
+class BoxChord {
+ public:
+  // The x range covered, empty (lo_x > hi_x) until something widens it.
+  struct Span {
+    double lo_x = std::numeric_limits<double>::infinity(), hi_x = -std::numeric_limits<double>::infinity();
+  };
+  explicit BoxChord(const std::array<Eigen::Vector2d, 4>& corners);
+  // The chord at the box's lowest height (a vertex or a horizontal edge).
+  Span bottom(double ymin) const;
+  // The chord at a band's upper bound b1 (clipped to ymax; at ymax, the top vertex or edge).
+  Span top(double b1, double ymax) const;
+  // The span within the band [b0, b1] from the chords at its two bounds and the corners inside it.
+  Span band(const Span& below, const Span& above, double b0, double b1) const;
+
+ private:
+  // A non-horizontal edge as x(y) = x0 + (y - y0) * slope over [y0, y1].
+  struct Edge {
+    double y0, y1, x0, slope;
+  };
+  void widen(double y, double& lo_x, double& hi_x) const;
+  void widenByCorners(bool (*keep)(double corner_y, double y0, double y1), double y0, double y1, double& lo_x,
+                      double& hi_x) const;
+  std::array<Eigen::Vector2d, 4> corners_;
+  Edge edges_[4];
+  int count_ = 0;
+};
 
 class FootprintChecker {
  public:
@@ -24,6 +55,8 @@ class FootprintChecker {
   double inflation_m() const { return inflation_m_; }
 
  private:
+  // Any occupied cell (or the grid's outside) between lo_x and hi_x in band `row`.
+  bool rowBlocked(int row, double lo_x, double hi_x) const;
   double ox_, oy_, res_;
   int width_, height_;
   std::vector<int> prefix_;  // height x (width + 1): occupied cells in band r (from min y) with col < c

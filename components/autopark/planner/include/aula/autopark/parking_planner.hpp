@@ -50,6 +50,11 @@ struct ParkingPlannerOptions {
   bool deterministic_nn = true;     // NearestNeighborsLinear (repeatable); false: OMPL default (GNAT, unseeded)
   double output_step_m = 0.05;      // spacing of PlannedPath::poses
   bool quiet = true;                // lower OMPL's log level to warnings (process-wide)
+  // true: the budgets are counts only (escape_max_expansions, rrt_max_checks), never the wall clock,
+  // so the same inputs give the same path however loaded the machine is (the references: sim time
+  // is their only clock); time_limit_s is then not applied.
+  bool repeatable = false;
+  int rrt_max_checks = 20000;       // repeatable: RRTConnect gives up once it has asked this often whether to stop
 };
 
 // The part of the street the lasers have mapped (axis-aligned, the street along x).
