@@ -11,6 +11,8 @@
 #include <aula/vacuum/vacuum_algorithm.hpp>
 #include <aula/vacuum/references.hpp>
 
+#include "roomba_steps.hpp"
+
 #include <aula/geometry/angles.hpp>
 
 #include <algorithm>
@@ -24,75 +26,9 @@ namespace {
 
 using geometry::wrapAngle;
 
-// Every tuning constant of the reference, with its unit. The defaults are the tuned values.
-struct Settings {
-  double max_speed_mps = 0.5;
-  // Spiral: the radius grows by spiral_growth_m2ps / radius each second (never divided by less
-  // than spiral_min_radius_m); it ends when something is ahead or after spiral_max_s.
-  double spiral_start_radius_m = 0.15;
-  double spiral_growth_m2ps = 0.05;
-  double spiral_min_radius_m = 0.1;
-  double spiral_stop_front_m = 0.3;
-  double spiral_stop_wide_m = 0.2;
-  double spiral_max_s = 40.0;
-  // Laser sectors, from straight ahead (rad).
-  double front_half_rad = 0.45;
-  double front_wide_half_rad = 1.0;
-  double right_from_rad = -1.58;
-  double right_to_rad = -1.25;
-  // Dead reckoning: a wall this close at the nose means the robot did not move.
-  double blocked_front_m = 0.12;
-  // Straight runs.
-  double cross_slow_front_m = 0.5;
-  double cross_slow_speed_mps = 0.3;
-  double cross_stop_front_m = 0.22;
-  double cross_stop_wide_m = 0.17;
-  double quick_fail_reset_s = 1.0;   // a run longer than this is not boxed in
-  double quick_fail_window_s = 0.5;  // blocked this soon after a turn is a quick fail
-  int quick_fails_to_escape = 3;
-  // Wall following (right hand).
-  double wall_every_s = 60.0;        // at most one wall-follow per this long
-  double wall_trigger_right_m = 0.5; // a wall this close on the right starts one
-  double wall_time_s = 45.0;
-  double wall_corner_front_m = 0.3;
-  double wall_corner_wide_m = 0.18;
-  double wall_corner_turn_radps = 1.8;
-  double wall_lost_m = 0.7;
-  double wall_search_speed_mps = 0.3;
-  double wall_search_turn_radps = 1.3;
-  double wall_speed_mps = 0.45;
-  double wall_gain_radps_per_m = 5.0;
-  double wall_follow_distance_m = 0.24;
-  double wall_max_turn_radps = 1.5;
-  // Bumps and escapes.
-  double bump_debounce_s = 0.3;
-  double bump_window_s = 5.0;
-  int bumps_to_trapped = 3;
-  double backoff_speed_mps = 0.15;
-  double backoff_s = 0.3;
-  double backoff_trapped_s = 0.8;
-  double trapped_turn_spread_rad = 0.7;  // trapped: turn round, +- this
-  double spin_speed_mps = 0.05;          // slower than this counts as spinning on the spot
-  double spin_limit_s = 4.0;
-  // Turning on the spot to a heading.
-  double turn_max_radps = 2.8;
-  double turn_min_radps = 0.5;
-  double turn_gain_per_s = 3.0;
-  double turn_tolerance_rad = 0.1;
-  double turn_timeout_s = 3.0;
-  // Choosing a heading.
-  int heading_half_width_beams = 8;  // ~8 degrees, the robot's width at ~1 m
-  double heading_skip_ahead_rad = 0.35;
-  double heading_min_clear_m = 0.8;
-  double heading_max_reach_m = 4.0;
-  double novelty_floor = 0.05;
-  double novelty_start_m = 0.5;
-  double open_half_rad = 1.57;
-  double open_side_m = 0.9;       // free this far in the front half (+- open_half_rad): open space
-  double spiral_chance = 0.35;    // in open space, spiral with this probability
-  // Dead-reckoned memory.
-  double memory_cell_m = 0.25;
-};
+using roomba::Command;
+using roomba::sectorMin;
+using roomba::Settings;
 
 class RoombaReference : public VacuumAlgorithm {
  public:
@@ -104,15 +40,31 @@ class RoombaReference : public VacuumAlgorithm {
     t_ += dt;
     const auto& laser = api.laser.getLaserData();
     if (laser.numLaser == 0) return;  // no scan yet
-    const double front = sectorMin(laser, -s_.front_half_rad, s_.front_half_rad);
-    const double front_wide = sectorMin(laser, -s_.front_wide_half_rad, s_.front_wide_half_rad);
-    const double right = sectorMin(laser, s_.right_from_rad, s_.right_to_rad);
+    const Ranges ranges{sectorMin(laser, -s_.front_half_rad, s_.front_half_rad),
+                        sectorMin(laser, -s_.front_wide_half_rad, s_.front_wide_half_rad),
+                        sectorMin(laser, s_.right_from_rad, s_.right_to_rad)};
     const double yaw = api.pose3d.getYaw();
     const bool bumped = api.bumper.getBumperData().state == 1;
-    deadReckon(yaw, bumped || front < s_.blocked_front_m, dt);
+    deadReckon(yaw, bumped || ranges.front_m < s_.blocked_front_m, dt);
+    onBumper(bumped);
+    const Command command = step(laser, ranges, yaw, dt);
+    leaveLongSpins(command.v_mps, dt);
+    api.motors.sendV(command.v_mps);
+    api.motors.sendW(command.w_radps);
+    commanded_v_ = std::clamp(command.v_mps, -max_v_, max_v_);
+  }
 
-    // A bump ends a forward move. While backing off or turning (a disc can always turn on the
-    // spot) a held bumper is ignored, or a robot wedged in a nook would back off forever.
+ private:
+  enum class Mode { Spiral, Cross, Wall, Backoff, Turn };
+
+  // The laser's nearest echo ahead, ahead and to the sides, and on the right.
+  struct Ranges {
+    double front_m, front_wide_m, right_m;
+  };
+
+  // A bump ends a forward move. While backing off or turning (a disc can always turn on the
+  // spot) a held bumper is ignored, or a robot wedged in a nook would back off forever.
+  void onBumper(bool bumped) {
     const bool moving_forward = mode_ == Mode::Cross || mode_ == Mode::Wall || mode_ == Mode::Spiral;
     if (bumped && moving_forward && (!was_bumped_ || t_ - mode_start_ > s_.bump_debounce_s)) {
       bumps_recent_ = t_ - last_bump_t_ < s_.bump_window_s ? bumps_recent_ + 1 : 1;
@@ -120,66 +72,75 @@ class RoombaReference : public VacuumAlgorithm {
       enter(Mode::Backoff);
     }
     was_bumped_ = bumped;
-    double v = 0, w = 0;
+  }
+
+  // This period's command by the mode; each mode's step may choose the next mode.
+  Command step(const component::LaserData& laser, const Ranges& r, double yaw, double dt) {
     switch (mode_) {
-      case Mode::Spiral: {
-        spiral_radius_ += s_.spiral_growth_m2ps * dt / std::max(spiral_radius_, s_.spiral_min_radius_m);
-        v = max_v_;
-        w = v / spiral_radius_;
-        if (front < s_.spiral_stop_front_m || front_wide < s_.spiral_stop_wide_m || t_ - mode_start_ > s_.spiral_max_s) chooseHeading(laser, yaw, false);
-        break;
-      }
-      case Mode::Cross: {
-        v = front < s_.cross_slow_front_m ? s_.cross_slow_speed_mps : max_v_;
-        if (t_ - mode_start_ > s_.quick_fail_reset_s) quick_fails_ = 0;  // a real run: not boxed in
-        if (front < s_.cross_stop_front_m || front_wide < s_.cross_stop_wide_m) {
-          // Blocked again right after turning, several times: boxed in without touching
-          // anything. Back out and turn round.
-          if (t_ - mode_start_ < s_.quick_fail_window_s && ++quick_fails_ >= s_.quick_fails_to_escape) {
-            quick_fails_ = 0;
-            bumps_recent_ = s_.bumps_to_trapped;
-            enter(Mode::Backoff);
-          } else {
-            chooseHeading(laser, yaw, false);
-          }
-        } else if (t_ - wall_end_t_ > s_.wall_every_s && right < s_.wall_trigger_right_m) {
-          enter(Mode::Wall);  // a wall on the right: follow it for a while
-        }
-        break;
-      }
-      case Mode::Wall: {
-        if (front < s_.wall_corner_front_m || front_wide < s_.wall_corner_wide_m) {
-          v = 0.0;
-          w = s_.wall_corner_turn_radps;  // corner ahead: turn left on the spot
-        } else if (right > s_.wall_lost_m) {
-          v = s_.wall_search_speed_mps;
-          w = -s_.wall_search_turn_radps;  // lost the wall: curve right to find it
-        } else {
-          v = s_.wall_speed_mps;
-          w = std::clamp(-s_.wall_gain_radps_per_m * (right - s_.wall_follow_distance_m), -s_.wall_max_turn_radps,
-                         s_.wall_max_turn_radps);
-        }
-        if (t_ - mode_start_ > s_.wall_time_s) {
-          wall_end_t_ = t_;
-          chooseHeading(laser, yaw, false);
-        }
-        break;
-      }
+      case Mode::Spiral:
+        return spiralStep(laser, r, yaw, dt);
+      case Mode::Cross:
+        return crossStep(laser, r, yaw);
+      case Mode::Wall:
+        return wallStep(laser, r, yaw);
       case Mode::Backoff: {
-        v = -s_.backoff_speed_mps;
         const bool trapped = bumps_recent_ >= s_.bumps_to_trapped;
         if (t_ - mode_start_ > (trapped ? s_.backoff_trapped_s : s_.backoff_s)) chooseHeading(laser, yaw, trapped);
-        break;
+        return {-s_.backoff_speed_mps, 0.0};
       }
       case Mode::Turn: {
         const double error = wrapAngle(turn_target_ - yaw);
-        w = std::copysign(std::min(s_.turn_max_radps, s_.turn_min_radps + s_.turn_gain_per_s * std::abs(error)), error);
         if (std::abs(error) < s_.turn_tolerance_rad || t_ - mode_start_ > s_.turn_timeout_s) enter(turn_next_);
-        break;
+        return {0.0, roomba::turnRate(s_, error)};
       }
     }
-    // Spinning on the spot for long (a corner the wall follower cannot leave, a nook where every
-    // turn faces an obstacle): back out and turn round.
+    return {};
+  }
+
+  // An outward spiral until something is ahead or it has spiralled long enough.
+  Command spiralStep(const component::LaserData& laser, const Ranges& r, double yaw, double dt) {
+    spiral_radius_ = roomba::spiralRadiusAfter(s_, spiral_radius_, dt);
+    const Command command{max_v_, max_v_ / spiral_radius_};
+    if (r.front_m < s_.spiral_stop_front_m || r.front_wide_m < s_.spiral_stop_wide_m || t_ - mode_start_ > s_.spiral_max_s) {
+      chooseHeading(laser, yaw, false);
+    }
+    return command;
+  }
+
+  // A straight run, slower near what is ahead; blocked, a new heading; a wall on the right now
+  // and then, followed for a while.
+  Command crossStep(const component::LaserData& laser, const Ranges& r, double yaw) {
+    const double v = r.front_m < s_.cross_slow_front_m ? s_.cross_slow_speed_mps : max_v_;
+    if (t_ - mode_start_ > s_.quick_fail_reset_s) quick_fails_ = 0;  // a real run: not boxed in
+    if (r.front_m < s_.cross_stop_front_m || r.front_wide_m < s_.cross_stop_wide_m) {
+      // Blocked again right after turning, several times: boxed in without touching
+      // anything. Back out and turn round.
+      if (t_ - mode_start_ < s_.quick_fail_window_s && ++quick_fails_ >= s_.quick_fails_to_escape) {
+        quick_fails_ = 0;
+        bumps_recent_ = s_.bumps_to_trapped;
+        enter(Mode::Backoff);
+      } else {
+        chooseHeading(laser, yaw, false);
+      }
+    } else if (t_ - wall_end_t_ > s_.wall_every_s && r.right_m < s_.wall_trigger_right_m) {
+      enter(Mode::Wall);  // a wall on the right: follow it for a while
+    }
+    return {v, 0.0};
+  }
+
+  // Right-hand wall following for wall_time_s, then a new heading.
+  Command wallStep(const component::LaserData& laser, const Ranges& r, double yaw) {
+    const Command command = roomba::wallFollow(s_, r.front_m, r.front_wide_m, r.right_m);
+    if (t_ - mode_start_ > s_.wall_time_s) {
+      wall_end_t_ = t_;
+      chooseHeading(laser, yaw, false);
+    }
+    return command;
+  }
+
+  // Spinning on the spot for long (a corner the wall follower cannot leave, a nook where every
+  // turn faces an obstacle): back out and turn round.
+  void leaveLongSpins(double v, double dt) {
     spin_s_ = std::abs(v) < s_.spin_speed_mps ? spin_s_ + dt : 0.0;
     if (spin_s_ > s_.spin_limit_s) {
       spin_s_ = 0;
@@ -187,13 +148,8 @@ class RoombaReference : public VacuumAlgorithm {
       wall_end_t_ = t_;
       enter(Mode::Backoff);
     }
-    api.motors.sendV(v);
-    api.motors.sendW(w);
-    commanded_v_ = std::clamp(v, -max_v_, max_v_);
   }
 
- private:
-  enum class Mode { Spiral, Cross, Wall, Backoff, Turn };
 
   // Dead-reckoned memory: cells of Settings::memory_cell_m around the start, marked where the
   // robot has been.
@@ -224,15 +180,6 @@ class RoombaReference : public VacuumAlgorithm {
       if (inside(c, r) && !visited_[r * kCells + c]) ++fresh;
     }
     return total == 0 ? 0.0 : static_cast<double>(fresh) / total;
-  }
-
-  static double sectorMin(const component::LaserData& laser, double from_rad, double to_rad) {
-    double m = laser.maxRange;
-    for (int i = 0; i < laser.numLaser; ++i) {
-      const double a = laser.angle(i);
-      if (a >= from_rad && a <= to_rad) m = std::min<double>(m, laser.values_m[i]);
-    }
-    return m;
   }
 
   void enter(Mode m) {

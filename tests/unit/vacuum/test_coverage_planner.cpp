@@ -112,3 +112,21 @@ TEST(CoveragePlanner, ALaneAlongAWallStopsWhereTheDiscWouldBarelyFitBesideIt) {
   // 0.37 m: 2 cm to spare, which the map's 2.5 cm cells and a pose 2 cm off do not leave.
   EXPECT_LT(wallLaneEndX(0.37), 0.0) << "not into the 0.37 m gap under a box";
 }
+
+// A block of the nearest-unswept search: in the open it goes through and is a goal while enough
+// of its floor is unswept; in a wall it is not passable.
+TEST(CoveragePlanner, ABlockIsAGoalUntilItsFloorIsSwept) {
+  ScanMap map;
+  for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(roomScan(yaw), yaw, {0, 0});
+  CoveragePlanner planner(map);
+  const int k = 4, bi = map.col(0.5), bj = map.row(0.5);
+  const auto open = planner.planBlock(bi, bj, k, false);
+  EXPECT_GE(open.rep, 0);
+  EXPECT_GE(open.goal, 0);
+  EXPECT_TRUE(open.unswept);
+  planner.sweep(map.centre(bi + 2, bj + 2));
+  EXPECT_FALSE(planner.planBlock(bi, bj, k, false).unswept) << "its floor swept";
+  const auto wall = planner.planBlock(map.col(2.05), map.row(0.0), k, false);
+  EXPECT_EQ(wall.rep, -1) << "no passable cell in the wall";
+  EXPECT_EQ(wall.goal, -1);
+}

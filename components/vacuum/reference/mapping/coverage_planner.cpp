@@ -1,11 +1,10 @@
 #include "coverage_planner.hpp"
+#include "plan_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <functional>
 #include <limits>
-#include <queue>
 
 namespace aula::vacuum::mapping {
 namespace {
@@ -159,6 +158,55 @@ std::pair<Point2, Lane> CoveragePlanner::besideWall(Point2 from_m, int wall_dx, 
   return {from_m, Lane{}};
 }
 
+// A block of k x k cells (corner bi, bj) for the nearest-unswept search. Why blocks: a search
+// over every 2.5 cm cell of a house at each decision cost more than the run could spend.
+PlanBlock CoveragePlanner::planBlock(int bi, int bj, int k, bool relaxed) const {
+  PlanBlock out;
+  out.rep = -1;
+  double best_m = -1, best_goal_m = -1;
+  int unswept = 0;
+  for (int j = bj; j < bj + k; ++j) {
+    for (int i = bi; i < bi + k; ++i) {
+      if (!planPassable(i, j, relaxed)) continue;
+      const double c_m = map_.clearanceM(i, j);
+      if (c_m > best_m) {
+        best_m = c_m;
+        out.rep = j * map_.width() + i;
+      }
+      if (!traversable(i, j)) continue;
+      unswept += !swept(i, j);
+      if (c_m > best_goal_m) {
+        best_goal_m = c_m;
+        out.goal = j * map_.width() + i;
+      }
+      if (!out.frontier && !swept(i, j)) out.frontier = nextToUnknown(i, j, k);
+    }
+  }
+  out.unswept = unswept >= kMinUnsweptCells;
+  return out;
+}
+
+// Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
+// map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
+// (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
+bool CoveragePlanner::planPassable(int i, int j, bool relaxed) const {
+  if (!relaxed) return traversable(i, j);
+  return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m && !bumped(i, j);
+}
+
+// A frontier: floor next to what the laser has not seen yet (a block's width away). Going there
+// shows more, unless the robot has been there already: what it did not see then (under furniture,
+// behind it where the laser does not look) it will not see by going back (the caller asks only
+// of unswept floor).
+bool CoveragePlanner::nextToUnknown(int i, int j, int k) const {
+  for (int dj = -k; dj <= k; dj += k) {
+    for (int di = -k; di <= k; di += k) {
+      if (!map_.known(i + di, j + dj)) return true;
+    }
+  }
+  return false;
+}
+
 std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) const {
   // Blocks of k x k cells over what the map has seen. A block is traversable when any of its
   // cells is (a narrow passage between furniture is narrower than a block), through the one
@@ -167,114 +215,25 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
   const int i0 = map_.minCol(), j0 = map_.minRow();
   const int w = (map_.maxCol() - i0) / k + 1, h = (map_.maxRow() - j0) / k + 1;
   if (map_.maxCol() < i0 || w <= 0 || h <= 0) return {};
-  // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
-  // map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
-  // (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
-  const auto passable = [&](int i, int j) {
-    if (!relaxed) return traversable(i, j);
-    return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m && !bumped(i, j);
-  };
-  struct Block {
-    int rep = -2;  // its cell (j * width + i) to go through; -1: not passable; -2: not looked at yet
-    int goal = -1;  // its traversable cell farthest from walls, if any
-    bool unswept = false, frontier = false;
-  };
-  std::vector<Block> blocks(static_cast<size_t>(w) * h);
-  const auto block = [&](int b) -> const Block& {
-    Block& out = blocks[b];
-    if (out.rep != -2) return out;
-    out.rep = -1;
-    double best_m = -1, best_goal_m = -1;
-    int unswept = 0;
-    const int bi = i0 + (b % w) * k, bj = j0 + (b / w) * k;
-    for (int j = bj; j < bj + k; ++j) {
-      for (int i = bi; i < bi + k; ++i) {
-        if (!passable(i, j)) continue;
-        const double c_m = map_.clearanceM(i, j);
-        if (c_m > best_m) {
-          best_m = c_m;
-          out.rep = j * map_.width() + i;
-        }
-        if (!traversable(i, j)) continue;
-        unswept += !swept(i, j);
-        if (c_m > best_goal_m) {
-          best_goal_m = c_m;
-          out.goal = j * map_.width() + i;
-        }
-        // A frontier: floor next to what the laser has not seen yet. Going there shows more,
-        // unless the robot has been there already: what it did not see then (under furniture,
-        // behind it where the laser does not look) it will not see by going back.
-        if (!out.frontier && !swept(i, j)) {
-          for (int dj = -k; dj <= k && !out.frontier; dj += k) {
-            for (int di = -k; di <= k; di += k) {
-              if (!map_.known(i + di, j + dj)) out.frontier = true;
-            }
-          }
-        }
-      }
-    }
-    out.unswept = unswept >= kMinUnsweptCells;
-    return out;
+  std::vector<PlanBlock> blocks(static_cast<size_t>(w) * h);  // each looked at once, when the search reaches it
+  const auto block = [&](int b) -> const PlanBlock& {
+    if (blocks[b].rep == -2) blocks[b] = planBlock(i0 + (b % w) * k, j0 + (b / w) * k, k, relaxed);
+    return blocks[b];
   };
   const auto point = [&](int cell) { return map_.centre(cell % map_.width(), cell / map_.width()); };
   const int sx = std::clamp((map_.col(from_m.x_m) - i0) / k, 0, w - 1);
   const int sy = std::clamp((map_.row(from_m.y_m) - j0) / k, 0, h - 1);
   const int start = sy * w + sx;
-  std::vector<int> cost(blocks.size(), std::numeric_limits<int>::max());
-  std::vector<int> parent(blocks.size(), -1);
-  using Item = std::pair<int, int>;  // (cost, block)
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> open;
-  cost[start] = 0;
-  open.push({0, start});
-  int goal = -1;
-  while (!open.empty()) {
-    const auto [c_cost, c] = open.top();
-    open.pop();
-    if (c_cost > cost[c]) continue;
-    const Block& here = block(c);
-    if (c != start && here.goal >= 0 && (here.unswept || here.frontier)) {
-      goal = c;
-      break;
-    }
-    const int cx = c % w, cy = c / w;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        if (dx == 0 && dy == 0) continue;
-        const int nx = cx + dx, ny = cy + dy;
-        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-        const int n = ny * w + nx;
-        if (block(n).rep < 0) continue;
-        const int next = c_cost + (dx != 0 && dy != 0 ? 14 : 10);
-        if (next < cost[n]) {
-          cost[n] = next;
-          parent[n] = c;
-          open.push({next, n});
-        }
-      }
-    }
-  }
+  std::vector<int> parent;
+  const int goal = nearestGoal(
+      w, h, start, [&](int b) { return block(b).rep >= 0; },
+      [&](int b) { return block(b).goal >= 0 && (block(b).unswept || block(b).frontier); }, parent);
   if (goal < 0) return {};
   std::vector<Point2> chain;
   chain.push_back(point(block(goal).goal));
   for (int c = parent[goal]; c != -1 && c != start; c = parent[c]) chain.push_back(point(block(c).rep));
   std::reverse(chain.begin(), chain.end());
-  // Cut it short: from each waypoint, straight to the farthest one in a clear line.
-  std::vector<Point2> out;
-  Point2 at = from_m;
-  size_t next = 0;
-  while (next < chain.size()) {
-    size_t far = next;
-    for (size_t m = chain.size(); m-- > next + 1;) {
-      if (segmentClear(at, chain[m], out.empty() ? 0.1 : 0.0)) {
-        far = m;
-        break;
-      }
-    }
-    out.push_back(chain[far]);
-    at = chain[far];
-    next = far + 1;
-  }
-  return out;
+  return shortcut(from_m, chain, [&](Point2 a, Point2 b, bool first) { return segmentClear(a, b, first ? 0.1 : 0.0); });
 }
 
 }  // namespace aula::vacuum::mapping

@@ -33,6 +33,13 @@ struct CoverageSettings {
   double relaxed_clearance_m = 0.18;
 };
 
+// A block of the nearest-unswept search (CoveragePlanner::pathToUnswept): cells are indexed j * width + i.
+struct PlanBlock {
+  int rep = -2;   // its cell to go through, the farthest from walls; -1: not passable; -2: not looked at yet
+  int goal = -1;  // its traversable cell farthest from walls, if any
+  bool unswept = false, frontier = false;
+};
+
 struct Lane {
   Point2 end_m;           // the last unswept place along it
   double unswept_m = 0;   // how much of it is unswept
@@ -86,6 +93,8 @@ class CoveragePlanner {
   // Waypoints to the nearest traversable place that is unswept or next to floor not seen yet (a
   // frontier), through traversable places (relaxed: see CoverageSettings); empty if there is none.
   std::vector<Point2> pathToUnswept(Point2 from_m, bool relaxed = false) const;
+  // A block of k x k cells from corner (bi, bj), for the nearest-unswept search.
+  PlanBlock planBlock(int bi, int bj, int k, bool relaxed) const;
   // The traversable place nearest to `from` within radius_m (the robot pushed too close to a wall
   // gets out that way); `from` itself if there is none.
   Point2 nearestTraversable(Point2 from_m, double radius_m) const;
@@ -100,6 +109,8 @@ class CoveragePlanner {
     double until_s;
   };
   void stampBump(const Bump& b, int delta);
+  bool planPassable(int i, int j, bool relaxed) const;
+  bool nextToUnknown(int i, int j, int k) const;
   std::vector<Bump> bumps_;
   std::vector<uint8_t> bump_count_;        // how many bumps' discs cover each cell
   std::vector<std::pair<int, int>> bump_disc_;  // cell offsets within clearance_m

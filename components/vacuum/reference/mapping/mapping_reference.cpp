@@ -280,24 +280,7 @@ void MappingReference::decide() {
     }
   }
   // 1. The boustrophedon: a sidestep, and a lane back beside the last one.
-  // After the first pass, lanes along walls only: lanes again over the rest found little (h2: 1.4
-  // points in its last 300 s), and the strips along walls are most of the floor left.
-  const bool walls_only = passes_ > 1;
-  if (on_lane_) {
-    for (int side : {side_, -side_}) {
-      if (walls_only) break;
-      const Point2 q{p.x_m - side * lane_dy_ * s_.lane_spacing_m, p.y_m + side * lane_dx_ * s_.lane_spacing_m};
-      if (!coverage_.traversable(q) || !coverage_.segmentClear(p, q, 0.05)) continue;
-      const Lane back = coverage_.lane(q, -lane_dx_, -lane_dy_);
-      if (back.unswept_m < s_.min_lane_m) continue;
-      side_ = side;
-      lane_dx_ = -lane_dx_;
-      lane_dy_ = -lane_dy_;
-      enterFollow({q, back.end_m});
-      return;
-    }
-    if (hugWall(p)) return;
-  }
+  if (on_lane_ && (sidestep(p) || hugWall(p))) return;
   // 2. A new lane from here.
   if (newLane(p)) return;
   // 3. The nearest unswept floor, then a lane from there.
@@ -308,8 +291,32 @@ void MappingReference::decide() {
     enterFollow(std::move(path));
     return;
   }
-  // 4. All swept: a second pass catches what the first one missed (once: if that finds nothing
-  // either, the robot is boxed in; it looks round again).
+  // 4. All swept.
+  secondPass(p);
+}
+
+// A sidestep of lane_spacing_m and a lane back beside the last one, on either side (its own
+// first). After the first pass, lanes along walls only: lanes again over the rest found little
+// (h2: 1.4 points in its last 300 s), and the strips along walls are most of the floor left.
+bool MappingReference::sidestep(Point2 p) {
+  if (passes_ > 1) return false;
+  for (int side : {side_, -side_}) {
+    const Point2 q{p.x_m - side * lane_dy_ * s_.lane_spacing_m, p.y_m + side * lane_dx_ * s_.lane_spacing_m};
+    if (!coverage_.traversable(q) || !coverage_.segmentClear(p, q, 0.05)) continue;
+    const Lane back = coverage_.lane(q, -lane_dx_, -lane_dy_);
+    if (back.unswept_m < s_.min_lane_m) continue;
+    side_ = side;
+    lane_dx_ = -lane_dx_;
+    lane_dy_ = -lane_dy_;
+    enterFollow({q, back.end_m});
+    return true;
+  }
+  return false;
+}
+
+// All swept: a second pass catches what the first one missed (once: if that finds nothing
+// either, the robot is boxed in; it looks round again).
+void MappingReference::secondPass(Point2 p) {
   if (now_s_ - last_reset_s_ < s_.escape_radius_m / s_.follow_min_mps + s_.follow_slack_s) {
     escapeByLaser();
     return;
@@ -318,7 +325,7 @@ void MappingReference::decide() {
   coverage_.resetSwept(s_.second_pass_m);
   ++passes_;
   coverage_.sweep(est_);
-  path = coverage_.pathToUnswept(p);
+  std::vector<Point2> path = coverage_.pathToUnswept(p);
   if (!path.empty()) {
     enterFollow(std::move(path));
   } else {

@@ -119,6 +119,8 @@ class MappingReference : public VacuumAlgorithm {
   void decide();
   void follow(double yaw_rad, double& v, double& w);
   void enterFollow(std::vector<Point2> waypoints);
+  bool sidestep(Point2 p);
+  void secondPass(Point2 p);
   bool newLane(Point2 p);
   bool hugWall(Point2 p);
   bool startAtWall(Point2 p);
