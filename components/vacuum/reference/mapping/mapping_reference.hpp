@@ -13,7 +13,8 @@
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
 //             nothing new swept for no_fresh_s: out by the laser; bumped wedge_bumps times in
-//             one spot (wedged in a gap): back out along its own trail, and never back there.
+//             one spot (wedged in a gap): back out along its own trail, and never back there;
+//             wedged there again: a move on an arc or a turn per bump, each way in turn (wiggle).
 
 #include "coverage_planner.hpp"
 #include "scan_map.hpp"
