@@ -57,13 +57,7 @@ void MappingReference::execute(VacuumApi& api) {
       spin(yaw, w);
       break;
     case Mode::Backoff:
-      v = backoff_v_;
-      if (now_s_ - mode_start_s_ > s_.backoff_s) {
-        backoff_end_s_ = now_s_;
-        on_lane_ = false;
-        decide();
-        v = 0;
-      }
+      backOff(v, w);
       break;
     case Mode::Follow:
       follow(yaw, v, w);
@@ -156,11 +150,38 @@ void MappingReference::onBump(int bumper, double yaw) {
       goal_bumps_ = 0;
     }
   }
+  if (distance(est_, last_wedge_m_) > s_.unwedge_m) wedge_repeats_ = 0;  // out of the last wedge
   unwedge_ = unwedge_ || wedged(est_);
   const bool again = now_s_ - backoff_end_s_ < s_.backoff_s;  // the last backoff ended pressed
   backoff_v_ = cmd_v_ > 0 || !again ? -s_.backoff_mps : -backoff_v_;
   mode_ = Mode::Backoff;
   mode_start_s_ = now_s_;
+  if (wedge_repeats_ >= 2) wiggle();
+}
+
+// Backing off (or a wiggle's move) for its time, then the next decision.
+void MappingReference::backOff(double& v, double& w) {
+  v = backoff_v_;
+  w = backoff_w_;
+  if (now_s_ - mode_start_s_ <= s_.backoff_s) return;
+  backoff_end_s_ = now_s_;
+  backoff_w_ = 0;
+  on_lane_ = false;
+  decide();
+  v = 0;
+  w = 0;
+}
+
+// Wedged again where backing out along its trail did not get it out (seen under realistic noise:
+// pinned between a box's corner and a wall, a gap narrower than the disc, where turning on the
+// spot rubbed and did not turn, for 650 s): each bump there tries the next of six moves,
+// backwards and forwards on arcs each way and turns each way, until one gets it out.
+void MappingReference::wiggle() {
+  static constexpr double kMoves[6][2] = {{-1, 1}, {-1, -1}, {1, 1}, {1, -1}, {0, 1}, {0, -1}};
+  const double* move = kMoves[wiggle_step_++ % 6];
+  backoff_v_ = move[0] * s_.backoff_mps;
+  backoff_w_ = move[1] * s_.wiggle_radps;
+  mode_start_s_ = now_s_ + s_.wiggle_s - s_.backoff_s;  // Backoff ends backoff_s after this
 }
 
 void MappingReference::localize(const component::LaserData& scan, double yaw, bool bumped) {
@@ -382,6 +403,8 @@ bool MappingReference::wedged(Point2 p) {
     if (distance(bump.second, p) > s_.wedge_m) return false;
   }
   recent_bumps_.clear();
+  wedge_repeats_ = distance(p, last_wedge_m_) < s_.wedge_m ? wedge_repeats_ + 1 : 1;
+  last_wedge_m_ = p;
   return true;
 }
 

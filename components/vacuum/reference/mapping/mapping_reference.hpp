@@ -13,7 +13,8 @@
 //             spot for a while; a poor match keeps the prediction and widens the next search,
 //             where only a clearly better fit, driving straight, may move the estimate far;
 //             nothing new swept for no_fresh_s: out by the laser; bumped wedge_bumps times in
-//             one spot (wedged in a gap): back out along its own trail, and never back there.
+//             one spot (wedged in a gap): back out along its own trail, and never back there;
+//             wedged there again: a move on an arc or a turn per bump, each way in turn (wiggle).
 
 #include "coverage_planner.hpp"
 #include "scan_map.hpp"
@@ -90,6 +91,8 @@ struct MappingSettings {
   double wedge_window_s = 30;         // ...
   double wedge_m = 0.3;               // ... all this near one another: wedged. Out along its own trail
   double unwedge_m = 1.0;             // this far, and the plans never go back there
+  double wiggle_s = 1.0;              // wedged there again: moves on arcs and turns this long...
+  double wiggle_radps = 1.5;          // ... turning this fast
   double trail_step_m = 0.1;          // the trail: where it has been, a point this far apart
   int fresh_cells = 4;                // an execute() sweeping this many new cells (2.5 cm) is progress...
   double no_fresh_s = 40;             // ... and none for this long, while following plans, is not
@@ -126,6 +129,8 @@ class MappingReference : public VacuumAlgorithm {
   bool startAtWall(Point2 p);
   bool roundTheCorner(Point2 p);
   bool wedged(Point2 p);
+  void backOff(double& v, double& w);
+  void wiggle();
   bool unwedge();
   void escapeByLaser();
   void tellBelief(VacuumApi& api);
@@ -169,6 +174,10 @@ class MappingReference : public VacuumAlgorithm {
   Point2 bumped_goal_;       // ... this goal
   std::deque<std::pair<double, Point2>> recent_bumps_;  // (when, where) within wedge_window_s
   bool unwedge_ = false;     // wedged: out along the trail at the next decision
+  int wedge_repeats_ = 0;    // wedged this many times in a row at...
+  Point2 last_wedge_m_{1e9, 1e9};  // ... this spot
+  int wiggle_step_ = 0;      // the next of wiggle()'s moves
+  double backoff_w_ = 0;     // a wiggle's turn while backing off
   std::deque<Point2> trail_;  // where it has been, the newest last
   double fresh_s_ = 0;  // when the last execute() swept new floor
   double last_reset_s_ = -1e9;
