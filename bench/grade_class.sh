@@ -52,6 +52,7 @@ trap 'rm -rf "$work"' EXIT
 # The class: the reference, as students would hand it in (each its own plugin build).
 for i in $(seq -w 1 "$students"); do
   mkdir -p "$work/class/student$i"
+  cp "$src/components/vacuum/reference/roomba_steps.hpp" "$work/class/student$i/"  # the reference's steps, beside it
   { cat "$src/components/vacuum/reference/RoombaReference.cpp"
     printf '\nnamespace aula::vacuum {\nstd::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return makeReferenceAlgorithm(seed); }\n}  // namespace aula::vacuum\n'
   } >"$work/class/student$i/MyAlgorithm.cpp"

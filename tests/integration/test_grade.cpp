@@ -77,6 +77,9 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   const fs::path dir = privateDir();
   const fs::path subs = dir / "submissions";
   const std::string data = AULA_TEST_DATA_DIR;
+  // The classic reference as a student would hand it in: its file and the header of its steps.
+  writeFile(subs / "good" / "roomba_steps.hpp",
+            readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/roomba_steps.hpp"));
   writeFile(subs / "good" / "MyAlgorithm.cpp",
             readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/RoombaReference.cpp") +
                 "\nnamespace aula::vacuum {\n"
@@ -190,19 +193,20 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
 // A class as it comes: two Python and two C++ students, one of each broken, an empty
 // MyAlgorithm.cpp, a folder with no submission and a link to /etc. Every row of grades.csv is
 // there, each failure with its own whole reason, and each row names its language.
+// Students are named after their folders, whatever the folder's name: UTF-8, spaces, quotes.
 TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
   const fs::path dir = privateDir();
   const fs::path subs = dir / "submissions";
   const std::string data = AULA_TEST_DATA_DIR;
-  writeFile(subs / "py_bounce" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
-  writeFile(subs / "py_raises" / "MyAlgorithm.py", readFile(data + "/python/raises/MyAlgorithm.py"));
-  writeFile(subs / "cpp_bounce" / "MyAlgorithm.cpp", readFile(data + "/plugins/vacuum_bounce.cpp"));
+  writeFile(subs / "mar\u00eda jos\u00e9" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
+  writeFile(subs / "ana \"la\" raises" / "MyAlgorithm.py", readFile(data + "/python/raises/MyAlgorithm.py"));
+  writeFile(subs / "Zo\u00eb O'Brien" / "MyAlgorithm.cpp", readFile(data + "/plugins/vacuum_bounce.cpp"));
   writeFile(subs / "cpp_broken" / "MyAlgorithm.cpp", "#include <aula/vacuum/vacuum_algorithm.hpp>\nint broken( { return 0; }\n");
   writeFile(subs / "empty_cpp" / "MyAlgorithm.cpp", "");
   fs::create_directories(subs / "nothing");
   fs::create_directory_symlink("/etc", subs / "etc_link");
   std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
-  for (const char* name : {"py_bounce", "py_raises", "cpp_bounce", "cpp_broken", "empty_cpp", "nothing", "etc_link"}) {
+  for (const char* name : {"mar\u00eda jos\u00e9", "ana \"la\" raises", "Zo\u00eb O'Brien", "cpp_broken", "empty_cpp", "nothing", "etc_link"}) {
     grade.push_back((subs / name).string());
   }
   grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), kShortRun});
@@ -210,9 +214,9 @@ TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
   auto rows = readGrades((dir / "out" / "grades.csv").string());
   ASSERT_EQ(rows.size(), 7u) << readFile((dir / "out" / "grades.csv").string());
   const std::map<std::string, std::pair<std::string, std::string>> expected = {
-      {"py_bounce", {"Python", ""}},
-      {"cpp_bounce", {"C++", ""}},
-      {"py_raises", {"Python", "MyAlgorithm.py:"}},
+      {"mar\u00eda jos\u00e9", {"Python", ""}},
+      {"Zo\u00eb O'Brien", {"C++", ""}},
+      {"ana \"la\" raises", {"Python", "MyAlgorithm.py:"}},
       {"cpp_broken", {"C++", "did not compile: "}},
       {"empty_cpp", {"C++", "undefined symbol"}},
       {"nothing", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}},
@@ -229,7 +233,7 @@ TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
     }
   }
   // One API: the Python bounce is the C++ bounce, mark for mark.
-  EXPECT_EQ(rows["py_bounce"]["median"], rows["cpp_bounce"]["median"]);
+  EXPECT_EQ(rows["mar\u00eda jos\u00e9"]["median"], rows["Zo\u00eb O'Brien"]["median"]);
   fs::remove_all(dir);
 }
 
@@ -257,6 +261,8 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   writeFile(subs / "ana" / "MyAlgorithm.cpp", bounce);
   writeFile(subs / "ben" / "MyAlgorithm.cpp", disguise(bounce));
   writeFile(subs / "carla" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
+  writeFile(subs / "dani" / "roomba_steps.hpp",
+            readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/roomba_steps.hpp"));
   writeFile(subs / "dani" / "MyAlgorithm.cpp",
             readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/reference/RoombaReference.cpp") +
                 "\nnamespace aula::vacuum {\n"

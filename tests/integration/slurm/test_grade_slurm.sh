@@ -73,6 +73,7 @@ sinfo -h -o %T | grep -q idle || fail "the node never became idle"
 # that throws.
 subs="$work/submissions"
 mkdir -p "$subs/good" "$subs/lazy" "$subs/broken" "$subs/thrower"
+cp "$src/components/vacuum/reference/roomba_steps.hpp" "$subs/good/"  # the reference's steps, beside it
 { cat "$src/components/vacuum/reference/RoombaReference.cpp"
   printf '\nnamespace aula::vacuum {\nstd::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return makeReferenceAlgorithm(seed); }\n}  // namespace aula::vacuum\n'
 } >"$subs/good/MyAlgorithm.cpp"
