@@ -2,14 +2,23 @@
 # CI's Debian 13 ("trixie") stage (.ci/run calls it after the Debian 12 stages): this checkout's
 # HEAD, cloned into a Debian 13 root, with its dependencies from scripts/install-deps.sh, built
 # with AULA_WERROR, its unit tests (ctest -L unit), and one headless run of each exercise's
-# reference. Needs root (debootstrap, chroot, mount).
+# reference. Needs root (debootstrap, and the namespaces and mounts each command in the root runs in).
 #
 # The root is made once with `debootstrap --variant=minbase trixie` and kept, with its installed
 # packages and its own ccache, in AULA_DEBIAN13_ROOT (default /var/cache/aula-ci/trixie): a warm
 # stage installs nothing and rebuilds from the cache. Delete that folder to start cold.
-#   scripts/ci-debian13.sh            the whole stage
+#   scripts/ci-debian13.sh              the whole stage
+#   scripts/ci-debian13.sh --all-tests  the same, but `./aula test` (every test, unit and
+#                                       integration, with the test set of packages) for the unit tests
 #   AULA_DEBIAN13_ROOT=DIR scripts/ci-debian13.sh
 set -euo pipefail
+all_tests=0
+for arg in "$@"; do
+  case "$arg" in
+    --all-tests) all_tests=1 ;;
+    *) echo "usage: scripts/ci-debian13.sh [--all-tests]" >&2; exit 2 ;;
+  esac
+done
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${AULA_DEBIAN13_ROOT:-/var/cache/aula-ci/trixie}"
 start_s=$SECONDS
@@ -35,24 +44,13 @@ else
   say "reusing the Debian 13 root in $root"
 fi
 
-# 2. Its kernel file systems, each rbind made a slave so that unmounting never reaches the host's
-# /dev; unmounted on every exit.
-mounted=()
-cleanup() {
-  local m
-  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do m="${mounted[$i]}"; umount -R "$m" 2>/dev/null || umount -lR "$m" || true; done
-}
-trap cleanup EXIT
-mountpoint -q "$root/proc" || { mount -t proc proc "$root/proc"; mounted+=("$root/proc"); }
-for fs in sys dev; do
-  if ! mountpoint -q "$root/$fs"; then
-    mount --rbind "/$fs" "$root/$fs"
-    mount --make-rslave "$root/$fs"
-    mounted+=("$root/$fs")
-  fi
-done
+# 2. Every command in the root runs as in a container rather than a chroot: in mount and PID
+# namespaces of its own, the root made "/" with pivot_root. Why: the kernel refuses a chrooted
+# process a user namespace (unshare(CLONE_NEWUSER) fails with EPERM), which the sandbox
+# (bubblewrap) needs, so the sandbox's tests could not run in a chroot; and the root's /proc, /sys
+# and /dev exist only in that mount namespace, so none is left on the host when the command ends,
+# fails or is killed. --kill-child and the PID namespace end whatever the command started.
 cp /etc/resolv.conf "$root/etc/resolv.conf"
-
 # 3. This checkout's HEAD as a clean clone inside the root (the build folder is kept between
 # stages: ccache does the rest).
 commit="$(git -C "$here" rev-parse HEAD)"
@@ -67,8 +65,21 @@ git -C "$src" checkout --quiet --force --detach "$commit"
 git -C "$src" clean --quiet -fdx -e build/
 say "cloned $commit into $src"
 
-in_root() { chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
-  CCACHE_DIR=/var/cache/ccache TMPDIR=/tmp bash -c "cd /src/aula && $1"; }
+in_root() {  # in_root COMMAND: runs COMMAND with bash in the root's /src/aula
+  unshare --mount --propagation private --pid --fork --kill-child -- /bin/bash -c '
+    set -e
+    mount --bind "$1" "$1"  # pivot_root needs the new root to be a mount point
+    mount -t proc proc "$1/proc"
+    mount --rbind /sys "$1/sys"
+    mount --rbind /dev "$1/dev"
+    cd "$1"
+    mkdir -p .aula-host
+    pivot_root . .aula-host
+    cd /
+    umount -l /.aula-host
+    exec /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
+      CCACHE_DIR=/var/cache/ccache TMPDIR=/tmp /bin/bash -c "cd /src/aula && $2"' in_root "$root" "$1"
+}
 
 # 4. Dependencies: only what the stage builds and runs (`build`), from Debian 13's own packages.
 in_root "scripts/install-deps.sh build"
@@ -79,17 +90,32 @@ in_root "cmake --preset default -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_C
   cmake --build build -j\$(nproc) >build/ci-build.log 2>&1 || { tail -60 build/ci-build.log; exit 1; }"
 say "built ($(in_root "ccache -s 2>/dev/null | grep -E '^ *Hits' | head -1 | tr -s ' '"))"
 
-# 6. The unit tests.
-in_root "ctest --test-dir build -L unit -j\$(nproc) --output-on-failure --timeout 600 >build/ci-unit.log 2>&1 ||
-  { grep -E 'tests passed|Failed|\\*\\*\\*' build/ci-unit.log | tail -40; exit 1; }; grep 'tests passed' build/ci-unit.log"
-say "unit tests passed"
+# 6. The unit tests, or with --all-tests every test (./aula test installs the test set first).
+if [ "$all_tests" = 1 ]; then
+  in_root "./aula test --timeout 1200 >build/ci-test.log 2>&1 ||
+    { grep -E 'tests passed|Failed|\\*\\*\\*|Not Run|Skipped' build/ci-test.log | tail -60; exit 1; }
+    grep -E 'tests passed|Total Test time' build/ci-test.log"
+  say "every test passed"
+else
+  in_root "ctest --test-dir build -L unit -j\$(nproc) --output-on-failure --timeout 600 >build/ci-unit.log 2>&1 ||
+    { grep -E 'tests passed|Failed|\\*\\*\\*' build/ci-unit.log | tail -40; exit 1; }; grep 'tests passed' build/ci-unit.log"
+  say "unit tests passed"
+fi
 
-# 7. One headless run of each exercise's reference, on a port of its own; the mark must be there.
-for exercise in vacuum teletaxi autopark; do
-  in_root "build/bin/aula run $exercise --headless --algorithm=reference --seed=1 \
-    --lcm-url='udpm://239.255.76.67:0?ttl=0' --report=/tmp/ci-$exercise.json >/tmp/ci-$exercise.log 2>&1 ||
-    { tail -30 /tmp/ci-$exercise.log; exit 1; }
-    grep -q '\"mark\"' /tmp/ci-$exercise.json || { echo 'no mark in the report'; cat /tmp/ci-$exercise.json; exit 1; }"
-  say "$exercise: $(in_root "grep -E '\"(mark|coverage_percent)\"' /tmp/ci-$exercise.json | tr -d ' \n'")"
+# 7. One headless run of each exercise's reference (Autopark's two: reactive and planner, as
+# scripts/sanitize-check.sh runs them), on a port of its own; the mark must be in the report.
+runs=(
+  "vacuum vacuum --algorithm=reference"
+  "teletaxi teletaxi --algorithm=reference"
+  "autopark autopark --algorithm=reactive"
+  "autopark-planner autopark --algorithm=planner --world=worlds/autopark_ackermann_1.3L.world"
+)
+for r in "${runs[@]}"; do
+  read -r name exercise args <<<"$r"
+  in_root "build/bin/aula run $exercise --headless $args --seed=1 \
+    --lcm-url='udpm://239.255.76.67:0?ttl=0' --report=/tmp/ci-$name.json >/tmp/ci-$name.log 2>&1 ||
+    { tail -30 /tmp/ci-$name.log; exit 1; }
+    grep -q '\"mark\"' /tmp/ci-$name.json || { echo 'no mark in the report'; cat /tmp/ci-$name.json; exit 1; }"
+  say "$name: $(in_root "grep -E '\"(mark|coverage_percent)\"' /tmp/ci-$name.json | tr -d ' \n'")"
 done
 say "Debian 13 stage passed in $((SECONDS - start_s)) s"
