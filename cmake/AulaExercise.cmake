@@ -12,7 +12,8 @@
 #     PYTHON aula_vacuum_python           # the Python host (aula_add_python_host)
 #     TEMPLATES student                   # the folder `aula new` copies (MyAlgorithm.cpp, .py, the .pyi stubs)
 #     PLUGIN_EXPORTS plugin_exports.list  # the API's patterns a component exports to plugins
-#     PLAYER player.js)                   # how aula grade's player draws a run of it
+#     PLAYER player.js                    # how aula grade's player draws a run of it
+#     MAP vacuum vacuum.world --resolution 0.02 ...)  # build/maps/NAME.png of its world, for tests (aula-mapgen's arguments)
 #
 # Paths are relative to the declaring folder. The top-level CMakeLists.txt adds every folder of
 # components/ and referees/ (the referee folder has the exercise's name too), then calls
@@ -34,7 +35,7 @@ endfunction()
 
 function(aula_exercise)
   set(_one NAME DECLARATION COMPONENT REFEREE API STUDENT PYTHON TEMPLATES PLUGIN_EXPORTS PLAYER)
-  cmake_parse_arguments(ARG "" "${_one}" "API_HEADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "${_one}" "API_HEADERS;MAP" ${ARGN})
   foreach(_required NAME DECLARATION COMPONENT API STUDENT TEMPLATES PLUGIN_EXPORTS)
     if(NOT ARG_${_required})
       message(FATAL_ERROR "aula_exercise() in ${CMAKE_CURRENT_SOURCE_DIR}: ${_required} is required")
@@ -63,6 +64,7 @@ function(aula_exercise)
   set_property(GLOBAL PROPERTY AULA_EXERCISE_${ARG_NAME}_API_HEADERS "${_headers}")
   set_property(GLOBAL PROPERTY AULA_EXERCISE_${ARG_NAME}_TEMPLATES "${_dir}/${ARG_TEMPLATES}")
   set_property(GLOBAL PROPERTY AULA_EXERCISE_${ARG_NAME}_PLUGIN_EXPORTS "${_dir}/${ARG_PLUGIN_EXPORTS}")
+  set_property(GLOBAL PROPERTY AULA_EXERCISE_${ARG_NAME}_MAP "${ARG_MAP}")
   if(ARG_PLAYER)
     set_property(GLOBAL APPEND PROPERTY AULA_EXERCISE_PLAYER_SCRIPTS "${_dir}/${ARG_PLAYER}")
   endif()
