@@ -25,7 +25,9 @@ start_s=$SECONDS
 say() { echo "ci-debian13 [$((SECONDS - start_s)) s]: $*"; }
 
 if [ "$(id -u)" -ne 0 ]; then
-  echo "ci-debian13: needs root (debootstrap, chroot and mount); run it as root or with sudo" >&2
+  # As install-deps.sh does: sudo when it asks for no password, else say what is needed.
+  if command -v sudo >/dev/null && sudo -n true 2>/dev/null; then exec sudo -n "$0" "$@"; fi
+  echo "ci-debian13: needs root (debootstrap, namespaces and mount); run it as root or with sudo" >&2
   exit 2
 fi
 
