@@ -11,6 +11,7 @@ namespace aula::autopark {
 namespace {
 
 using config::SettingsTable;
+using settings::calibrationKey;
 using settings::motionKeys;
 using settings::programTable;
 using settings::windowKeys;
@@ -59,8 +60,7 @@ SettingsTable makeAutoparkReferee() {
   t.reals("Autopark.Referee.ContactCost", "0.1, 0.1, 0.05", 3, "", 0, 10,
           "Scale parked: the share of the mark each contact costs [0], plus [1] per second in contact, plus [2] per cm "
           "it went into what it touched (at most the whole mark)");
-  t.text("Autopark.Referee.Calibration", "",
-         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
+  calibrationKey(t, "Autopark");
   t.presets("Autopark.Referee.Rubric", "default",
             {"Autopark.Referee.FullMarkTime", "Autopark.Referee.GapRule", "Autopark.Referee.SlotGapFractions",
              "Autopark.Referee.GapBands", "Autopark.Referee.CurbBands", "Autopark.Referee.Scale",

@@ -11,6 +11,7 @@ namespace aula::teletaxi {
 namespace {
 
 using config::SettingsTable;
+using settings::calibrationKey;
 using settings::mapKeys;
 using settings::motionKeys;
 using settings::programTable;
@@ -58,8 +59,7 @@ SettingsTable makeTaxiReferee() {
          "the reference's time to the destination");
   t.real("TeleTaxi.Referee.MinTravel", 2, "m", 0, 1000,
          "the distance mark counts only when the taxi travelled at least this far since GO!");
-  t.text("TeleTaxi.Referee.Calibration", "",
-         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
+  calibrationKey(t, "TeleTaxi");
   t.presets("TeleTaxi.Referee.Rubric", "default",
             {"TeleTaxi.Referee.ArrivalRadius", "TeleTaxi.Referee.FullMarkSpeed", "TeleTaxi.Referee.FullMarkTime",
              "TeleTaxi.Referee.MinTravel"},

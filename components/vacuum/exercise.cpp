@@ -11,6 +11,7 @@ namespace aula::vacuum {
 namespace {
 
 using config::SettingsTable;
+using settings::calibrationKey;
 using settings::mapKeys;
 using settings::motionKeys;
 using settings::programTable;
@@ -50,8 +51,7 @@ SettingsTable makeVacuumReferee() {
   // baseline's median coverage is about 39 % (a 4.9), the reference's about 66 % (a 10).
   t.real("Vacuum.Referee.HalfMarkCoverage", 40, "%", 0, 100, "coverage worth a 5 (the mark rises linearly from 0 %)", true);
   t.real("Vacuum.Referee.FullMarkCoverage", 60, "%", 0, 100, "coverage worth a 10 (linearly from the half mark's)", true);
-  t.text("Vacuum.Referee.Calibration", "",
-         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
+  calibrationKey(t, "Vacuum");
   t.presets("Vacuum.Referee.Rubric", "default", {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"},
             {{"default", "the world's calibration when it has one (W.rubric.cfg, written by aula calibrate: the random-bounce "
                          "baseline's median is worth a 5, the reference's a 10), else fixed", {}},

@@ -74,4 +74,9 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
          "what the student's code may print in a sandboxed run (stdout and stderr); past it the run ends with that reason");
 }
 
+void calibrationKey(SettingsTable& t, const std::string& section) {
+  t.text(section + ".Referee.Calibration", "",
+         "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
+}
+
 }  // namespace aula::settings

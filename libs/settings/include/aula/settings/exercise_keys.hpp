@@ -17,6 +17,9 @@ void worldKeys(config::SettingsTable& t, const std::string& section, const std::
 void windowKeys(config::SettingsTable& t, const std::string& prefix, const std::string& size_px, const std::string& what);
 // SECTION.Map.Resolution and SECTION.Map.ZBand: the occupancy map the component and referee draw.
 void mapKeys(config::SettingsTable& t, const std::string& section, double resolution_m, const std::string& z_band);
+// SECTION.Referee.Calibration: the calibration file `aula run` applied (it sets the key by this
+// name when the exercise declares a calibration), which the report names.
+void calibrationKey(config::SettingsTable& t, const std::string& section);
 // SECTION.MaxV, MaxW, Period, Autostart and the Component.* budgets and sandbox limits.
 void motionKeys(config::SettingsTable& t, const std::string& section, double max_v, double max_w, double period_s,
                 double v_bound_mps, double w_bound_radps);
