@@ -274,6 +274,10 @@ TEST(StudentPage, KeepsNoQuoteOfTheWorldNoTeachersFolderAndCapsTheStudentsText) 
   EXPECT_EQ(shown.trace_json.find("sdf version"), std::string::npos) << shown.trace_json;
   EXPECT_TRUE(shown.picture_png.empty());  // it writes the failure in full
   EXPECT_NE(shown.trace_json.find(R"("x_mm":[1,2])"), std::string::npos) << shown.trace_json;
+  // The referee's own data is no one's text: the vacuum's cleaned cells, longer than the text cap, stay whole.
+  const std::string cells(aula::grade::kStudentTextChars * 4, 'A');
+  run.trace_json = R"({"state": {"cells": ")" + cells + R"("}, "events": []})";
+  EXPECT_NE(forTheStudent(run, withheld).trace_json.find(cells), std::string::npos);
   // A failure of the student's own, short and with no path: shown as it is, with the picture.
   run.report["failure"] = "execute() threw std::runtime_error: boom";
   EXPECT_EQ(forTheStudent(run, withheld).picture_png, "a picture that writes the failure");
