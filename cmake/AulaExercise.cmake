@@ -84,11 +84,12 @@ function(aula_exercise_exports_list exercise out)
   set(${out} ${_list} PARENT_SCOPE)
 endfunction()
 
-# After every exercise is declared: the settings' registry, the student API's header list and
-# hash (AULA_API_HEADERS, AULA_API_HEADERS_SHA256, in the caller's scope), `./aula run NAME`'s
+# After every exercise is declared: the settings' registry, the sorted names (AULA_EXERCISES), the
+# student API's header list and hash (AULA_API_HEADERS, AULA_API_HEADERS_SHA256), all three set
+# in the caller's scope, `./aula run NAME`'s
 # targets (aula_run_<name>: that exercise's programs and plugins, nothing of another's), and the
 # student templates `aula new` copies from the build tree.
-macro(aula_finish_exercises)
+function(aula_finish_exercises)
   get_property(AULA_EXERCISES GLOBAL PROPERTY AULA_EXERCISES)
   list(SORT AULA_EXERCISES)
   set(_registry_decls "")
@@ -136,4 +137,7 @@ std::vector<aula::settings::Exercise> aula::settings::declaredExercises() {
     get_property(_templates GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_TEMPLATES)
     file(CREATE_LINK ${_templates} ${PROJECT_BINARY_DIR}/share/aula/templates/${_exercise} SYMBOLIC)
   endforeach()
-endmacro()
+  set(AULA_EXERCISES ${AULA_EXERCISES} PARENT_SCOPE)
+  set(AULA_API_HEADERS ${AULA_API_HEADERS} PARENT_SCOPE)
+  set(AULA_API_HEADERS_SHA256 ${AULA_API_HEADERS_SHA256} PARENT_SCOPE)
+endfunction()

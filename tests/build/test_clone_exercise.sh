@@ -15,7 +15,7 @@ clone="$work/src"
 # 1. The tree as it is (tracked files and new ones git does not ignore), without its build.
 mkdir -p "$clone"
 (cd "$source_dir" && git ls-files -z --cached --others --exclude-standard) |
-  (cd "$source_dir" && xargs -0 cp --parents -P -t "$clone" 2>/dev/null || true)
+  (cd "$source_dir" && xargs -0 cp --parents -P -t "$clone" || true)  # a file deleted but not yet committed: said, not fatal
 [ -f "$clone/CMakeLists.txt" ] || { echo "FAIL: could not copy the tree"; exit 1; }
 
 # 2. The clone: each path naming vacuum, outside tests/, copied under the new name; text files
