@@ -18,6 +18,12 @@ using settings::programTable;
 using settings::windowKeys;
 using settings::worldKeys;
 
+// The component publishes its plan there, the referee traces it: one key in both tables.
+void planChannel(SettingsTable& t) {
+  t.text("TeleTaxi.Plan.Channel", "TELETAXI_PLAN",
+         "where each generatePath()'s field and path (plan_t; never graded) go, for the run's log and the player");
+}
+
 SettingsTable makeTaxiComponent() {
   SettingsTable t = programTable("teletaxi");
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
@@ -39,6 +45,7 @@ SettingsTable makeTaxiComponent() {
   t.add(destination);
   windowKeys(t, "TeleTaxi.Window", "1000, 690", "the TeleTaxi window");
   windowKeys(t, "TeleTaxi.GridWindow", "420, 420", "the \"Grid Field\" window (api.grid.showGrid())");
+  planChannel(t);
   return t;
 }
 
@@ -47,6 +54,7 @@ SettingsTable makeTaxiReferee() {
   worldKeys(t, "TeleTaxi", "worlds/cityLarge.world", "taxi_holo");
   windowKeys(t, "TeleTaxi.RefereeWindow", "460, 640", "the referee's window");
   mapKeys(t, "TeleTaxi", 1.25, "0.01, 100");  // the picture shows the component's map
+  planChannel(t);
   t.real("TeleTaxi.Referee.Timeout", 600, "s", 0, 1e6, "give up this long after GO! (simulated time)", true);
   t.real("TeleTaxi.Referee.StopSpeed", 0.05, "m/s", 0, 10, "'stopped' means slower than this...", true);
   t.real("TeleTaxi.Referee.StopHold", 1.0, "s", 0, 600, "...for this long", true);

@@ -18,6 +18,13 @@ using settings::programTable;
 using settings::windowKeys;
 using settings::worldKeys;
 
+// The component publishes the belief there, the referee traces it: one key in both tables.
+void beliefChannel(SettingsTable& t) {
+  t.text("Vacuum.Belief.Channel", "VACUUM_BELIEF",
+         "where the algorithm's belief (api.belief: its own pose and map, never graded) is published for the window, "
+         "the log and the run's player");
+}
+
 void vacuumDuration(SettingsTable& t) {
   t.real("Vacuum.Referee.Duration", 900, "s", 0, 1e6, "length of a run (simulated time); the component shows the time left", true);
 }
@@ -32,8 +39,7 @@ SettingsTable makeVacuumComponent() {
               "the algorithm that drives the roomba (reference: maps the house with its laser and plans its coverage; "
               "classic: the thesis's spiral, walls and bounces; bounce: the random-bounce baseline; PATH.so: a plugin; "
               "PATH.py: a MyAlgorithm.py)");
-  t.text("Vacuum.Belief.Channel", "VACUUM_BELIEF",
-         "where the algorithm's belief (api.belief: its own pose and map, never graded) is published for the window and the log");
+  beliefChannel(t);
   vacuumDuration(t);
   return t;
 }
@@ -44,6 +50,7 @@ SettingsTable makeVacuumReferee() {
   windowKeys(t, "Vacuum.RefereeWindow", "720, 690", "the referee's window");
   mapKeys(t, "Vacuum", 0.02, "0.005, 0.09");
   vacuumDuration(t);
+  beliefChannel(t);
   t.real("Vacuum.Referee.RobotRadius", 0.165, "m", 0, 10, "radius of the footprint that cleans", true);
   t.real("Vacuum.Referee.Period", 1.0, "s", 0.005, 10,
          "how often the referee syncs with the simulator (simulated time; it counts every pose in between)");

@@ -169,6 +169,15 @@ std::string AlgorithmHostBase::label() const {
   return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";
 }
 
+std::string AlgorithmHostBase::takePrinted() {
+  if (hung_ || !plugin_) return {};  // an abandoned call's plugin is never touched again
+  std::string text = plugin_->takePrinted();
+  printed_.append(text);
+  return text;
+}
+
+bool AlgorithmHostBase::takesPrints() const { return PluginLibrary::isPythonFile(plugin_path_); }
+
 void AlgorithmHostBase::containHangs() {
   if (thread_) return;
   thread_ = std::make_unique<AlgorithmThread>();

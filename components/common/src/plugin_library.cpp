@@ -122,7 +122,8 @@ void PluginLibrary::openPython(const std::string& exercise) {
   bindEntryPoints(exercise);
   const auto set_file = reinterpret_cast<const char* (*)(const char*)>(dlsym(handle_, "aula_python_set_file"));
   interrupt_ = reinterpret_cast<void (*)(const char*)>(dlsym(handle_, "aula_python_interrupt"));
-  if (set_file == nullptr || interrupt_ == nullptr) {
+  take_printed_ = reinterpret_cast<const char* (*)()>(dlsym(handle_, "aula_python_take_console"));
+  if (set_file == nullptr || interrupt_ == nullptr || take_printed_ == nullptr) {
     throw PluginError(path_ + ": " + host + " is not an Aula Python host (no aula_python_set_file())");
   }
   if (const char* error = set_file(path_.c_str())) throw PluginError(path_ + ": " + error);
@@ -202,6 +203,12 @@ void PluginLibrary::findImage() {
 std::function<void(const std::string&)> PluginLibrary::interrupter() const {
   if (interrupt_ == nullptr) return {};
   return [interrupt = interrupt_](const std::string& why) { interrupt(why.c_str()); };  // the host is never unloaded
+}
+
+std::string PluginLibrary::takePrinted() const {
+  if (take_printed_ == nullptr) return {};
+  const char* text = take_printed_();
+  return text == nullptr ? std::string() : std::string(text);
 }
 
 PluginLibrary::~PluginLibrary() {

@@ -2,6 +2,7 @@
 
 #include <aula/teletaxi/gradient_field.hpp>
 #include <aula/geometry/map_transform.hpp>
+#include <aula/plan_t.hpp>
 
 #include <opencv2/core.hpp>
 
@@ -11,7 +12,7 @@
 
 namespace aula::teletaxi {
 TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "teletaxi") {
+    : ExerciseComponent(bus, cfg, world, "teletaxi"), plan_channel_(cfg.getString("TeleTaxi.Plan.Channel")) {
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});
   grid_ = std::make_unique<Grid>(map.image, map.transform);
@@ -90,7 +91,34 @@ bool TaxiComponent::generatePath(std::string* why) {
     return fail("the algorithm failed in generatePath(); see the message");
   }
   path_generated_ = true;
+  publishPlan();
   return true;
+}
+
+void TaxiComponent::publishPlan() {
+  aula::plan_t msg{};
+  msg.utime = simTimeUs();
+  const geometry::MapTransform& t = grid_->transform();
+  msg.width = grid_->getWidth();
+  msg.height = grid_->getHeight();
+  msg.resolution_m = t.resolution_m;
+  msg.origin_x_m = t.origin_x_m;
+  msg.origin_y_m = t.origin_y_m;
+  if (cv::countNonZero(grid_->field()) > 0) {
+    const cv::Mat image = grid_->fieldImage();
+    msg.field.assign(image.datastart, image.dataend);  // continuous: made by fieldImage()
+    msg.field_count = static_cast<int32_t>(msg.field.size());
+  }
+  const cv::Mat& path = grid_->path();
+  for (int row = 0; row < path.rows; ++row) {
+    for (int col = 0; col < path.cols; ++col) {
+      if (path.at<float>(row, col) == 0) continue;
+      msg.path_col.push_back(col);
+      msg.path_row.push_back(row);
+    }
+  }
+  msg.path_count = static_cast<int32_t>(msg.path_col.size());
+  bus().publish(plan_channel_, &msg);
 }
 
 bool TaxiComponent::hasPath() const {

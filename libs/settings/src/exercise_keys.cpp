@@ -24,6 +24,9 @@ void worldKeys(SettingsTable& t, const std::string& section, const std::string& 
   t.text(section + ".Episode.Channel", upper + "_EPISODE", "channel of the component's episode messages to the referee");
   t.text(section + ".RefereeStatus.Channel", upper + "_REFEREE",
          "channel of the referee's status (time left, how the episode ended) to the component's window");
+  t.text(section + ".Console.Channel", upper + "_CONSOLE",
+         "channel of what the student's program prints (console_t; never graded): the run's log keeps it and the "
+         "referee's trace carries it to the run's player");
 }
 
 // A window of the process: its fixed size, and where `aula run` / `aula replay` put it (one layout

@@ -143,7 +143,7 @@ void ParkingRefereeNode::traceEnd(int64_t utime) {
   std::snprintf(text, sizeof text, "the mark: %s = %.2f", markFormula(s, r.parkingCase(), contactCost(r.contacts(), r.settings()),
                 r.settings()).c_str(), s.mark);
   trace().addEvent(utime, "mark", text, "").t_s = r.elapsedS();
-  trace().stop();
+  trace().stop(utime);
 }
 
 referee::EpisodeStatus ParkingRefereeNode::status() const {

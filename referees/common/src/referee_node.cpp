@@ -31,6 +31,7 @@ RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const worl
   bus.subscribe(pose_channel_, &RefereeNode::onPoseMessage, this);
   bus.subscribe(bumper_channel_, &RefereeNode::onBumperMessage, this);
   bus.subscribe(cfg.getString(p + ".Episode.Channel"), &RefereeNode::onEpisodeMessage, this);
+  layers_ = std::make_unique<TraceLayers>(bus, cfg, robot, p, trace_);
   status_ = std::make_unique<StatusSender>(bus, cfg.getString(p + ".RefereeStatus.Channel"), exercise);
   const double period_s = cfg.getDouble(p + ".Referee.Period");
   clock_ = std::make_unique<lcmbus::LockstepClient>(bus, exercise + "-referee",
@@ -49,6 +50,7 @@ RefereeNode::~RefereeNode() = default;
 void RefereeNode::deferSensorWakeUps(lcmbus::Bus& bus) const {
   bus.deferWakeUps(pose_channel_);
   bus.deferWakeUps(bumper_channel_);
+  layers_->deferWakeUps(bus);
 }
 
 void RefereeNode::onPoseMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
@@ -200,6 +202,7 @@ std::string RefereeNode::traceJson() const {
                    "the referee graded without them").placed = false;
   }
   whole.addTo(out);
+  layers_->addTo(out);
   return out.toJson();
 }
 

@@ -44,7 +44,7 @@ void TaxiRefereeNode::onClockTick(int64_t utime) {
   }
   // At the moment the referee's clock stopped (the taxi at rest), not when it was sure of it.
   trace().addEvent(utime, g.reached ? "arrival" : "end", g.verdict, effect).t_s = referee_.elapsedS();
-  trace().stop();
+  trace().stop(utime);
 }
 
 void TaxiRefereeNode::startNewEpisode(int64_t) {

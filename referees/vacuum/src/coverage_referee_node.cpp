@@ -134,7 +134,7 @@ void CoverageRefereeNode::onClockTick(int64_t utime) {
     std::snprintf(text, sizeof text, "time's up: coverage %.2f %% in %.0f s", referee_->coveragePercent(), referee_->elapsedS());
     std::snprintf(effect, sizeof effect, "mark %.2f / 10", referee_->mark());
     trace().addEvent(utime, "end", text, effect);
-    trace().stop();
+    trace().stop(utime);
   }
 }
 

@@ -32,7 +32,7 @@ TEST(RunTrace, SamplesTheLatestPoseAtEachPeriodOfSimTime) {
   EXPECT_NE(samples.find("\"x_mm\": [0,5,4]"), std::string::npos) << samples;
   EXPECT_NE(samples.find("\"y_mm\": [0,-10,-8]"), std::string::npos) << samples;
   EXPECT_NE(samples.find("\"yaw_mrad\": [0,50,40]"), std::string::npos) << samples;
-  trace.stop();
+  trace.stop(0);
   trace.onPose(2'000'000, 1, 1, 0);
   EXPECT_EQ(trace.samples(), 3u) << "nothing after the end of the graded episode";
   const auto& e = trace.addEvent(1'150'000, "bump", "bump 1", "none");

@@ -35,7 +35,7 @@ AlgorithmPanel::AlgorithmPanel(const AlgorithmHostBase& host, std::function<bool
                      static_cast<QWidget*>(non_finite_), static_cast<QWidget*>(reload_button_)}) {
     layout->addWidget(w);
   }
-  layout->addWidget(new ConsolePanel(this));  // a Python program's print(), shown once one is loaded
+  layout->addWidget(new ConsolePanel(host_, this));  // a Python program's print(), shown once one is loaded
   connect(reload_button_, &QPushButton::clicked, this, [this] { reload(); });
   // Window-wide, so it works wherever the focus is.
   auto* shortcut = new QShortcut(QKeySequence("Ctrl+R"), this);

@@ -1,19 +1,13 @@
 #include "aula/component/console_panel.hpp"
 
-#include <aula/config/paths.hpp>
-
 #include <QFontDatabase>
 #include <QScrollBar>
 #include <QTextCursor>
 #include <QVBoxLayout>
 
-#include <dlfcn.h>
-
-#include <filesystem>
-
 namespace aula::component {
 
-ConsolePanel::ConsolePanel(QWidget* parent) : QWidget(parent) {
+ConsolePanel::ConsolePanel(const AlgorithmHostBase& host, QWidget* parent) : QWidget(parent), host_(host) {
   setObjectName("ConsolePanel");
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -35,32 +29,15 @@ ConsolePanel::ConsolePanel(QWidget* parent) : QWidget(parent) {
   timer_.start(100);
 }
 
-// The Python host is loaded by the component (PluginLibrary), RTLD_LOCAL, once for the process:
-// asked by name among the hosts, without loading any (RTLD_NOLOAD).
-ConsolePanel::Take ConsolePanel::findTake() {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(fs::path(config::libDir()) / "python", ec)) {
-    void* handle = dlopen(entry.path().c_str(), RTLD_NOW | RTLD_NOLOAD);
-    if (handle == nullptr) continue;
-    auto take = reinterpret_cast<Take>(dlsym(handle, "aula_python_take_console"));
-    dlclose(handle);  // the component's own handle keeps it loaded for good
-    if (take != nullptr) return take;
-  }
-  return nullptr;
-}
-
 void ConsolePanel::refresh() {
-  if (take_ == nullptr) take_ = findTake();
-  if (take_ == nullptr) return;
-  setVisible(true);
-  const char* printed = take_();
-  if (printed == nullptr || *printed == '\0') return;
+  setVisible(host_.takesPrints());
+  if (host_.printed().total() == seen_) return;
+  const std::string printed = host_.printed().since(seen_);
   QScrollBar* bar = view_->verticalScrollBar();
   const bool at_end = bar->value() == bar->maximum();
   QTextCursor end(view_->document());
   end.movePosition(QTextCursor::End);
-  end.insertText(QString::fromUtf8(printed));
+  end.insertText(QString::fromStdString(printed));
   if (at_end) bar->setValue(bar->maximum());
 }
 

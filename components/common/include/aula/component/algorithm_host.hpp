@@ -23,6 +23,7 @@
 #include <aula/component/crash_report.hpp>
 #include <aula/component/execute_watchdog.hpp>
 #include <aula/component/plugin_library.hpp>
+#include <aula/component/printed_text.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -71,6 +72,14 @@ class AlgorithmHostBase {
   // One line for the end of the run when commands were refused, else "".
   std::string nonFiniteSummary() const;
 
+  // Takes what the algorithm printed since the last take (a Python program's print() and its
+  // stderr; "" for C++, whose output goes to the component's stdout), keeps it for the window's
+  // console (printed()) and returns it: the component publishes it after each tick.
+  std::string takePrinted();
+  const PrintedText& printed() const { return printed_; }
+  // A Python program: its prints are taken (the window shows a console).
+  bool takesPrints() const;
+
   // With windows: calls run on a thread of their own, and one that does not return within the
   // budget halts the algorithm instead of ending the process (no effect when the budget is 0).
   void containHangs();
@@ -112,6 +121,7 @@ class AlgorithmHostBase {
   bool hung_ = false;
   std::function<void()> on_hung_;
   int64_t non_finite_said_ = 0;
+  PrintedText printed_;
 };
 
 template <class Algorithm>

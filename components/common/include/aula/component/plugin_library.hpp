@@ -46,6 +46,9 @@ class PluginLibrary {
   // interrupted (a Python file), else empty (C++). It may block until the algorithm's code
   // yields: call it on a thread of its own. It stays valid after this library is gone.
   std::function<void(const std::string& why)> interrupter() const;
+  // What a Python program printed (print() and its stderr) since the last take, at most the
+  // host's last 64 KB; "" for a C++ plugin, whose output goes to the component's own stdout.
+  std::string takePrinted() const;
 
   // Where the exception object `thrown` (as dynamic_cast<const void*> gives it) was thrown in
   // this plugin, from the stack __cxa_throw kept on this thread (throw_site.hpp): the student's
@@ -78,6 +81,7 @@ class PluginLibrary {
   void* handle_ = nullptr;
   void* factory_ = nullptr;
   void (*interrupt_)(const char*) = nullptr;
+  const char* (*take_printed_)() = nullptr;
   PluginImage image_;
 };
 

@@ -62,7 +62,10 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   // `from_what` names the start in the message ("the taxi's start").
   std::optional<std::string> tripProblem(std::pair<double, double> from, std::pair<double, double> to,
                                          const std::string& from_what) const;
+  // The field and path generatePath() left, on the bus (plan_t): the run's log and the player's.
+  void publishPlan();
 
+  std::string plan_channel_;
   std::unique_ptr<Grid> grid_;
   world::OccupancyMap map_;
   std::pair<double, double> start_xy_m_{0, 0};  // the robot's pose in the world

@@ -18,6 +18,7 @@
 #include <aula/referee/run_outcome.hpp>
 #include <aula/referee/run_trace.hpp>
 #include <aula/referee/status_sender.hpp>
+#include <aula/referee/trace_layers.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <opencv2/core.hpp>
@@ -137,6 +138,7 @@ class RefereeNode {
   int64_t episode_from_utime_ = -1;        // truth at or before this sim time is the last episode's
   RunOutcome outcome_;
   RunTrace trace_;
+  std::unique_ptr<TraceLayers> layers_;  // what the player may draw besides what was graded
   long non_finite_event_ = -1;  // the trace's event of the first non-finite command, -1: none
   std::unique_ptr<StatusSender> status_;
   std::unique_ptr<lcmbus::LockstepClient> clock_;

@@ -49,8 +49,15 @@ class RunTrace {
   // The graded episode starts (times count from `origin_utime`); anything traced before is dropped.
   void start(int64_t origin_utime);
   void clear();  // a hot reload: nothing of the last episode stays
-  // The graded episode ended: no more samples (the events after it still count: a fault...).
-  void stop() { stopped_ = true; }
+  // The graded episode ended at sim time `utime`: no more samples (the events after it still
+  // count: a fault...).
+  void stop(int64_t utime) {
+    stopped_ = true;
+    stop_utime_ = utime;
+  }
+  int64_t originUtime() const { return origin_utime_; }
+  // Stamped before the stop (or no stop yet): what the trace's layers keep.
+  bool beforeStop(int64_t utime) const { return !stopped_ || utime < stop_utime_; }
   bool started() const { return started_; }
   bool sampling() const { return started_ && !stopped_; }
   double timeS(int64_t utime) const;  // since the start, never negative
@@ -76,7 +83,7 @@ class RunTrace {
  private:
   int64_t period_us_;
   bool started_ = false, stopped_ = false;
-  int64_t origin_utime_ = 0, next_sample_us_ = 0;
+  int64_t origin_utime_ = 0, next_sample_us_ = 0, stop_utime_ = 0;
   bool have_pose_ = false;
   int64_t pose_utime_ = 0;
   double x_m_ = 0, y_m_ = 0, yaw_rad_ = 0;
