@@ -218,7 +218,24 @@ set_zoom = ("<script>setTimeout(() => { const p = document.querySelector('.playe
 open(sys.argv[2], "w").write(page[:end] + set_zoom + page[end:])
 EOF2
   chrome --window-size=1280,760 --virtual-time-budget=5000 --screenshot="$out/player_zoom_follow.png" "file://$work/alice/zoom.html#t=450"
+  # The trace's layers, each switched on by #layers= (player_layers.js): the vacuum's laser rays and
+  # published belief, TeleTaxi's plan, Autopark's three lasers, a RoboticsAcademy program's prints.
+  mkdir -p "$work/layers"
+  "$bin/aula" run vacuum --headless --algorithm=reference --seed=1 --report-html="$work/layers/vacuum.html" >/dev/null 2>&1
+  "$bin/aula" run teletaxi --headless --algorithm=reference --seed=1 --report-html="$work/layers/teletaxi.html" >/dev/null 2>&1
+  "$bin/aula" run autopark --headless --algorithm=planner --seed=1 --report-html="$work/layers/autopark.html" >/dev/null 2>&1
+  "$bin/aula" run vacuum --headless --algorithm="$src/tests/data/python/ra_vacuum/MyAlgorithm.py" --seed=1 \
+    --Vacuum.Referee.Duration=120 --report-html="$work/layers/printed.html" >/dev/null 2>&1
+  chrome --window-size=1280,800 --virtual-time-budget=5000 --screenshot="$out/player_layers_vacuum.png" \
+    "file://$work/layers/vacuum.html#t=450&layers=laser,belief"
+  chrome --window-size=1280,800 --virtual-time-budget=5000 --screenshot="$out/player_layers_teletaxi.png" \
+    "file://$work/layers/teletaxi.html#t=6&layers=plan"
+  chrome --window-size=1280,560 --virtual-time-budget=5000 --screenshot="$out/player_layers_autopark.png" \
+    "file://$work/layers/autopark.html#t=10&layers=laser"
+  chrome --window-size=1280,820 --virtual-time-budget=5000 --screenshot="$out/player_layers_printed.png" \
+    "file://$work/layers/printed.html#t=60&layers=console"
   # The pictures load after the page's load: the compositor's last frame has them.
   chrome --window-size=1280,1500 --virtual-time-budget=20000 --run-all-compositor-stages-before-draw --screenshot="$out/report_overview.png" "file://$work/shots/report.html"
-  echo "written: $out/{player_vacuum,player_autopark_contact,player_autopark_not_parked,player_phone,player_zoom_follow,report_overview}.png: look at each"
+  echo "written: $out/{player_vacuum,player_autopark_contact,player_autopark_not_parked,player_phone,player_zoom_follow,report_overview}.png" \
+       "and $out/player_layers_{vacuum,teletaxi,autopark,printed}.png: look at each"
 fi

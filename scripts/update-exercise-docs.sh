@@ -7,7 +7,7 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$here/build}"
 # Every exercise `aula --help` lists (the demo has no referee, hence no grading settings).
-mapfile -t exercises < <("$build/bin/aula" --help | sed -n '/^exercises:/,/^$/p' | awk 'NR > 1 && NF && $1 != "demo" {print $1}')
+mapfile -t exercises < <("$build/bin/aula" --help | sed -n '/^exercises:/,/^[^ ]/p' | awk '/^  [a-z]/ && $1 != "demo" {print $1}')
 for exercise in "${exercises[@]}"; do
   page="$here/docs/exercises/$exercise.md"
   table="$("$build/bin/aula" config "$exercise" --markdown)"

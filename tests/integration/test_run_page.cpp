@@ -196,6 +196,16 @@ const char* kProbe = R"JS(
     p.seek(base); key('ArrowRight', true); out.shiftRight = p.time - base;
     p.seek(0); key('n'); out.n = p.time; key('n'); out.n2 = p.time; key('p'); out.p = p.time;
     out.end = p.end;
+    // Every layer the run has, switched on, drawn mid-run: what its switches and notes say.
+    out.layerSwitches = [...p.root.querySelectorAll('.layers input')].map(b => b.className);
+    p.showLayers(['laser', 'belief', 'plan', 'console']);
+    p.seek(p.end / 2);
+    out.layerNote = p.layerNote.textContent;
+    out.consoleNow = p.root.querySelectorAll('.console-box .line.now').length;
+    out.consoleShown = !!p.consolePart && !p.consolePart.hidden;
+    p.showLayers([]);
+    out.consoleHidden = !p.consolePart || p.consolePart.hidden;
+    p.seek(0);
   }
   const playerIn = d => { const c = d && d.querySelector('.player'); return c && c.player; };
   const wait = () => {
@@ -451,3 +461,48 @@ TEST(RunPage, ClassPageOpensARunLazily) {
   EXPECT_NE(dom.find("<iframe class=\"player-frame\""), std::string::npos);
   EXPECT_LT(fs::file_size(report), 200u * 1024u) << "no run's data in the class page: each run's page has it";
 }
+
+// The trace's layers in the player: each one the run has is a switch, draws without an error and
+// says what it shows; what a Python program printed is in the page, line by line, the line of the
+// playhead marked. The RoboticsAcademy vacuum prints with time.time() timers; the vacuum's reference
+// publishes its belief and has a laser; TeleTaxi's reference plans.
+TEST(RunPage, LayersAndWhatTheProgramPrinted) {
+  struct Case {
+    std::string student;
+    std::vector<std::string> args;
+    std::vector<std::string> switches;
+    std::string note;
+  };
+  const std::vector<Case> cases = {
+      {"rafa", {"vacuum", "--algorithm=" AULA_TEST_DATA_DIR "/python/ra_vacuum/MyAlgorithm.py", "--Vacuum.Referee.Duration=120"},
+       {"layer-laser", "layer-console"}, "laser: the scan of"},
+      {"rhea", {"vacuum", "--algorithm=reference", "--Vacuum.Referee.Duration=60"}, {"layer-laser", "layer-belief"},
+       "magenta: what it believes"},
+      {"tito", {"teletaxi", "--algorithm=reference"}, {"layer-plan"}, "its plan of 0.0 s"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.student);
+    const GradedRun run = makeRun(c.student, c.args);
+    const std::string page = run.stem + ".html";
+    std::ofstream(page) << aula::grade::runPageHtml(aula::grade::runFilesOf(run.result));
+    const nlohmann::json probe = probeOf(expectAGoodPage(run, page));
+    ASSERT_TRUE(probe.is_object());
+    EXPECT_EQ(probe["layerSwitches"], nlohmann::json(c.switches)) << probe.dump();
+    EXPECT_NE(probe["layerNote"].get<std::string>().find(c.note), std::string::npos) << probe["layerNote"];
+    const nlohmann::json& console = run.trace["layers"]["console"];
+    if (c.student != "rafa") {
+      EXPECT_TRUE(console["lines"].empty()) << "a C++ built-in prints nothing to the trace";
+      continue;
+    }
+    ASSERT_GE(console["lines"].size(), 3u) << console.dump();
+    EXPECT_EQ(console["lines"][0]["text"].get<std::string>().rfind("started at ", 0), 0u) << "printed at the import";
+    const Page shown = loadInChromium("file://" + page + "#t=60&layers=console");
+    for (const auto& line : console["lines"]) {
+      EXPECT_NE(shown.dom.find(asDomText(line["text"].get<std::string>())), std::string::npos) << line.dump();
+    }
+    EXPECT_EQ(probe["consoleNow"], 1) << "the line printed last before the playhead is marked";
+    EXPECT_TRUE(probe["consoleShown"].get<bool>());
+    EXPECT_TRUE(probe["consoleHidden"].get<bool>()) << "switched off, the printed lines are hidden";
+  }
+}
+

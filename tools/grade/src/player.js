@@ -84,6 +84,8 @@ const AulaPlayer = (() => {
 
 /* @AULA_EXERCISE_PLAYERS@ */
 
+/* @AULA_PLAYER_LAYERS@ */
+
   let active = null;  // the player the keys drive: the last one opened or touched
 
   class Player {
@@ -105,6 +107,10 @@ const AulaPlayer = (() => {
       // The exercise's own drawing (its player.js, declared by its aula_exercise): none draws nothing more.
       this.drawing = DRAWINGS[t.exercise] || {};
       if (this.drawing.init) this.drawing.init(this);
+      // The trace's layers this run has (player_layers.js), each on but the laser's rays until switched.
+      this.layers = LAYERS.filter(l => l.has(t));
+      for (const l of this.layers) l.init(this);
+      this.shown = {laser: false, belief: true, plan: true, console: true};
       this.time = 0; this.playing = false; this.speed = 10; this.current = -2;
       this.zoom = 1; this.follow = false;
       this.build();
@@ -153,6 +159,25 @@ const AulaPlayer = (() => {
       next.addEventListener('click', () => this.jumpEvent(1));
       controls.append(this.play, prev, next, this.speedSelect, this.zoomSelect, followLabel, this.slider, this.clock);
       stage.appendChild(controls);
+      const consolePart = this.consolePart = consolePanel(this);
+      this.layerBoxes = {};
+      const switches = this.layers.map(l => [l.key, l.label]).concat(consolePart ? [['console', 'printed lines']] : []);
+      if (switches.length) {
+        const row = el('div', {class: 'layers'});
+        row.appendChild(el('span', {}, 'Layers:'));
+        for (const [key, label] of switches) {
+          const box = el('input', {type: 'checkbox', class: 'layer-' + key});
+          box.checked = this.shown[key];
+          box.addEventListener('change', () => this.showLayer(key, box.checked));
+          this.layerBoxes[key] = box;
+          const labelled = el('label');
+          labelled.append(box, ' ' + label);
+          row.appendChild(labelled);
+        }
+        stage.appendChild(row);
+      }
+      this.layerNote = el('div', {class: 'layer-note'});
+      stage.appendChild(this.layerNote);
       this.timeline = el('div', {class: 'timeline', 'aria-hidden': 'true', title: 'the referee\'s events: click one to jump there'});
       for (const e of this.events) {
         const tick = el('span', {class: 'tick', title: fmt(e.t_s, 1) + ' s: ' + e.text + (e.effect ? ' (' + e.effect + ')' : '')});
@@ -188,6 +213,7 @@ const AulaPlayer = (() => {
       });
       this.eventBox.appendChild(list);
       side.appendChild(this.eventBox);
+      if (consolePart) side.appendChild(consolePart);
       view.append(stage, side);
       r.appendChild(view);
     }
@@ -222,6 +248,15 @@ const AulaPlayer = (() => {
       this.breakdownSum = total;
       return table;
     }
+
+    // A layer on or off (its box, or `#layers=` in the address: showLayers with the keys to show).
+    showLayer(key, on) {
+      this.shown[key] = on;
+      if (this.layerBoxes[key]) this.layerBoxes[key].checked = on;
+      if (key === 'console' && this.consolePart) this.consolePart.hidden = !on;
+      this.draw();
+    }
+    showLayers(keys) { for (const key of Object.keys(this.shown)) this.showLayer(key, keys.includes(key)); }
 
     toggle() { this.playing ? this.pause() : this.start(); }
     start() {
@@ -339,6 +374,8 @@ const AulaPlayer = (() => {
       const [fu, fv] = this.follow && this.n > 0 ? this.px(pose.x / 1000, pose.y / 1000) : [W / 2, H / 2];
       ctx.setTransform(z, 0, 0, z, W / 2 - z * fu, H / 2 - z * fv);
       ctx.drawImage(this.map, 0, 0, this.canvas.width, this.canvas.height);
+      const shown = this.layers.filter(l => this.shown[l.key]);
+      for (const l of shown) if (l.under) l.under(this, ctx, t);
       if (this.drawing.scene) this.drawing.scene(this, ctx, t);
       // The trail to now.
       ctx.strokeStyle = '#ef6c00'; ctx.lineWidth = 2;
@@ -378,7 +415,10 @@ const AulaPlayer = (() => {
         const [hx, hy] = this.px(x + Math.cos(yaw) * reach, y + Math.sin(yaw) * reach);
         ctx.beginPath(); ctx.moveTo(u, v); ctx.lineTo(hx, hy); ctx.stroke();
       }
+      for (const l of shown) if (l.over) l.over(this, ctx, t);
       ctx.setTransform(1, 0, 0, 1, 0, 0);
+      this.layerNote.textContent = shown.map(l => l.note(this, t)).filter(Boolean).join('; ');
+      markConsole(this, t);
       if (this.drawing.overlay) this.drawing.overlay(this, ctx, t);
       let text = fmt(t, 1) + ' / ' + fmt(this.end, 1) + ' s';
       if (this.drawing.clock) text += this.drawing.clock(this, pose, t);
@@ -442,20 +482,23 @@ const AulaPlayer = (() => {
     container.dataset.openMs = Math.round(performance.now() - started);  // decoded and drawn
     return container.player;
   }
-  // `#t=SECONDS` and `#run=ID`: what the address asks for ({run: null, t: null} when nothing).
+  // `#t=SECONDS`, `#run=ID` and `#layers=laser,belief,plan,console` (the layers shown, the others
+  // off): what the address asks for ({run: null, t: null, layers: null} when nothing).
   function hashParts() {
-    const t = /(?:^#|&)t=([0-9.]+)/.exec(location.hash), run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
-    return {t: t ? Number(t[1]) : null, run: run ? decodeURIComponent(run[1]) : null};
+    const part = name => { const m = new RegExp('(?:^#|&)' + name + '=([^&]*)').exec(location.hash); return m ? decodeURIComponent(m[1]) : null; };
+    const t = part('t'), layers = part('layers');
+    return {t: t !== null && /^[0-9.]+$/.test(t) ? Number(t) : null, run: part('run'), layers: layers === null ? null : layers.split(',')};
   }
   // Follows the address, now and on every change: `open(run)` gives the player (a promise), which is
   // paused at `#t=` when there is one.
   function followHash(open) {
     const go = () => {
-      const {run, t} = hashParts();
+      const {run, t, layers} = hashParts();
       const opened = open(run);
       if (!opened) return;
       opened.then(p => {
         if (!p) return;
+        if (layers !== null) p.showLayers(layers);
         if (t !== null) { p.pause(); p.seek(t); }
         active = p;
       }).catch(() => {});

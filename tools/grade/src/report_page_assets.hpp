@@ -60,8 +60,9 @@ function filterStudents() {
 document.getElementById('filter-text').addEventListener('input', filterStudents);
 document.getElementById('filter-flagged').addEventListener('change', filterStudents);
 // A run's player: its own page (runs/<student>/<world>-seed<k>.html, beside this one) in a frame,
-// made when it is opened; at `t` (s) when given (a new #t= on an open page moves its player).
-function watch(id, t) {
+// made when it is opened; `hash` (t=SECONDS, layers=...) is passed to its page (a new #t= on an
+// open page moves its player).
+function watch(id, hash) {
   const card = document.getElementById('card-' + id);
   const button = card && card.querySelector('button.open-run');
   if (!button) return;
@@ -73,7 +74,7 @@ function watch(id, t) {
     frame.title = 'the run\'s player: ' + id;
     card.querySelector('.watch').appendChild(frame);
   }
-  frame.src = button.dataset.page + (t !== null && t !== undefined ? '#t=' + t : '');
+  frame.src = button.dataset.page + (hash ? '#' + hash : '');
 }
 document.querySelectorAll('button.open-run').forEach(b => b.addEventListener('click', () => watch(b.dataset.run)));
 // A run's page in a frame says how tall it is: the frame takes that height (no scrollbar in a scrollbar).
@@ -83,10 +84,12 @@ window.addEventListener('message', e => {
     if (f.contentWindow === e.source) f.style.height = Math.min(4000, Math.ceil(e.data.aulaPageHeight) + 4) + 'px';
   });
 });
-// #run=ID&t=SECONDS: that run's player, paused there (on load, and whenever the address changes).
+// #run=ID&t=SECONDS&layers=...: that run's player, paused there (on load, and whenever the address
+// changes); all but run= is the run's page's own.
 function followHash() {
-  const t = /(?:^#|&)t=([0-9.]+)/.exec(location.hash), run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
-  if (run) watch(decodeURIComponent(run[1]), t ? Number(t[1]) : null);
+  const run = /(?:^#|&)run=([^&]+)/.exec(location.hash);
+  const rest = location.hash.replace(/^#/, '').split('&').filter(part => part && !part.startsWith('run=')).join('&');
+  if (run) watch(decodeURIComponent(run[1]), rest);
 }
 window.addEventListener('hashchange', followHash);
 followHash();
