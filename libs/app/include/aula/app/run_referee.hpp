@@ -142,6 +142,12 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
   }
   const int code = app.exec();
   node.leave();
+  // Closed or stopped (Ctrl-C) before this episode's end: the report is this episode's, graded so
+  // far, not the one a finished episode before a reload left.
+  if (!node.finished() && !discard) {
+    std::cout << "(stopped before the end of the episode)\n";
+    finish();
+  }
   return code;
 }
 
