@@ -201,22 +201,26 @@ TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
   writeFile(subs / "mar\u00eda jos\u00e9" / "MyAlgorithm.py", readFile(data + "/python/vacuum_bounce/MyAlgorithm.py"));
   writeFile(subs / "ana \"la\" raises" / "MyAlgorithm.py", readFile(data + "/python/raises/MyAlgorithm.py"));
   writeFile(subs / "Zo\u00eb O'Brien" / "MyAlgorithm.cpp", readFile(data + "/plugins/vacuum_bounce.cpp"));
+  writeFile(subs / "\u00fcn\u00ef \U0001F4C1" / "MyAlgorithm.cpp", readFile(data + "/plugins/throws.cpp"));
   writeFile(subs / "cpp_broken" / "MyAlgorithm.cpp", "#include <aula/vacuum/vacuum_algorithm.hpp>\nint broken( { return 0; }\n");
   writeFile(subs / "empty_cpp" / "MyAlgorithm.cpp", "");
   fs::create_directories(subs / "nothing");
   fs::create_directory_symlink("/etc", subs / "etc_link");
   std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
-  for (const char* name : {"mar\u00eda jos\u00e9", "ana \"la\" raises", "Zo\u00eb O'Brien", "cpp_broken", "empty_cpp", "nothing", "etc_link"}) {
+  for (const char* name : {"mar\u00eda jos\u00e9", "ana \"la\" raises", "Zo\u00eb O'Brien", "\u00fcn\u00ef \U0001F4C1", "cpp_broken",
+                           "empty_cpp", "nothing", "etc_link"}) {
     grade.push_back((subs / name).string());
   }
-  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), kShortRun});
+  const fs::path out = dir / "out \u00f1 \U0001F4C1";  // the teacher's folder too
+  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun});
   ASSERT_EQ(runToEnd(grade, (dir / "grade.txt").string(), 300), 0) << readFile((dir / "grade.txt").string());
-  auto rows = readGrades((dir / "out" / "grades.csv").string());
-  ASSERT_EQ(rows.size(), 7u) << readFile((dir / "out" / "grades.csv").string());
+  auto rows = readGrades((out / "grades.csv").string());
+  ASSERT_EQ(rows.size(), 8u) << readFile((out / "grades.csv").string());
   const std::map<std::string, std::pair<std::string, std::string>> expected = {
       {"mar\u00eda jos\u00e9", {"Python", ""}},
       {"Zo\u00eb O'Brien", {"C++", ""}},
       {"ana \"la\" raises", {"Python", "MyAlgorithm.py:"}},
+      {"\u00fcn\u00ef \U0001F4C1", {"C++", "thrown at MyAlgorithm.cpp:12"}},  // the crash's line, whatever the folder
       {"cpp_broken", {"C++", "did not compile: "}},
       {"empty_cpp", {"C++", "undefined symbol"}},
       {"nothing", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}},
