@@ -624,3 +624,45 @@ TEST(Exam, TwoSandboxedRunsOnOnePortGradeAsAlone) {
 }
 
 }  // namespace
+
+// The reference a student embeds in their own plugin (its bytes built in, written out and loaded
+// at run time: what a student can do with any Aula install's file, as an array or by .incbin,
+// whatever any box hides) is flagged as the reference: it drives the reference's path (issue 39).
+// Its build out of the box, so that the embedding compiles; a quiet student beside it is not flagged.
+TEST(Exam, AnEmbeddedReferenceIsFlaggedAsTheReference) {
+  const fs::path dir = aula::testing::privateDir();
+  const fs::path class_dir = dir / "class";
+  writeSubmission(class_dir / "quiet", "none", "cpp");
+  const std::string reference = std::string(AULA_BIN_DIR) + "/../lib/aula/references/libaula_vacuum_classic.so";
+  ASSERT_TRUE(fs::exists(reference)) << reference;
+  fs::create_directories(class_dir / "embedder");
+  std::ofstream(class_dir / "embedder" / "MyAlgorithm.cpp")
+      << "#include <aula/vacuum/vacuum_algorithm.hpp>\n#include <dlfcn.h>\n#include <cstdlib>\n#include <fstream>\n"
+      << "extern \"C\" const char exam_ref_begin[], exam_ref_end[];\n"
+      << "__asm__(\".pushsection .rodata\\n.global exam_ref_begin\\nexam_ref_begin:\\n.incbin \\\"" << reference
+      << "\\\"\\n.global exam_ref_end\\nexam_ref_end:\\n.popsection\");\n"
+      << "namespace aula::vacuum {\nnamespace {\nclass Embedded : public VacuumAlgorithm {\n public:\n"
+      << "  explicit Embedded(uint64_t seed) : seed_(seed) {}\n  void execute(VacuumApi& api) override {\n"
+      << "    if (!inner_) {\n      const char* tmp = std::getenv(\"TMPDIR\");\n"
+      << "      const std::string path = std::string(tmp ? tmp : \"/tmp\") + \"/embedded.so\";\n"
+      << "      std::ofstream(path, std::ios::binary).write(exam_ref_begin, exam_ref_end - exam_ref_begin);\n"
+      << "      void* library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);\n"
+      << "      using Factory = VacuumAlgorithm* (*)(uint64_t);\n"
+      << "      auto factory = library ? reinterpret_cast<Factory>(dlsym(library, \"aula_vacuum_algorithm_v1\")) : nullptr;\n"
+      << "      if (!factory) throw std::runtime_error(std::string(\"exam: no embedded reference: \") + dlerror());\n"
+      << "      inner_.reset(factory(seed_));\n    }\n    inner_->execute(api);\n  }\n private:\n"
+      << "  uint64_t seed_;\n  std::unique_ptr<VacuumAlgorithm> inner_;\n};\n}  // namespace\n"
+      << "std::unique_ptr<VacuumAlgorithm> makeStudentAlgorithm(uint64_t seed) { return std::make_unique<Embedded>(seed); }\n"
+      << "}  // namespace aula::vacuum\n";
+  ASSERT_EQ(grade({(class_dir / "quiet").string(), (class_dir / "embedder").string()}, dir / "out", (dir / "out.log").string(),
+                  {"--similarity=on", "--build-sandbox=off"}),
+            0)
+      << readFile((dir / "out.log").string());
+  const auto rows = gradesOf((dir / "out" / "grades.csv").string());
+  EXPECT_EQ(rows.at("embedder").at("runs_failed"), "0") << rows.at("embedder").at("line");
+  const std::string csv = readFile((dir / "out" / "similarity.csv").string());
+  EXPECT_NE(csv.find("embedder,reference 'classic',yes,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("quiet,reference 'classic',yes,"), std::string::npos) << csv;
+  EXPECT_NE(readFile((dir / "out" / "report.html").string()).find("embedder matches reference &#39;classic&#39;"), std::string::npos);
+  fs::remove_all(dir);
+}

@@ -175,7 +175,8 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   // Again with the same folder: every run is up to date (same plugin, world, seed and settings).
   ASSERT_EQ(runToEnd(grade, (dir / "grade2.txt").string(), 120), 0);
   const std::string second = readFile((dir / "grade2.txt").string());
-  EXPECT_NE(second.find("8 runs already done"), std::string::npos) << second;
+  // The class's 8, and the 6 of the vacuum's three built-ins (similarity compares the class with them).
+  EXPECT_NE(second.find("14 runs already done"), std::string::npos) << second;
   EXPECT_EQ(readFile((out / "grades.csv").string()), first_csv);
   // Under other settings no result is this grade's: every run runs again (the broken submission's
   // two never ran: nothing to run again).
@@ -286,9 +287,13 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
             "        if min(ranges[85:95]) < 0.5:\n            self.turn_until = self.t + 1.2\n"
             "        turning = self.t < self.turn_until\n        api.motors.sendV(0.0 if turning else 0.3)\n"
             "        api.motors.sendW(-1.3 if turning else 0.25)\n");
+  // The teacher's own solution, which eli copied: --known compares it with everyone, by code too.
+  fs::create_directories(dir / "known" / "spiral");
+  fs::copy_file(subs / "eli" / "MyAlgorithm.cpp", dir / "known" / "spiral" / "MyAlgorithm.cpp");
   std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
   for (const char* name : {"ana", "ben", "carla", "dani", "eli", "fran"}) grade.push_back((subs / name).string());
-  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), "--Vacuum.Referee.Duration=60"});
+  grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), "--Vacuum.Referee.Duration=60",
+                             "--known=" + (dir / "known").string()});
   ASSERT_EQ(runToEnd(grade, (dir / "grade.txt").string(), 300), 0) << readFile((dir / "grade.txt").string());
   const std::string csv = readFile((dir / "out" / "similarity.csv").string());
   std::map<std::string, std::vector<std::string>> pairs;
@@ -299,7 +304,9 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
     const auto fields = csvFields(line);
     pairs[fields[0] + "~" + fields[1]] = fields;
   }
-  ASSERT_EQ(pairs.size(), 15u) << csv;
+  // Every pair of the six, and each of them with each of the vacuum's three built-ins and the
+  // teacher's solution (never two known algorithms together).
+  ASSERT_EQ(pairs.size(), 15u + 6u * 4u) << csv;
   auto flagged = [&](const std::string& pair) { return pairs.count(pair) != 0 && pairs[pair][2] == "yes"; };
   EXPECT_TRUE(flagged("ana~ben")) << csv;
   EXPECT_GE(std::stod(pairs["ana~ben"][3]), 0.6) << csv;
@@ -307,15 +314,21 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   EXPECT_TRUE(flagged("ana~carla")) << csv;
   EXPECT_LT(std::stod(pairs["ana~carla"][3]), 0.6) << "flagged on behaviour, not code\n" << csv;
   EXPECT_LE(std::stod(pairs["ana~carla"][4]), 0.05) << csv;
+  // dani handed in the classic reference's source: flagged with it, by the path its robot drove.
+  EXPECT_TRUE(flagged("dani~reference 'classic'")) << csv;
+  EXPECT_LE(std::stod(pairs["dani~reference 'classic'"][4]), 0.05) << csv;
+  EXPECT_TRUE(flagged("eli~known 'spiral'")) << csv;
+  EXPECT_GE(std::stod(pairs["eli~known 'spiral'"][3]), 0.6) << "its code, which the teacher gave\n" << csv;
   for (const auto& [pair, fields] : pairs) {
     const bool independent = pair.find("dani") != std::string::npos || pair.find("eli") != std::string::npos ||
                              pair.find("fran") != std::string::npos;
-    if (independent) {
+    if (independent && pair != "dani~reference 'classic'" && pair != "eli~known 'spiral'") {
       EXPECT_EQ(fields[2], "no") << pair << "\n" << csv;
     }
   }
   const std::string html = readFile((dir / "out" / "report.html").string());
   EXPECT_NE(html.find("<b>ana ~ ben</b>"), std::string::npos);
+  EXPECT_NE(html.find("<b>dani matches reference &#39;classic&#39;</b>"), std::string::npos);
   EXPECT_NE(html.find("Flagged: a code score of 0.60 or more with 25 shared fingerprints or more"), std::string::npos);
   EXPECT_NE(html.find("paths 0.050 m apart or less"), std::string::npos);
 

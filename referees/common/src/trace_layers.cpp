@@ -129,12 +129,12 @@ void TraceLayers::onLaser(size_t index, const aula::laser_t& msg) {
   if (t_us < laser.next_us) return;
   laser.next_us = (t_us / periodUs(kScanPeriodS) + 1) * periodUs(kScanPeriodS);
   laser.min_angle_rad = msg.min_angle;
-  laser.increment_rad = msg.angle_increment;
+  laser.increment_rad = msg.angle_increment * kBeamStep;
   laser.max_range_m = msg.max_range;
-  std::vector<int32_t> ranges(msg.ranges.size());
-  for (size_t i = 0; i < ranges.size(); ++i) {
+  std::vector<int32_t> ranges;
+  for (size_t i = 0; i < msg.ranges.size(); i += kBeamStep) {
     const double range_m = std::isfinite(msg.ranges[i]) ? std::min<double>(msg.ranges[i], msg.max_range) : msg.max_range;
-    ranges[i] = static_cast<int32_t>(std::lround(range_m * 100.0));
+    ranges.push_back(static_cast<int32_t>(std::lround(range_m * 100.0)));
   }
   laser.utimes.push_back(msg.utime);
   laser.ranges_cm.push_back(std::move(ranges));

@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -81,6 +82,75 @@ TEST(Similarity, ARenamedAndReorderedCopyScoresHighAnOtherProgramLow) {
   EXPECT_DOUBLE_EQ(compareCode(original, original, original).score, 0.0);
 }
 
+// kOriginal with statements that change nothing sprinkled between its own, and one constant changed.
+const char* kWithNoOps = R"(// a student's helper
+double clamp(double v, double lo, double hi) { ; int spare = 2; (void)hi; return v < lo ? lo : v > hi ? hi : v; }
+class Cleaner {
+ public:
+  void step(double range_m) {
+    int unused = 7;
+    if (range_m < 0.4) { turning_ = true; (void)range_m; count_ += 1; ; }
+    speed_ = speed_;
+    speed_ = clamp(range_m * 0.9, 0.0, 0.5);
+    total_ *= 1;
+    if (false) { speed_ = 99; }
+    total_ += 0;
+    count_;
+    {}
+    for (int i = 0; i < 10; ++i) total_ += i * speed_;
+    ;
+  }
+ private:
+  bool turning_ = false;
+  int count_ = 0;
+  double speed_ = 0, total_ = 0;
+};
+)";
+
+const char* kPythonOriginal = R"(def step(state, range_m):
+    if range_m < 0.4:
+        state.turning = True
+        state.count += 1
+    state.speed = min(max(range_m * 0.8, 0.0), 0.5)
+    for i in range(10):
+        state.total += i * state.speed
+    return state.speed
+)";
+
+const char* kPythonWithNoOps = R"(def step(state, range_m):
+    """steps"""
+    if range_m < 0.4:
+        pass
+        state.turning = True
+        unused = 3
+        state.count += 1
+    range_m = range_m
+    state.speed = min(max(range_m * 0.9, 0.0), 0.5)
+    None
+    for i in range(10):
+        state.total += i * state.speed
+        i += 0
+    return state.speed
+)";
+
+// A disguise that sprinkles statements that change nothing (and changes a constant) breaks most
+// k-grams of the tokens as written; without those statements the copy is the original again.
+TEST(Similarity, StatementsThatChangeNothingDoNotHideACopy) {
+  for (const bool python : {false, true}) {
+    SCOPED_TRACE(python ? "Python" : "C++");
+    const std::string original = python ? kPythonOriginal : kOriginal, copy = python ? kPythonWithNoOps : kWithNoOps;
+    const double as_written = compareCode(fingerprints(tokenize(original, python), 8, 4), fingerprints(tokenize(copy, python), 8, 4), {}).score;
+    const double normalised = compareCode(fingerprints(withoutNoOps(tokenize(original, python), python), 8, 4),
+                                          fingerprints(withoutNoOps(tokenize(copy, python), python), 8, 4), {}).score;
+    EXPECT_LE(as_written, normalised - 0.35) << "the disguise works on the tokens as written";
+    EXPECT_GE(normalised, 0.9) << "as written: " << as_written;
+  }
+  // What the rules drop, and what they keep: a used declaration, a live branch, a real update.
+  const auto kept = withoutNoOps(tokenize("int n = 0; if (x) { n += 1; } total += 0.5; f(n);", false), false);
+  EXPECT_EQ(kept.size(), tokenize("int n = 0; if (x) { n += 1; } total += 0.5; f(n);", false).size());
+  EXPECT_LT(compareCode(codeFingerprints(kOriginal, false), codeFingerprints(kOther, false), {}).score, 0.2);
+}
+
 TEST(Similarity, WinnowingKeepsAFingerprintOfEveryLongSharedRun) {
   // Any run of at least window + k - 1 tokens in both gives a shared fingerprint (the guarantee).
   std::string shared;
@@ -98,7 +168,7 @@ TEST(Similarity, TheRulesDecideTheFlag) {
   const std::string program = std::string(kOriginal) + kOther + kDisguised;
   for (const char* student : {"ana", "ben"}) std::ofstream(dir / (std::string(student) + ".cpp")) << program;
   const std::vector<Submitted> students = {{"ana", (dir / "ana.cpp").string()}, {"ben", (dir / "ben.cpp").string()}};
-  const size_t shared = compareCode(fingerprints(tokenize(program, false)), fingerprints(tokenize(program, false)), {}).shared;
+  const size_t shared = compareCode(codeFingerprints(program, false), codeFingerprints(program, false), {}).shared;
   ASSERT_GE(shared, SimilarityRules{}.code_min_shared);
   EXPECT_TRUE(compareClass(students, {}, {}).at(0).flagged);
   SimilarityRules rules;

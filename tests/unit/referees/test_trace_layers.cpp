@@ -98,7 +98,8 @@ TEST_F(Layers, AFloodKeepsItsFirstAndLastLinesAndSaysWhatWasLeftOut) {
 TEST_F(Layers, LasersAreSampledOnSimTimeWithTheirMountsAndDeltaEncodedRanges) {
   TraceLayers layers(bus, settings(false, false), robotWithTwoLasers(), "Ex", trace);
   trace.start(1'000'000);
-  layers.onLaser(0, scan(1'000'000, {1.0f, 1.5f, 12.0f}));  // 12 m: beyond the max range, kept at 10 m
+  // Every other beam: 1.0, 1.5 and 12 m (beyond the max range, kept at 10 m) of five.
+  layers.onLaser(0, scan(1'000'000, {1.0f, 9.0f, 1.5f, 9.0f, 12.0f}));
   layers.onLaser(0, scan(1'050'000, {2.0f, 2.0f, 2.0f}));   // within the period: not kept
   layers.onLaser(0, scan(2'000'000, {3.0f, 3.0f, 3.0f}));
   layers.onLaser(1, scan(1'500'000, {0.25f}));
@@ -109,6 +110,7 @@ TEST_F(Layers, LasersAreSampledOnSimTimeWithTheirMountsAndDeltaEncodedRanges) {
   EXPECT_NEAR(lasers[1]["mount"][2].get<double>(), -1.570796, 1e-6);
   ASSERT_EQ(lasers[0]["scans"].size(), 2u) << lasers.dump();
   EXPECT_EQ(lasers[0]["scans"][0]["cm"], nlohmann::json({100, 50, 850}));
+  EXPECT_DOUBLE_EQ(lasers[0]["increment_rad"].get<double>(), 3.0) << "two beams' angle";
   EXPECT_DOUBLE_EQ(lasers[0]["scans"][1]["t_s"].get<double>(), 1.0);
   EXPECT_EQ(lasers[1]["scans"][0]["cm"], nlohmann::json({25}));
 }
@@ -135,7 +137,7 @@ TEST_F(Layers, TheBeliefIsPutWhereTheTruthWasWhenItFirstSpokeAndKeepsAMapAPeriod
   layers.onBelief(belief(500'000, 0.5, 0));
   layers.onBelief(belief(10'000'000, 1.0, 2));   // not a period later: the latest, replaced by the next
   layers.onBelief(belief(20'000'000, 1.0, 3));   // the latest
-  layers.onBelief(belief(61'000'000, 1.0, 3));   // the same version: nothing new
+  layers.onBelief(belief(130'000'000, 1.0, 3));  // the same version: nothing new
   const nlohmann::json b = layersOf(layers)["belief"];
   EXPECT_EQ(b["x_mm"], nlohmann::json({5000, 500, 500, 0, 0})) << "x placed 5 m on, delta-encoded";
   EXPECT_EQ(b["y_mm"][0], -2000);

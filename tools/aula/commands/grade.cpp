@@ -34,6 +34,7 @@ int gradeSubmissions(const cli::Arguments& args) {
   options.similarity_rules.code_threshold = args.real("similarity-code");
   options.similarity_rules.code_min_shared = static_cast<size_t>(args.integer("similarity-shared"));
   options.similarity_rules.behaviour_threshold_m = args.real("similarity-path");
+  options.known = args.given("known") ? args.text("known") : "";
   options.overrides = args.settings();
   return grade::gradeClass(grade::parseRequest(options), binDir());
 }
@@ -71,6 +72,9 @@ cli::Command grade() {
       .real("similarity-path", defaults.behaviour_threshold_m, "m", 0, 1000,
             "a pair is flagged on behaviour when their robots' paths (same world and seed, at the same sim times) are "
             "this far apart or less, on average")
+      .add(cli::valueOption("known", "DIR",
+                            "your own solutions, one folder each (MyAlgorithm.cpp or .py): run and compared with every "
+                            "student like the exercise's built-in algorithms, never graded (with similarity on)"))
       .add(cli::valueOption("collect", "DIR", "only collect: grades.csv and report.html from DIR's runs (after a Slurm job)"));
   c.details = "out: DIR/grades.csv (median, min, max per student; failures with reasons), DIR/report.html, DIR/runs/\n"
               "see docs/grading.md\n";

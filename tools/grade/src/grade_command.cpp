@@ -126,6 +126,24 @@ int reportStopped(const GradeStopped& stop, const Manifest& manifest) {
   return process::kExitFailed;
 }
 
+// With similarity on, the algorithms a submission may be a copy of run on the same worlds and
+// seeds: the exercise's built-ins, and the teacher's --known solutions (compiled as a class of
+// their own, in OUT/known/build).
+void addKnownAlgorithms(const GradeRequest& request, const std::string& prefix, std::vector<Submission>& submissions) {
+  const auto builtins = builtInAlgorithms(request.exercise);
+  submissions.insert(submissions.end(), builtins.begin(), builtins.end());
+  if (request.known.empty()) return;
+  GradeRequest known = request;
+  known.submissions = request.known;
+  known.out_dir = (fs::path(request.out_dir) / "known").string();
+  auto solutions = compileSubmissions(known, prefix);
+  for (const Submission& s : solutions) {
+    if (!s.compile_error.empty()) std::cout << "  known " << s.student << ": " << s.compile_error << "\n";
+  }
+  markKnown(solutions);
+  submissions.insert(submissions.end(), solutions.begin(), solutions.end());
+}
+
 }  // namespace
 
 int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
@@ -135,16 +153,21 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   const std::string prefix = fs::path(bin_dir).parent_path().string();
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
             << std::flush;
-  const auto submissions = compileSubmissions(request, prefix);
+  auto submissions = compileSubmissions(request, prefix);
   for (const Submission& s : submissions) {
     if (!s.compile_error.empty()) std::cout << "  " << s.student << ": " << s.compile_error << "\n";
   }
+  const size_t students = submissions.size();
+  if (request.similarity) addKnownAlgorithms(request, prefix, submissions);
   const Manifest manifest = planRuns(request, submissions, bin_dir);
   const std::string manifest_path = (fs::path(request.out_dir) / "manifest.json").string();
   manifest.save(manifest_path);
   std::cout << manifest.runs.size() << " runs: " << submissions.size() << " submission(s) x " << request.worlds.size()
-            << " world(s) x " << request.seeds.size() << " seed(s), engine " << request.engine << "\n"
-            << std::flush;
+            << " world(s) x " << request.seeds.size() << " seed(s), engine " << request.engine;
+  if (submissions.size() > students) {
+    std::cout << " (" << submissions.size() - students << " of them known algorithms, for similarity: never graded)";
+  }
+  std::cout << "\n" << std::flush;
   if (request.engine == "slurm") {
     runOnSlurm(manifest, manifest_path, bin_dir);
   } else {
@@ -155,7 +178,7 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
     }
   }
   printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise,
-                      request.similarity_rules),
+                      request.similarity_rules, request.known),
               request.out_dir);
   if (request.similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", request.out_dir.c_str());
   return 0;
@@ -194,7 +217,9 @@ int collectGrades(const std::string& dir) {
   }
   const Manifest manifest = Manifest::load(manifest_path.string());
   const bool similarity = manifest.similarity_rules.has_value();
-  printGrades(collect(dir, manifest.submissions, manifest.exercise, manifest.similarity_rules.value_or(SimilarityRules{})), dir);
+  printGrades(collect(dir, manifest.submissions, manifest.exercise, manifest.similarity_rules.value_or(SimilarityRules{}),
+                      manifest.known),
+              dir);
   if (similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", dir.c_str());
   return 0;
 }

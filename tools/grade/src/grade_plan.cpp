@@ -39,12 +39,40 @@ std::vector<GradedWorld> gradedWorlds(const GradeRequest& request) {
   return worlds;
 }
 
+std::vector<Submission> builtInAlgorithms(const std::string& exercise) {
+  std::vector<Submission> builtins;
+  const settings::Exercise* ex = settings::exerciseNamed(exercise);
+  if (ex == nullptr) return builtins;
+  const config::SettingSpec* algorithm = ex->component_settings->find(ex->section + ".Algorithm");
+  if (algorithm == nullptr) return builtins;
+  for (const std::string& name : algorithm->choices) {
+    if (name == "student") continue;  // the template everyone starts from: never a likeness
+    Submission s;
+    s.student = "reference '" + name + "'";
+    s.language = "built-in";
+    s.plugin = name;  // aula run --algorithm=NAME
+    s.known = true;
+    s.dir_name = "reference-" + name;
+    builtins.push_back(s);
+  }
+  return builtins;
+}
+
+void markKnown(std::vector<Submission>& subs) {
+  for (Submission& s : subs) {
+    s.dir_name = "known-" + s.student;
+    s.student = "known '" + s.student + "'";
+    s.known = true;
+  }
+}
+
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir) {
   Manifest m;
   m.exercise = request.exercise;
   m.out_dir = request.out_dir;
   if (request.similarity) {  // for a later `aula grade --collect` (after Slurm, after a full disk)
     m.submissions = request.submissions;
+    m.known = request.known;
     m.similarity_rules = request.similarity_rules;
   }
   // Each run on its own port, so runs at once never hear each other (a group alone is not
@@ -67,7 +95,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.compile_error = s.compile_error;
         r.language = s.language;
         r.wall_limit_s = request.wall_limit_s;
-        const fs::path stem = fs::path(request.out_dir) / "runs" / s.student /
+        const fs::path stem = fs::path(request.out_dir) / (s.known ? "known" : "runs") / (s.known ? s.dir_name : s.student) /
                               (fs::path(world.name).stem().string() + "-seed" + std::to_string(seed));
         r.result_path = stem.string() + ".json";
         r.report_path = stem.string() + ".report.json";

@@ -130,6 +130,22 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.build_sandbox = options.build_sandbox;
   r.similarity = options.similarity == "on" || (options.similarity == "auto" && r.submissions.size() >= 3);
   r.similarity_rules = options.similarity_rules;
+  if (!options.known.empty()) {  // a folder of the teacher's solutions, one folder each
+    const fs::path dir = fs::absolute(options.known).lexically_normal();
+    if (!fs::is_directory(dir)) throw ConfigError("aula grade --known=" + options.known + ": not a folder");
+    if (!r.similarity) throw ConfigError("aula grade --known=" + options.known + ": compared only with --similarity=on (or auto, for 3 or more)");
+    std::vector<std::string> folders;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      if (entry.is_directory() && (fs::exists(entry.path() / "MyAlgorithm.cpp") || fs::exists(entry.path() / "MyAlgorithm.py"))) {
+        folders.push_back(entry.path().string());
+      }
+    }
+    if (folders.empty()) {
+      throw ConfigError("aula grade --known=" + options.known + ": no folder with MyAlgorithm.cpp or MyAlgorithm.py in it");
+    }
+    std::sort(folders.begin(), folders.end());
+    r.known = folders;
+  }
   return r;
 }
 

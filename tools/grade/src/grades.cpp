@@ -24,8 +24,6 @@
 namespace aula::grade {
 namespace fs = std::filesystem;
 
-namespace {
-
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
   std::string quoted = "\"";
@@ -35,8 +33,6 @@ std::string csvField(const std::string& text) {
   }
   return quoted + "\"";
 }
-
-}  // namespace
 
 std::string gradedWorldOf(const nlohmann::json& result) {
   return fs::path(result.value("graded_world", result.value("world", std::string("?")))).stem().string();
@@ -56,12 +52,15 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::vector<nlohmann::json> readResults(const std::string& out_dir) {
+std::vector<nlohmann::json> readResults(const std::string& out_dir, const std::string& folder) {
   std::vector<fs::path> files;
-  const fs::path runs = fs::path(out_dir) / "runs";
+  const fs::path runs = fs::path(out_dir) / folder;
   if (fs::is_directory(runs)) {
     for (const auto& entry : fs::recursive_directory_iterator(runs)) {
       const std::string name = entry.path().filename().string();
+      if (entry.is_directory() && entry.path().filename() == "build" && entry.path().parent_path() == runs) {
+        continue;  // OUT/known/build: the teacher's solutions' builds
+      }
       const bool result = entry.is_regular_file() && entry.path().extension() == ".json" &&
                           name.find(".report.json") == std::string::npos && name.find(".trace.json") == std::string::npos;
       if (result) files.push_back(entry.path());
@@ -176,24 +175,39 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
 }
 
 // Similar work in the class (similarity.hpp): similarity.csv, and the section for report.html.
+// A folder's MyAlgorithm.cpp, else its MyAlgorithm.py, else "".
+std::string sourceOf(const std::string& folder) {
+  for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
+    const fs::path source = fs::path(folder) / file;
+    if (fs::is_regular_file(source)) return source.string();
+  }
+  return "";
+}
+
 std::string compareSubmissions(const std::string& out_dir, const std::vector<std::string>& folders, const std::string& exercise,
-                               const std::vector<nlohmann::json>& results, const SimilarityRules& rules) {
+                               std::vector<nlohmann::json> results, const SimilarityRules& rules,
+                               const std::vector<std::string>& known_folders) {
   std::vector<Submitted> students;
   for (const std::string& folder : folders) {
-    for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
-      const fs::path source = fs::path(folder) / file;
-      if (fs::is_regular_file(source)) {
-        students.push_back({fs::path(folder).filename().string(), source.string()});
-        break;
-      }
-    }
+    const std::string source = sourceOf(folder);
+    if (!source.empty()) students.push_back({fs::path(folder).filename().string(), source});
+  }
+  // The known algorithms that ran: the built-ins by behaviour (no source here), the teacher's
+  // solutions by their code too.
+  std::map<std::string, std::string> known_sources;
+  for (const std::string& folder : known_folders) known_sources["known '" + fs::path(folder).filename().string() + "'"] = sourceOf(folder);
+  std::set<std::string> known_names;
+  for (const auto& r : readResults(out_dir, "known")) {
+    const std::string name = r.value("student", std::string("?"));
+    if (known_names.insert(name).second) students.push_back({name, known_sources[name], true});
+    results.push_back(r);
   }
   // What everyone starts from is not a likeness: the exercise's templates, in both languages.
   std::vector<Fingerprint> starter;
   for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
     std::ifstream in(config::dataPath("templates/" + exercise + "/" + file));
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto prints = fingerprints(tokenize(text, fs::path(file).extension() == ".py"));
+    const auto prints = codeFingerprints(text, fs::path(file).extension() == ".py");
     starter.insert(starter.end(), prints.begin(), prints.end());
   }
   const auto pairs = compareClass(students, results, starter, rules);
@@ -202,12 +216,13 @@ std::string compareSubmissions(const std::string& out_dir, const std::vector<std
 }
 
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions,
-                                  const std::string& exercise, const SimilarityRules& rules) {
+                                  const std::string& exercise, const SimilarityRules& rules,
+                                  const std::vector<std::string>& known) {
   const auto results = readResults(out_dir);
   const auto grades = gradeStudents(results);
   // The grades first: on a disk with little room left, they are what matters most.
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
-  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results, rules);
+  const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results, rules, known);
   config::writeFileAtomically((fs::path(out_dir) / "report.html").string(), reportHtml(grades, results, similar), "the class report");
   // A page per run, beside its result, for the teacher to hand to that student alone: with only
   // what is theirs (student_page.hpp: no quote of the world, no teacher's folder, their text capped).

@@ -18,6 +18,7 @@ nlohmann::ordered_json Manifest::toJson() const {
   json["out_dir"] = out_dir;
   if (similarity_rules) {
     json["similarity"] = {{"submissions", submissions},
+                          {"known", known},
                           {"code_threshold", similarity_rules->code_threshold},
                           {"code_min_shared", similarity_rules->code_min_shared},
                           {"behaviour_threshold_m", similarity_rules->behaviour_threshold_m},
@@ -51,6 +52,7 @@ Manifest Manifest::fromJson(const nlohmann::json& json) {
   if (json.contains("similarity")) {
     const auto& similarity = json.at("similarity");
     m.submissions = similarity.at("submissions").get<std::vector<std::string>>();
+    if (similarity.contains("known")) m.known = similarity.at("known").get<std::vector<std::string>>();
     SimilarityRules rules;
     rules.code_threshold = similarity.at("code_threshold").get<double>();
     rules.code_min_shared = similarity.at("code_min_shared").get<size_t>();

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace aula::grade {
@@ -128,12 +129,13 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
   std::vector<std::vector<Fingerprint>> prints;
   for (const Submitted& s : students) {
     const bool python = fs::path(s.source_path).extension() == ".py";
-    prints.push_back(fingerprints(tokenize(readText(s.source_path), python)));
+    prints.push_back(s.source_path.empty() ? std::vector<Fingerprint>{} : codeFingerprints(readText(s.source_path), python));
   }
   const Paths paths = pathsOf(results);
   std::vector<PairSimilarity> pairs;
   for (size_t i = 0; i < students.size(); ++i) {
     for (size_t j = i + 1; j < students.size(); ++j) {
+      if (students[i].known && students[j].known) continue;  // two references: not a class's likeness
       PairSimilarity pair;
       pair.a = students[i].student;
       pair.b = students[j].student;
@@ -160,7 +162,7 @@ std::string similarityCsv(const std::vector<PairSimilarity>& pairs) {
   for (const PairSimilarity& p : pairs) {
     std::string evidence = p.evidence;
     for (size_t at = evidence.find('"'); at != std::string::npos; at = evidence.find('"', at + 2)) evidence.insert(at, "\"");
-    csv += p.a + "," + p.b + "," + (p.flagged ? "yes" : "no") + "," + number(p.code_score, 2) + "," +
+    csv += csvField(p.a) + "," + csvField(p.b) + "," + (p.flagged ? "yes" : "no") + "," + number(p.code_score, 2) + "," +
            (p.behaviour_m < 0 ? "" : number(p.behaviour_m, 3)) + "," + std::to_string(p.runs_compared) + ",\"" + evidence +
            "\"\n";
   }
@@ -170,7 +172,11 @@ std::string similarityCsv(const std::vector<PairSimilarity>& pairs) {
 std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::vector<Submitted>& students,
                            const SimilarityRules& rules) {
   std::map<std::string, std::string> source;
-  for (const Submitted& s : students) source[s.student] = readText(s.source_path);
+  std::set<std::string> known;
+  for (const Submitted& s : students) {
+    source[s.student] = s.source_path.empty() ? "(a built-in algorithm: compared by its robot's path)" : readText(s.source_path);
+    if (s.known) known.insert(s.student);
+  }
   std::ostringstream html;
   size_t flagged = 0;
   for (const PairSimilarity& p : pairs) flagged += p.flagged ? 1 : 0;
@@ -183,7 +189,9 @@ std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::
        << " m or more (--similarity-path).</p>\n";
   for (const PairSimilarity& p : pairs) {
     if (!p.flagged) continue;
-    html << "<details class='pair'><summary><b>" << escapeHtml(p.a) << " ~ " << escapeHtml(p.b) << "</b>: code "
+    const std::string who = known.count(p.b) != 0 ? escapeHtml(p.a) + " matches " + escapeHtml(p.b)
+                                                    : escapeHtml(p.a) + " ~ " + escapeHtml(p.b);
+    html << "<details class='pair'><summary><b>" << who << "</b>: code "
          << number(p.code_score, 2) << (p.behaviour_m < 0 ? "" : ", paths " + number(p.behaviour_m, 3) + " m apart")
          << "</summary><p>" << escapeHtml(p.evidence) << "</p><div class='side-by-side'><pre>" << escapeHtml(source[p.a])
          << "</pre><pre>" << escapeHtml(source[p.b]) << "</pre></div></details>\n";

@@ -49,7 +49,7 @@ bool skipCommentOrString(const std::string& s, size_t& i, int& line, bool python
     else if (s[j] == '\n') ++line;
     ++j;
   }
-  out.push_back({"S", start_line});
+  out.push_back({"S", start_line, ""});
   i = std::min(s.size(), j + close.size());
   return true;
 }
@@ -73,19 +73,108 @@ std::vector<Token> tokenize(const std::string& source, bool python) {
     }
     if (skipCommentOrString(source, i, line, python, tokens)) continue;
     if (std::isdigit(static_cast<unsigned char>(c)) != 0) {
+      const size_t start = i;
       while (i < source.size() && (identifierChar(source[i]) || source[i] == '.')) ++i;
-      tokens.push_back({"N", line});
+      tokens.push_back({"N", line, source.substr(start, i - start)});
     } else if (identifierChar(c)) {
       const size_t start = i;
       while (i < source.size() && identifierChar(source[i])) ++i;
       const std::string word = source.substr(start, i - start);
-      tokens.push_back({keywords(python).count(word) != 0 ? word : "I", line});
+      const bool keyword = keywords(python).count(word) != 0;
+      tokens.push_back({keyword ? word : "I", line, keyword ? "" : word});
     } else {
-      tokens.push_back({std::string(1, c), line});
+      tokens.push_back({std::string(1, c), line, ""});
       ++i;
     }
   }
   return tokens;
+}
+
+namespace {
+
+bool isZero(const Token& t) { return t.text == "N" && t.raw.find_first_not_of("0.") == std::string::npos; }
+bool isOne(const Token& t) { return t.text == "N" && (t.raw == "1" || t.raw == "1.0" || t.raw == "1."); }
+
+// How often each identifier is written in the file.
+std::unordered_map<std::string, int> identifierCounts(const std::vector<Token>& tokens) {
+  std::unordered_map<std::string, int> counts;
+  for (const Token& t : tokens) {
+    if (t.text == "I") ++counts[t.raw];
+  }
+  return counts;
+}
+
+// C++: how many tokens from `i` (a statement's start) make a statement that changes nothing; 0: none.
+size_t cppNoOp(const std::vector<Token>& t, size_t i, const std::unordered_map<std::string, int>& uses) {
+  auto is = [&](size_t k, const char* text) { return k < t.size() && t[k].text == text; };
+  auto operand = [&](size_t k) { return k < t.size() && (t[k].text == "I" || t[k].text == "N" || t[k].text == "S"); };
+  if (is(i, ";")) return 1;
+  if (operand(i) && is(i + 1, ";")) return 2;                                          // x;
+  if (is(i, "(") && is(i + 1, "void") && is(i + 2, ")") && operand(i + 3) && is(i + 4, ";")) return 5;  // (void)x;
+  if (is(i, "I") && is(i + 1, "=") && is(i + 2, "I") && t[i].raw == t[i + 2].raw && is(i + 3, ";")) return 4;  // x = x;
+  if (is(i, "I") && (is(i + 1, "+") || is(i + 1, "-")) && is(i + 2, "=") && i + 3 < t.size() && isZero(t[i + 3]) && is(i + 4, ";")) return 5;
+  if (is(i, "I") && (is(i + 1, "*") || is(i + 1, "/")) && is(i + 2, "=") && i + 3 < t.size() && isOne(t[i + 3]) && is(i + 4, ";")) return 5;
+  if (is(i, "if") && is(i + 1, "(") && (is(i + 2, "false") || (i + 2 < t.size() && isZero(t[i + 2]))) && is(i + 3, ")")) {
+    size_t k = i + 4, depth = 0;  // the dead branch: a block, or one statement
+    do {
+      if (is(k, "{")) ++depth;
+      if (is(k, "}") && depth > 0) --depth;
+      ++k;
+    } while (k < t.size() && (depth > 0 || (!is(k - 1, "}") && !is(k - 1, ";"))));
+    return is(k, "else") ? 0 : k - i;
+  }
+  // A variable declared and never written again: `int unused = 0;`.
+  static const std::set<std::string> types = {"int", "double", "float", "bool", "auto", "char", "long", "unsigned", "const"};
+  size_t k = i;
+  while (k < t.size() && types.count(t[k].text) != 0) ++k;
+  if (k > i && is(k, "I") && uses.at(t[k].raw) == 1 && (is(k + 1, "=") || is(k + 1, ";"))) {
+    while (k < t.size() && !is(k, ";") && !is(k, "{") && !is(k, "}")) ++k;
+    return is(k, ";") ? k + 1 - i : 0;
+  }
+  return 0;
+}
+
+// Python: how many tokens from `i` (its line's first) make a line that changes nothing; 0: none.
+size_t pythonNoOp(const std::vector<Token>& t, size_t i, const std::unordered_map<std::string, int>& uses) {
+  size_t end = i;
+  while (end < t.size() && t[end].line == t[i].line) ++end;
+  const size_t n = end - i;
+  auto is = [&](size_t k, const char* text) { return k < end && t[k].text == text; };
+  if (is(i, "pass") && n == 1) return 1;
+  static const std::set<std::string> lone = {"I", "N", "S", "None", "True", "False"};
+  if (n == 1 && lone.count(t[i].text) != 0) return 1;  // a name, a constant or a docstring alone
+  if (n == 3 && is(i, "I") && is(i + 1, "=") && is(i + 2, "I") && t[i].raw == t[i + 2].raw) return 3;
+  if (n == 4 && is(i, "I") && (is(i + 1, "+") || is(i + 1, "-")) && is(i + 2, "=") && isZero(t[i + 3])) return 4;
+  if (n >= 3 && is(i, "I") && is(i + 1, "=") && !is(i + 2, "=") && uses.at(t[i].raw) == 1) return n;  // never used again
+  return 0;
+}
+
+}  // namespace
+
+std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python) {
+  const auto uses = identifierCounts(tokens);
+  std::vector<Token> out;
+  size_t i = 0;
+  while (i < tokens.size()) {
+    size_t skip = 0;
+    if (python) {
+      if (i == 0 || tokens[i - 1].line != tokens[i].line) skip = pythonNoOp(tokens, i, uses);
+    } else if (tokens[i].text == "{" && i + 1 < tokens.size() && tokens[i + 1].text == "}") {
+      skip = 2;  // an empty block
+    } else if (out.empty() || out.back().text == ";" || out.back().text == "{" || out.back().text == "}") {
+      skip = cppNoOp(tokens, i, uses);
+    }
+    if (skip > 0) {
+      i += skip;
+      continue;
+    }
+    out.push_back(tokens[i++]);
+  }
+  return out;
+}
+
+std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python) {
+  return fingerprints(withoutNoOps(tokenize(source, python), python));
 }
 
 std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k, size_t window) {

@@ -36,6 +36,9 @@ struct GradeRequest {
   std::string engine = "local";  // local | slurm
   double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
   bool similarity = false;       // compare the submissions (similarity.csv, report.html's section)
+  // --known=DIR: the teacher's own solutions (one folder each, like a submission), run and compared
+  // with every student as the exercise's built-in algorithms are (similarity on), never graded.
+  std::vector<std::string> known;
   SimilarityRules similarity_rules;  // what flags a pair
   bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
   bool build_sandbox = true;     // each C++ submission built in its sandbox (submission_build.hpp); off: to measure it
@@ -56,6 +59,7 @@ struct GradeOptions {
   bool record = false;
   bool build_sandbox = true;
   std::string similarity = "auto";       // on, off, or auto: on for a class of 3 or more
+  std::string known;                     // --known=DIR, "" for none
   SimilarityRules similarity_rules;
   std::vector<std::pair<std::string, std::string>> overrides;
 };
@@ -79,7 +83,18 @@ struct Submission {
   std::string plugin;   // the built .so, or the copy of MyAlgorithm.py ("" when it did not compile)
   std::string plugin_sha256;
   std::string compile_error;  // "did not compile: <the compiler's first error lines>"
+  // A known algorithm, compared with every student and never graded: one of the exercise's
+  // built-ins (student "reference 'classic'", plugin "classic": the name aula run takes) or one of
+  // the teacher's --known solutions (student "known 'NAME'"). Its runs go to OUT/known/<dir_name>.
+  bool known = false;
+  std::string dir_name;  // OUT/runs/<student> or OUT/known/<dir_name>
 };
+
+// The exercise's built-in algorithms but the student's template, as known algorithms (their
+// names from the component's SECTION.Algorithm choices).
+std::vector<Submission> builtInAlgorithms(const std::string& exercise);
+// `subs`, compiled from --known folders, made known ("known 'NAME'", OUT/known/known-NAME).
+void markKnown(std::vector<Submission>& subs);
 
 // Builds every submission as a plugin in OUT/build/<student>, `jobs` at once, each in a sandbox
 // of its own (submission_build.hpp: its files checked and copied, its names never in a build
@@ -111,6 +126,7 @@ struct Manifest {
   // With similarity on: the class's folders and what flags a pair (`aula grade --collect` compares
   // the class as the grade would have).
   std::vector<std::string> submissions;
+  std::vector<std::string> known;  // the --known folders
   std::optional<SimilarityRules> similarity_rules;
 
   nlohmann::ordered_json toJson() const;
@@ -130,7 +146,8 @@ struct GradedWorld {
 };
 std::vector<GradedWorld> gradedWorlds(const GradeRequest& request);
 
-// Every submission x world x seed, each on its own LCM port.
+// Every submission x world x seed, each on its own LCM port (a known algorithm's runs too, when
+// `submissions` holds some: builtInAlgorithms, markKnown).
 Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& submissions, const std::string& bin_dir);
 
 }  // namespace aula::grade

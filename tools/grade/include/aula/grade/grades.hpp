@@ -25,8 +25,12 @@ struct StudentGrade {
   std::string failures;  // "reason (x2); other reason"
 };
 
-// Reads DIR/runs/*/*.json.
-std::vector<nlohmann::json> readResults(const std::string& out_dir);
+// A CSV field: as it is, or quoted (its quotes doubled, its line breaks as spaces) when it holds a
+// comma, a quote or a line break.
+std::string csvField(const std::string& text);
+// Reads DIR/runs/*/*.json (the students'), or DIR/<folder>/*/*.json (`folder` "known": the runs
+// of the algorithms the class is compared with).
+std::vector<nlohmann::json> readResults(const std::string& out_dir, const std::string& folder = "runs");
 std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& results);
 double median(std::vector<double> values);
 // A mark or measure as grades.csv and report.html show it: two decimals, "" when no run measured it.
@@ -40,8 +44,10 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 // `similarity`: compare the class's submissions too (similarity.csv and report.html's section);
 // the submissions' folders are those of `submissions` (empty: none, no comparison), a pair
-// flagged by `rules`.
+// flagged by `rules`; each is compared with the known algorithms' runs in DIR/known too (the
+// exercise's built-ins, and the teacher's solutions of `known`, whose code is compared as well).
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions = {},
-                                  const std::string& exercise = "", const SimilarityRules& rules = {});
+                                  const std::string& exercise = "", const SimilarityRules& rules = {},
+                                  const std::vector<std::string>& known = {});
 
 }  // namespace aula::grade

@@ -22,10 +22,16 @@ namespace aula::grade {
 struct Token {
   std::string text;  // a keyword or operator as written; "I" identifier, "N" number, "S" string
   int line = 0;
+  std::string raw;   // an identifier or number as written (what the no-op rules look at)
 };
 
 // The tokens of a source file; `python` chooses the language (else C++).
 std::vector<Token> tokenize(const std::string& source, bool python);
+// The tokens less the statements that change nothing, which a disguise sprinkles in to break
+// every k-gram: C++ empty statements and blocks, a lone `x;`, `(void)x;`, `x = x;`, `x += 0;`,
+// `x *= 1;`, `if (false) {...}`, a variable declared and never used again; Python `pass`, a lone
+// name or constant on its line, `x = x`, `x += 0` and a name assigned and never used again.
+std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python);
 
 struct Fingerprint {
   uint64_t hash = 0;
@@ -34,6 +40,8 @@ struct Fingerprint {
 
 // Winnowing: of every window of `window` consecutive k-gram hashes, the smallest (rightmost on a tie).
 std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k = 12, size_t window = 8);
+// A source's fingerprints as similarity compares them: tokenize, withoutNoOps, fingerprints.
+std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python);
 
 struct CodeMatch {
   double score = 0;  // shared fingerprints over the smaller set, 0-1
@@ -58,7 +66,10 @@ double pathLength(const Path& path);
 
 struct Submitted {
   std::string student;
-  std::string source_path;  // MyAlgorithm.cpp or MyAlgorithm.py
+  std::string source_path;  // MyAlgorithm.cpp or MyAlgorithm.py; "" for a built-in (compared by behaviour)
+  // A known algorithm ("reference 'classic'", "known 'NAME'"): compared with every student, never
+  // with another known one; a flagged pair reads "STUDENT matches reference 'classic'".
+  bool known = false;
 };
 
 struct PairSimilarity {
@@ -79,7 +90,7 @@ struct SimilarityRules {
   double moved_m = 1.0;               // paths shorter than this say nothing (a robot that stays still)
 };
 
-// Every pair of `students`; `results` are the runs' results (their "log" names the trace beside
+// Every pair of `students` but two known ones; `results` are the runs' results (their "log" names the trace beside
 // them); `starter` the exercise's templates' fingerprints. Pairs sorted, flagged first.
 std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students, const std::vector<nlohmann::json>& results,
                                          const std::vector<Fingerprint>& starter, const SimilarityRules& rules = {});
