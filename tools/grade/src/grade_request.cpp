@@ -86,6 +86,26 @@ std::vector<long long> parseSeeds(const std::string& text, const std::string& op
   return seeds;
 }
 
+namespace {
+
+// --known=DIR: its folders with a MyAlgorithm.cpp or .py (the teacher's solutions), sorted.
+std::vector<std::string> knownFolders(const std::string& given, bool similarity) {
+  const fs::path dir = fs::absolute(given).lexically_normal();
+  if (!fs::is_directory(dir)) throw ConfigError("aula grade --known=" + given + ": not a folder");
+  if (!similarity) throw ConfigError("aula grade --known=" + given + ": compared only with --similarity=on (or auto, for 3 or more)");
+  std::vector<std::string> folders;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.is_directory() && (fs::exists(entry.path() / "MyAlgorithm.cpp") || fs::exists(entry.path() / "MyAlgorithm.py"))) {
+      folders.push_back(entry.path().string());
+    }
+  }
+  if (folders.empty()) throw ConfigError("aula grade --known=" + given + ": no folder with MyAlgorithm.cpp or MyAlgorithm.py in it");
+  std::sort(folders.begin(), folders.end());
+  return folders;
+}
+
+}  // namespace
+
 GradeRequest parseRequest(const GradeOptions& options) {
   GradeRequest r;
   r.exercise = options.exercise;
@@ -130,22 +150,7 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.build_sandbox = options.build_sandbox;
   r.similarity = options.similarity == "on" || (options.similarity == "auto" && r.submissions.size() >= 3);
   r.similarity_rules = options.similarity_rules;
-  if (!options.known.empty()) {  // a folder of the teacher's solutions, one folder each
-    const fs::path dir = fs::absolute(options.known).lexically_normal();
-    if (!fs::is_directory(dir)) throw ConfigError("aula grade --known=" + options.known + ": not a folder");
-    if (!r.similarity) throw ConfigError("aula grade --known=" + options.known + ": compared only with --similarity=on (or auto, for 3 or more)");
-    std::vector<std::string> folders;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-      if (entry.is_directory() && (fs::exists(entry.path() / "MyAlgorithm.cpp") || fs::exists(entry.path() / "MyAlgorithm.py"))) {
-        folders.push_back(entry.path().string());
-      }
-    }
-    if (folders.empty()) {
-      throw ConfigError("aula grade --known=" + options.known + ": no folder with MyAlgorithm.cpp or MyAlgorithm.py in it");
-    }
-    std::sort(folders.begin(), folders.end());
-    r.known = folders;
-  }
+  if (!options.known.empty()) r.known = knownFolders(options.known, r.similarity);
   return r;
 }
 
