@@ -61,7 +61,13 @@ fi
 # (bubblewrap) needs, so the sandbox's tests could not run in a chroot; and the root's /proc, /sys
 # and /dev exist only in that mount namespace, so none is left on the host when the command ends,
 # fails or is killed. --kill-child and the PID namespace end whatever the command started.
+# The root shares the host's network and name (no network or UTS namespace of its own), so it
+# resolves names as the host does: its resolv.conf and its hosts file, which names this machine.
+# debootstrap's hosts file names only localhost, and a program that looks up its own host name
+# failed (a Slurm daemon could not find its controller, `hostname -s`, and retried until the
+# Slurm test's timeout).
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+cp /etc/hosts "$root/etc/hosts"
 # 3. This checkout's HEAD as a clean clone inside the root (the build folder is kept between
 # stages: ccache does the rest).
 commit="$(git -C "$here" rev-parse HEAD)"
