@@ -10,14 +10,23 @@
 #   scripts/ci-debian13.sh              the whole stage
 #   scripts/ci-debian13.sh --all-tests  the same, but `./aula test` (every test, unit and
 #                                       integration, with the test set of packages) for the unit tests
+#   scripts/ci-debian13.sh --ctest REGEX  only `./aula test -R REGEX` in the root (everything built,
+#                                       the test set installed; each test's output shown, no
+#                                       exercise runs): one test, or a few, again after a fix
 #   AULA_DEBIAN13_ROOT=DIR scripts/ci-debian13.sh
 set -euo pipefail
+usage() { echo "usage: scripts/ci-debian13.sh [--all-tests | --ctest REGEX]" >&2; exit 2; }
+args=("$@")
 all_tests=0
-for arg in "$@"; do
-  case "$arg" in
+ctest_regex=""
+while [ $# -gt 0 ]; do
+  case "$1" in
     --all-tests) all_tests=1 ;;
-    *) echo "usage: scripts/ci-debian13.sh [--all-tests]" >&2; exit 2 ;;
+    --ctest) [ $# -ge 2 ] && [ -n "$2" ] || usage; ctest_regex="$2"; all_tests=1; shift ;;
+    --ctest=?*) ctest_regex="${1#--ctest=}"; all_tests=1 ;;
+    *) usage ;;
   esac
+  shift
 done
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${AULA_DEBIAN13_ROOT:-/var/cache/aula-ci/trixie}"
@@ -26,7 +35,7 @@ say() { echo "ci-debian13 [$((SECONDS - start_s)) s]: $*"; }
 
 if [ "$(id -u)" -ne 0 ]; then
   # As install-deps.sh does: sudo when it asks for no password, else say what is needed.
-  if command -v sudo >/dev/null && sudo -n true 2>/dev/null; then exec sudo -n "$0" "$@"; fi
+  if command -v sudo >/dev/null && sudo -n true 2>/dev/null; then exec sudo -n "$0" "${args[@]}"; fi
   echo "ci-debian13: needs root (debootstrap, namespaces and mount); run it as root or with sudo" >&2
   exit 2
 fi
@@ -52,7 +61,13 @@ fi
 # (bubblewrap) needs, so the sandbox's tests could not run in a chroot; and the root's /proc, /sys
 # and /dev exist only in that mount namespace, so none is left on the host when the command ends,
 # fails or is killed. --kill-child and the PID namespace end whatever the command started.
+# The root shares the host's network and name (no network or UTS namespace of its own), so it
+# resolves names as the host does: its resolv.conf and its hosts file, which names this machine.
+# debootstrap's hosts file names only localhost, and a program that looks up its own host name
+# failed (a Slurm daemon could not find its controller, `hostname -s`, and retried until the
+# Slurm test's timeout).
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+cp /etc/hosts "$root/etc/hosts"
 # 3. This checkout's HEAD as a clean clone inside the root (the build folder is kept between
 # stages: ccache does the rest).
 commit="$(git -C "$here" rev-parse HEAD)"
@@ -95,8 +110,13 @@ in_root "cmake --preset default -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_C
   cmake --build build -j\$(nproc) $targets >build/ci-build.log 2>&1 || { tail -60 build/ci-build.log; exit 1; }"
 say "built ($(in_root "ccache -s 2>/dev/null | grep -E '^ *Hits' | head -1 | tr -s ' '"))"
 
-# 6. The unit tests, or with --all-tests every test (./aula test installs the test set first).
-if [ "$all_tests" = 1 ]; then
+# 6. The unit tests, or with --all-tests every test (./aula test installs the test set first), or
+# with --ctest only the tests it names (and then nothing else: no exercise runs).
+if [ -n "$ctest_regex" ]; then
+  in_root "./aula test --timeout 1200 -R $(printf '%q' "$ctest_regex") 2>&1 | tee build/ci-ctest.log; exit \${PIPESTATUS[0]}"
+  say "the tests matching '$ctest_regex' passed"
+  exit 0
+elif [ "$all_tests" = 1 ]; then
   in_root "./aula test --timeout 1200 >build/ci-test.log 2>&1 ||
     { grep -E 'tests passed|Failed|\\*\\*\\*|Not Run|Skipped' build/ci-test.log | tail -60; exit 1; }
     grep -E 'tests passed|Total Test time' build/ci-test.log"

@@ -248,7 +248,8 @@ TEST(LauncherReports, OutsideGradingAStoppedComponentIsWaitedFor) {
                        dir + "/referee.log", dir + "/referee.log");
   std::this_thread::sleep_for(1500ms);
   stopFor(component.pid(), 3500ms);  // 3.5 times Simulator.Lockstep.DropAfterMs
-  EXPECT_EQ(referee.wait(60s).value_or(-1), 0) << readFile(dir + "/referee.log") << readFile(dir + "/sim.log");
+  EXPECT_EQ(referee.wait(60s).value_or(-1), 0) << readFile(dir + "/referee.log") << readFile(dir + "/sim.log")
+                                               << readFile(dir + "/component.log");
   const std::string json = readFile(report);
   EXPECT_NE(json.find("\"finished\": true"), std::string::npos) << json;
   EXPECT_EQ(json.find("aborted"), std::string::npos) << json;

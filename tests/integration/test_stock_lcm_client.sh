@@ -18,10 +18,10 @@ python3 -c 'import lcm' || fail "python-lcm is missing (scripts/install-deps.sh 
 mkdir "$work/types"
 lcm-gen -p --ppath "$work/types" "$source_dir"/lcmtypes/*.lcm >/dev/null
 
-python3 "$source_dir/tests/integration/stock_lcm_client.py" "$url" "$work/types" "$work/ready" \
+python3 "$source_dir/tests/integration/stock_lcm_client.py" "$url" "$work/types" "$work/ready" "$work/stop" \
   >"$work/seen.txt" 2>"$work/client.txt" &
 listener=$!
-for _ in $(seq 100); do [ -e "$work/ready" ] && break; sleep 0.1; done
+while [ ! -e "$work/ready" ] && kill -0 "$listener" 2>/dev/null; do sleep 0.1; done  # however slow its start
 [ -e "$work/ready" ] || fail "python-lcm did not start"
 
 # Paced at real time: lockstep waits for its clients, never for an observer, and a Python
@@ -30,6 +30,11 @@ for _ in $(seq 100); do [ -e "$work/ready" ] && break; sleep 0.1; done
 # the reference's belief maps). At 1x the decoder needs a fifth of a core.
 "$build/bin/aula" run vacuum --headless --rtf=1 --algorithm=reference --seed=3 --Vacuum.Referee.Duration=30 \
   --report="$work/report.json" --lcm-url="$url" >"$work/run.txt" 2>&1 || fail "the run failed"
+# The run is over: the client reads what is queued up to the poses the referee graded, then ends
+# (it never guesses the run's end from a silence, which a loaded machine can make at any time).
+graded=$(grep '"pose_messages"' "$work/report.json" | sed 's/[^0-9]//g')
+[ -n "$graded" ] || fail "the report has no pose_messages"
+echo "$graded" >"$work/stop.tmp" && mv "$work/stop.tmp" "$work/stop"
 wait "$listener" || fail "python-lcm could not decode every message"
 listener=""
 
@@ -38,7 +43,6 @@ for expected in "SIM_CLOCK sim_clock_t" "SIM_LOCKSTEP_REGISTER lockstep_register
                 "VACUUM_EPISODE episode_t" "VACUUM_BELIEF belief_t"; do
   grep -q "^$expected [0-9]" "$work/seen.txt" || fail "python-lcm never saw $expected"
 done
-graded=$(grep '"pose_messages"' "$work/report.json" | sed 's/[^0-9]//g')
 seen=$(awk '$1 == "ROOMBA_POSE" {print $3}' "$work/seen.txt")
 [ "$seen" -ge "$graded" ] || fail "python-lcm saw $seen poses, the referee graded $graded"
 echo "python-lcm decoded every channel:"; cat "$work/seen.txt"

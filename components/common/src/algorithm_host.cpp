@@ -3,6 +3,7 @@
 #include <aula/component/algorithm_plugin.hpp>
 #include <aula/component/crash_report.hpp>
 #include <aula/component/memory_limit.hpp>
+#include <aula/component/throw_site.hpp>
 #include <aula/config/paths.hpp>
 
 #include <cxxabi.h>
@@ -11,6 +12,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <typeinfo>
@@ -58,6 +60,8 @@ std::string faultOf(const char* what, const std::function<void()>& call, const P
     InCall() { in_student_call = true; }
     ~InCall() { in_student_call = false; }
   } in_call;
+  std::optional<KeepThrowSites> keep_throw_sites;  // a C++ plugin's: a Python host says its own lines
+  if (plugin != nullptr && !PluginLibrary::isPythonFile(plugin->path())) keep_throw_sites.emplace();
   try {
     call();
   } catch (const AlgorithmFault& e) {

@@ -65,9 +65,11 @@ void LockstepClient::sendRegister(bool leave) {
 }
 
 std::string LockstepClient::simulatorGone(std::chrono::steady_clock::time_point now) const {
+  if (last_look_ == std::chrono::steady_clock::time_point{} || now - last_look_ > kLookGap) watched_from_ = now;
+  last_look_ = std::max(last_look_, now);
   if (!instance_locked_) return "";
   if (!last_tick_.ended.empty()) return "the simulator ended the run: " + last_tick_.ended;
-  if (!silence_means_gone_ || now - last_clock_ < kSimulatorSilence) return "";
+  if (!silence_means_gone_ || now - std::max(last_clock_, watched_from_) < kSimulatorSilence) return "";
   return "the simulator stopped (no " + std::string(kClockChannel) + " for " + std::to_string(kSimulatorSilence.count()) +
          " s of wall time)";
 }

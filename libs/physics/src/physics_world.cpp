@@ -247,10 +247,17 @@ void PhysicsWorld::refreshNearStatics(bool force) {
   near_set_ = std::move(wanted);
   // Detach the old shapes from the collision group while they still exist: DART 6.12 would
   // otherwise destroy their collision objects after the shape frames are gone (use after free).
+  // Then remove them one by one from a list taken first: DART 6.13's removeAllShapeNodes()
+  // removes while it iterates and leaves every other node (on Debian 13 the old shapes piled up
+  // on the body, each new one with a duplicate name that DART renamed and printed).
   const auto group = world_->getConstraintSolver()->getCollisionGroup();
   // By index: getShapeNodes() is deprecated in DART 6.13 (eachShapeNode is not in 6.12).
-  for (std::size_t n = 0; n < near_body_->getNumShapeNodes(); ++n) group->removeShapeFrame(near_body_->getShapeNode(n));
-  near_body_->removeAllShapeNodes();
+  std::vector<dart::dynamics::ShapeNode*> old_nodes;
+  for (std::size_t n = 0; n < near_body_->getNumShapeNodes(); ++n) old_nodes.push_back(near_body_->getShapeNode(n));
+  for (auto* node : old_nodes) {
+    group->removeShapeFrame(node);
+    node->remove();
+  }
   for (const int i : near_set_) {
     auto* node = near_body_->createShapeNodeWith<CollisionAspect, DynamicsAspect>(statics_[i].shape, statics_[i].name);
     node->setRelativeTransform(statics_[i].pose);

@@ -35,6 +35,11 @@ chmod 700 "$work/munge"
   || fail "munged did not start"
 
 host="$(hostname -s)"
+# Slurm's daemons and commands find the controller and the node by this name: where it does not
+# resolve, each of them retries for seconds and the cluster never comes up (the test would only
+# time out), so say it at once.
+getent hosts "$host" >/dev/null ||
+  fail "this machine's name '$host' does not resolve (not in /etc/hosts nor DNS): Slurm's daemons find each other by it"
 cat >"$work/slurm.conf" <<CONF
 ClusterName=aulatest
 SlurmctldHost=$host

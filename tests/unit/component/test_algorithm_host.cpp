@@ -15,6 +15,7 @@
 #include <memory>
 #include <regex>
 #include <thread>
+#include <vector>
 
 namespace fs = std::filesystem;
 using aula::component::AlgorithmHost;
@@ -141,6 +142,42 @@ TEST_F(AlgorithmHostReload, APythonLoopWithWindowsIsInterruptedAtItsLineAndReloa
   EXPECT_TRUE(host.reload()) << host.fault();
   EXPECT_TRUE(run()) << host.fault();
   EXPECT_EQ(devices->motors.nonFiniteV(), 1);  // the new file ran: it sends NaN
+}
+
+// With windows (containHangs), a program in RoboticsAcademy's shape paused in its loop (a greenlet
+// of the AlgorithmThread) is ended at Reload by that thread, before reload() returns: its
+// `finally` has run there, and the fresh program runs. Ending it throws inside greenlet (C++),
+// on the greenlet's stack: a throw site kept there (backtrace()) crashed the process (SIGSEGV;
+// gui.RoboticsAcademyProgramWithWindowsReloadsAndParks on Debian 13, at the next call).
+TEST_F(AlgorithmHostReload, AProgramPausedWithWindowsIsEndedOnItsOwnThreadAtReload) {
+  auto devices = std::make_shared<Devices>();
+  const fs::path file = dir_ / "MyAlgorithm.py";
+  std::ofstream(file) << "import threading, time\n"
+                         "open('" << (dir_ / "ran").string() << "', 'a').write(str(threading.get_ident()) + '\\n')\n"
+                         "try:\n"
+                         "    while True:\n"
+                         "        time.sleep(0.1)  # the sim clock stands still here: paused for good\n"
+                         "finally:\n"
+                         "    open('" << (dir_ / "ended").string() << "', 'a').write(str(threading.get_ident()) + '\\n')\n";
+  AlgorithmHost<VacuumAlgorithm> host("test", "vacuum", file.string(), devices->motors, withExecuteBudget(5));
+  host.containHangs();
+  auto run = [&] { return host.call(1, "execute()", CallKind::Execute, [devices](VacuumAlgorithm& a) { a.execute(devices->api); }); };
+  auto lines = [](const fs::path& path) {
+    std::ifstream in(path);
+    std::vector<std::string> out;
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+  };
+  for (int reload = 1; reload <= 3; ++reload) {
+    for (int call = 1; call <= 3; ++call) EXPECT_TRUE(run()) << reload << "." << call << ": " << host.fault();
+    EXPECT_TRUE(host.reload()) << host.fault();
+    const auto ran = lines(dir_ / "ran"), ended = lines(dir_ / "ended");
+    ASSERT_EQ(ran.size(), static_cast<size_t>(reload));
+    ASSERT_EQ(ended.size(), static_cast<size_t>(reload)) << "the paused program was not ended at Reload";
+    EXPECT_EQ(ended.back(), ran.back()) << "the program was ended on another thread than its own";
+  }
+  EXPECT_TRUE(run()) << host.fault();
+  EXPECT_EQ(lines(dir_ / "ran").size(), 4u);
 }
 
 namespace {

@@ -133,18 +133,38 @@ TEST(LockstepClient, RegistersAgainWhenASimulatorSaysHello) {
 }
 
 // The simulator is gone for a client once it has followed it: when its clock has been silent for
-// 2 s of wall time (killed), or at once when its last tick says it ended the run.
+// 2 s of wall time that the client watched (killed), or at once when its last tick says it ended
+// the run. A client that was itself stopped (a debugger, SIGSTOP) does not take its own absence
+// for the simulator's silence: what was sent meanwhile is still queued, unread.
 TEST(LockstepClient, KnowsWhenItsSimulatorIsGone) {
+  using namespace std::chrono_literals;
   Bus bus("memq://");
   LockstepClient client(bus, "ctl", 20000, nullptr);
-  const auto later = std::chrono::steady_clock::now() + LockstepClient::kSimulatorSilence + std::chrono::seconds(1);
-  EXPECT_EQ(client.simulatorGone(later), "") << "no simulator yet: it waits for one";
+  EXPECT_EQ(client.simulatorGone(std::chrono::steady_clock::now() + 3s), "") << "no simulator yet: it waits for one";
 
   auto listed = tick(kOurs, 0, 0, {"ctl"});
   bus.publish(aula::lcmbus::kClockChannel, &listed);
   drain(bus);
-  EXPECT_EQ(client.simulatorGone(), "");
-  EXPECT_EQ(client.simulatorGone(later), "the simulator stopped (no SIM_CLOCK for 2 s of wall time)");
+  // Looks every 0.1 s (the component's housekeeping: every 50 ms) for `how_long`: what the last one said.
+  auto t = std::chrono::steady_clock::now() + 5s;  // well after the look above
+  auto watch = [&](std::chrono::steady_clock::duration how_long) {
+    std::string said;
+    for (const auto end = t + how_long; t < end;) said = client.simulatorGone(t += 100ms);
+    return said;
+  };
+  EXPECT_EQ(client.simulatorGone(t), "") << "the look after a gap of its own starts the watch";
+  EXPECT_EQ(watch(1900ms), "");
+  EXPECT_EQ(watch(200ms), "the simulator stopped (no SIM_CLOCK for 2 s of wall time)");
+
+  // Stopped for 3.5 s right after a look: its own absence, not the simulator's silence.
+  bus.publish(aula::lcmbus::kClockChannel, &listed);
+  drain(bus);
+  t = std::chrono::steady_clock::now() + 10s;
+  EXPECT_EQ(client.simulatorGone(t), "");
+  t += 3500ms;
+  EXPECT_EQ(client.simulatorGone(t), "") << "its own absence was taken for the simulator's silence";
+  EXPECT_EQ(watch(1900ms), "");
+  EXPECT_EQ(watch(200ms), "the simulator stopped (no SIM_CLOCK for 2 s of wall time)") << "watched, the silence counts";
 
   auto foreign = tick(kOther, 5, 100000, {"ctl"});
   foreign.ended = "not ours";

@@ -1,8 +1,13 @@
 #include <aula/physics/physics_world.hpp>
 
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/ShapeNode.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#include <dart/simulation/World.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 using aula::physics::PhysicsWorld;
 using namespace aula::world;
@@ -150,6 +155,15 @@ TEST(PhysicsWorld, LongDrivesThroughManyObstaclesNeverPassThrough) {
       }
     }
     EXPECT_LT(p.nearStaticCount(), 20);
+    // The collision body holds the near set and nothing else: each rebuild removes every old
+    // shape (DART 6.13's removeAllShapeNodes() left every other one), so no name is ever a
+    // duplicate that DART renames ("north_3(1)").
+    const auto* near = p.dartWorld()->getSkeleton("statics_near")->getBodyNode(0);
+    ASSERT_EQ(static_cast<int>(near->getNumShapeNodes()), p.nearStaticCount()) << "step " << i;
+    std::set<std::string> names;
+    for (std::size_t n = 0; n < near->getNumShapeNodes(); ++n) names.insert(near->getShapeNode(n)->getName());
+    ASSERT_EQ(names.size(), near->getNumShapeNodes()) << "step " << i;
+    for (const std::string& name : names) ASSERT_EQ(name.find('('), std::string::npos) << "step " << i;
   }
   EXPECT_GT(p.robotState(0).position_m.x(), 30.0) << "it should slide along the corridor";
 }

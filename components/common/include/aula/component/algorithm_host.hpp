@@ -87,6 +87,8 @@ class AlgorithmHostBase {
   // (the algorithm, the plugin, the devices) is never touched or freed again; end the process
   // with std::_Exit. `hook` runs once, when it happens (the component freezes its devices).
   bool hung() const { return hung_; }
+  // Calls run on an AlgorithmThread (containHangs).
+  bool containsHangs() const { return thread_ != nullptr; }
   // A call crashed (with windows, where a crash inside a call is survived): the algorithm it
   // ran in is left as the crash left it, never destroyed (its destructor could crash again).
   bool crashed() const { return crashed_; }
@@ -161,6 +163,14 @@ class AlgorithmHost : public AlgorithmHostBase {
  private:
   void dropAlgorithm() {
     if (crashed_) abandonAfterCrash(algorithm_.release());  // left as the crash left it
+    if (algorithm_ && containsHangs() && !hung()) {
+      // Ended on the thread its calls ran on, under the watchdog like a call: a Python program
+      // paused there (a greenlet of that thread) is ended by that thread, its `finally` run at
+      // Reload. Ended from the window's thread, greenlet put it off to the next call on the
+      // AlgorithmThread: the old program's last words ran inside the new one's first call.
+      Algorithm* algorithm = algorithm_.release();
+      guarded("ending the algorithm", budgets().execute, [algorithm] { delete algorithm; });
+    }
     algorithm_.reset();
     crashed_ = false;
   }

@@ -15,4 +15,21 @@ struct ThrowStack {
 
 const ThrowStack& lastThrowOnThisThread();
 
+// Throw sites are kept on this thread only while one of these lives: around a call into a C++
+// plugin, the only place whose throw site is ever named. Never in a Python algorithm's calls:
+// they run on greenlets, which throw C++ exceptions of their own (a paused program ended with
+// GreenletExit), and the unwinder cannot walk a greenlet's stack past its start: backtrace() read
+// what lay beyond it and crashed the component (SIGSEGV at the first call after a Reload,
+// gui.RoboticsAcademyProgramWithWindowsReloadsAndParks on Debian 13).
+class KeepThrowSites {
+ public:
+  KeepThrowSites();
+  ~KeepThrowSites();
+  KeepThrowSites(const KeepThrowSites&) = delete;
+  KeepThrowSites& operator=(const KeepThrowSites&) = delete;
+
+ private:
+  bool was_;
+};
+
 }  // namespace aula::component

@@ -63,7 +63,13 @@ class LockstepClient {
   // client): its last tick said it ended the run (sim_clock_t.ended), or it has not ticked for
   // kSimulatorSilence of wall time (killed, crashed: a running simulator ticks at least every
   // 100 ms, paused, paced or waiting).
+  // The silence counts only while this client watches: a look more than kLookGap after the
+  // previous one means this process itself was stopped (a debugger, SIGSTOP) or starved, and
+  // what the simulator sent meanwhile is still queued, unread; the silence is then counted from
+  // that look on, never across the process's own absence. Looks come from the component's
+  // housekeeping, every 50 ms or so.
   static constexpr std::chrono::seconds kSimulatorSilence{2};
+  static constexpr std::chrono::seconds kLookGap{1};
   // Under a launcher (`aula run`), which sees at once when the simulator's process is gone,
   // silence is never taken for its end: a stopped or starved simulator is waited for.
   void watchedByLauncher() { silence_means_gone_ = false; }
@@ -99,6 +105,8 @@ class LockstepClient {
   std::chrono::steady_clock::time_point last_foreign_log_{};
   std::chrono::steady_clock::time_point last_register_{};
   std::chrono::steady_clock::time_point last_clock_{};  // wall time of our simulator's last tick
+  mutable std::chrono::steady_clock::time_point last_look_{};     // simulatorGone()'s previous call
+  mutable std::chrono::steady_clock::time_point watched_from_{};  // silence counts from here at the earliest
   std::string expected_world_sha256_, expected_world_path_;
   std::string world_mismatch_;  // set by a tick of another world
   bool silence_means_gone_ = true;
