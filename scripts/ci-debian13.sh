@@ -13,14 +13,19 @@
 #   scripts/ci-debian13.sh --ctest REGEX  only `./aula test -R REGEX` in the root (everything built,
 #                                       the test set installed; each test's output shown, no
 #                                       exercise runs): one test, or a few, again after a fix
+#   scripts/ci-debian13.sh --marks SEEDS  only bench/marks_across_releases.sh in the root (the
+#                                       exercises built, no tests): the references' marks over
+#                                       SEEDS (1-5), to diff with the same script on Debian 12
 #   AULA_DEBIAN13_ROOT=DIR scripts/ci-debian13.sh
 set -euo pipefail
-usage() { echo "usage: scripts/ci-debian13.sh [--all-tests | --ctest REGEX]" >&2; exit 2; }
+usage() { echo "usage: scripts/ci-debian13.sh [--all-tests | --ctest REGEX | --marks SEEDS]" >&2; exit 2; }
 args=("$@")
 all_tests=0
 ctest_regex=""
+marks_seeds=""
 while [ $# -gt 0 ]; do
   case "$1" in
+    --marks) [ $# -ge 2 ] && [[ "$2" =~ ^[0-9]+-[0-9]+$ ]] || usage; marks_seeds="$2"; shift ;;
     --all-tests) all_tests=1 ;;
     --ctest) [ $# -ge 2 ] && [ -n "$2" ] || usage; ctest_regex="$2"; all_tests=1; shift ;;
     --ctest=?*) ctest_regex="${1#--ctest=}"; all_tests=1 ;;
@@ -109,6 +114,11 @@ targets="--target aula_unit_tests aula_all_exercises"
 in_root "cmake --preset default -DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache >/dev/null &&
   cmake --build build -j\$(nproc) $targets >build/ci-build.log 2>&1 || { tail -60 build/ci-build.log; exit 1; }"
 say "built ($(in_root "ccache -s 2>/dev/null | grep -E '^ *Hits' | head -1 | tr -s ' '"))"
+
+if [ -n "$marks_seeds" ]; then
+  in_root "bench/marks_across_releases.sh build $marks_seeds"
+  exit 0
+fi
 
 # 6. The unit tests, or with --all-tests every test (./aula test installs the test set first), or
 # with --ctest only the tests it names (and then nothing else: no exercise runs).
