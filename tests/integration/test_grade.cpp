@@ -287,11 +287,31 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
             "        if min(ranges[85:95]) < 0.5:\n            self.turn_until = self.t + 1.2\n"
             "        turning = self.t < self.turn_until\n        api.motors.sendV(0.0 if turning else 0.3)\n"
             "        api.motors.sendW(-1.3 if turning else 0.25)\n");
+  // Two students who both started from `aula new`'s template, each with code of their own: what
+  // the template gives everyone is no likeness.
+  const std::string templ = readFile(std::string(AULA_SOURCE_DIR) + "/components/vacuum/student/MyAlgorithm.cpp");
+  auto fromTemplate = [&](const std::string& body, const std::string& members) {
+    std::string source = templ;
+    const std::string todo = "    // TODO: your cleaning strategy.\n    api.motors.sendV(0.0);\n    api.motors.sendW(0.0);\n  }\n";
+    const size_t at = source.find(todo);
+    EXPECT_NE(at, std::string::npos) << "the template changed";
+    return at == std::string::npos ? source : source.replace(at, todo.size(), body + "  }\n private:\n" + members);
+  };
+  writeFile(subs / "gina" / "MyAlgorithm.cpp",
+            fromTemplate("    t_ += api.period_s;\n    if (api.bumper.getBumperData().state == 1) until_ = t_ + 0.8;\n"
+                         "    const bool turning = t_ < until_;\n    api.motors.sendV(turning ? -0.1 : 0.25);\n"
+                         "    api.motors.sendW(turning ? -2.0 : 0.0);\n",
+                         "  double t_ = 0, until_ = 0;\n"));
+  writeFile(subs / "hugo" / "MyAlgorithm.cpp",
+            fromTemplate("    since_bump_s_ += api.period_s;\n    if (api.bumper.getBumperData().state == 1) since_bump_s_ = 0;\n"
+                         "    api.motors.sendV(since_bump_s_ < 1.0 ? -0.15 : 0.35);\n"
+                         "    api.motors.sendW(since_bump_s_ < 1.0 ? 1.2 : 1.8 / (1.0 + 0.1 * since_bump_s_));\n",
+                         "  double since_bump_s_ = 0;\n"));
   // The teacher's own solution, which eli copied: --known compares it with everyone, by code too.
   fs::create_directories(dir / "known" / "spiral");
   fs::copy_file(subs / "eli" / "MyAlgorithm.cpp", dir / "known" / "spiral" / "MyAlgorithm.cpp");
   std::vector<std::string> grade = {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum"};
-  for (const char* name : {"ana", "ben", "carla", "dani", "eli", "fran"}) grade.push_back((subs / name).string());
+  for (const char* name : {"ana", "ben", "carla", "dani", "eli", "fran", "gina", "hugo"}) grade.push_back((subs / name).string());
   grade.insert(grade.end(), {"--seeds=1", "--jobs=2", "--out=" + (dir / "out").string(), "--Vacuum.Referee.Duration=60",
                              "--known=" + (dir / "known").string()});
   ASSERT_EQ(runToEnd(grade, (dir / "grade.txt").string(), 300), 0) << readFile((dir / "grade.txt").string());
@@ -304,9 +324,9 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
     const auto fields = csvFields(line);
     pairs[fields[0] + "~" + fields[1]] = fields;
   }
-  // Every pair of the six, and each of them with each of the vacuum's three built-ins and the
+  // Every pair of the eight, and each of them with each of the vacuum's three built-ins and the
   // teacher's solution (never two known algorithms together).
-  ASSERT_EQ(pairs.size(), 15u + 6u * 4u) << csv;
+  ASSERT_EQ(pairs.size(), 28u + 8u * 4u) << csv;
   auto flagged = [&](const std::string& pair) { return pairs.count(pair) != 0 && pairs[pair][2] == "yes"; };
   EXPECT_TRUE(flagged("ana~ben")) << csv;
   EXPECT_GE(std::stod(pairs["ana~ben"][3]), 0.6) << csv;
@@ -314,6 +334,9 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   EXPECT_TRUE(flagged("ana~carla")) << csv;
   EXPECT_LT(std::stod(pairs["ana~carla"][3]), 0.6) << "flagged on behaviour, not code\n" << csv;
   EXPECT_LE(std::stod(pairs["ana~carla"][4]), 0.05) << csv;
+  auto rows = readGrades((dir / "out" / "grades.csv").string());
+  for (const char* student : {"gina", "hugo"}) EXPECT_EQ(rows[student]["runs_failed"], "0") << student << ": it built and ran";
+  EXPECT_EQ(pairs["gina~hugo"][2], "no") << "both from the template, each with code of its own\n" << csv;
   // dani handed in the classic reference's source: flagged with it, by the path its robot drove.
   EXPECT_TRUE(flagged("dani~reference 'classic'")) << csv;
   EXPECT_LE(std::stod(pairs["dani~reference 'classic'"][4]), 0.05) << csv;
@@ -321,7 +344,8 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   EXPECT_GE(std::stod(pairs["eli~known 'spiral'"][3]), 0.6) << "its code, which the teacher gave\n" << csv;
   for (const auto& [pair, fields] : pairs) {
     const bool independent = pair.find("dani") != std::string::npos || pair.find("eli") != std::string::npos ||
-                             pair.find("fran") != std::string::npos;
+                             pair.find("fran") != std::string::npos || pair.find("gina") != std::string::npos ||
+                             pair.find("hugo") != std::string::npos;
     if (independent && pair != "dani~reference 'classic'" && pair != "eli~known 'spiral'") {
       EXPECT_EQ(fields[2], "no") << pair << "\n" << csv;
     }
