@@ -71,7 +71,8 @@ grade() {  # OUT JOBS
   echo "$((SECONDS - t0))"
 }
 
-marks() { python3 -c 'import csv,sys; [print(r["student"], r["median"], r["failures"] or "-") for r in sorted(csv.DictReader(open(sys.argv[1])), key=lambda r: r["student"])]' "$1/grades.csv"; }
+# Each student's row as "student<TAB>median<TAB>failures" (a failure's text has spaces).
+marks() { python3 -c 'import csv,sys; [print(r["student"], r["median"], r["failures"] or "-", sep="\t") for r in sorted(csv.DictReader(open(sys.argv[1])), key=lambda r: r["student"])]' "$1/grades.csv"; }
 unfinished() { grep -L '"finished": true' "$1"/runs/*/*.json | grep -v -e '\.trace\.json$' -e '\.report\.json$' || true; }
 
 alone_s=$(grade "$work/alone" 1)
@@ -83,7 +84,8 @@ loaded_s=$(grade "$work/loaded" 2)
 busy=()
 
 echo "alone, --jobs=1: ${alone_s} s; beside ${loops} busy loops, --jobs=2: ${loaded_s} s (seeds ${seeds}, $(nproc) CPUs)"
-paste <(marks "$work/alone") <(marks "$work/loaded") | awk '{ printf "%-8s alone %-10s loaded %-10s %s\n", $1, $2, $5, ($2 == $5 ? "same" : "DIFFERENT") }'
+paste <(marks "$work/alone") <(marks "$work/loaded") |
+  awk -F'\t' '{ printf "%-8s alone %-10s loaded %-10s %s\n", $1, $2, $5, ($2 == $5 && $3 == $6 ? "same" : "DIFFERENT") }'
 status=0
 diff <(marks "$work/alone") <(marks "$work/loaded") >/dev/null || { echo "the marks differ"; status=1; }
 for out in alone loaded; do

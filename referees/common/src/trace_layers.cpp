@@ -131,10 +131,10 @@ void TraceLayers::onLaser(size_t index, const aula::laser_t& msg) {
   laser.min_angle_rad = msg.min_angle;
   laser.increment_rad = msg.angle_increment * kBeamStep;
   laser.max_range_m = msg.max_range;
-  std::vector<int32_t> ranges;
+  std::vector<int64_t> ranges;
   for (size_t i = 0; i < msg.ranges.size(); i += kBeamStep) {
     const double range_m = std::isfinite(msg.ranges[i]) ? std::min<double>(msg.ranges[i], msg.max_range) : msg.max_range;
-    ranges.push_back(static_cast<int32_t>(std::lround(range_m * 100.0)));
+    ranges.push_back(std::llround(range_m * 100.0));
   }
   laser.utimes.push_back(msg.utime);
   laser.ranges_cm.push_back(std::move(ranges));
@@ -231,9 +231,8 @@ void TraceLayers::addTo(Report& trace) const {
     bool first = true;
     for (size_t k = 0; k < l.utimes.size(); ++k) {
       if (!inEpisode(l.utimes[k])) continue;
-      const std::vector<int32_t>& cm = l.ranges_cm[k];
       lasers += std::string(first ? "" : ",") + "\n  {\"t_s\": " + t_of(l.utimes[k]) + ", \"cm\": " +
-                deltaArray(std::vector<int64_t>(cm.begin(), cm.end())) + "}";
+                deltaArray(l.ranges_cm[k]) + "}";
       first = false;
     }
     lasers += "]}";

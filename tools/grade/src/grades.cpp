@@ -56,10 +56,12 @@ std::vector<nlohmann::json> readResults(const std::string& out_dir, const std::s
   std::vector<fs::path> files;
   const fs::path runs = fs::path(out_dir) / folder;
   if (fs::is_directory(runs)) {
-    for (const auto& entry : fs::recursive_directory_iterator(runs)) {
+    for (auto it = fs::recursive_directory_iterator(runs); it != fs::recursive_directory_iterator(); ++it) {
+      const fs::directory_entry& entry = *it;
       const std::string name = entry.path().filename().string();
-      if (entry.is_directory() && entry.path().filename() == "build" && entry.path().parent_path() == runs) {
-        continue;  // OUT/known/build: the teacher's solutions' builds
+      if (folder == "known" && it.depth() == 0 && entry.is_directory() && name == "build") {
+        it.disable_recursion_pending();  // OUT/known/build: the teacher's solutions' builds, not runs
+        continue;
       }
       const bool result = entry.is_regular_file() && entry.path().extension() == ".json" &&
                           name.find(".report.json") == std::string::npos && name.find(".trace.json") == std::string::npos;

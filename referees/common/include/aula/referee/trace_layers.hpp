@@ -62,7 +62,7 @@ class TraceLayers {
     double mount_x_m = 0, mount_y_m = 0, mount_yaw_rad = 0;
     double min_angle_rad = 0, increment_rad = 0, max_range_m = 0;
     std::vector<int64_t> utimes;
-    std::vector<std::vector<int32_t>> ranges_cm;  // a beam with no hit: its max range
+    std::vector<std::vector<int64_t>> ranges_cm;  // a beam with no hit: its max range
     int64_t next_us = 0;
   };
   struct BeliefMapShot {
