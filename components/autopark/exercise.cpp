@@ -92,8 +92,9 @@ settings::Exercise declareExercise() {
   e.episode_key = "Autopark.Referee.Timeout";
   e.physics_step_s = 0.005;
   // The time allowance: the thesis's reactive parker's time on that street.
-  e.calibration = settings::ExerciseCalibration{"park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"}, {},
-                                                "parked", "planner"};
+  e.calibration = settings::ExerciseCalibration{"park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"},
+                                                {"Autopark.MaxV", "Autopark.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"}, "parked",
+                                                "planner"};
   e.generator = settings::WorldGenerator{"street", "make_autopark.py", 0.1};
   e.referee_scene = "parking_street";
   return e;

@@ -96,7 +96,8 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.005;
   // The speed scale: the reference's driving time to that destination.
   e.calibration = settings::ExerciseCalibration{"driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
-                                                {"TeleTaxi.Destination"}, "reached", ""};
+                                                {"TeleTaxi.Destination", "TeleTaxi.MaxV", "TeleTaxi.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"},
+                                                "reached", ""};
   e.generator = settings::WorldGenerator{"city", "make_city.py", 1.25};
   return e;
 }

@@ -87,7 +87,9 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.010;
   // The coverage scale: the random-bounce baseline's median at a 5, the reference's at a 10.
   e.calibration = settings::ExerciseCalibration{"coverage_percent", "bounce", "reference",
-                                                {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"}, {}, "", ""};
+                                                {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"},
+                                                {"Vacuum.Referee.Duration", "Vacuum.MaxV", "Vacuum.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"},
+                                                "", ""};
   e.generator = settings::WorldGenerator{"house", "make_house.py", 0.05};
   return e;
 }

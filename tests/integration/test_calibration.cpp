@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 using namespace std::chrono_literals;
 using aula::testing::jsonNumber;
@@ -106,6 +107,35 @@ TEST(Calibration, IsAppliedNamedAndRefusedForAnotherVersionOfTheWorld) {
   EXPECT_NE(foreign_key.output.find("'Vacuum.MaxV' is not a calibrated rubric setting"), std::string::npos)
       << foreign_key.output;
 
+  // The calibration records what a run can reach besides the world (issue 38): a run with
+  // other noise, another episode length or other speed limits is refused before it starts.
+  std::ofstream(rubric_file, std::ios::trunc) << text;
+  EXPECT_NE(text.find("Calibration.Setting.Vacuum.Referee.Duration = 900\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("Calibration.Setting.Simulator.Noise.WheelSlip = 0\n"), std::string::npos) << text;
+  const std::vector<std::pair<std::string, std::string>> unfit = {
+      {"--Simulator.Noise=realistic", "calibrated for Simulator.Noise.LaserStddev = 0, and this run's is 0.01 (preset realistic"},
+      {"--Vacuum.Referee.Duration=120", "calibrated for Vacuum.Referee.Duration = 900, and this run's is 120 (command line"},
+      {"--Vacuum.MaxW=2", "calibrated for Vacuum.MaxW = 3.0, and this run's is 2 (command line"}};
+  for (const auto& [setting, said] : unfit) {
+    const auto refused = runToEnd({kAula, "run", "vacuum", "--headless", "--world=" + world, setting});
+    EXPECT_EQ(refused.code.value_or(-1), 2) << setting << ": " << refused.output;
+    EXPECT_NE(refused.output.find(rubric_file + ":"), std::string::npos) << refused.output;
+    EXPECT_NE(refused.output.find(said), std::string::npos) << refused.output;
+  }
+  // A file made before Aula recorded a setting counts as made with the shipped value.
+  std::string unrecorded;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("Calibration.Setting.", 0) != 0) unrecorded += line + "\n";
+  }
+  std::ofstream(rubric_file, std::ios::trunc) << unrecorded;
+  EXPECT_EQ(runToEnd({kAula, "config", "vacuum", "--world=" + world}).code.value_or(-1), 0);
+  const auto old_file = runToEnd({kAula, "config", "vacuum", "--world=" + world, "--Vacuum.MaxV=0.3"});
+  EXPECT_EQ(old_file.code.value_or(-1), 2) << old_file.output;
+  EXPECT_NE(old_file.output.find("made before Aula recorded Vacuum.MaxV: the shipped value): calibrated for Vacuum.MaxV = 0.5"),
+            std::string::npos)
+      << old_file.output;
+
   std::ofstream(rubric_file, std::ios::trunc) << text;
   std::ofstream(world, std::ios::app) << "<!-- a wall moved -->\n";
   const auto stale = runToEnd({kAula, "run", "vacuum", "--headless", "--world=" + world, "--algorithm=bounce"});
@@ -178,5 +208,54 @@ TEST(CalibratedCity, AStudentSlowerThanTheReferenceGetsALowerMarkOnEveryDestinat
   EXPECT_EQ(other.code.value_or(-1), 2) << other.output;
   EXPECT_NE(other.output.find("calibrated for TeleTaxi.Destination = 220,240, and this run's is -40,40"), std::string::npos)
       << other.output;
+  std::filesystem::remove_all(dir);
+}
+
+// A grade whose settings change what a run can reach (issue 38) does not use a calibration made
+// for others: beside a world calibrated for 120 s episodes, a grade of 150 s calibrates the world
+// itself (saying why) and its runs name that calibration; a grade of 120 s uses the world's own.
+// A grade of Aula's own house with noise calibrates it too (its rubric was made without).
+TEST(Calibration, AGradeWithOtherSettingsMakesItsOwn) {
+  namespace fs = std::filesystem;
+  const std::string dir = aula::testing::privateDir();
+  const std::string world = makeHouse(dir, {"--seed", "5", "--rooms-x", "2", "--rooms-y", "1"});
+  const auto calibrated = runToEnd({kAula, "calibrate", "vacuum", "--world=" + world, "--seeds=1", "--jobs=1",
+                                    "--Vacuum.Referee.Duration=120", "--out=" + dir + "/calibration"},
+                                   120s);
+  ASSERT_EQ(calibrated.code.value_or(-1), 0) << calibrated.output;
+  fs::create_directories(dir + "/class/ana");
+  fs::copy_file(std::string(AULA_TEST_DATA_DIR) + "/python/vacuum_bounce/MyAlgorithm.py", dir + "/class/ana/MyAlgorithm.py");
+  // `on`: the world graded ("" for the exercise's own, vacuum.world).
+  auto grade = [&](const std::string& out, const std::string& on, const std::vector<std::string>& settings) {
+    std::vector<std::string> command = {kAula, "grade", "vacuum", dir + "/class/ana", "--seeds=1",
+                                        "--calibration-seeds=1", "--jobs=1", "--out=" + dir + "/" + out};
+    if (!on.empty()) command.push_back("--worlds=" + on);
+    command.insert(command.end(), settings.begin(), settings.end());
+    const auto graded = runToEnd(command, 300s);
+    EXPECT_EQ(graded.code.value_or(-1), 0) << graded.output;
+    const std::string name = on.empty() ? "vacuum" : "house";
+    return graded.output + readFile(dir + "/" + out + "/runs/ana/" + name + "-seed1.json");
+  };
+  const std::string same = grade("same", world, {"--Vacuum.Referee.Duration=120"});
+  EXPECT_EQ(same.find("calibrating"), std::string::npos) << same;
+  EXPECT_NE(same.find("\"calibration\": \"house.rubric.cfg\""), std::string::npos) << same;
+  const std::string longer = grade("longer", world, {"--Vacuum.Referee.Duration=150"});
+  EXPECT_NE(longer.find("house.world: house.rubric.cfg was calibrated for Vacuum.Referee.Duration = 120, and this grade's is "
+                        "150: calibrating for this grade"),
+            std::string::npos)
+      << longer;
+  EXPECT_NE(longer.find("\"calibration\": \"house-"), std::string::npos) << longer;
+  bool recorded = false;
+  for (const auto& entry : fs::directory_iterator(dir + "/longer/calibrations")) {
+    if (entry.path().extension() == ".cfg") {
+      recorded = readFile(entry.path().string()).find("Calibration.Setting.Vacuum.Referee.Duration = 150\n") != std::string::npos;
+    }
+  }
+  EXPECT_TRUE(recorded);
+  const std::string noisy = grade("noisy", "", {"--Simulator.Noise=realistic", "--Vacuum.Referee.Duration=150"});
+  EXPECT_NE(noisy.find("vacuum.world: Aula's rubric for it was made for Vacuum.Referee.Duration = 900, and this grade's is 150"),
+            std::string::npos)
+      << noisy;
+  EXPECT_NE(noisy.find("\"calibration\": \"vacuum-"), std::string::npos) << noisy;
   std::filesystem::remove_all(dir);
 }

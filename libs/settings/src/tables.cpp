@@ -2,6 +2,8 @@
 
 #include "aula/settings/exercise_keys.hpp"
 
+#include <aula/config/paths.hpp>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -133,6 +135,34 @@ const config::SettingsTable& tableOf(const std::string& program) {
     if (e.referee == program) return *e.referee_settings;
   }
   throw std::logic_error("no settings table for program '" + program + "'");
+}
+
+ProcessSettings resolveProcesses(const Exercise& ex, const config::Config& exercise_file, const config::Config& overrides) {
+  std::vector<const SettingsTable*> tables = {&simulator()};
+  for (const auto* t : ex.tables()) tables.push_back(t);
+  ProcessSettings processes;
+  for (const auto* t : tables) {
+    config::Config mine = t == tables.front() ? config::Config::fromFile(config::dataPath("config/simulator.cfg")) : exercise_file;
+    for (const std::string& key : overrides.keys()) {
+      if (t->declares(key)) mine.set(key, overrides.getString(key), overrides.origin(key));
+    }
+    std::vector<const SettingsTable*> siblings;
+    for (const auto* other : ex.tables()) {
+      if (other != t) siblings.push_back(other);
+    }
+    processes.emplace_back(t, t->resolve(mine, siblings));
+  }
+  return processes;
+}
+
+config::Config mergedSettings(const ProcessSettings& processes) {
+  config::Config merged;
+  for (const auto& [table, cfg] : processes) {
+    for (const std::string& key : cfg.keys()) {
+      if (!merged.has(key)) merged.set(key, cfg.getString(key), cfg.origin(key));
+    }
+  }
+  return merged;
 }
 
 }  // namespace aula::settings

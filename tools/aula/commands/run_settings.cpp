@@ -84,7 +84,8 @@ void applyCalibration(const settings::Exercise& ex, const Config& file, const wo
     }
     return;
   }
-  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256, calibration_file, &run.component());
+  const Config settings = settings::mergedSettings(run.effective);
+  Config calibrated = grade::readCalibration(ex.name, run.world, world.sha256, calibration_file, &settings);
   if (calibrated.keys().empty()) return;
   const std::string calibration_key = ex.section + ".Referee.Calibration";
   if (ex.referee_settings->declares(calibration_key)) {
@@ -157,18 +158,7 @@ RunSettings resolveSettings(const settings::Exercise& ex, const std::string& cfg
     step << ex.physics_step_s;
     run.overrides.set("Simulator.PhysicsStep", step.str(), "the " + ex.name + " exercise's step");
   }
-  for (const auto* t : tables) {
-    // The simulator reads config/simulator.cfg (aula-sim does the same), the clients the exercise's.
-    Config mine = t == tables.front() ? Config::fromFile(config::dataPath("config/simulator.cfg")) : file;
-    for (const std::string& key : run.overrides.keys()) {
-      if (t->declares(key)) mine.set(key, run.overrides.getString(key), run.overrides.origin(key));
-    }
-    std::vector<const SettingsTable*> siblings;
-    for (const auto* other : ex.tables()) {
-      if (other != t) siblings.push_back(other);
-    }
-    run.effective.emplace_back(t, t->resolve(mine, siblings));
-  }
+  run.effective = settings::resolveProcesses(ex, file, run.overrides);
   // The world, from the component's settings (the .cfg or --world): resolved once for all.
   const std::string world_key = ex.section + ".World";
   run.world = config::resolveWorldPath(run.component().getString(world_key), run.component().origin(world_key) + ": " + world_key);

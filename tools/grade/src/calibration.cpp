@@ -74,13 +74,14 @@ std::vector<std::pair<std::string, std::string>> rubricOf(const CalibrationSpec&
   return {{spec.rubric_keys.at(0), number(baseline.median)}, {spec.rubric_keys.at(1), number(anchor.median)}};
 }
 
-// The value `key` has in the runs: the grade's or the command line's setting, else the exercise's .cfg's, else its default.
-std::string effectiveSetting(const settings::Exercise& ex, const std::string& key,
-                             const std::vector<std::pair<std::string, std::string>>& overrides) {
-  for (const auto& [k, value] : overrides) {
-    if (k == key) return value;
+// Two values of one setting are the same: numbers (and lists of them) to within 1e-9, else as text.
+bool sameSetting(const config::Config& a, const std::string& a_key, const config::Config& b, const std::string& b_key) {
+  try {
+    const std::vector<double> x = a.getDoubleList(a_key), y = b.getDoubleList(b_key);
+    return x.size() == y.size() && std::equal(x.begin(), x.end(), y.begin(), [](double p, double q) { return std::abs(p - q) < 1e-9; });
+  } catch (const ConfigError&) {
+    return a.getString(a_key) == b.getString(b_key);
   }
-  return componentSettings(ex).getString(key);
 }
 
 // The context keys' values in the calibration's runs; a world's declared destination is where its
@@ -88,13 +89,14 @@ std::string effectiveSetting(const settings::Exercise& ex, const std::string& ke
 std::vector<std::pair<std::string, std::string>> contextOf(const CalibrationSpec& spec, const settings::Exercise& ex,
                                                            const world::WorldSpec& world,
                                                            const std::vector<std::pair<std::string, std::string>>& overrides) {
+  const config::Config settings = runSettingsOf(spec, overrides);
   std::vector<std::pair<std::string, std::string>> context;
   for (const std::string& key : spec.context_keys) {
     const bool named = std::any_of(overrides.begin(), overrides.end(), [&](const auto& s) { return s.first == key; });
     if (key == ex.section + ".Destination" && !named && !world.destinations.empty()) {
       context.emplace_back(key, world::settingValue(world.destinations.front()));
     } else {
-      context.emplace_back(key, effectiveSetting(ex, key, overrides));
+      context.emplace_back(key, settings.getString(key));
     }
   }
   return context;
@@ -244,23 +246,11 @@ config::Config readCalibration(const std::string& exercise, const std::string& w
                       ": calibrated for another version of " + world_path + " (its files changed since): run `aula calibrate " +
                       exercise + " --world=" + world_path + "` again, or delete the file for the fixed rubric");
   }
-  for (const std::string& key : spec->context_keys) {
-    const std::string recorded = "Calibration.Setting." + key;
-    if (run == nullptr || !file.has(recorded) || !run->has(key)) continue;
-    std::vector<double> made, now;
-    try {
-      made = file.getDoubleList(recorded);
-      now = run->getDoubleList(key);
-    } catch (const ConfigError&) {
-      made.clear();
-    }
-    const bool same = made.empty() ? file.getString(recorded) == run->getString(key)
-                                   : made.size() == now.size() && std::equal(made.begin(), made.end(), now.begin(),
-                                                                             [](double a, double b) { return std::abs(a - b) < 1e-9; });
-    if (!same) {
-      throw ConfigError(file.origin(recorded) + ": calibrated for " + key + " = " + file.getString(recorded) + ", and this run's is " +
-                        run->getString(key) + " (" + run->origin(key) + "): `aula calibrate " + exercise + " --world=" + world_path +
-                        " --" + key + "=" + run->getString(key) + " --output=FILE` calibrates it, or --" +
+  if (run != nullptr) {
+    if (const auto mismatch = contextMismatch(file, *spec, *run)) {
+      throw ConfigError(mismatch->made_origin + ": calibrated for " + mismatch->key + " = " + mismatch->made + ", and this run's is " +
+                        mismatch->now + " (" + mismatch->now_origin + "): `aula calibrate " + exercise + " --world=" + world_path +
+                        " --" + mismatch->key + "=" + mismatch->now + " --output=FILE` calibrates it, or --" +
                         settings::exerciseNamed(exercise)->section + ".Referee.Rubric=fixed grades without one");
     }
   }
@@ -272,6 +262,34 @@ config::Config readCalibration(const std::string& exercise, const std::string& w
     rubric.set(key, file.getString(key), "calibration " + file.origin(key));
   }
   return rubric;
+}
+
+config::Config runSettingsOf(const CalibrationSpec& spec, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  const settings::Exercise& ex = settings::requireExercise(spec.exercise);
+  config::Config given;
+  for (const auto& [key, value] : overrides) given.set(key, value, "--" + key);
+  return settings::mergedSettings(
+      settings::resolveProcesses(ex, config::Config::fromFile(config::dataPath(ex.config_file)), given));
+}
+
+std::optional<ContextMismatch> contextMismatch(const config::Config& file, const CalibrationSpec& spec, const config::Config& run) {
+  std::optional<config::Config> shipped;  // the shipped .cfg's settings, read when a key is not recorded
+  for (const std::string& key : spec.context_keys) {
+    if (!run.has(key)) continue;
+    const std::string recorded = "Calibration.Setting." + key;
+    if (file.has(recorded)) {
+      if (sameSetting(file, recorded, run, key)) continue;
+      return ContextMismatch{key, file.getString(recorded), file.origin(recorded), run.getString(key), run.origin(key)};
+    }
+    if (key == settings::requireExercise(spec.exercise).section + ".Destination") continue;  // always recorded
+    if (!shipped) shipped = runSettingsOf(spec, {});
+    if (sameSetting(*shipped, key, run, key)) continue;
+    return ContextMismatch{key, shipped->getString(key),
+                           (file.has("Calibration.Exercise") ? file.origin("Calibration.Exercise") : std::string("the calibration")) +
+                               " (made before Aula recorded " + key + ": the shipped value)",
+                           run.getString(key), run.origin(key)};
+  }
+  return std::nullopt;
 }
 
 }  // namespace aula::grade

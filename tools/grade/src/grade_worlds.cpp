@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace aula::grade {
@@ -39,20 +40,52 @@ std::string calibrationKey(const GradeRequest& request, const std::string& world
   return world::sha256Hex(text + "\n" + kVersion);
 }
 
-void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
+// Whether a grade with `overrides` must calibrate the world itself: nullopt when the rubric the
+// world has fits the grade's context (duration, noise, speed limits, destination), else why not
+// ("" for a world that has none). A world's own calibration file (the teacher's, W.rubric.cfg)
+// fits when made with the grade's values; Aula's own worlds carry a rubric made with the shipped
+// .cfg, which fits when the grade changes no context key but the destination.
+std::optional<std::string> unfitCalibration(const CalibrationSpec& spec, const std::string& world_path,
+                                            const std::string& shipped, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  const std::string own = calibrationPathOf(world_path);
+  const bool has_own = fs::exists(own);
+  if (!has_own && world_path.rfind(shipped, 0) != 0) return std::string();
+  // A file that records nothing stands for the shipped rubric (contextMismatch: the shipped values).
+  const config::Config made = has_own ? config::Config::fromFile(own) : config::Config();
+  const auto mismatch = contextMismatch(made, spec, runSettingsOf(spec, overrides));
+  if (!mismatch) return std::nullopt;
+  return (has_own ? fs::path(own).filename().string() + " was calibrated" : std::string("Aula's rubric for it was made")) +
+         " for " + mismatch->key + " = " + mismatch->made + ", and this grade's is " + mismatch->now;
+}
+
+// The grade's settings for one graded world: its own, and the world's destination.
+std::vector<std::pair<std::string, std::string>> overridesFor(const GradeRequest& request, const GradedWorld& graded) {
+  auto overrides = request.overrides;
+  if (!graded.destination.empty()) {
+    const auto equals = graded.destination.find('=');
+    overrides.emplace_back(graded.destination.substr(0, equals), graded.destination.substr(equals + 1));
+  }
+  return overrides;
+}
+
+// Whether the grade calibrates `graded` itself, and why (as unfitCalibration says); nullopt when
+// the world's rubric is used as it is (or the grade calibrates nothing).
+std::optional<std::string> gradeCalibrates(const GradeRequest& request, const GradedWorld& graded) {
   const settings::Exercise* ex = settings::exerciseNamed(request.exercise);
-  if (request.calibration_seeds.empty() || ex == nullptr || !calibrationSpecOf(request.exercise)) return;
-  if (rubricPreset(request, *ex) != "default") return;  // fixed, original: no world's scale
+  const auto spec = calibrationSpecOf(request.exercise);
+  if (request.calibration_seeds.empty() || ex == nullptr || !spec) return std::nullopt;
+  if (rubricPreset(request, *ex) != "default") return std::nullopt;  // fixed, original: no world's scale
   const std::string shipped = fs::path(config::dataDir() + "/worlds").lexically_normal().string() + "/";
+  return unfitCalibration(*spec, graded.path, shipped, overridesFor(request, graded));
+}
+
+void calibrateWorlds(GradeRequest& request, const std::string& bin_dir) {
   for (const GradedWorld& graded : gradedWorlds(request)) {
     const std::string& world_path = graded.path;
-    if (fs::exists(calibrationPathOf(world_path))) continue;  // the teacher's own, applied by aula run
-    if (world_path.rfind(shipped, 0) == 0) continue;  // Aula's own worlds: the rubric was made on them
-    auto overrides = request.overrides;  // the grade's settings, and the destination of this graded world
-    if (!graded.destination.empty()) {
-      const auto equals = graded.destination.find('=');
-      overrides.emplace_back(graded.destination.substr(0, equals), graded.destination.substr(equals + 1));
-    }
+    const auto unfit = gradeCalibrates(request, graded);
+    if (!unfit) continue;  // the world's own calibration (applied by aula run), or Aula's rubric made for it
+    if (!unfit->empty()) std::cout << fs::path(world_path).filename().string() << ": " << *unfit << ": calibrating for this grade\n";
+    const auto overrides = overridesFor(request, graded);
     GradeRequest keyed = request;
     keyed.overrides = overrides;
     const std::string name = fs::path(graded.name).stem().string() + "-" + calibrationKey(keyed, graded.sha256).substr(0, 12);
@@ -88,8 +121,11 @@ void checkWorlds(const GradeRequest& request, const std::string& bin_dir) {
   for (const GradedWorld& graded : gradedWorlds(request)) {
     const std::string& world = graded.path;
     std::vector<std::string> argv = {bin_dir + "/aula", "config", request.exercise, "--world=" + world};
-    for (const auto& [key, value] : request.overrides) argv.push_back("--" + key + "=" + value);
-    if (!graded.destination.empty()) argv.push_back("--" + graded.destination);
+    for (const auto& [key, value] : overridesFor(request, graded)) argv.push_back("--" + key + "=" + value);
+    // A world the grade calibrates for itself: its calibration file (made for other settings) is checked then, not here.
+    if (gradeCalibrates(request, graded)) {
+      argv.push_back("--" + settings::requireExercise(request.exercise).section + ".Referee.Rubric=fixed");
+    }
     process::ChildProcess child(argv, log, log);
     const auto code = child.wait(std::chrono::seconds(120));
     if (code == 0) continue;

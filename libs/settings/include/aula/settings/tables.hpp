@@ -25,8 +25,9 @@ struct ExerciseCalibration {
   std::string measure;                   // a report field: "coverage_percent"
   std::string baseline, anchor;          // default algorithms; no baseline: a scale of one point, the anchor's
   std::vector<std::string> rubric_keys;  // the referee's settings it writes (the baseline's first, if any)
-  // Settings the measure depends on besides the world (TeleTaxi.Destination): written in the
-  // calibration file, and a run with other values is refused.
+  // Settings (any process's) that change what a run can reach besides the world: the destination,
+  // the episode's length, the noise, the speed limits. Written in the calibration file; a run
+  // with other values is refused, and a grade with other values makes its own calibration.
   std::vector<std::string> context_keys;
   // A report field every anchor run must have true ("parked"; "" for none): an anchor that failed
   // would anchor the scale on a failure.
@@ -83,5 +84,14 @@ const Exercise* exerciseNamed(const std::string& name);
 AULA_NO_DANGLING const Exercise& requireExercise(const std::string& name);
 // The table of a program ("aula-sim", "vacuum-cleaner", ...); throws std::logic_error if unknown.
 AULA_NO_DANGLING const config::SettingsTable& tableOf(const std::string& program);
+
+// Each process's settings in a run of `ex`, the simulator's first, then ex.tables()'s: the
+// simulator's from config/simulator.cfg (aula-sim reads it too), the others' from `exercise_file`
+// (the exercise's .cfg), each with the `overrides` its table declares, resolved (defaults,
+// presets). `aula run` starts its processes with them; `aula calibrate` records from them.
+using ProcessSettings = std::vector<std::pair<const config::SettingsTable*, config::Config>>;
+ProcessSettings resolveProcesses(const Exercise& ex, const config::Config& exercise_file, const config::Config& overrides);
+// One Config of every key of `processes` (the first process that declares a key gives its value).
+config::Config mergedSettings(const ProcessSettings& processes);
 
 }  // namespace aula::settings

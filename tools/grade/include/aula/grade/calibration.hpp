@@ -63,11 +63,28 @@ std::string calibrationPathOf(const std::string& world_path);
 // The rubric settings of the world's calibration file, each with its origin (file:line), or
 // nothing when the world has none. `file`: the calibration to read ("" for the one beside the
 // world; one named must exist). `run`: the run's settings, whose context keys must have the
-// values the calibration was made with (nullptr: not checked). Throws config::ConfigError naming
+// values the calibration was made with (every process's settings, merged; nullptr: not checked). Throws config::ConfigError naming
 // the file and what is wrong when the file is for another exercise, another version of the world
-// (its SHA-256) or another context (another destination), or holds a key that is not the
+// (its SHA-256) or another context (contextMismatch: another destination, duration, noise or
+// speed limit), or holds a key that is not the
 // exercise's calibrated rubric.
 config::Config readCalibration(const std::string& exercise, const std::string& world_path, const std::string& world_sha256,
                                const std::string& file = "", const config::Config* run = nullptr);
+
+// A setting that makes a calibration unfit for a run: what the calibration was made with, and
+// the run's value, each with its origin.
+struct ContextMismatch {
+  std::string key;
+  std::string made, made_origin;  // the file's Calibration.Setting.KEY (file:line), or the shipped .cfg's value
+  std::string now, now_origin;
+};
+// The first of the spec's context keys whose value in `run` (every process's settings, merged:
+// settings::mergedSettings) is not the one `file` (a calibration) was made with; nullopt when
+// the calibration fits. A key the file does not record (made before Aula recorded it) counts as
+// made with the exercise's shipped .cfg's value.
+std::optional<ContextMismatch> contextMismatch(const config::Config& file, const CalibrationSpec& spec, const config::Config& run);
+// The settings of a run of `spec`'s exercise with `overrides` (the exercise's .cfg under them),
+// every process's, merged.
+config::Config runSettingsOf(const CalibrationSpec& spec, const std::vector<std::pair<std::string, std::string>>& overrides);
 
 }  // namespace aula::grade
