@@ -16,7 +16,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("autopark", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "autopark", {"screenshot", "screenshot-at"}, kUsage);
-    aula::autopark::AutoparkComponent component(*setup.bus, setup.cfg, setup.world);
+    aula::autopark::AutoparkComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);
     const double shot_at_s = setup.command_line.optionDouble("screenshot-at", 40.0);
     return aula::app::runComponent<aula::autopark::AutoparkWindow>(
         setup, component, argc, argv, [&](aula::autopark::AutoparkWindow& window, const QString& png) {

@@ -16,7 +16,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("teletaxi", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "teletaxi", {"screenshot"}, kUsage);
-    aula::teletaxi::TaxiComponent component(*setup.bus, setup.cfg, setup.world);
+    aula::teletaxi::TaxiComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);
     return aula::app::runComponent<aula::teletaxi::TaxiWindow>(
         setup, component, argc, argv,
         [](aula::teletaxi::TaxiWindow& window, const QString& png) { return window.screenshotWhenReady(png); });

@@ -16,7 +16,7 @@ constexpr const char* kUsage =
 int main(int argc, char** argv) {
   return aula::app::guardedMain("vacuum-cleaner", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "vacuum-cleaner", {"screenshot", "screenshot-at"}, kUsage);
-    aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg, setup.world);
+    aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);
     const double shot_at_s = setup.command_line.optionDouble("screenshot-at", 60.0);
     return aula::app::runComponent<aula::vacuum::VacuumWindow>(
         setup, component, argc, argv, [&](aula::vacuum::VacuumWindow& window, const QString& png) {

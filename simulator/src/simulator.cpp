@@ -81,7 +81,7 @@ void applyStartPoses(const config::Config& cfg, world::WorldSpec& spec) {
 }
 
 Simulator::Simulator(world::WorldSpec spec, SimulatorOptions options, lcmbus::Bus& bus, std::optional<auth::Key> key)
-    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key),
+    : spec_(std::move(spec)), options_(options), bus_(bus), lockstep_(options.lockstep_drop), stamper_(key), key_(key),
       instance_(randomInstance()),
       graded_(key.has_value()) {
   // The clock channel first, then the question: a simulator already running on this bus answers
@@ -250,8 +250,33 @@ void Simulator::onControl(const lcm::ReceiveBuffer*, const std::string& channel,
   }
 }
 
-void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
+namespace {
+constexpr std::size_t kRefusedNamesLogged = 16;
+}
+
+template <class Message>
+bool Simulator::fromThisRun(const std::string& channel, const Message& msg) {
+  if (!key_) return true;  // outside grading any client may join (windows, a debugger, stock tools)
+  const auto known = client_signers_.find(msg.client);
+  if (known != client_signers_.end()) {
+    if (auth::verify(known->second, channel, msg)) return true;
+  } else {
+    auth::Signer signer(auth::clientKey(*key_, msg.client));  // kept once it has spoken for the client
+    if (auth::verify(signer, channel, msg)) {
+      client_signers_.emplace(msg.client, signer);
+      return true;
+    }
+  }
+  // Named once each, and at most kRefusedNamesLogged names (a flood of names is not a flood of lines).
+  if (refused_clients_.size() < kRefusedNamesLogged && refused_clients_.insert(msg.client).second) {
+    log("lockstep client '" + msg.client + "' refused: " + channel + " not signed with this run's key for it (another run's client?)");
+  }
+  return false;
+}
+
+void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string& channel,
                            const aula::lockstep_register_t* msg) {
+  if (!fromThisRun(channel, *msg)) return;
   if (msg->leave) {
     if (lockstep_.leave(msg->client)) log("lockstep client '" + msg->client + "' left");
     return;
@@ -272,7 +297,8 @@ void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string&,
   }
 }
 
-void Simulator::onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg) {
+void Simulator::onAck(const lcm::ReceiveBuffer*, const std::string& channel, const aula::lockstep_ack_t* msg) {
+  if (!fromThisRun(channel, *msg)) return;
   lockstep_.ack(msg->client, msg->seq);
 }
 

@@ -16,8 +16,9 @@ LaserMount mountOf(const world::RobotSpec& car, const std::string& plugin_name) 
 
 }  // namespace
 
-AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "autopark"),
+AutoparkComponent::AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                                     const std::optional<auth::Key>& lockstep_key)
+    : ExerciseComponent(bus, cfg, world, "autopark", lockstep_key),
       world_(world) {
   const world::RobotSpec* car = &world::requireRobot(world_, cfg.getString("Autopark.Robot"));
   // The car's three lasers are its plugins named laser_front, laser_rear and laser_right.

@@ -11,8 +11,9 @@
 #include <stdexcept>
 
 namespace aula::teletaxi {
-TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "teletaxi"), plan_channel_(cfg.getString("TeleTaxi.Plan.Channel")) {
+TaxiComponent::TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                             const std::optional<auth::Key>& lockstep_key)
+    : ExerciseComponent(bus, cfg, world, "teletaxi", lockstep_key), plan_channel_(cfg.getString("TeleTaxi.Plan.Channel")) {
   const auto z_band = cfg.getDoubleList("TeleTaxi.Map.ZBand");
   world::OccupancyMap map = world::occupancyMapOf(world, {cfg.getDouble("TeleTaxi.Map.Resolution"), z_band[0], z_band[1]});
   grid_ = std::make_unique<Grid>(map.image, map.transform);

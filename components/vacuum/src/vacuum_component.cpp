@@ -2,8 +2,9 @@
 
 namespace aula::vacuum {
 
-VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world)
-    : ExerciseComponent(bus, cfg, world, "vacuum") {
+VacuumComponent::VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                                 const std::optional<auth::Key>& lockstep_key)
+    : ExerciseComponent(bus, cfg, world, "vacuum", lockstep_key) {
   run_duration_s_ = cfg.getDouble("Vacuum.Referee.Duration");
   const auto z_band = cfg.getDoubleList("Vacuum.Map.ZBand");
   map_ = world::occupancyMapOf(world, {cfg.getDouble("Vacuum.Map.Resolution"), z_band[0], z_band[1]});

@@ -69,7 +69,8 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   // aula replay's windows: the component's shows and cannot act; neither watches its peers.
   if (exercise != nullptr && (exercise->component == program || exercise->referee == program)) known.push_back("view-only");
   // The launcher's private line for a crash's one line (crash_report.hpp).
-  if (exercise != nullptr && exercise->component == program) known.push_back("crash-fd");
+  // And a graded run's key for its lockstep client (auth::clientKey).
+  if (exercise != nullptr && exercise->component == program) known.insert(known.end(), {"crash-fd", "lockstep-key-fd"});
   ProcessSetup setup;
   setup.program = program;
   setup.command_line = config::CommandLine::parse(argc, argv, takes_value);
@@ -119,6 +120,10 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   }
   if (setup.command_line.flag("key-fd")) {
     setup.run_key = auth::readKey(static_cast<int>(setup.command_line.optionDouble("key-fd", -1)), "--key-fd");
+  }
+  if (setup.command_line.flag("lockstep-key-fd")) {  // good for one client of one run: the process may stay dumpable
+    setup.lockstep_key =
+        auth::readKey(static_cast<int>(setup.command_line.optionDouble("lockstep-key-fd", -1)), "--lockstep-key-fd", false);
   }
   setup.bus = lcmbus::openBus(replay ? lcmbus::kReplayUrl : lcmbus::resolveUrl(setup.command_line, setup.cfg));
   return setup;

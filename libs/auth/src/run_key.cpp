@@ -41,10 +41,10 @@ int keyPipe(const Key& key) {
   return ends[0];
 }
 
-Key readKey(int fd, const std::string& what) {
+Key readKey(int fd, const std::string& what, bool private_memory) {
   // A process that holds the run's key is not dumpable: no other process of its user (a component
   // run without the sandbox) may read its memory through /proc/PID/mem or ptrace.
-  ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
+  if (private_memory) ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
   Key key{};
   size_t got = 0;
   for (;;) {
@@ -108,6 +108,11 @@ Tag Signer::tagOf(const std::vector<uint8_t>& bytes, const std::string& channel)
     throw std::runtime_error("HMAC-SHA256 failed");
   }
   return tag;
+}
+
+Key clientKey(const Key& run_key, const std::string& client) {
+  const std::string purpose = "lockstep client ";
+  return Signer(run_key).tagOf(std::vector<uint8_t>(purpose.begin(), purpose.end()), client);
 }
 
 }  // namespace aula::auth

@@ -34,11 +34,16 @@ RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const worl
   layers_ = std::make_unique<TraceLayers>(bus, cfg, robot, p, trace_);
   status_ = std::make_unique<StatusSender>(bus, cfg.getString(p + ".RefereeStatus.Channel"), exercise);
   const double period_s = cfg.getDouble(p + ".Referee.Period");
-  clock_ = std::make_unique<lcmbus::LockstepClient>(bus, exercise + "-referee",
-                                                    static_cast<int64_t>(std::llround(period_s * 1e6)), [this](int64_t utime) {
-                                                      onClockTick(utime);
-                                                      announce(utime);
-                                                    });
+  const std::string client = exercise + "-referee";
+  std::optional<auth::Key> client_key;  // a graded run's simulator follows only its own run's clients
+  if (run_key) client_key = auth::clientKey(*run_key, client);
+  clock_ = std::make_unique<lcmbus::LockstepClient>(
+      bus, client, static_cast<int64_t>(std::llround(period_s * 1e6)),
+      [this](int64_t utime) {
+        onClockTick(utime);
+        announce(utime);
+      },
+      client_key);
   clock_->expectWorld(world.sha256, world.source_path);
   clock_->setTickFilter([this](const std::string& channel, const aula::sim_clock_t& tick) {
     return outcome_.truth().acceptTick(channel, tick);

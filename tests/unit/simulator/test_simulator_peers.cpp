@@ -2,7 +2,9 @@
 // simulator ticks at least every 100 ms of wall time whatever its pace (a client that hears
 // nothing for 2 s knows it is gone), and alone (no launcher) it ends the run when a client's
 // process is gone without leaving; its last ticks say why.
+#include <aula/auth/run_key.hpp>
 #include <aula/lcm/bus.hpp>
+#include <aula/lockstep_ack_t.hpp>
 #include <aula/lockstep_register_t.hpp>
 #include <aula/sim/simulator.hpp>
 #include <aula/sim_clock_t.hpp>
@@ -102,4 +104,68 @@ TEST(SimulatorPeers, UnderALauncherItLeavesAGoneClientToTheLauncher) {
   runFor(sim, 400ms);
   EXPECT_EQ(sim.endedBecause(), "");
   EXPECT_GT(sim.timeUs(), 0);
+}
+
+// A graded run's simulator (it has the run's key) takes only its own run's lockstep clients
+// (issue 38): a registration or an ack not signed with that client's key of this run (another
+// run's client on the same bus, or a forgery) is refused; the run's own client, signed with
+// auth::clientKey(run key, name), joins and its acks count.
+TEST(SimulatorPeers, AGradedSimulatorRefusesAnotherRunsClient) {
+  aula::lcmbus::Bus bus("memq://");
+  aula::sim::SimulatorOptions options;
+  options.real_time_factor = 0;
+  options.lockstep = true;
+  const aula::auth::Key run_key = aula::auth::randomKey(), other_run_key = aula::auth::randomKey();
+  aula::sim::Simulator sim(vacuumWorld(), options, bus, run_key);
+  Ticks ticks;
+  bus.subscribe(aula::lcmbus::kClockChannel, &Ticks::on, &ticks);
+  auto registration = [](const std::string& name) {
+    aula::lockstep_register_t msg{};
+    msg.client = name;
+    msg.period_us = 100000;
+    return msg;
+  };
+  aula::lockstep_register_t unsigned_msg = registration("vacuum-cleaner");
+  bus.publish(aula::lcmbus::kLockstepRegisterChannel, &unsigned_msg);
+  aula::lockstep_register_t other_run = registration("vacuum-cleaner");
+  aula::auth::sign(aula::auth::Signer(aula::auth::clientKey(other_run_key, "vacuum-cleaner")),
+                   aula::lcmbus::kLockstepRegisterChannel, other_run);
+  bus.publish(aula::lcmbus::kLockstepRegisterChannel, &other_run);
+  aula::lockstep_register_t other_name = registration("vacuum-referee");  // this run's key for another client
+  aula::auth::sign(aula::auth::Signer(aula::auth::clientKey(run_key, "vacuum-cleaner")), aula::lcmbus::kLockstepRegisterChannel,
+                   other_name);
+  bus.publish(aula::lcmbus::kLockstepRegisterChannel, &other_name);
+  runFor(sim, 300ms);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  ASSERT_FALSE(ticks.seen.empty());
+  EXPECT_TRUE(ticks.seen.back().clients.empty()) << "a client of another run joined";
+  EXPECT_GT(sim.timeUs(), 0) << "with no client of its own, lockstep waits for nobody";
+
+  aula::lockstep_register_t own = registration("vacuum-cleaner");
+  aula::auth::Signer own_key(aula::auth::clientKey(run_key, "vacuum-cleaner"));
+  aula::auth::sign(own_key, aula::lcmbus::kLockstepRegisterChannel, own);
+  bus.publish(aula::lcmbus::kLockstepRegisterChannel, &own);
+  runFor(sim, 200ms);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(ticks.seen.back().clients, (std::vector<std::string>{"vacuum-cleaner"}));
+  // Now the world waits for it: another run's ack does not move it on, its own does.
+  const int64_t waiting_at = sim.timeUs();
+  auto ack = [&](aula::auth::Signer signer) {
+    aula::lockstep_ack_t msg{};
+    msg.client = "vacuum-cleaner";
+    msg.seq = ticks.seen.back().seq;
+    msg.utime = ticks.seen.back().utime;
+    aula::auth::sign(signer, aula::lcmbus::kLockstepAckChannel, msg);
+    bus.publish(aula::lcmbus::kLockstepAckChannel, &msg);
+  };
+  ack(aula::auth::Signer(aula::auth::clientKey(other_run_key, "vacuum-cleaner")));
+  runFor(sim, 200ms);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(sim.timeUs(), waiting_at) << "another run's ack moved the world";
+  ack(own_key);
+  runFor(sim, 200ms);
+  EXPECT_GT(sim.timeUs(), waiting_at) << "its own run's ack did not";
 }

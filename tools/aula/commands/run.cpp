@@ -180,6 +180,7 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
                                        supervision::TemporaryFile& graded_file) {
   supervision::Supervision s;
   s.exercise = ex.name;
+  s.component_client = ex.component;
   s.report_path = outputPath(args, "report");
   s.headless = headless;
   s.sandbox = args.flag("sandbox");

@@ -21,6 +21,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <string>
@@ -119,6 +120,10 @@ class Simulator {
   bool forgedControl(const std::string& channel, const aula::sim_control_t& msg);
   void onRegister(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_register_t* m);
   void onAck(const lcm::ReceiveBuffer*, const std::string&, const aula::lockstep_ack_t* msg);
+  // In a graded run: false (and logged, once per client name) when `msg` is not signed with that
+  // client's key of this run (auth::clientKey): another run's client, or a forgery.
+  template <class Message>
+  bool fromThisRun(const std::string& channel, const Message& msg);
   void onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick);
   void onHello(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* hello);
   aula::sim_clock_t tickAt(int64_t utime_us) const;  // the clock message at `utime_us`, unsigned
@@ -161,6 +166,9 @@ class Simulator {
   double measured_rtf_ = 0.0;
   long long rejected_controls_ = 0;
   auth::Stamper stamper_;           // numbers and signs the truth and the clock
+  std::optional<auth::Key> key_;    // a graded run's: each lockstep client's key is derived from it
+  std::map<std::string, auth::Signer> client_signers_;  // by client name, made at its first message
+  std::set<std::string> refused_clients_;               // named in the log once each
   int64_t last_control_seq_ = 0;    // the auth_seq of the last signed request obeyed
   bool repace_ = false;        // SET_RTF: pacing restarts from the current time
   bool step_pending_ = false;  // STEP while paused

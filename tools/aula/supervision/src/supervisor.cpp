@@ -93,6 +93,10 @@ class RunSupervisor {
       pass("key-fd", auth::keyPipe(*key));
       launch.ours_to_close.push_back(launch.passed.back());
     }
+    if (i == 1 && key) {  // its lockstep client's own key, not the run's (auth::clientKey)
+      pass("lockstep-key-fd", auth::keyPipe(auth::clientKey(*key, run_.component_client)));
+      launch.ours_to_close.push_back(launch.passed.back());
+    }
     if (i == 1 && crash_write >= 0) pass("crash-fd", crash_write);  // where a crash struck, in the student's lines
     const bool sandboxed = run_.sandbox && run_.has_referee && i == 1;
     if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)

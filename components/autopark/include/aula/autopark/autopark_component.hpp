@@ -14,7 +14,9 @@ namespace aula::autopark {
 
 class AutoparkComponent : public component::ExerciseComponent<AutoparkAlgorithm> {
  public:
-  AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `lockstep_key`: a graded run's key for its lockstep client (ProcessSetup's).
+  AutoparkComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                    const std::optional<auth::Key>& lockstep_key = std::nullopt);
 
   const AutoparkApi& api() const { return *api_; }
   const world::WorldSpec& world() const { return world_; }

@@ -15,8 +15,9 @@ namespace aula::component {
 class ControlLoop {
  public:
   // `step` runs at every due tick while running (the student's execute()).
+  // `client_key`: a graded run's key for this lockstep client (LockstepClient's).
   ControlLoop(lcmbus::Bus& bus, const std::string& client_name, int64_t period_us, MotorsProxy& motors,
-              std::function<void()> step);
+              std::function<void()> step, const std::optional<auth::Key>& client_key = std::nullopt);
 
   void setRunning(bool running);  // stopping also zeroes the motors
   bool running() const { return running_; }

@@ -50,9 +50,10 @@ class ExerciseComponent {
   // section ("Vacuum") and the program's name ("vacuum-cleaner", also its lockstep client's).
   // `cfg`: the effective settings; the robot and its channels come from `world`. Throws
   // PluginError (exit 2) for an algorithm that cannot be used, WorldError for a missing robot.
+  // `lockstep_key`: a graded run's key for the component's lockstep client (--lockstep-key-fd).
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
-                    const std::string& exercise)
-      : ExerciseComponent(bus, cfg, world, settings::requireExercise(exercise)) {}
+                    const std::string& exercise, const std::optional<auth::Key>& lockstep_key = std::nullopt)
+      : ExerciseComponent(bus, cfg, world, settings::requireExercise(exercise), lockstep_key) {}
   virtual ~ExerciseComponent() = default;
   ExerciseComponent(const ExerciseComponent&) = delete;
   ExerciseComponent& operator=(const ExerciseComponent&) = delete;
@@ -137,7 +138,7 @@ class ExerciseComponent {
 
  private:
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
-                    const settings::Exercise& names)
+                    const settings::Exercise& names, const std::optional<auth::Key>& lockstep_key)
       : bus_(bus),
         algorithm_name_(cfg.getString(names.section + ".Algorithm")),
         console_channel_(cfg.getString(names.section + ".Console.Channel")) {
@@ -160,7 +161,7 @@ class ExerciseComponent {
     referee_status_->setOnFinished([this](const aula::referee_status_t&) { setRunning(false); });
     const double period_s = cfg.getDouble(p + ".Period");
     loop_ = std::make_unique<ControlLoop>(bus, names.component, static_cast<int64_t>(std::llround(period_s * 1e6)), *motors_,
-                                          [this] { step(); });
+                                          [this] { step(); }, lockstep_key);
     loop_->setOnTick([this](int64_t utime) { tick(utime); });
   }
 

@@ -20,7 +20,9 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
  public:
   // `cfg`: the effective settings; the robot, its channels and the map come from `world`.
   // Throws config::ConfigError for a destination the taxi cannot drive to.
-  TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `lockstep_key`: a graded run's key for its lockstep client (ProcessSetup's).
+  TaxiComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                const std::optional<auth::Key>& lockstep_key = std::nullopt);
   // Why the taxi cannot drive to (x, y) from its start (off the map, inside a building,
   // walled off, too close to the start), or nothing when it can.
   std::optional<std::string> destinationProblem(double x_m, double y_m) const;

@@ -17,7 +17,9 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
  public:
   // `cfg`: the effective settings (aula_settings); the robot, its channels and the map come
   // from `world`.
-  VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world);
+  // `lockstep_key`: a graded run's key for its lockstep client (ProcessSetup's).
+  VacuumComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
+                  const std::optional<auth::Key>& lockstep_key = std::nullopt);
 
   const component::LaserProxy& laser() const { return *laser_; }
   const world::OccupancyMap& map() const { return map_; }

@@ -35,6 +35,9 @@ struct ProcessSetup {
   // A referee's --key-fd=N: the graded run's key from the launcher (nothing in a run without
   // one: windows, three terminals, a regrade).
   std::optional<auth::Key> run_key;
+  // A component's --lockstep-key-fd=N: in a graded run, the key of its lockstep client only
+  // (aula_auth's clientKey), never the run's.
+  std::optional<auth::Key> lockstep_key;
 
   // Options every process accepts: --config=FILE, --headless, --lcm-url=URL, --help, plus
   // `extra_options` (e.g. "report", "screenshot"); a referee also takes --replay=FILE.lcmlog

@@ -33,10 +33,17 @@ Key randomKey();
 // A pipe's read end (close-on-exec) that holds `key` and then end-of-file: hand it to one child
 // (ChildProcess's passed descriptors). Throws std::runtime_error.
 int keyPipe(const Key& key);
-// Reads exactly one key from `fd` and closes it; from then on the process is not dumpable (its
-// memory unreadable to other processes of its user). Throws std::runtime_error naming `what` when
-// the descriptor is not open or holds anything but 32 bytes.
-Key readKey(int fd, const std::string& what);
+// Reads exactly one key from `fd` and closes it; with `private_memory`, from then on the process
+// is not dumpable (its memory unreadable to other processes of its user). Throws
+// std::runtime_error naming `what` when the descriptor is not open or holds anything but 32 bytes.
+Key readKey(int fd, const std::string& what, bool private_memory = true);
+
+// The key one lockstep client of a graded run signs its registration and its acks with:
+// HMAC-SHA256(run key, "lockstep client " + client). The launcher hands the component its own
+// (--lockstep-key-fd); the referee derives its own; the simulator derives each client's to check
+// it, and refuses a client of another run. It signs nothing else: the student's code beside it
+// in the component can speak for that client of that run, never for the truth or the clock.
+Key clientKey(const Key& run_key, const std::string& client);
 
 // HMAC-SHA256 under one key, prepared once: a tag costs about 0.5 us instead of the 2.5 us of
 // OpenSSL's one-shot HMAC() (which fetches the algorithm and hashes the key every time), and a

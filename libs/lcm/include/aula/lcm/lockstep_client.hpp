@@ -8,6 +8,7 @@
 // packet never stalls a run; a simulator that starts after the client (its SIM_HELLO) is sent the
 // registration again at once.
 
+#include <aula/auth/run_key.hpp>
 #include <aula/sim_clock_t.hpp>
 
 #include "aula/lcm/bus.hpp"
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace aula::lcmbus {
@@ -26,7 +28,10 @@ class LockstepClient {
   // in lockstep or not; in lockstep the ack follows when on_tick returns.
   using TickHandler = std::function<void(int64_t utime)>;
 
-  LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us, TickHandler on_tick);
+  // `client_key`: in a graded run, the key this client signs its registration and acks with
+  // (aula_auth's clientKey); the simulator of a graded run takes no client unsigned.
+  LockstepClient(lcmbus::Bus& bus, std::string client_name, int64_t period_us, TickHandler on_tick,
+                 const std::optional<auth::Key>& client_key = std::nullopt);
   ~LockstepClient();
   LockstepClient(const LockstepClient&) = delete;
   LockstepClient& operator=(const LockstepClient&) = delete;
@@ -83,6 +88,7 @@ class LockstepClient {
   void sendAck(int64_t seq, int64_t utime);
 
   lcmbus::Bus& bus_;
+  std::optional<auth::Signer> signer_;  // the client's key, in a graded run
   lcm::Subscription* subscription_ = nullptr;
   lcm::Subscription* hello_subscription_ = nullptr;
   std::string name_;

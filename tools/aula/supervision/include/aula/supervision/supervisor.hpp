@@ -24,6 +24,7 @@ struct Supervision {
   bool sandbox = false;      // --sandbox: the component (the student's code) runs in aula_sandbox
   sandbox::Confinement confinement;  // what it sees there (componentConfinement)
   std::optional<auth::Key> key;      // a graded run's (headless, with a referee): the simulator's and referee's
+  std::string component_client;      // the component's lockstep client ("vacuum-cleaner"): given its own key
   double wall_budget_s = 0;  // --timeout: the run's wall-clock budget (0: none)
   std::string exercise, report_path;
   std::string algorithm;               // what the component runs ("student", "libmy_algorithm.so")
