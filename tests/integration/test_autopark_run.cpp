@@ -87,9 +87,10 @@ TEST(AutoparkRun, PlannerParksTheCarLikeCarInTheOnePointThreeLengthSlot) {
 
 // A slot too short for two arcs of the car-like car's 5 m radius (the shipped 1.2 L street): the
 // reactive reference says so, with the length it would need, and does not try. No contact, and
-// never "parked".
+// never "parked". The report says why (issue 44: `algorithm_status`, what the algorithm said last).
 TEST(AutoparkRun, ReactiveDeclinesASlotTooShortForItsArcsAndSaysWhy) {
   const std::string run = runAutopark("declines", {"--algorithm=reactive", "--seed=10", "--world=worlds/autopark_ackermann_1.2L.world"});
+  EXPECT_NE(reportOnly(run).find("\"algorithm_status\": \"slot too short for a reactive park: 4."), std::string::npos) << run;
   EXPECT_NE(run.find("DECLINED"), std::string::npos) << run;
   EXPECT_NE(run.find("slot too short for a reactive park: 4."), std::string::npos) << run;
   EXPECT_NE(run.find(" m, need 6."), std::string::npos) << run;

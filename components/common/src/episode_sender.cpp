@@ -7,6 +7,7 @@
 namespace aula::component {
 
 void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
+  if (state.status != last_status_) changed_ = true;
   if (!changed_ && utime - last_utime_ < 1'000'000) return;
   aula::episode_t msg;
   msg.utime = utime;
@@ -20,6 +21,8 @@ void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
   msg.fault = host_.fault();
   msg.non_finite_commands = host_.nonFiniteCommands();
   msg.generation = generation_;
+  msg.status = state.status;
+  last_status_ = state.status;
   bus_.publish(channel_, &msg);
   last_utime_ = utime;
   changed_ = false;

@@ -73,7 +73,7 @@ void RefereeNode::onBumperMessage(const lcm::ReceiveBuffer*, const std::string& 
 void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
   if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
   const bool had_fault = !outcome_.fault().empty();
-  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation)) {
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation, msg->status)) {
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
     end_.reset();

@@ -11,7 +11,28 @@
 
 namespace aula::referee {
 
-std::string jsonString(const std::string& s) {
+std::string validUtf8(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    bool valid = length != 0 && i + length <= text.size() && !(length == 2 && c < 0xC2);
+    for (size_t k = 1; valid && k < length; ++k) valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (valid) {
+      out.append(text, i, length);
+      i += length;
+    } else {
+      out += "\xEF\xBF\xBD";
+      i += 1;
+    }
+  }
+  return out;
+}
+
+std::string jsonString(const std::string& text) {
+  const std::string s = validUtf8(text);  // a student's text may hold any byte; a report stays JSON
   std::string out = "\"";
   for (char c : s) {
     switch (c) {

@@ -5,7 +5,7 @@
 namespace aula::referee {
 
 bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands,
-                           int generation) {
+                           int generation, const std::string& status) {
   const bool new_episode = generation > generation_;
   if (new_episode) {
     generation_ = generation;
@@ -13,6 +13,7 @@ bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& faul
     announced_ = false;
   }
   algorithm_ = algorithm;
+  status_ = status;
   if (fault_.empty()) fault_ = fault;
   non_finite_commands_ = non_finite_commands;
   return new_episode;
@@ -35,6 +36,8 @@ void RunOutcome::announceOnce(bool over, const std::function<void()>& hook) {
 void RunOutcome::addTo(Report& report) const {
   report.set("algorithm", algorithm_);
   if (ended()) report.set("finished", false);
+  // What the algorithm said last (a reference that gives up says why and where), as it said it.
+  if (!status_.empty()) report.set("algorithm_status", status_);
   if (!fault_.empty()) report.set("algorithm_error", fault_);
   if (!aborted_.empty()) report.set("aborted", aborted_);
   if (non_finite_commands_ > 0) report.set("non_finite_commands", static_cast<long long>(non_finite_commands_));
@@ -57,6 +60,7 @@ EpisodeStatus RunOutcome::episodeStatus(bool started, double elapsed_s, double l
 
 std::string RunOutcome::summary() const {
   std::string out;
+  if (!status_.empty()) out += "  the algorithm said: " + validUtf8(status_) + "\n";
   if (!fault_.empty()) out += "  the student's algorithm failed: " + fault_ + "\n";
   if (!aborted_.empty()) out += "  the run was aborted: " + aborted_ + "\n";
   if (non_finite_commands_ > 0) {

@@ -64,3 +64,19 @@ TEST(RunOutcome, EpisodeStatusSaysHowTheEpisodeEnded) {
   EXPECT_TRUE(stopped.finished);
   EXPECT_EQ(stopped.ending, "Stopped");
 }
+
+// What the algorithm said last (a reference that gives up says why and where: issue 44) is in
+// the report as it said it; a student's bytes that are not UTF-8 never break the report's JSON.
+TEST(RunOutcome, TheAlgorithmsLastWordIsInTheReportAsValidJson) {
+  RunOutcome outcome;
+  outcome.onEpisode("reactive", "", 0, 0, "searching");
+  outcome.onEpisode("reactive", "", 0, 0, "stalled: 240 s in SEARCH, stopped at x 3.10 y 2.50");
+  outcome.algorithmFailed("execute() threw: bad \xff\xfe bytes \"quoted\"");
+  Report report;
+  outcome.addTo(report);
+  const std::string json = report.toJson();
+  EXPECT_NE(json.find("\"algorithm_status\": \"stalled: 240 s in SEARCH, stopped at x 3.10 y 2.50\""), std::string::npos) << json;
+  EXPECT_NE(json.find("bad \xEF\xBF\xBD\xEF\xBF\xBD bytes \\\"quoted\\\""), std::string::npos) << json;
+  EXPECT_NE(outcome.summary().find("the algorithm said: stalled: 240 s"), std::string::npos) << outcome.summary();
+  EXPECT_EQ(aula::referee::validUtf8("caf\xC3\xA9 \xF0\x9F\x93\x81 \xC3"), "caf\xC3\xA9 \xF0\x9F\x93\x81 \xEF\xBF\xBD");
+}

@@ -27,6 +27,7 @@ class AutoparkComponent : public component::ExerciseComponent<AutoparkAlgorithm>
     api_->clock.set(simTimeUs());
     algorithm.execute(*api_);
   }
+  std::string algorithmStatus() const override { return api_->status; }
   void detachSensors() override {
     for (component::LaserProxy* laser : {front_.get(), rear_.get(), right_.get()}) laser->detach();
   }

@@ -24,6 +24,7 @@ struct EpisodeState {
   bool running = false;
   int64_t started_utime = -1;                         // -1: not started
   std::optional<std::pair<double, double>> goal_xy_m;  // TeleTaxi's destination
+  std::string status;  // what the algorithm says of where it stands (Autopark's api.status), or ""
 };
 
 // Where a robot starts in the world: a new episode puts it back there.
@@ -49,6 +50,7 @@ class EpisodeSender {
   const AlgorithmHostBase& host_;
   int64_t last_utime_ = -1'000'000'000;
   bool changed_ = true;
+  std::string last_status_;  // the status last sent: a new one is a change
   int generation_ = 0;  // algorithm (re)loads: each is a new episode for the referee
 };
 

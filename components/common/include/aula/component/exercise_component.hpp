@@ -125,6 +125,8 @@ class ExerciseComponent {
   virtual bool prepareAutostart() { return true; }
   // What the episode messages carry besides the run state (TeleTaxi: the destination).
   virtual std::optional<std::pair<double, double>> episodeGoal() const { return std::nullopt; }
+  // What the algorithm says of where it stands, for the referee's report (Autopark's api.status).
+  virtual std::string algorithmStatus() const { return ""; }
   // The exercise's state for a new episode (hot reload); false when the algorithm may not run
   // on at once (TeleTaxi: a new path must be generated first).
   virtual bool startNewEpisode() { return true; }
@@ -168,7 +170,11 @@ class ExerciseComponent {
   void step() {
     if (!host_->call(runSeed(), "execute()", CallKind::Execute, [this](Algorithm& a) { execute(a); })) {
       setRunning(false);
+      return;
     }
+    // Read once the call has returned (its thread is done with the API), and bounded: it is the
+    // student's text, sent at every change.
+    algorithm_status_ = algorithmStatus().substr(0, kStatusBytes);
   }
   void tick(int64_t utime) {
     beforeTick(utime);
@@ -178,7 +184,7 @@ class ExerciseComponent {
       autostarted_ = true;
       if (prepareAutostart()) setRunning(true);
     }
-    episode_->tick(utime, {running(), started_utime_, episodeGoal()});
+    episode_->tick(utime, {running(), started_utime_, episodeGoal(), algorithm_status_});
     publishPrinted(utime);
     if (on_tick_) on_tick_(utime);
   }
@@ -198,6 +204,8 @@ class ExerciseComponent {
   StartPose start_;
   bool autostart_ = false;
   bool autostarted_ = false;
+  static constexpr size_t kStatusBytes = 300;
+  std::string algorithm_status_;  // algorithmStatus() after the last execute() that returned
   int64_t started_utime_ = -1;  // the first Run of this episode (-1: not yet)
   std::unique_ptr<Pose3dProxy> pose_;
   std::unique_ptr<MotorsProxy> motors_;

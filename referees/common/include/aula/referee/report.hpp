@@ -39,8 +39,12 @@ class Report {
   std::vector<std::pair<std::string, std::string>> fields_;
 };
 
-// `text` as a JSON string, quoted and escaped.
+// `text` as a JSON string, quoted and escaped; bytes that are not valid UTF-8 as U+FFFD.
 std::string jsonString(const std::string& text);
+// The text with every byte that is not part of valid UTF-8 as U+FFFD: a student's text (a print,
+// an exception's message, a status) may hold anything, and reports and traces stay JSON that
+// any reader parses.
+std::string validUtf8(const std::string& text);
 
 // Fixed, locale-independent number formatting used in reports ("12.345678").
 std::string formatNumber(double value);

@@ -22,7 +22,9 @@ namespace aula::referee {
 class RunOutcome {
  public:
   // True when `generation` starts a new episode: the caller then resets its grading.
-  bool onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands, int generation);
+  // `status`: what the algorithm last said of where it stands (episode_t.status).
+  bool onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands, int generation,
+                 const std::string& status = "");
   void abort(const std::string& reason);  // the first reason wins
   // The algorithm's fault told by the launcher (a crash's line), as if the episode had said it.
   void algorithmFailed(const std::string& fault);
@@ -32,6 +34,7 @@ class RunOutcome {
   void announceOnce(bool over, const std::function<void()>& hook);
   const std::string& algorithm() const { return algorithm_; }
   const std::string& fault() const { return fault_; }
+  const std::string& algorithmStatus() const { return status_; }
   const std::string& aborted() const { return aborted_; }
   int generation() const { return generation_; }
   // The motor commands the component refused so far (not finite numbers, sent as 0).
@@ -39,7 +42,7 @@ class RunOutcome {
   // What was let through to grading and what was forged (a graded run's key, set by the node).
   TruthGate& truth() { return truth_; }
   const TruthGate& truth() const { return truth_; }
-  // The report's fields: algorithm, and when they apply algorithm_error, aborted,
+  // The report's fields: algorithm, and when they apply algorithm_status, algorithm_error, aborted,
   // non_finite_commands, reloads, tampering, truth_gaps; "finished" becomes false when the run
   // ended early.
   void addTo(Report& report) const;
@@ -53,7 +56,7 @@ class RunOutcome {
   std::vector<std::string> pictureNotes(const std::string& world_file, long long seed) const;
 
  private:
-  std::string algorithm_ = "unknown", fault_, aborted_;
+  std::string algorithm_ = "unknown", fault_, aborted_, status_;
   int64_t non_finite_commands_ = 0;
   int generation_ = 0;
   bool announced_ = false;
