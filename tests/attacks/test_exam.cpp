@@ -128,7 +128,8 @@ int grade(const std::vector<std::string>& folders, const fs::path& out, const st
           const std::vector<std::string>& more = {}) {
   std::vector<std::string> argv = {kAula, "grade", "vacuum"};
   argv.insert(argv.end(), folders.begin(), folders.end());
-  argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun, kOutputLimit});
+  // The fixed rubric: a class's marks, not a 20 s grade's own calibration, are what is compared.
+  argv.insert(argv.end(), {"--seeds=1", "--jobs=2", "--out=" + out.string(), kShortRun, kOutputLimit, "--calibration-seeds=off"});
   argv.insert(argv.end(), more.begin(), more.end());
   aula::process::ChildProcess child(argv, log, log);
   return child.wait(300s).value_or(-1);
@@ -542,7 +543,8 @@ TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
     std::ofstream(dir / "class" / student / "MyAlgorithm.cpp") << bounce;
     argv.push_back((dir / "class" / student).string());
   }
-  argv.insert(argv.end(), {"--seeds=1", "--jobs=1", "--record", "--similarity=off", "--Vacuum.Referee.Duration=120"});
+  argv.insert(argv.end(), {"--seeds=1", "--jobs=1", "--record", "--similarity=off", "--Vacuum.Referee.Duration=120",
+                           "--calibration-seeds=off"});
   auto gradeInto = [&](const std::vector<std::string>& before, const fs::path& out, const std::string& log) {
     std::vector<std::string> command = before;
     command.insert(command.end(), argv.begin(), argv.end());

@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 
 namespace {
 using namespace aula::grade;
@@ -194,3 +196,25 @@ TEST(Similarity, PathsAreComparedAtTheSameSimTimes) {
 }
 
 }  // namespace
+
+namespace {
+std::string readData(const std::string& path) {
+  std::ifstream in(std::string(AULA_SOURCE_DIR) + "/tests/data/" + path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+// Across the two languages (issue 39): a line-by-line Python port of a C++ program
+// (tests/data: the vacuum bounce and its port, which earn the same report) shares almost nothing
+// as written, and most of its fingerprints in the common form; two unrelated programs of the two
+// languages share little in either.
+TEST(Similarity, APythonPortOfACppProgramIsSeenInTheCommonForm) {
+  const std::string cpp = readData("plugins/vacuum_bounce.cpp"), py = readData("python/vacuum_bounce/MyAlgorithm.py");
+  const double as_written = compareCode(codeFingerprints(cpp, false), codeFingerprints(py, true), {}).score;
+  const CodeMatch common = compareCode(codeFingerprints(cpp, false, CodeForm::Common), codeFingerprints(py, true, CodeForm::Common), {});
+  std::cout << "as written " << as_written << ", common form " << common.score << " (" << common.shared << " shared)\n";
+  EXPECT_LT(as_written, 0.1);
+  EXPECT_GE(common.score, 0.6);
+  const std::string other = readData("python/teletaxi_follow/MyAlgorithm.py");
+  EXPECT_LT(compareCode(codeFingerprints(cpp, false, CodeForm::Common), codeFingerprints(other, true, CodeForm::Common), {}).score, 0.2);
+}

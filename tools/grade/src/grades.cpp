@@ -209,8 +209,10 @@ std::string compareSubmissions(const std::string& out_dir, const std::vector<std
   for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
     std::ifstream in(config::dataPath("templates/" + exercise + "/" + file));
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto prints = codeFingerprints(text, fs::path(file).extension() == ".py");
-    starter.insert(starter.end(), prints.begin(), prints.end());
+    for (const CodeForm form : {CodeForm::AsWritten, CodeForm::Common}) {
+      const auto prints = codeFingerprints(text, fs::path(file).extension() == ".py", form);
+      starter.insert(starter.end(), prints.begin(), prints.end());
+    }
   }
   const auto pairs = compareClass(students, results, starter, rules);
   config::writeFileAtomically((fs::path(out_dir) / "similarity.csv").string(), similarityCsv(pairs), "similarity");

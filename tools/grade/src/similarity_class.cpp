@@ -126,10 +126,14 @@ double pathLength(const Path& path) {
 
 std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students, const std::vector<nlohmann::json>& results,
                                          const std::vector<Fingerprint>& starter, const SimilarityRules& rules) {
-  std::vector<std::vector<Fingerprint>> prints;
+  // Each source as written, and in the common form for a pair across the two languages.
+  std::vector<std::vector<Fingerprint>> prints, common;
+  std::vector<bool> python;
   for (const Submitted& s : students) {
-    const bool python = fs::path(s.source_path).extension() == ".py";
-    prints.push_back(s.source_path.empty() ? std::vector<Fingerprint>{} : codeFingerprints(readText(s.source_path), python));
+    python.push_back(fs::path(s.source_path).extension() == ".py");
+    const std::string text = s.source_path.empty() ? "" : readText(s.source_path);
+    prints.push_back(text.empty() ? std::vector<Fingerprint>{} : codeFingerprints(text, python.back()));
+    common.push_back(text.empty() ? std::vector<Fingerprint>{} : codeFingerprints(text, python.back(), CodeForm::Common));
   }
   const Paths paths = pathsOf(results);
   std::vector<PairSimilarity> pairs;
@@ -139,7 +143,8 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
       PairSimilarity pair;
       pair.a = students[i].student;
       pair.b = students[j].student;
-      const CodeMatch code = compareCode(prints[i], prints[j], starter);
+      pair.across_languages = python[i] != python[j] && !students[i].source_path.empty() && !students[j].source_path.empty();
+      const CodeMatch code = pair.across_languages ? compareCode(common[i], common[j], starter) : compareCode(prints[i], prints[j], starter);
       pair.code_score = code.score;
       std::vector<std::string> runs;
       const auto pa = paths.find(pair.a), pb = paths.find(pair.b);
@@ -147,7 +152,8 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
       pair.runs_compared = static_cast<int>(runs.size());
       pair.flagged = (pair.code_score >= rules.code_threshold && code.shared >= rules.code_min_shared) ||
                      (pair.runs_compared > 0 && pair.behaviour_m <= rules.behaviour_threshold_m);
-      pair.evidence = evidenceOf(code, students[i], students[j], runs);
+      pair.evidence = (pair.across_languages && !code.ranges.empty() ? "across C++ and Python: " : "") +
+                      evidenceOf(code, students[i], students[j], runs);
       pairs.push_back(pair);
     }
   }
@@ -192,7 +198,7 @@ std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::
     const std::string who = known.count(p.b) != 0 ? escapeHtml(p.a) + " matches " + escapeHtml(p.b)
                                                     : escapeHtml(p.a) + " ~ " + escapeHtml(p.b);
     html << "<details class='pair'><summary><b>" << who << "</b>: code "
-         << number(p.code_score, 2) << (p.behaviour_m < 0 ? "" : ", paths " + number(p.behaviour_m, 3) + " m apart")
+         << number(p.code_score, 2) << (p.across_languages ? " (across C++ and Python)" : "") << (p.behaviour_m < 0 ? "" : ", paths " + number(p.behaviour_m, 3) + " m apart")
          << "</summary><p>" << escapeHtml(p.evidence) << "</p><div class='side-by-side'><pre>" << escapeHtml(source[p.a])
          << "</pre><pre>" << escapeHtml(source[p.b]) << "</pre></div></details>\n";
   }

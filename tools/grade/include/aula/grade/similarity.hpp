@@ -40,8 +40,18 @@ struct Fingerprint {
 
 // Winnowing: of every window of `window` consecutive k-gram hashes, the smallest (rightmost on a tie).
 std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k = 12, size_t window = 8);
-// A source's fingerprints as similarity compares them: tokenize, withoutNoOps, fingerprints.
-std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python);
+// The tokens of either language in one form, to compare a C++ file with a Python one (a
+// line-by-line translation): what only one language writes is dropped (brackets, `;` and `:`,
+// types and declarations' type names, `std::`, `this->` and `self.`, `def`, `math.`, casts), and
+// what both write differently is written one way (`&&` and, `||` or, `!` not, `->` ., `elif`
+// else if, true True, nullptr None).
+std::vector<Token> commonForm(const std::vector<Token>& tokens, bool python);
+
+// How a source is fingerprinted: as written (a pair in one language), or in the common form (a
+// pair across the two).
+enum class CodeForm { AsWritten, Common };
+// A source's fingerprints as similarity compares them: tokenize, withoutNoOps, (commonForm,) fingerprints.
+std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python, CodeForm form = CodeForm::AsWritten);
 
 struct CodeMatch {
   double score = 0;  // shared fingerprints over the smaller set, 0-1
@@ -49,7 +59,8 @@ struct CodeMatch {
   std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> ranges;  // (a first, last) ~ (b first, last)
 };
 
-// `starter`: the template's fingerprints, shared by everyone and so not counted.
+// `starter`: the template's fingerprints, shared by everyone and so not counted (both forms of
+// both languages' templates: a hash of one form never stands for code of the other).
 CodeMatch compareCode(const std::vector<Fingerprint>& a, const std::vector<Fingerprint>& b,
                       const std::vector<Fingerprint>& starter);
 
@@ -74,7 +85,8 @@ struct Submitted {
 
 struct PairSimilarity {
   std::string a, b;
-  double code_score = 0;
+  double code_score = 0;    // across the two languages: in the common form
+  bool across_languages = false;
   double behaviour_m = -1;  // the median over the runs compared of the mean distance; -1: none
   int runs_compared = 0;
   bool flagged = false;
