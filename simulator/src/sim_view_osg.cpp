@@ -52,6 +52,10 @@ AULA_MODULE_API void* aula_sim_view_open(const dart::simulation::WorldPtr& world
       ::osg::Vec3d(center_m.x(), center_m.y() - 0.9 * size_m, 0.8 * size_m),
       ::osg::Vec3d(center_m.x(), center_m.y(), 0.0), ::osg::Vec3d(0, 0, 1));
   view->viewer->setCameraManipulator(view->viewer->getCameraManipulator());
+  // One thread: the draw callback that writes a screenshot reads the file name captureScreen()
+  // sets; with OSG's default threads it may read it mid-assignment (a garbage file name, no
+  // picture, seen on a loaded machine).
+  view->viewer->setThreadingModel(::osgViewer::ViewerBase::SingleThreaded);
   view->viewer->realize();
   ::osgViewer::ViewerBase::Windows windows;
   view->viewer->getWindows(windows);
