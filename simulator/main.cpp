@@ -77,7 +77,7 @@ void runWithView(aula::sim::Simulator& simulator, const std::string& screenshot,
   }
   aula::sim::SimView view(simulator.physics().dartWorld(), center, std::min(size_m, 60.0), window);
   int frames = 0;
-  simulator.run([&] { return signals.stopRequested(); }, [&] {
+  simulator.run([&] { return signals.stopRequested() || simulator.secondOnTheBus().has_value(); }, [&] {
     if (++frames == 30 && !screenshot.empty()) view.captureNextFrame(screenshot);
     return view.frame();
   });
@@ -118,19 +118,24 @@ int runSimulator(int argc, char** argv) {
   options.watch_client_processes = status_fd < 0;  // alone, no launcher watches the processes
   // Another simulator on this URL would drive our clients with its clock: before our first tick,
   // ask (SIM_HELLO, sent as the simulator is built) and listen for one (while the world loads,
-  // then up to kListenForOthers in all). A running simulator answers at once with its tick: its
+  // then up to listen_for in all). A running simulator answers at once with its tick: its
   // loop handles the bus at every tick, and waits at most 20 ms at a time when it waits for
   // clients, is paused or paced; it also ticks at least every 100 ms of wall time by itself.
-  constexpr auto kListenForOthers = std::chrono::milliseconds(60);
-  const auto listen_until = std::chrono::steady_clock::now() + kListenForOthers;
+  // Started by hand (no launcher, which gives each run a bus of its own), a second simulator on a
+  // bus is a real risk and its start is not urgent: it listens longer, for a running one that a
+  // loaded machine schedules late. Should it still miss it, it stops at the first tick it hears
+  // from a simulator with clients while it has none (secondOnTheBus).
+  const auto listen_for = status_fd < 0 ? std::chrono::milliseconds(1000) : std::chrono::milliseconds(60);
+  const auto listen_until = std::chrono::steady_clock::now() + listen_for;
   sim::Simulator simulator(std::move(spec), options, *bus, key);
   if (cl.flag("commands")) {
     simulator.driveWith(lcmbus::recordedMessagesOfType(cl.option("commands"), aula::motors_t::getHash()));
   }
-  if (const auto other = simulator.otherSimulatorUntil(listen_until)) {
-    throw config::ConfigError("another simulator (instance " + std::to_string(other->instance) + ", world " +
-                              other->world + ") is already running on " + bus->url());
-  }
+  auto alreadyRunning = [&](const aula::sim_clock_t& other) {
+    return config::ConfigError("another simulator (instance " + std::to_string(other.instance) + ", world " + other.world +
+                               ") is already running on " + bus->url());
+  };
+  if (const auto other = simulator.otherSimulatorUntil(listen_until)) throw alreadyRunning(*other);
   // One write: the run's other processes write to the same terminal or log at the same moment.
   std::ostringstream started;
   started << "aula-sim: world '" << simulator.spec().name << "' (" << simulator.spec().source_path << ", sha256 "
@@ -141,8 +146,9 @@ int runSimulator(int argc, char** argv) {
   if (cl.flag("gui")) {
     runWithView(simulator, cl.option("screenshot"), aula::desktop::placementOf(cfg, "Simulator.Window"), signals);
   } else {
-    simulator.run([&] { return signals.stopRequested(); });
+    simulator.run([&] { return signals.stopRequested() || simulator.secondOnTheBus().has_value(); });
   }
+  if (simulator.secondOnTheBus()) throw alreadyRunning(*simulator.secondOnTheBus());
   std::cerr << "aula-sim: stopped at " << simulator.timeUs() / 1e6 << " s of sim time";
   if (simulator.rejectedControls() > 0) std::cerr << "; " << simulator.rejectedControls() << " SIM_CONTROL requests rejected";
   if (simulator.foreignTicks() > 0) std::cerr << "; " << simulator.foreignTicks() << " ticks of another simulator heard";

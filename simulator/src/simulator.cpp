@@ -172,6 +172,7 @@ void Simulator::onHello(const lcm::ReceiveBuffer*, const std::string&, const aul
 // Our own ticks come back to us (one read each); another instance's are another simulator's, or forged.
 void Simulator::onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick) {
   if (tick->instance == instance_) return;
+  if (!probing_ && !had_client_ && tick->num_clients > 0 && !second_on_bus_) second_on_bus_ = *tick;
   if (++foreign_ticks_ == 1) {
     first_foreign_ = *tick;
     if (!probing_) {
@@ -287,6 +288,7 @@ void Simulator::onRegister(const lcm::ReceiveBuffer*, const std::string& channel
     return;
   }
   if (lockstep_.join(msg->client, msg->period_us, msg->pid)) {
+    had_client_ = true;
     log("lockstep client '" + msg->client + "' joined, period " +
         std::to_string(msg->period_us / 1000.0) + " ms");
     // The newcomer must see (and ack) the current tick before the world moves on; the

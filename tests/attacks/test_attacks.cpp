@@ -190,7 +190,9 @@ TEST_F(Attacks, AClockOfAnotherSimulatorInstanceIsIgnored) {
 }
 
 // A second aula-sim started on a running run's URL hears the run's clock before its own first
-// tick and exits 2 at once; the run it would have disturbed grades as if it had never started.
+// tick and exits 2 at once (on a loaded machine, where its first listen may miss the run's
+// clock: at the run's first tick it hears, having no client of its own); the run it would have
+// disturbed grades as if it had never started.
 TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
   // Long enough that the run is still going when the second simulator has loaded its world.
   constexpr double kLongEpisodeS = 300;
@@ -201,7 +203,6 @@ TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
   ASSERT_TRUE(run.code.has_value()) << "the run hung:\n" << run.log;
   EXPECT_EQ(*run.code, 0) << run.log;
   ASSERT_EQ(second.code, 2) << second.output;
-  EXPECT_LT(second.wall_s, 2.0) << second.output;
   EXPECT_TRUE(std::regex_search(second.output,
                                 std::regex("aula-sim: another simulator \\(instance [0-9]+, world [^)]+\\) is already "
                                            "running on udpm://")))

@@ -102,6 +102,10 @@ class Simulator {
   std::optional<aula::sim_clock_t> otherSimulatorUntil(std::chrono::steady_clock::time_point until);
   // Ticks of another instance heard on the clock channel (another simulator, or a forgery).
   long long foreignTicks() const { return foreign_ticks_; }
+  // A tick of another simulator that has clients, heard while this one never had one: this one
+  // is the second on the bus (its listen before the first tick missed the other on a loaded
+  // machine), and stops as if it had heard it then; nullopt otherwise. Two without clients both go on.
+  const std::optional<aula::sim_clock_t>& secondOnTheBus() const { return second_on_bus_; }
   // Why the simulator ended the run before its end ("lockstep client 'vacuum-cleaner' silent for
   // 5.0 s" in a graded run; "lockstep client 'teletaxi' (pid 4242) is gone without leaving the
   // run" when watch_client_processes), or "": run() has returned then.
@@ -178,6 +182,8 @@ class Simulator {
   std::vector<lcmbus::RecordedMessage> recorded_commands_;  // driveWith
   std::size_t next_recorded_command_ = 0;
   std::optional<aula::sim_clock_t> first_foreign_;
+  std::optional<aula::sim_clock_t> second_on_bus_;  // secondOnTheBus()
+  bool had_client_ = false;                          // a lockstep client ever joined
   long long foreign_ticks_ = 0;
   Eigen::Vector4d bounds_m_;  // min x, min y, max x, max y where a robot may be put
   bool graded_ = false;       // a run key: no client is ever dropped, a silent one ends the run

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -27,10 +28,21 @@ using namespace std::chrono_literals;
 constexpr auto kStartTimeout = 5s;  // the record comes back on the bus by then
 constexpr auto kDrain = 200ms;      // the last datagrams of the run reach the recorder
 
-// The recorder's own receive buffer: a lockstep run as fast as possible sends bursts.
+// The recorder's own receive buffer, whatever the run's URL says: nobody waits for the recorder
+// (it is no lockstep client), and a lockstep run as fast as possible sends bursts, so a starved
+// launcher must find the run still queued. 64 MB holds a 300 s Autopark run's 50,000 messages
+// whole (4 MB lost 14 % of its poses beside four busy loops); the kernel grants it to a process
+// that may force it (root), else net.core.rmem_max.
 std::string withLargeReceiveBuffer(const std::string& url) {
-  if (url.rfind("udpm://", 0) != 0 || url.find("recv_buf_size=") != std::string::npos) return url;
-  return url + (url.find('?') == std::string::npos ? "?" : "&") + "recv_buf_size=4194304";
+  if (url.rfind("udpm://", 0) != 0) return url;
+  const auto question = url.find('?');
+  std::string out = url.substr(0, question) + "?recv_buf_size=67108864";
+  if (question == std::string::npos) return out;
+  std::istringstream options(url.substr(question + 1));
+  for (std::string option; std::getline(options, option, '&');) {
+    if (!option.empty() && option.rfind("recv_buf_size=", 0) != 0) out += "&" + option;
+  }
+  return out;
 }
 
 }  // namespace

@@ -89,14 +89,12 @@ class RunSupervisor {
     };
     if (i == 0 && status_write >= 0) pass("status-fd", status_write);  // why the simulator ended a graded run
     if (referee) pass("control-fd", control_read);
-    if (keyed) {
-      pass("key-fd", auth::keyPipe(*key));
+    auto passKey = [&](const std::string& option, const auth::Key& k) {  // a pipe of its own; ours closed once passed
+      pass(option, auth::keyPipe(k));
       launch.ours_to_close.push_back(launch.passed.back());
-    }
-    if (i == 1 && key) {  // its lockstep client's own key, not the run's (auth::clientKey)
-      pass("lockstep-key-fd", auth::keyPipe(auth::clientKey(*key, run_.component_client)));
-      launch.ours_to_close.push_back(launch.passed.back());
-    }
+    };
+    if (keyed) passKey("key-fd", *key);
+    if (i == 1 && key) passKey("lockstep-key-fd", auth::clientKey(*key, run_.component_client));  // its client's, not the run's
     if (i == 1 && crash_write >= 0) pass("crash-fd", crash_write);  // where a crash struck, in the student's lines
     const bool sandboxed = run_.sandbox && run_.has_referee && i == 1;
     if (sandboxed) {  // the student's code: in bubblewrap, under the seccomp filter (docs/grading.md)
