@@ -93,8 +93,7 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.005;
   // The time allowance: the thesis's reactive parker's time on that street.
   e.calibration = settings::ExerciseCalibration{"park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"},
-                                                {"Autopark.MaxV", "Autopark.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"}, "parked",
-                                                "planner"};
+                                                settings::reachKeys("Autopark"), "parked", "planner"};
   e.generator = settings::WorldGenerator{"street", "make_autopark.py", 0.1};
   e.referee_scene = "parking_street";
   return e;

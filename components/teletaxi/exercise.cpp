@@ -96,8 +96,9 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.005;
   // The speed scale: the reference's driving time to that destination.
   e.calibration = settings::ExerciseCalibration{"driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
-                                                {"TeleTaxi.Destination", "TeleTaxi.MaxV", "TeleTaxi.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"},
-                                                "reached", ""};
+                                                settings::reachKeys("TeleTaxi"), "reached", ""};
+  auto& context = e.calibration->context_keys;  // the destination first, as files record it
+  context.insert(context.begin(), "TeleTaxi.Destination");
   e.generator = settings::WorldGenerator{"city", "make_city.py", 1.25};
   return e;
 }

@@ -88,8 +88,9 @@ settings::Exercise declareExercise() {
   // The coverage scale: the random-bounce baseline's median at a 5, the reference's at a 10.
   e.calibration = settings::ExerciseCalibration{"coverage_percent", "bounce", "reference",
                                                 {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"},
-                                                {"Vacuum.Referee.Duration", "Vacuum.MaxV", "Vacuum.MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout", "Simulator.Noise.WheelSlip"},
-                                                "", ""};
+                                                settings::reachKeys("Vacuum"), "", ""};
+  auto& context = e.calibration->context_keys;  // the episode's length first, as files record it
+  context.insert(context.begin(), "Vacuum.Referee.Duration");
   e.generator = settings::WorldGenerator{"house", "make_house.py", 0.05};
   return e;
 }

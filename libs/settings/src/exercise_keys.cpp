@@ -82,4 +82,9 @@ void calibrationKey(SettingsTable& t, const std::string& section) {
          "the calibration file the launcher applied (aula run sets it; the report names it); empty: none");
 }
 
+std::vector<std::string> reachKeys(const std::string& section) {
+  return {section + ".MaxV", section + ".MaxW", "Simulator.Noise.LaserStddev", "Simulator.Noise.LaserDropout",
+          "Simulator.Noise.WheelSlip"};
+}
+
 }  // namespace aula::settings

@@ -8,7 +8,6 @@ namespace {
 
 int64_t periodUs(double period_s) { return static_cast<int64_t>(std::llround(period_s * 1e6)); }
 
-
 std::string intArray(const std::vector<int32_t>& values) {
   std::string out = "[";
   for (size_t i = 0; i < values.size(); ++i) out += (i ? "," : "") + std::to_string(values[i]);

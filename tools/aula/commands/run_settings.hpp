@@ -18,7 +18,7 @@ struct RunSettings {
   std::string cfg_path;
   config::Config overrides;  // checked: each key is declared by at least one process of the run
   std::string world;         // absolute path, handed to every process
-  std::vector<std::pair<const config::SettingsTable*, config::Config>> effective;  // simulator first
+  settings::ProcessSettings effective;  // simulator first (settings::resolveProcesses)
 
   const config::Config& component() const { return effective.at(1).second; }
   const config::Config& referee() const { return effective.back().second; }

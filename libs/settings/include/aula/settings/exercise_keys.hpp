@@ -6,6 +6,7 @@
 #include <aula/config/settings.hpp>
 
 #include <string>
+#include <vector>
 
 namespace aula::settings {
 
@@ -23,5 +24,8 @@ void calibrationKey(config::SettingsTable& t, const std::string& section);
 // SECTION.MaxV, MaxW, Period, Autostart and the Component.* budgets and sandbox limits.
 void motionKeys(config::SettingsTable& t, const std::string& section, double max_v, double max_w, double period_s,
                 double v_bound_mps, double w_bound_radps);
+// The settings that change what any exercise's robot can reach, which its calibration records
+// (ExerciseCalibration::context_keys): SECTION.MaxV and MaxW (motionKeys), and the simulator's noise.
+std::vector<std::string> reachKeys(const std::string& section);
 
 }  // namespace aula::settings
