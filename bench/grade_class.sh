@@ -29,7 +29,10 @@
 #   per minute, the ratios, and whether the two kinds' grades.csv are identical (the differing
 #   rows when not). (Not CPU time: a process in bubblewrap's own PID namespace is reaped there,
 #   and its time never reaches the grade's rusage.)
-# Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox|build]
+# --compare=process: the same two grades with the build in its sandbox both times, and the
+#   student's algorithm in a process of its own (--Component.OwnProcess=on, the default) or
+#   inside the component (off): the same figures and the same check of grades.csv.
+# Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox|build|process]
 #        [--rounds=1] [--slice=10] [--jobs=2] [EXTRA aula grade options...]
 set -euo pipefail
 build="$(cd "$1" && pwd)"; students="${2:-30}"; seeds="${3:-5}"; shift $(( $# < 3 ? $# : 3 ))
@@ -44,7 +47,7 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
-case "$compare" in jobs|sandbox|build) ;; *) echo "grade_class.sh: --compare=$compare: jobs, sandbox or build" >&2; exit 2 ;; esac
+case "$compare" in jobs|sandbox|build|process) ;; *) echo "grade_class.sh: --compare=$compare: jobs, sandbox, build or process" >&2; exit 2 ;; esac
 src="$(cd "$(dirname "$0")/.." && pwd)"
 work="$(mktemp -d "${TMPDIR:-/tmp}/aula-grade-bench-XXXXXX")"
 trap 'rm -rf "$work"' EXIT
@@ -58,7 +61,9 @@ for i in $(seq -w 1 "$students"); do
   } >"$work/class/student$i/MyAlgorithm.cpp"
 done
 
-if [ "$compare" = build ]; then
+if [ "$compare" = build ] || [ "$compare" = process ]; then
+  # What differs between the two grades: the build's sandbox, or the algorithm's own process.
+  option=--build-sandbox; [ "$compare" = process ] && option=--Component.OwnProcess
   runs=$((10#$students * seeds))
   printf 'class: %d students x %d seeds = %d vacuum runs on %d cores, --jobs=%d, compiled anew each time\n' \
     "$((10#$students))" "$seeds" "$runs" "$(nproc)" "$jobs"
@@ -73,21 +78,21 @@ if [ "$compare" = build ]; then
       # Each line of the grade's output with the seconds since the start: the compile step ends
       # where the grade says how many runs it plans.
       "$build/bin/aula" grade vacuum "$work"/class/* --seeds=1-"$seeds" --jobs="$jobs" --out="$out" \
-        --build-sandbox="$kind" --calibration-seeds=off "$@" | while IFS= read -r line; do
+        "$option=$kind" --calibration-seeds=off "$@" | while IFS= read -r line; do
           printf '%s %s\n' "$(echo "$(date +%s.%N) - $start" | bc -l)" "$line"
         done >"$work/build-$kind.txt"
       end=$(date +%s.%N)
       compiled=$(grep -m1 ' [0-9]* runs: ' "$work/build-$kind.txt" | cut -d' ' -f1)
       failed=$(grep -c 'did not compile\|refused' "$out/grades.csv" || true)
-      [ "$failed" = 0 ] || { echo "grade_class.sh: $failed submission(s) did not build with --build-sandbox=$kind" >&2; exit 1; }
+      [ "$failed" = 0 ] || { echo "grade_class.sh: $failed submission(s) did not build with $option=$kind" >&2; exit 1; }
       compile_s[$kind]=$(echo "${compile_s[$kind]} + $compiled" | bc -l)
       grade_s[$kind]=$(echo "${grade_s[$kind]} + $end - $start" | bc -l)
       cp "$out/grades.csv" "$work/grades-build-$kind.csv"
     done
   done
   for kind in on off; do
-    printf '  --build-sandbox=%-3s: compile %6.1f s (%5.1f plugins/min), whole grade %6.1f s (%5.1f runs/min) over %d round(s)\n' \
-      "$kind" "${compile_s[$kind]}" "$(echo "60 * $students * $rounds / ${compile_s[$kind]}" | bc -l)" \
+    printf '  %s=%-3s: compile %6.1f s (%5.1f plugins/min), whole grade %6.1f s (%5.1f runs/min) over %d round(s)\n' \
+      "$option" "$kind" "${compile_s[$kind]}" "$(echo "60 * $students * $rounds / ${compile_s[$kind]}" | bc -l)" \
       "${grade_s[$kind]}" "$(echo "60 * $runs * $rounds / ${grade_s[$kind]}" | bc -l)" "$rounds"
   done
   same=$(cmp -s "$work/grades-build-on.csv" "$work/grades-build-off.csv" && echo "identical" || echo "DIFFERENT")

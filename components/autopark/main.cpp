@@ -4,7 +4,9 @@
 #include "src/autopark_window.hpp"
 
 #include <aula/app/run_component.hpp>
+#include <aula/autopark/autopark_box.hpp>
 #include <aula/autopark/autopark_component.hpp>
+#include <aula/component/algorithm_box_main.hpp>
 
 namespace {
 constexpr const char* kUsage =
@@ -14,6 +16,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (aula::component::isAlgorithmBox(argc, argv)) return aula::component::runAlgorithmBox<aula::autopark::AutoparkBox>();
   return aula::app::guardedMain("autopark", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "autopark", {"screenshot", "screenshot-at"}, kUsage);
     aula::autopark::AutoparkComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);

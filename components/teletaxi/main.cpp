@@ -4,6 +4,8 @@
 #include "src/taxi_window.hpp"
 
 #include <aula/app/run_component.hpp>
+#include <aula/component/algorithm_box_main.hpp>
+#include <aula/teletaxi/taxi_box.hpp>
 #include <aula/teletaxi/taxi_component.hpp>
 
 namespace {
@@ -14,6 +16,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (aula::component::isAlgorithmBox(argc, argv)) return aula::component::runAlgorithmBox<aula::teletaxi::TaxiBox>();
   return aula::app::guardedMain("teletaxi", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "teletaxi", {"screenshot"}, kUsage);
     aula::teletaxi::TaxiComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);

@@ -4,6 +4,8 @@
 #include "src/vacuum_window.hpp"
 
 #include <aula/app/run_component.hpp>
+#include <aula/component/algorithm_box_main.hpp>
+#include <aula/vacuum/vacuum_box.hpp>
 #include <aula/vacuum/vacuum_component.hpp>
 
 namespace {
@@ -14,6 +16,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (aula::component::isAlgorithmBox(argc, argv)) return aula::component::runAlgorithmBox<aula::vacuum::VacuumBox>();
   return aula::app::guardedMain("vacuum-cleaner", [&] {
     auto setup = aula::app::ProcessSetup::fromArgs(argc, argv, "vacuum-cleaner", {"screenshot", "screenshot-at"}, kUsage);
     aula::vacuum::VacuumComponent component(*setup.bus, setup.cfg, setup.world, setup.lockstep_key);

@@ -314,3 +314,22 @@ TEST_F(StudentFaultsLoad, UndefinedSymbol) {
   const std::string err = readFile(::testing::TempDir() + "student_faults_undefined_symbol.err");
   EXPECT_NE(err.find("aula_test_function_that_does_not_exist"), std::string::npos) << err;
 }
+
+// The algorithm runs in a process of its own (Component.OwnProcess, issue 39): it holds its
+// socket, its private line and the three standard descriptors, none of the teacher's
+// environment, and not the component's command line (the run's bus, its world). Inside the
+// component (off), the same plugin sees all three.
+TEST(StudentFaults, TheAlgorithmsOwnProcessHoldsOnlyWhatTheApiGives) {
+  ::setenv("AULA_TEST_TEACHERS_SECRET", "the held-out world is in /srv/exam", 1);
+  const RunResult boxed = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds");
+  const RunResult inside = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds_inside", {"--Component.OwnProcess=off"});
+  ::unsetenv("AULA_TEST_TEACHERS_SECRET");
+  EXPECT_EQ(jsonString(boxed.report, "algorithm_error").value_or("").rfind("execute() threw std::runtime_error: holds: "
+                                                                           "fds=5 secret=no bus=no (thrown at what_it_holds.cpp:", 0),
+            0u)
+      << describe(boxed);
+  const std::string seen = jsonString(inside.report, "algorithm_error").value_or("");
+  EXPECT_NE(seen.find("secret=yes bus=yes"), std::string::npos) << describe(inside);
+  EXPECT_EQ(seen.find("fds=5 "), std::string::npos) << describe(inside);
+  EXPECT_NO_AULA_PROCESS_LEFT();
+}

@@ -7,6 +7,9 @@
 #include <aula/config/paths.hpp>
 
 #include <cxxabi.h>
+#include <csignal>
+#include <cmath>
+#include <pthread.h>
 
 #include <filesystem>
 #include <iostream>
@@ -39,6 +42,14 @@ void exitedInsideACall() {
   static const char said[] = "the algorithm called exit() inside a call into it: the component ends\n";
   (void)!::write(STDERR_FILENO, said, sizeof said - 1);
   std::_Exit(process::kExitAlgorithmExited);
+}
+
+// A line of the algorithm's own process, to the launcher as if said here (crash_report.hpp's line).
+void passOnLine(const std::string& line) {
+  const int line_fd = crashLineFd();
+  if (line_fd < 0) return;
+  const std::string said = line + "\n";
+  (void)!::write(line_fd, said.data(), said.size());
 }
 
 // What a call into the student's code came to: "" when it returned, else what it threw and
@@ -109,13 +120,14 @@ bool AlgorithmHostBase::namesPlugin(const std::string& choice) {
 }
 
 AlgorithmHostBase::AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
-                                     const AlgorithmBudgets& budgets)
+                                     const AlgorithmBudgets& budgets, bool own_process)
     : program_(std::move(program)),
       exercise_(std::move(exercise)),
       choice_(std::move(choice)),
       motors_(motors),
       budgets_(budgets),
-      watchdog_(program_, budgets.run) {
+      watchdog_(program_, budgets.run),
+      own_process_(own_process) {
   installCrashReport(program_, PluginImage{});
 }
 
@@ -157,25 +169,42 @@ bool AlgorithmHostBase::reloadPlugin() {
 
 bool AlgorithmHostBase::pluginChanged() const {
   if (builtin_) return false;  // Aula's own build, not the student's
+  if (own_process_) {
+    const int64_t now = isPlugin() ? PluginLibrary::mtimeNs(plugin_path_) : -1;
+    const int64_t loaded = box_ ? box_->loaded().plugin_mtime_ns : -1;
+    return now >= 0 && now != loaded && now != refused_mtime_ns_;
+  }
   if (plugin_ != nullptr) return plugin_->changedOnDisk();
   const int64_t now = isPlugin() ? PluginLibrary::mtimeNs(plugin_path_) : -1;
   return now >= 0 && now != refused_mtime_ns_;
 }
 
 std::string AlgorithmHostBase::name() const {
+  if (own_process_) return box_ ? box_->loaded().name : choice_;
   return plugin_ == nullptr || choice_ == "student" || builtin_ ? choice_ : fs::path(plugin_->path()).filename().string();
 }
 
 std::string AlgorithmHostBase::label() const {
   if (builtin_) return choice_;
+  if (own_process_) {
+    if (box_) return box_->loaded().label;
+    return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
+  }
   if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
   const char* when = PluginLibrary::isPythonFile(plugin_->path()) ? " (saved " : " (built ";
   return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";
 }
 
 std::string AlgorithmHostBase::takePrinted() {
+  std::string text;
+  if (own_process_) {
+    text = std::move(box_printed_);
+    box_printed_.clear();
+    printed_.append(text);
+    return text;
+  }
   if (hung_ || !plugin_) return {};  // an abandoned call's plugin is never touched again
-  std::string text = plugin_->takePrinted();
+  text = plugin_->takePrinted();
   printed_.append(text);
   return text;
 }
@@ -183,6 +212,8 @@ std::string AlgorithmHostBase::takePrinted() {
 bool AlgorithmHostBase::takesPrints() const { return PluginLibrary::isPythonFile(plugin_path_); }
 
 void AlgorithmHostBase::containHangs() {
+  windows_ = true;
+  if (own_process_) return;  // its process ends instead, and this one stays
   if (thread_) return;
   thread_ = std::make_unique<AlgorithmThread>();
   watchdog_.setResponse(ExecuteWatchdog::Response::Flag);
@@ -228,6 +259,88 @@ void AlgorithmHostBase::abandonHungCall(const std::string& why) {
   std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted. "
             << "Fix it, rebuild, and start the run again." << std::endl;
   if (on_hung_) on_hung_();
+}
+
+void AlgorithmHostBase::startBox() {
+  BoxStart start{program_, exercise_, choice_, motors_.maxV(), motors_.maxW()};
+  box_ = std::make_unique<AlgorithmBox>(start, budgets_);
+  box_->setOnLine([](const std::string& line) { passOnLine(line); });
+  ++box_starts_;
+  plugin_path_ = box_->loaded().plugin_path;
+  builtin_ = box_->loaded().builtin;
+  // (that process said which file and build runs)
+}
+
+bool AlgorithmHostBase::restartBox() {
+  box_.reset();
+  try {
+    startBox();
+  } catch (const PluginError& e) {
+    refused_mtime_ns_ = PluginLibrary::mtimeNs(plugin_path_);
+    fault_ = "reloading " + fs::path(plugin_path_).filename().string() + " failed: " + e.what();
+    motors_.stop();
+    std::cerr << program_ << ": " << fault_ << std::endl;
+    return false;
+  }
+  std::cerr << program_ << ": loaded " << label() << std::endl;
+  return true;
+}
+
+bool AlgorithmHostBase::callBox(uint64_t seed, const char* what, CallKind kind,
+                                const std::function<void(BoxWire&)>& inputs,
+                                const std::function<void(BoxWire&)>& outputs) {
+  if (!box_) return false;
+  const AlgorithmBox::Result result = box_->call(seed, what, kind, inputs, outputs);
+  passOnBoxLines();
+  if (!result.returned) {
+    boxEnded(result.ended);
+    return false;
+  }
+  const BoxReply& reply = result.reply;
+  box_printed_ += reply.printed;
+  // Its non-finite commands, counted here as if sent here (a NaN counts and zeroes its axis),
+  // then the commands it left.
+  const double v = motors_.getV(), w = motors_.getW(), l = motors_.getL();
+  for (int64_t n = motors_.nonFiniteV(); n < reply.non_finite_v; ++n) motors_.sendV(std::nan(""));
+  for (int64_t n = motors_.nonFiniteW(); n < reply.non_finite_w; ++n) motors_.sendW(std::nan(""));
+  for (int64_t n = motors_.nonFiniteL(); n < reply.non_finite_l; ++n) motors_.sendL(std::nan(""));
+  motors_.sendV(v);
+  motors_.sendW(w);
+  motors_.sendL(l);
+  // Its process said the fault and the first non-finite command, as the component said them.
+  fault_ = reply.fault;
+  if (fault_.empty()) return true;
+  motors_.stop();
+  return false;
+}
+
+void AlgorithmHostBase::passOnBoxLines() {
+  for (const std::string& line : box_->takeLines()) passOnLine(line);
+}
+
+void AlgorithmHostBase::boxEnded(const BoxEnded& ended) {
+  motors_.stop();
+  if (!windows_) {
+    // Headless: this process ends as the algorithm's did (its lines already passed on), so that
+    // the launcher explains it as before: the same exit code, or death by the same signal.
+    std::cout.flush();
+    std::cerr.flush();
+    if (ended.exit_code > 128) {
+      const int signal = ended.exit_code - 128;
+      struct sigaction plain {};
+      plain.sa_handler = SIG_DFL;
+      ::sigaction(signal, &plain, nullptr);
+      sigset_t only;
+      sigemptyset(&only);
+      sigaddset(&only, signal);
+      ::pthread_sigmask(SIG_UNBLOCK, &only, nullptr);
+      ::raise(signal);
+    }
+    std::_Exit(ended.exit_code);
+  }
+  fault_ = ended.reason;
+  std::cerr << program_ << ": the student's algorithm: " << fault_ << "; the robot is stopped and the algorithm halted. "
+            << "Fix it, rebuild, and start the run again." << std::endl;
 }
 
 void AlgorithmHostBase::noteNonFinite() {

@@ -190,6 +190,8 @@ void installCrashReport(const std::string& program, const PluginImage& plugin) {
 
 void reportCrashesTo(int fd) { crashState().fault_fd = fd; }
 
+int crashLineFd() { return crashState().fault_fd; }
+
 void endForForbiddenCall(const std::string& what) {
   const CrashReportState& s = crashState();
   sandbox::endForForbiddenTry(s.fault_fd, s.program, what);

@@ -84,10 +84,7 @@ bool TaxiComponent::generatePath(std::string* why) {
   const auto [px, py] = grid_->worldToGrid(truePose().getX(), truePose().getY());
   grid_->setPose(px, py);
   grid_->resetPath();
-  if (!host().call(runSeed(), "generatePath()", component::CallKind::Plan, [this](TaxiAlgorithm& a) {
-        api_->clock.set(simTimeUs());
-        a.generatePath(*api_);
-      })) {
+  if (!callAlgorithm(component::CallKind::Plan, "generatePath()")) {
     episode().markChanged();
     return fail("the algorithm failed in generatePath(); see the message");
   }

@@ -108,7 +108,8 @@ ProcessSetup ProcessSetup::fromArgs(int argc, const char* const* argv, const std
   }
   setup.cfg = table.resolve(file, siblings);
   if (exercise != nullptr && exercise->component == program &&
-      requireGradedAlgorithm(setup.cfg, setup.command_line, exercise->section, program)) {
+      requireGradedAlgorithm(setup.cfg, setup.command_line, exercise->section, program) &&
+      !setup.cfg.getBool("Component.OwnProcess")) {  // else the algorithm's own process watches (algorithm_box.hpp)
     watchForbiddenCalls(setup.command_line, program);
   }
 

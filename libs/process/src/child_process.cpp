@@ -42,13 +42,19 @@ bool processGone(pid_t pid) {
 }
 
 ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& stdout_path,
-                           const std::string& stderr_path, std::vector<int> pass_fds, Placement placement) {
+                           const std::string& stderr_path, std::vector<int> pass_fds, Placement placement,
+                           std::optional<std::vector<std::string>> environment) {
   if (argv.empty()) throw std::runtime_error("ChildProcess: empty command");
   name_ = argv[0];
   // A pipe closed on exec tells the parent whether exec succeeded.
   int status_pipe[2];
   if (pipe2(status_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
   const pid_t parent = getpid();
+  std::vector<char*> env;  // made before fork: the child only execs
+  if (environment) {
+    for (auto& e : *environment) env.push_back(e.data());
+    env.push_back(nullptr);
+  }
   pid_ = fork();
   if (pid_ < 0) throw std::runtime_error("fork failed: " + std::string(std::strerror(errno)));
   if (pid_ == 0) {
@@ -59,6 +65,7 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     sigset_t none;
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);
+    signal(SIGPIPE, SIG_DFL);  // a launcher ignores it (a referee that has ended); its children do not
     auto redirect = [](const std::string& path, int fd) {
       if (path.empty()) return;
       const int out = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -85,7 +92,11 @@ ChildProcess::ChildProcess(std::vector<std::string> argv, const std::string& std
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());
     args.push_back(nullptr);
-    execvp(args[0], args.data());
+    if (environment) {
+      execvpe(args[0], args.data(), env.data());
+    } else {
+      execvp(args[0], args.data());
+    }
     const int err = errno;
     (void)!write(status_pipe[1], &err, sizeof err);
     _exit(127);

@@ -167,6 +167,7 @@ sandbox::Confinement confinementOf(const Exercise& ex, const RunSettings& run, s
   limits.processes = component.getInt("Component.Sandbox.Processes");
   limits.file_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.FileSize") * (1 << 20));
   limits.output_bytes = static_cast<uint64_t>(component.getDouble("Component.Sandbox.Output") * (1 << 20));
+  limits.aula_processes = component.getBool("Component.OwnProcess") ? 3 : 2;
   const std::string algorithm = component.getString(ex.section + ".Algorithm");
   const auto files = supervision::componentFiles(binDir() + "/" + ex.component, ex.name, run.cfg_path, run.world, algorithm);
   sandbox::Confinement confinement = supervision::componentConfinement(files, limits);

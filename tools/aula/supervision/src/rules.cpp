@@ -150,7 +150,7 @@ std::string limitPassed(const sandbox::Limits& limits, uint64_t output_bytes, co
     return "the algorithm printed more than " + std::to_string(limits.output_bytes >> 20) + " MB (stdout and stderr)";
   }
   if (processes == nullptr) return "";
-  const int started = static_cast<int>(processes->size()) - 2;
+  const int started = static_cast<int>(processes->size()) - limits.aula_processes;
   if (started > limits.processes) return "the algorithm started more than " + std::to_string(limits.processes) + " processes";
   if (started > 0 && sandbox::memoryOf(*processes) > limits.memory_bytes) {
     return "the algorithm used more than " + std::to_string(limits.memory_bytes >> 20) + " MB of memory (its processes together)";

@@ -14,7 +14,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <csignal>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -130,6 +129,7 @@ class RunSupervisor {
     if (crash[1] >= 0) close(crash[1]);
     crash_line_ = std::make_unique<process::LinePipe>(crash[0]);
     control_fd_ = control[1];
+    ::signal(SIGPIPE, SIG_IGN);  // a line to a referee that has ended fails (EPIPE): the launcher goes on
     if (run_.has_referee) escapes_.tellTo(control_fd_);
     simulator_status_ = std::make_unique<process::LinePipe>(status[0]);
   }

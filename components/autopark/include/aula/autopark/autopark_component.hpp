@@ -5,6 +5,7 @@
 // ExerciseComponent.
 
 #include <aula/autopark/autopark_algorithm.hpp>
+#include <aula/autopark/autopark_box.hpp>
 #include <aula/component/exercise_component.hpp>
 
 #include <memory>
@@ -23,10 +24,15 @@ class AutoparkComponent : public component::ExerciseComponent<AutoparkAlgorithm>
   const std::string& robotName() const { return startPose().robot; }  // the car in the world
 
  private:
-  void execute(AutoparkAlgorithm& algorithm) override {
+  void invoke(AutoparkAlgorithm& algorithm, component::CallKind) override {
     api_->clock.set(simTimeUs());
     algorithm.execute(*api_);
   }
+  void boxInputs(component::BoxWire& wire, component::CallKind) override {
+    api_->clock.set(simTimeUs());
+    exchangeInputs(wire, *api_);
+  }
+  void boxOutputs(component::BoxWire& wire, component::CallKind) override { exchangeOutputs(wire, *api_); }
   std::string algorithmStatus() const override { return api_->status; }
   void detachSensors() override {
     for (component::LaserProxy* laser : {front_.get(), rear_.get(), right_.get()}) laser->detach();

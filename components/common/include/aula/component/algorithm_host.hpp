@@ -18,8 +18,10 @@
 //   that then returns is an ordinary fault;
 // - non-finite motor commands are counted, and said once in the log.
 
-#include <aula/component/devices.hpp>
+#include <aula/component/algorithm_box.hpp>
 #include <aula/component/algorithm_thread.hpp>
+#include <aula/component/box_wire.hpp>
+#include <aula/component/devices.hpp>
 #include <aula/component/crash_report.hpp>
 #include <aula/component/execute_watchdog.hpp>
 #include <aula/component/plugin_library.hpp>
@@ -59,6 +61,12 @@ class AlgorithmHostBase {
   std::string name() const;
   // A student's file (or the in-tree template) rather than a built-in: Reload offers its new build.
   bool isPlugin() const { return !plugin_path_.empty() && !builtin_; }
+  bool isBuiltin() const { return builtin_; }
+  // The algorithm runs in a process of its own (Component.OwnProcess, algorithm_box.hpp).
+  bool ownProcess() const { return own_process_; }
+  // How many processes of the algorithm were started so far (each Reload starts one): what
+  // went to the previous one (TeleTaxi's map) goes again.
+  int64_t boxStarts() const { return box_starts_; }
   // The plugin's file, kept when a reload failed: the window watches it.
   const std::string& pluginPath() const { return plugin_path_; }
   // What runs, for windows and logs: "reference", "libmy_algorithm.so (built 2026-11-23 17:04:12)"
@@ -96,7 +104,7 @@ class AlgorithmHostBase {
 
  protected:
   AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
-                    const AlgorithmBudgets& budgets);
+                    const AlgorithmBudgets& budgets, bool own_process);
   void loadPlugin();
   // Loads the plugin again; a file that cannot be used becomes the fault.
   bool reloadPlugin();
@@ -104,6 +112,14 @@ class AlgorithmHostBase {
   // False when it threw or hung. `call` must own what it uses: a hung call outlives this frame.
   bool guarded(const char* what, const CallBudget& budget, std::function<void()> call);
   const AlgorithmBudgets& budgets() const { return budgets_; }
+  // In a process of its own: starts it (the algorithm loaded there); PluginError as loadPlugin's.
+  void startBox();
+  // Starts it again (hot reload); a file that cannot be used becomes the fault.
+  bool restartBox();
+  // One call in that process; false when it failed (the fault says why).
+  bool callBox(uint64_t seed, const char* what, CallKind kind, const std::function<void(BoxWire&)>& inputs,
+               const std::function<void(BoxWire&)>& outputs);
+  void dropBox() { box_.reset(); }
 
   std::string program_, exercise_, choice_;
   Motors& motors_;
@@ -117,10 +133,20 @@ class AlgorithmHostBase {
  private:
   void noteNonFinite();
   void abandonHungCall(const std::string& why);
+  // The algorithm's process ended: headless, this process ends the same way; with windows, it
+  // is the algorithm's fault.
+  void boxEnded(const BoxEnded& ended);
+  // Its lines (escape tries...) to the launcher, as if said here.
+  void passOnBoxLines();
   AlgorithmBudgets budgets_;
   ExecuteWatchdog watchdog_;
   std::unique_ptr<AlgorithmThread> thread_;  // with windows (containHangs)
   bool hung_ = false;
+  bool own_process_ = false;
+  int64_t box_starts_ = 0;
+  bool windows_ = false;  // containHangs(): with windows, the algorithm's end is a fault
+  std::unique_ptr<AlgorithmBox> box_;
+  std::string box_printed_;  // what its replies brought, not yet taken
   std::function<void()> on_hung_;
   int64_t non_finite_said_ = 0;
   PrintedText printed_;
@@ -130,18 +156,27 @@ template <class Algorithm>
 class AlgorithmHost : public AlgorithmHostBase {
  public:
   // Throws PluginError (exit 2) for an unknown name or a plugin that cannot be used, at once.
+  // `own_process`: the algorithm runs in a process of its own (algorithm_box.hpp), called with
+  // callInBox; else here, called with call.
   AlgorithmHost(std::string program, std::string exercise, std::string choice, Motors& motors,
-                const AlgorithmBudgets& budgets)
-      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, budgets) {
-    loadPlugin();
+                const AlgorithmBudgets& budgets, bool own_process = false)
+      : AlgorithmHostBase(std::move(program), std::move(exercise), std::move(choice), motors, budgets, own_process) {
+    if (own_process) {
+      startBox();
+    } else {
+      loadPlugin();
+    }
   }
-  ~AlgorithmHost() { dropAlgorithm(); }  // the algorithm's code lives in the plugin
+  ~AlgorithmHost() {  // the algorithm's code lives in the plugin
+    dropBox();
+    dropAlgorithm();
+  }
 
   // Calls `use(algorithm)` (creating it with `seed` on first use) with faults contained.
   // Does nothing once halted by a fault. False when it threw now.
   // Creating it has a budget of its own (Component.StartBudget), apart from the first call's.
   bool call(uint64_t seed, const char* what, CallKind kind, const std::function<void(Algorithm&)>& use) {
-    if (!fault_.empty()) return false;
+    if (!fault_.empty() || ownProcess()) return false;
     if (!algorithm_ && !guarded("creating the algorithm (loading its file, its imports, its constructor)",
                                 budgets().start, [this, seed] { algorithm_ = create(seed); })) {
       return false;
@@ -149,14 +184,22 @@ class AlgorithmHost : public AlgorithmHostBase {
     const CallBudget& budget = kind == CallKind::Plan ? budgets().plan : budgets().execute;
     return guarded(what, budget, [this, use] { use(*algorithm_); });  // copies: the call may outlive this frame (a hang)
   }
+  // The same call in the algorithm's own process: `inputs` writes what the API gives now (the
+  // exercise's exchange), `outputs` reads what the algorithm left. Does nothing once halted.
+  bool callInBox(uint64_t seed, const char* what, CallKind kind, const std::function<void(BoxWire&)>& inputs,
+                 const std::function<void(BoxWire&)>& outputs) {
+    if (!fault_.empty()) return false;
+    return callBox(seed, what, kind, inputs, outputs);
+  }
 
   // Drops the algorithm and loads the plugin's file again (a new build). The next call creates a
   // fresh algorithm. False when the new file cannot be used: the fault says why, and nothing runs
   // (the old build is gone too: nothing half-loaded runs) until a reload succeeds.
   bool reload() {
     if (hung()) return false;  // the abandoned call may still be running in the algorithm
-    dropAlgorithm();
     fault_.clear();
+    if (ownProcess()) return restartBox();
+    dropAlgorithm();
     return reloadPlugin();
   }
 

@@ -28,6 +28,8 @@ void installCrashReport(const std::string& program, const PluginImage& plugin);
 
 // The launcher's private line for the crash's one line (a descriptor of this process), or -1.
 void reportCrashesTo(int fd);
+// That descriptor, or -1 (the algorithm's own process passes its lines on there).
+int crashLineFd();
 
 // The student's code called what no student's algorithm may (`what`: "call
 // makeReferenceAlgorithm", from a tripwire of the component's): the process ends with that reason,

@@ -113,8 +113,24 @@ class ExerciseComponent {
   void setOnTick(std::function<void(int64_t)> hook) { on_tick_ = std::move(hook); }
 
  protected:
-  // The student's execute() on the exercise's API, every control period while running.
-  virtual void execute(Algorithm& algorithm) = 0;
+  // A call into the student's algorithm on the exercise's API: execute() every control period
+  // while running; CallKind::Plan for an exercise that plans (TeleTaxi's generatePath()).
+  virtual void invoke(Algorithm& algorithm, CallKind kind) = 0;
+  // The same call when the algorithm runs in a process of its own (Component.OwnProcess): what
+  // the API gives now, written with the exercise's exchange (box_wire.hpp), and what the
+  // algorithm left, read with it; the algorithm's end (the exercise's Box, algorithm_box_main.hpp)
+  // reads and writes the same.
+  virtual void boxInputs(BoxWire& wire, CallKind kind) = 0;
+  virtual void boxOutputs(BoxWire& wire, CallKind kind) = 0;
+  // Calls the algorithm (invoke, or in its own process); false when it failed or is halted.
+  bool callAlgorithm(CallKind kind, const char* what) {
+    if (host_->ownProcess()) {
+      return host_->callInBox(
+          runSeed(), what, kind, [this, kind](BoxWire& wire) { boxInputs(wire, kind); },
+          [this, kind](BoxWire& wire) { boxOutputs(wire, kind); });
+    }
+    return host_->call(runSeed(), what, kind, [this, kind](Algorithm& algorithm) { invoke(algorithm, kind); });
+  }
   // A hung call may still read the exercise's own sensors: freeze them (the pose is frozen here).
   virtual void detachSensors() {}
   // At every tick, before Autostart and the episode message (TeleTaxi: the taxi on its grid).
@@ -151,7 +167,8 @@ class ExerciseComponent {
     pose_ = std::make_unique<Pose3dProxy>(bus, world::channelOf(robot, "pose3d"));
     motors_ = std::make_unique<MotorsProxy>(bus, world::channelOf(robot, "motors"), cfg.getDouble(p + ".MaxV"),
                                             cfg.getDouble(p + ".MaxW"));
-    host_ = std::make_unique<Host>(names.component, names.name, algorithm_name_, *motors_, budgetsOf(cfg));
+    host_ = std::make_unique<Host>(names.component, names.name, algorithm_name_, *motors_, budgetsOf(cfg),
+                                   cfg.getBool("Component.OwnProcess"));
     episode_ = std::make_unique<EpisodeSender>(bus, cfg.getString(p + ".Episode.Channel"), names.name, *host_);
     host_->setOnHung([this] {  // the stuck call may still read these: never written again
       pose_->detach();
@@ -168,7 +185,7 @@ class ExerciseComponent {
   }
 
   void step() {
-    if (!host_->call(runSeed(), "execute()", CallKind::Execute, [this](Algorithm& a) { execute(a); })) {
+    if (!callAlgorithm(CallKind::Execute, "execute()")) {
       setRunning(false);
       return;
     }

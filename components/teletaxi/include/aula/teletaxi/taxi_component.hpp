@@ -7,6 +7,7 @@
 #include <aula/desktop/window_layout.hpp>
 #include <aula/teletaxi/grid.hpp>
 #include <aula/teletaxi/taxi_algorithm.hpp>
+#include <aula/teletaxi/taxi_box.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <memory>
@@ -49,9 +50,23 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   const desktop::Placement& gridWindow() const { return grid_window_; }
 
  private:
-  void execute(TaxiAlgorithm& algorithm) override {
+  void invoke(TaxiAlgorithm& algorithm, component::CallKind kind) override {
     api_->clock.set(simTimeUs());
-    algorithm.execute(*api_);
+    if (kind == component::CallKind::Plan) {
+      algorithm.generatePath(*api_);
+    } else {
+      algorithm.execute(*api_);
+    }
+  }
+  void boxInputs(component::BoxWire& wire, component::CallKind kind) override {
+    api_->clock.set(simTimeUs());
+    bool with_map = map_sent_to_ != host().boxStarts();  // once to each process of the algorithm
+    exchangeInputs(wire, poseProxy(), motorsProxy(), api_->clock, grid_, with_map, kind);
+    map_sent_to_ = host().boxStarts();
+  }
+  void boxOutputs(component::BoxWire& wire, component::CallKind kind) override {
+    bool show_grid = false;  // read: the algorithm asked for it
+    exchangeOutputs(wire, motorsProxy(), *grid_, show_grid, kind);
   }
   void beforeTick(int64_t utime) override;
   // Autostart (TeleTaxi.Autostart): generate the path and GO! as soon as the destination and
@@ -74,6 +89,7 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   std::unique_ptr<TaxiApi> api_;
   std::optional<std::pair<double, double>> destination_;
   bool path_generated_ = false;
+  int64_t map_sent_to_ = 0;  // the algorithm's process (host().boxStarts()) that has the map
   std::optional<std::string> refusal_;
   desktop::Placement grid_window_;
 };

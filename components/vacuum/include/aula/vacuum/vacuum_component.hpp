@@ -7,6 +7,7 @@
 #include <aula/component/belief_publisher.hpp>
 #include <aula/component/exercise_component.hpp>
 #include <aula/vacuum/vacuum_algorithm.hpp>
+#include <aula/vacuum/vacuum_box.hpp>
 #include <aula/world/occupancy_map.hpp>
 
 #include <memory>
@@ -30,10 +31,19 @@ class VacuumComponent : public component::ExerciseComponent<VacuumAlgorithm> {
   const component::Belief& belief() const { return belief_; }
 
  private:
-  void execute(VacuumAlgorithm& algorithm) override {
+  void invoke(VacuumAlgorithm& algorithm, component::CallKind) override {
     api_->clock.set(simTimeUs());
     algorithm.execute(*api_);
   }
+  void boxInputs(component::BoxWire& wire, component::CallKind) override {
+    api_->clock.set(simTimeUs());
+    exchangeInputs(wire, devices());
+  }
+  void boxOutputs(component::BoxWire& wire, component::CallKind) override {
+    int64_t unused = 0;  // the map's version is the writing end's
+    exchangeOutputs(wire, devices(), unused);
+  }
+  VacuumDevices devices() { return {poseProxy(), *laser_, *bumper_, motorsProxy(), belief_, *api_}; }
   // A new algorithm believes nothing yet.
   bool startNewEpisode() override {
     belief_ = component::Belief{};

@@ -29,10 +29,11 @@ class ChildProcess {
   // handed to the child as its descriptor kPassedFd + i (the launcher's private control pipe,
   // the run's key: passedFd(i) is the number to tell the child); nothing else of the parent's is
   // inherited past exec beyond what lacks FD_CLOEXEC. `placement`: where and how the child is
-  // scheduled. Throws std::runtime_error when the
-  // program cannot be started.
+  // scheduled. `environment` ("NAME=value" each): the child's whole environment instead of
+  // ours. Throws std::runtime_error when the program cannot be started.
   ChildProcess(std::vector<std::string> argv, const std::string& stdout_path = "",
-               const std::string& stderr_path = "", std::vector<int> pass_fds = {}, Placement placement = Placement());
+               const std::string& stderr_path = "", std::vector<int> pass_fds = {}, Placement placement = Placement(),
+               std::optional<std::vector<std::string>> environment = std::nullopt);
   static constexpr int kPassedFd = 3;
   static constexpr int passedFd(size_t index) { return kPassedFd + static_cast<int>(index); }
   ~ChildProcess();  // stops the child if still running

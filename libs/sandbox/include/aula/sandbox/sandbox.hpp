@@ -41,6 +41,9 @@ struct Limits {
   uint64_t shm_bytes = 16ull << 20;
   uint64_t output_bytes = 256ull << 20;  // its stdout and stderr together (counted by the launcher)
   uint64_t cpu_s = 0;                  // RLIMIT_CPU of each process (0: none; a run has its own clocks)
+  // The sandbox's processes that are Aula's, not started by the student: bubblewrap's, the
+  // component, and the algorithm's own process when it has one (Component.OwnProcess).
+  int aula_processes = 2;
 };
 
 // The threads a component runs by itself (the algorithm's thread, the watchdog, the bus, TBB's

@@ -1,0 +1,386 @@
+#include "aula/component/algorithm_box.hpp"
+
+#include <aula/component/algorithm_host.hpp>
+#include <aula/component/crash_report.hpp>
+#include <aula/component/plugin_library.hpp>
+#include <aula/process/exit_codes.hpp>
+#include <aula/sandbox/forbidden_calls.hpp>
+#include <aula/sandbox/sandbox.hpp>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace aula::component {
+
+namespace {
+
+constexpr size_t kMaxReplyBytes = size_t{512} << 20;  // a belief's map at its largest, and the rest
+
+// What the algorithm's process keeps of the component's environment: where to write, the
+// language, one BLAS thread (sandbox.cpp's reasons), and Aula's own data folder.
+constexpr const char* kBoxEnvironment[] = {"PATH", "TMPDIR", "HOME", "XDG_CACHE_HOME", "OPENBLAS_NUM_THREADS",
+                                           "OMP_NUM_THREADS", "LANG", "LC_ALL", "AULA_DATA_DIR"};
+
+std::vector<std::string> boxEnvironment() {
+  std::vector<std::string> out;
+  for (const char* name : kBoxEnvironment) {
+    const char* value = std::getenv(name);
+    if (value != nullptr) out.push_back(std::string(name) + "=" + value);
+  }
+  return out;
+}
+
+void ioBudget(BoxWire& wire, CallBudget& budget) {
+  wire.io(budget.cpu_s, "budgets");
+  wire.io(budget.blocked_s, "budgets");
+}
+
+// The start, the same at both ends.
+void ioStart(BoxWire& wire, BoxStart& start, AlgorithmBudgets& budgets) {
+  wire.io(start.program, 256, "start");
+  wire.io(start.exercise, 256, "start");
+  wire.io(start.choice, 4096, "start");
+  wire.io(start.max_v_mps, "start");
+  wire.io(start.max_w_radps, "start");
+  ioBudget(wire, budgets.start);
+  ioBudget(wire, budgets.execute);
+  ioBudget(wire, budgets.plan);
+  wire.io(budgets.run.cpu_s, "budgets");
+  wire.io(budgets.run.blocked_s, "budgets");
+}
+
+bool readAll(int fd, char* data, size_t n) {
+  size_t done = 0;
+  while (done < n) {
+    const ssize_t got = ::read(fd, data + done, n - done);
+    if (got > 0) {
+      done += static_cast<size_t>(got);
+    } else if (got == 0) {
+      if (done == 0) return false;
+      throw BoxWireError("the algorithm's socket ended inside a frame");
+    } else if (errno != EINTR) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string signalName(int signal) {
+  switch (signal) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGBUS: return "SIGBUS";
+    case SIGFPE: return "SIGFPE";
+    case SIGILL: return "SIGILL";
+    case SIGABRT: return "SIGABRT";
+    case SIGKILL: return "SIGKILL";
+    case SIGTERM: return "SIGTERM";
+    case SIGSYS: return "SIGSYS";
+    case SIGXFSZ: return "SIGXFSZ";
+    case SIGXCPU: return "SIGXCPU";
+    default: return "signal " + std::to_string(signal);
+  }
+}
+
+}  // namespace
+
+bool readFrame(int fd, std::string& bytes, size_t max_bytes) {
+  uint32_t length = 0;
+  if (!readAll(fd, reinterpret_cast<char*>(&length), sizeof length)) return false;
+  if (length > max_bytes) {
+    throw BoxWireError("a frame of " + std::to_string(length) + " bytes, at most " + std::to_string(max_bytes));
+  }
+  bytes.resize(length);
+  if (length > 0 && !readAll(fd, bytes.data(), length)) throw BoxWireError("the algorithm's socket ended inside a frame");
+  return true;
+}
+
+void writeFrame(int fd, const std::string& bytes) {
+  const uint32_t length = static_cast<uint32_t>(bytes.size());
+  std::string frame(reinterpret_cast<const char*>(&length), sizeof length);
+  frame += bytes;
+  size_t done = 0;
+  while (done < frame.size()) {
+    const ssize_t put = ::send(fd, frame.data() + done, frame.size() - done, MSG_NOSIGNAL);
+    if (put > 0) {
+      done += static_cast<size_t>(put);
+    } else if (put < 0 && errno != EINTR) {
+      throw BoxWireError(std::string("the algorithm's socket: ") + std::strerror(errno));
+    }
+  }
+}
+
+bool isAlgorithmBox(int argc, char** argv) { return argc == 2 && std::strcmp(argv[1], "--algorithm-box") == 0; }
+
+AlgorithmBox::AlgorithmBox(const BoxStart& start, const AlgorithmBudgets& budgets) {
+  int pair[2];
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, pair) != 0) {
+    throw std::runtime_error(std::string("cannot make the algorithm's socket: ") + std::strerror(errno));
+  }
+  int line[2];
+  if (::pipe2(line, O_CLOEXEC) != 0) {
+    ::close(pair[0]);
+    ::close(pair[1]);
+    throw std::runtime_error(std::string("cannot make the algorithm's line: ") + std::strerror(errno));
+  }
+  socket_ = pair[0];
+  line_ = std::make_unique<process::LinePipe>(line[0]);
+  line_fd_ = line[0];
+  // Nothing of this process (its memory, environment, descriptors under /proc) for a process of
+  // the same user to read: the algorithm's is one.
+  ::prctl(PR_SET_DUMPABLE, 0);
+  std::error_code error;
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe", error).string();
+  try {
+    child_ = std::make_unique<process::ChildProcess>(std::vector<std::string>{self, "--algorithm-box"}, "", "",
+                                                     std::vector<int>{pair[1], line[1]}, process::Placement(),
+                                                     boxEnvironment());
+  } catch (...) {
+    ::close(pair[1]);
+    ::close(line[1]);
+    throw;
+  }
+  ::close(pair[1]);
+  ::close(line[1]);
+
+  BoxWire wire = BoxWire::writing();
+  auto type = static_cast<uint8_t>(BoxMessage::Start);
+  BoxStart s = start;
+  AlgorithmBudgets b = budgets;
+  wire.io(type, "start");
+  ioStart(wire, s, b);
+  writeFrame(socket_, wire.bytes());
+
+  std::string frame;
+  if (!readFrame(socket_, frame, 1 << 20)) {
+    const BoxEnded ended = endOf("loading the algorithm");
+    throw PluginError(start.program + ": the algorithm's process ended while loading it: " + ended.reason);
+  }
+  BoxWire in = BoxWire::reading(std::move(frame));
+  in.io(type, "loaded");
+  if (type == static_cast<uint8_t>(BoxMessage::Refused)) {
+    std::string why;
+    in.io(why, 1 << 16, "refused");
+    throw PluginError(why);
+  }
+  if (type != static_cast<uint8_t>(BoxMessage::Loaded)) throw BoxWireError("loaded: message " + std::to_string(type));
+  in.io(loaded_.plugin_path, 4096, "loaded");
+  in.io(loaded_.name, 4096, "loaded");
+  in.io(loaded_.label, 4096, "loaded");
+  in.io(loaded_.builtin, "loaded");
+  in.expectEnd("loaded");
+  loaded_.plugin_mtime_ns = PluginLibrary::mtimeNs(loaded_.plugin_path);
+}
+
+AlgorithmBox::~AlgorithmBox() {
+  if (socket_ >= 0) ::close(socket_);  // its end of the stream: it ends its algorithm and exits
+  if (child_ && !gone_ && !child_->wait(std::chrono::seconds(5))) child_->stop();
+}
+
+AlgorithmBox::Result AlgorithmBox::call(uint64_t seed, const char* what, CallKind kind,
+                                        const std::function<void(BoxWire&)>& inputs,
+                                        const std::function<void(BoxWire&)>& outputs) {
+  Result result;
+  if (gone_) {
+    result.ended = {process::kExitFailed, "the algorithm's process has ended"};
+    return result;
+  }
+  BoxWire wire = BoxWire::writing();
+  auto type = static_cast<uint8_t>(BoxMessage::Call);
+  auto kind_code = static_cast<int32_t>(kind);
+  std::string call_name = what;
+  wire.io(type, "call");
+  wire.io(seed, "call");
+  wire.io(kind_code, "call");
+  wire.io(call_name, 256, "call");
+  inputs(wire);
+  call_lines_.clear();
+  std::string frame;
+  try {
+    writeFrame(socket_, wire.bytes());
+    waitForReply();
+    if (!readFrame(socket_, frame, kMaxReplyBytes)) {
+      result.ended = endOf(what);
+      return result;
+    }
+  } catch (const BoxWireError&) {
+    result.ended = endOf(what);  // a broken socket: the process is gone, or as good as
+    return result;
+  }
+  BoxWire in = BoxWire::reading(std::move(frame));
+  in.io(type, "reply");
+  if (type != static_cast<uint8_t>(BoxMessage::Reply)) throw BoxWireError("reply: message " + std::to_string(type));
+  in.io(result.reply.fault, 1 << 20, "reply");
+  in.io(result.reply.printed, kMaxReplyBytes, "reply");
+  in.io(result.reply.non_finite_v, "reply");
+  in.io(result.reply.non_finite_w, "reply");
+  in.io(result.reply.non_finite_l, "reply");
+  outputs(in);
+  in.expectEnd("reply");
+  result.returned = true;
+  return result;
+}
+
+void AlgorithmBox::waitForReply() {
+  pollfd watched[2] = {{socket_, POLLIN, 0}, {line_fd_, POLLIN, 0}};
+  for (;;) {
+    watched[0].revents = watched[1].revents = 0;
+    if (::poll(watched, line_fd_ >= 0 ? 2 : 1, -1) < 0 && errno != EINTR) return;
+    if (watched[1].revents != 0) {
+      for (const std::string& line : line_->lines()) {
+        call_lines_.push_back(line);
+        if (on_line_) {
+          on_line_(line);
+        } else {
+          pending_lines_.push_back(line);
+        }
+      }
+      if ((watched[1].revents & (POLLHUP | POLLERR)) != 0) line_fd_ = -1;  // it has ended: the socket says so
+    }
+    if (watched[0].revents != 0) return;
+  }
+}
+
+std::vector<std::string> AlgorithmBox::takeLines() {
+  std::vector<std::string> out = std::move(pending_lines_);
+  pending_lines_.clear();
+  for (std::string& line : line_->lines()) out.push_back(std::move(line));
+  return out;
+}
+
+BoxEnded AlgorithmBox::endOf(const char* what) {
+  gone_ = true;
+  if (socket_ >= 0) ::close(socket_);
+  socket_ = -1;
+  // It is ending or has ended (its socket closed with it): its status, then its last lines.
+  const std::optional<int> code = child_->wait(std::chrono::seconds(10));
+  BoxEnded ended;
+  ended.exit_code = code ? *code : child_->stop();
+  for (const std::string& line : line_->lines()) {
+    pending_lines_.push_back(line);
+    call_lines_.push_back(line);
+  }
+  // Its last words in this call: a crash's or an overrun's line, else (a forbidden try's end)
+  // the last refusal.
+  std::string said;
+  for (const std::string& line : call_lines_) {
+    if (line.rfind("crashed ", 0) == 0 || line.rfind(kOverranPrefix, 0) == 0) said = line;
+    if (said.empty() && ended.exit_code == process::kExitAlgorithmForbidden && line.rfind("refused ", 0) == 0) said = line;
+  }
+  const std::string call = what;
+  if (said.rfind("crashed ", 0) == 0) {
+    ended.reason = call + " " + said;  // as a crash survived in the component says it
+  } else if (said.rfind(kOverranPrefix, 0) == 0) {
+    ended.reason = said.substr(std::strlen(kOverranPrefix));
+  } else if (said.rfind("refused ", 0) == 0) {
+    ended.reason = "the algorithm tried to " + said.substr(8) + ", which no student's algorithm may";
+  } else if (ended.exit_code == process::kExitAlgorithmExited) {
+    ended.reason = "the algorithm called exit() inside " + call;
+  } else if (ended.exit_code > 128) {
+    ended.reason = "the algorithm's process died of " + signalName(ended.exit_code - 128) + " in " + call;
+  } else {
+    ended.reason = "the algorithm's process ended (exit code " + std::to_string(ended.exit_code) + ") in " + call;
+  }
+  return ended;
+}
+
+}  // namespace aula::component
+
+// The algorithm's end (algorithm_box_main.hpp).
+
+namespace aula::component {
+
+bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
+  ::close_range(kBoxLineFd + 1, ~0U, 0);
+  std::string frame;
+  try {
+    if (!readFrame(kBoxSocketFd, frame, 1 << 20)) return false;
+    BoxWire wire = BoxWire::reading(std::move(frame));
+    uint8_t type = 0;
+    wire.io(type, "start");
+    if (type != static_cast<uint8_t>(BoxMessage::Start)) return false;
+    ioStart(wire, start, budgets);
+    wire.expectEnd("start");
+  } catch (const BoxWireError& e) {
+    std::cerr << "--algorithm-box: " << e.what() << std::endl;
+    return false;
+  }
+  reportCrashesTo(kBoxLineFd);  // a crash's, an overrun's and a forbidden try's line: the component's
+  // A graded run's (in its sandbox): the calls only an escape needs are said, as the component
+  // said them when the algorithm ran inside it.
+  if (std::ifstream(sandbox::kGradedAlgorithmFile)) {
+    const std::string why = sandbox::watchForbiddenCalls(kBoxLineFd);
+    if (!why.empty()) std::cerr << start.program << ": " << why << ": forbidden system calls are refused, not flagged" << std::endl;
+  }
+  return true;
+}
+
+void sayRefused(const std::string& why) {
+  BoxWire wire = BoxWire::writing();
+  auto type = static_cast<uint8_t>(BoxMessage::Refused);
+  std::string text = why;
+  wire.io(type, "refused");
+  wire.io(text, 1 << 16, "refused");
+  writeFrame(kBoxSocketFd, wire.bytes());
+}
+
+void sayLoaded(const AlgorithmHostBase& host) {
+  BoxWire wire = BoxWire::writing();
+  auto type = static_cast<uint8_t>(BoxMessage::Loaded);
+  std::string path = host.pluginPath(), name = host.name(), label = host.label();
+  bool builtin = host.isBuiltin();
+  wire.io(type, "loaded");
+  wire.io(path, 4096, "loaded");
+  wire.io(name, 4096, "loaded");
+  wire.io(label, 4096, "loaded");
+  wire.io(builtin, "loaded");
+  writeFrame(kBoxSocketFd, wire.bytes());
+}
+
+bool readCall(std::string& frame, BoxWire& wire, uint64_t& seed, CallKind& kind, const char*& what,
+              std::set<std::string>& names) {
+  if (!readFrame(kBoxSocketFd, frame, kMaxReplyBytes)) return false;
+  wire = BoxWire::reading(std::move(frame));
+  uint8_t type = 0;
+  int32_t kind_code = 0;
+  std::string name;
+  wire.io(type, "call");
+  if (type != static_cast<uint8_t>(BoxMessage::Call)) throw BoxWireError("call: message " + std::to_string(type));
+  wire.io(seed, "call");
+  wire.io(kind_code, "call");
+  wire.io(name, 256, "call");
+  kind = static_cast<CallKind>(kind_code);
+  what = names.insert(name).first->c_str();
+  return true;
+}
+
+void sendReply(const std::string& fault, const std::string& printed, const Motors& motors,
+               const std::function<void(BoxWire&)>& outputs) {
+  BoxWire wire = BoxWire::writing();
+  auto type = static_cast<uint8_t>(BoxMessage::Reply);
+  std::string f = fault, p = printed;
+  int64_t v = motors.nonFiniteV(), w = motors.nonFiniteW(), l = motors.nonFiniteL();
+  wire.io(type, "reply");
+  wire.io(f, 1 << 20, "reply");
+  wire.io(p, kMaxReplyBytes, "reply");
+  wire.io(v, "reply");
+  wire.io(w, "reply");
+  wire.io(l, "reply");
+  outputs(wire);
+  writeFrame(kBoxSocketFd, wire.bytes());
+}
+
+}  // namespace aula::component
