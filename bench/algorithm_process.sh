@@ -32,7 +32,8 @@ for ex in $exercises; do
     done
   done
   sim_s=$(grep -m1 '"sim_time_s"' "$out/$ex-on.json" | sed 's/.*: *\([0-9.]*\).*/\1/')
-  period_s=$("$build/bin/aula" config "$ex" 2>/dev/null | grep -m1 " $(period_of "$ex").Period = " | sed 's/.*= *\([0-9.]*\).*/\1/')
+  config=$("$build/bin/aula" config "$ex" 2>/dev/null)  # whole: a pipe closed early would end the script (pipefail)
+  period_s=$(sed -n "s/^ *$(period_of "$ex").Period = *\([0-9.]*\).*/\1/p" <<<"$config")
   periods=$(echo "$sim_s / $period_s" | bc)
   on=$(median <"$out/$ex-on.cpu"); off=$(median <"$out/$ex-off.cpu")
   same=$(cmp -s "$out/$ex-on.json" "$out/$ex-off.json" && echo identical || echo DIFFERENT)

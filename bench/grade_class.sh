@@ -30,7 +30,7 @@
 #   rows when not). (Not CPU time: a process in bubblewrap's own PID namespace is reaped there,
 #   and its time never reaches the grade's rusage.)
 # --compare=process: the same two grades with the build in its sandbox both times, and the
-#   student's algorithm in a process of its own (--Component.OwnProcess=on, the default) or
+#   student's algorithm in a process of its own (--Component.OwnProcess=on) or
 #   inside the component (off): the same figures and the same check of grades.csv.
 # Usage: bench/grade_class.sh BUILD_DIR [STUDENTS=30] [SEEDS=5] [--compare=jobs|sandbox|build|process]
 #        [--rounds=1] [--slice=10] [--jobs=2] [EXTRA aula grade options...]

@@ -14,19 +14,23 @@
 #include <iterator>
 #include <string>
 
+#include <unistd.h>
+
 namespace aula::vacuum {
 namespace {
 
 // --lcm-url=... from /proc/self/cmdline, else LCM's default.
-std::string runUrl() {
-  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+// The run's bus, from this process's command line, or its parent's (the component's, when the
+// algorithm runs in a process of its own: any process may read it).
+std::string runUrl(const std::string& process = "self") {
+  std::ifstream in("/proc/" + process + "/cmdline", std::ios::binary);
   const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string flag = "--lcm-url=";
   for (size_t at = 0; at < all.size(); at = all.find('\0', at) + 1) {
     if (all.compare(at, flag.size(), flag) == 0) return all.substr(at + flag.size(), all.find('\0', at) - at - flag.size());
     if (all.find('\0', at) == std::string::npos) break;
   }
-  return "";
+  return process == "self" ? runUrl(std::to_string(::getppid())) : "";
 }
 
 class CheatFromExecute : public VacuumAlgorithm {

@@ -41,18 +41,22 @@ struct SecondSim {
   std::string output;
 };
 RunResult runVacuum(const std::string& dir, const std::string& attack, const std::string& algorithm = "student",
-                    double duration_s = 60, SecondSim* second_sim = nullptr) {
+                    double duration_s = 60, SecondSim* second_sim = nullptr, const std::vector<std::string>& extra = {}) {
+  std::string options;
+  for (const std::string& option : extra) options += "-" + option.substr(option.find('=') + 1);
   const std::string tag = (attack.empty() ? "clean" : attack) + std::to_string(static_cast<int>(duration_s)) +
-                          (second_sim != nullptr ? "-second-sim" : "");
+                          (second_sim != nullptr ? "-second-sim" : "") + options;
   const std::string report = dir + "/" + tag + ".json", log = dir + "/" + tag + ".log";
   const std::string url = aula::testing::privateLcmUrl();
   RunResult run;
   const auto start = std::chrono::steady_clock::now();
   {
-    aula::process::ChildProcess launcher(
-        {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless", "--algorithm=" + algorithm, "--seed=3",
-         "--Vacuum.Referee.Duration=" + std::to_string(duration_s), "--report=" + report, "--lcm-url=" + url},
-        log, log);
+    std::vector<std::string> argv = {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless",
+                                     "--algorithm=" + algorithm, "--seed=3",
+                                     "--Vacuum.Referee.Duration=" + std::to_string(duration_s), "--report=" + report,
+                                     "--lcm-url=" + url};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    aula::process::ChildProcess launcher(argv, log, log);
     std::optional<aula::process::ChildProcess> attacker;
     if (!attack.empty()) {
       attacker.emplace(std::vector<std::string>{AULA_ATTACKER, "--lcm-url=" + url, "--attack=" + attack, "--after-s=10"},
@@ -160,16 +164,23 @@ TEST_F(Attacks, GarbageOnEveryChannelChangesNoMarkAndHangsNothing) {
   EXPECT_EQ(jsonNumber(run.report, "coverage_percent"), jsonNumber(clean_.report, "coverage_percent")) << run.report;
 }
 
-// The same pose flood and a teleport from inside the student's execute(): graded as the still
-// robot it is, and the report shows what it tried.
+// The same pose flood and a teleport from inside the student's execute(), on the run's bus found
+// in the component's command line. Inside the component (Component.OwnProcess=off): graded as
+// the still robot it is, and the report shows what it tried. In its own process (Component.OwnProcess=on) it
+// cannot open a socket: nothing reaches the run, and the run is the clean one.
 TEST_F(Attacks, APluginThatForgesFromExecuteIsGradedOnItsRealBehaviour) {
-  const RunResult run = runVacuum(dir_, "", AULA_CHEAT_PLUGIN);
+  const RunResult run = runVacuum(dir_, "", AULA_CHEAT_PLUGIN, 60, nullptr, {"--Component.OwnProcess=off"});
   ASSERT_EQ(run.code, 0) << run.log;
   EXPECT_EQ(jsonNumber(run.report, "mark"), jsonNumber(clean_.report, "mark")) << run.report;
   EXPECT_EQ(jsonNumber(run.report, "coverage_percent"), jsonNumber(clean_.report, "coverage_percent")) << run.report;
   const std::string counted = tampering(run.report);
   EXPECT_NE(counted.find("\"ROOMBA_POSE\": "), std::string::npos) << run.report;
   EXPECT_NE(counted.find("\"SIM_CONTROL\": 1"), std::string::npos) << run.report;
+
+  const RunResult boxed = runVacuum(dir_, "", AULA_CHEAT_PLUGIN, 60, nullptr, {"--Component.OwnProcess=on"});
+  ASSERT_EQ(boxed.code, 0) << boxed.log;
+  EXPECT_EQ(jsonNumber(boxed.report, "mark"), jsonNumber(clean_.report, "mark")) << boxed.report;
+  EXPECT_EQ(tampering(boxed.report), "") << boxed.report;
 }
 
 // A forged clock from another simulator instance, far ahead: the component (and the referee's
@@ -211,7 +222,8 @@ TEST_F(Attacks, ASecondSimulatorOnTheSameUrlExits2AndChangesNothing) {
 }
 
 // A plugin that tries to write outside, to see and ptrace the simulator and the referee, and to
-// open TCP and Unix sockets: without the sandbox every try succeeds (so this test can fail);
+// open TCP and Unix sockets: without the sandbox, inside the component, every try succeeds (so
+// this test can fail);
 // with `aula run --sandbox` (what `aula grade` runs) every one is refused, and the run is graded
 // as usual (LCM's UDP multicast still works). The same tries from a student's MyAlgorithm.py
 // (tests/attacks/python) meet the same walls.
@@ -231,14 +243,19 @@ TEST_P(Sandbox, AStudentsAlgorithmCannotWriteSeeOrTraceOtherProcessesNorOpenOthe
       {"open a TCP socket", "Permission denied"},
       {"open a Unix socket", "Permission denied"},
       {"ptrace another process", "Operation not permitted"}};
-  for (const bool sandboxed : {false, true}) {
-    SCOPED_TRACE(sandboxed ? "--sandbox" : "no sandbox");
-    const std::string report = dir + "/report.json", log = dir + (sandboxed ? "/sandboxed.log" : "/open.log");
+  // Open, sandboxed, and sandboxed with the algorithm in a process of its own.
+  for (const int kind : {0, 1, 2}) {
+    const bool sandboxed = kind > 0;
+    SCOPED_TRACE(kind == 0 ? "no sandbox" : kind == 1 ? "--sandbox" : "--sandbox --Component.OwnProcess=on");
+    const std::string report = dir + "/report.json", log = dir + "/run" + std::to_string(kind) + ".log";
     std::filesystem::remove(dir + "/escaped.txt");
     std::vector<std::string> argv = {std::string(AULA_BIN_DIR) + "/aula", "run", "vacuum", "--headless",
                                      "--algorithm=" + GetParam(), "--Vacuum.Referee.Duration=5",
                                      "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()};
-    if (sandboxed) argv.push_back("--sandbox");
+    // Without the sandbox, the algorithm inside the component (in its own process it may open no
+    // socket, nor trace its parent, which is not dumpable).
+    argv.push_back(sandboxed ? "--sandbox" : "--Component.OwnProcess=off");
+    if (kind == 2) argv.push_back("--Component.OwnProcess=on");
     aula::process::ChildProcess run(argv, log, log);
     ASSERT_EQ(run.wait(60s).value_or(-1), 0) << readFile(log);
     const std::string out = readFile(log);

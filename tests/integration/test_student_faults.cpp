@@ -315,13 +315,13 @@ TEST_F(StudentFaultsLoad, UndefinedSymbol) {
   EXPECT_NE(err.find("aula_test_function_that_does_not_exist"), std::string::npos) << err;
 }
 
-// The algorithm runs in a process of its own (Component.OwnProcess, issue 39): it holds its
+// The algorithm in a process of its own (Component.OwnProcess=on, issue 39): it holds its
 // socket, its private line and the three standard descriptors, none of the teacher's
 // environment, and not the component's command line (the run's bus, its world). Inside the
 // component (off), the same plugin sees all three.
 TEST(StudentFaults, TheAlgorithmsOwnProcessHoldsOnlyWhatTheApiGives) {
   ::setenv("AULA_TEST_TEACHERS_SECRET", "the held-out world is in /srv/exam", 1);
-  const RunResult boxed = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds");
+  const RunResult boxed = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds", {"--Component.OwnProcess=on"});
   const RunResult inside = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds_inside", {"--Component.OwnProcess=off"});
   ::unsetenv("AULA_TEST_TEACHERS_SECRET");
   EXPECT_EQ(jsonString(boxed.report, "algorithm_error").value_or("").rfind("execute() threw std::runtime_error: holds: "

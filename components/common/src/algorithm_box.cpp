@@ -319,6 +319,11 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
     return false;
   }
   reportCrashesTo(kBoxLineFd);  // a crash's, an overrun's and a forbidden try's line: the component's
+  // No socket of its own: not the run's bus (its address is in the component's command line, which
+  // any process may read), not any other.
+  if (const std::string why = sandbox::refuseNewSockets(); !why.empty()) {
+    std::cerr << start.program << ": " << why << ": the algorithm's process may open sockets" << std::endl;
+  }
   // A graded run's (in its sandbox): the calls only an escape needs are said, as the component
   // said them when the algorithm ran inside it.
   if (std::ifstream(sandbox::kGradedAlgorithmFile)) {

@@ -125,4 +125,15 @@ void endForForbiddenTry(int line_fd, const std::string& program, const std::stri
   std::_Exit(process::kExitAlgorithmForbidden);
 }
 
+std::string refuseNewSockets() {
+  std::unique_ptr<void, void (*)(scmp_filter_ctx)> ctx(seccomp_init(SCMP_ACT_ALLOW), seccomp_release);
+  if (!ctx) return "seccomp_init failed";
+  int rc = seccomp_attr_set(ctx.get(), SCMP_FLTATR_CTL_TSYNC, 1);
+  rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ERRNO(EACCES), SCMP_SYS(socket), 0);
+  rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ERRNO(EACCES), SCMP_SYS(socketpair), 0);
+  if (rc != 0) return "a seccomp rule could not be added";
+  if (seccomp_load(ctx.get()) != 0) return std::string("seccomp_load: ") + std::strerror(errno);
+  return "";
+}
+
 }  // namespace aula::sandbox

@@ -28,6 +28,10 @@ std::vector<std::string> forbiddenCalls();
 // the handler does not know): the caller says so and goes on, the sandbox's own refusals stand.
 std::string watchForbiddenCalls(int line_fd);
 
+// The student's algorithm in a process of its own (the component's algorithm box) needs no new
+// socket: socket() and socketpair() are refused there (EACCES), so it cannot open the run's bus
+// (or any other), even knowing its address. Returns "" when done, else why not.
+std::string refuseNewSockets();
 // The line the handler writes for a forbidden call: "refused " + the call's name.
 constexpr const char* kRefusedPrefix = "refused ";
 
