@@ -317,19 +317,30 @@ TEST_F(StudentFaultsLoad, UndefinedSymbol) {
 
 // The algorithm in a process of its own (Component.OwnProcess=on, issue 39): it holds its
 // socket, its private line and the three standard descriptors, none of the teacher's
-// environment, and not the component's command line (the run's bus, its world). Inside the
-// component (off), the same plugin sees all three.
+// environment, not the component's command line (the run's bus, its world), and it may open no
+// socket. Inside the component (off), the same plugin has all of them.
 TEST(StudentFaults, TheAlgorithmsOwnProcessHoldsOnlyWhatTheApiGives) {
   ::setenv("AULA_TEST_TEACHERS_SECRET", "the held-out world is in /srv/exam", 1);
   const RunResult boxed = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds", {"--Component.OwnProcess=on"});
   const RunResult inside = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds_inside", {"--Component.OwnProcess=off"});
   ::unsetenv("AULA_TEST_TEACHERS_SECRET");
   EXPECT_EQ(jsonString(boxed.report, "algorithm_error").value_or("").rfind("execute() threw std::runtime_error: holds: "
-                                                                           "fds=5 secret=no bus=no (thrown at what_it_holds.cpp:", 0),
+                                                                           "fds=5 secret=no bus=no socket=no (thrown at what_it_holds.cpp:", 0),
             0u)
       << describe(boxed);
   const std::string seen = jsonString(inside.report, "algorithm_error").value_or("");
-  EXPECT_NE(seen.find("secret=yes bus=yes"), std::string::npos) << describe(inside);
+  EXPECT_NE(seen.find("secret=yes bus=yes socket=yes"), std::string::npos) << describe(inside);
   EXPECT_EQ(seen.find("fds=5 "), std::string::npos) << describe(inside);
+  EXPECT_NO_AULA_PROCESS_LEFT();
+}
+
+// An algorithm in its own process that runs its own program again (the exam's re-exec): the new
+// image has no socket to its component (closed on exec), so it ends at once as a forbidden try,
+// and the run ends with that reason, flagged (exit code 5), instead of both ends waiting.
+TEST(StudentFaults, AnAlgorithmsProcessStartedAgainEndsTheRunAsAForbiddenTry) {
+  const RunResult run = runVacuum(AULA_PLUGIN_REEXEC, "reexec", {"--Component.OwnProcess=on"});
+  ASSERT_TRUE(run.code.has_value()) << describe(run);
+  EXPECT_NE(run.err.find("the algorithm tried to run the algorithm's process again"), std::string::npos) << describe(run);
+  EXPECT_NE(*run.code, 0) << describe(run);
   EXPECT_NO_AULA_PROCESS_LEFT();
 }

@@ -305,6 +305,12 @@ namespace aula::component {
 
 bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
   ::close_range(kBoxLineFd + 1, ~0U, 0);
+  // A component hands its box an open socket; a box without one was started by the algorithm of
+  // an earlier one (it re-executed its own program, whose socket closes on exec): that is its end.
+  if (::fcntl(kBoxSocketFd, F_GETFD) < 0) {
+    sandbox::endForForbiddenTry(kBoxLineFd, "the algorithm's process", "run the algorithm's process again");
+  }
+  ::fcntl(kBoxSocketFd, F_SETFD, FD_CLOEXEC);  // no program it runs (addr2line, its own) holds it
   std::string frame;
   try {
     if (!readFrame(kBoxSocketFd, frame, 1 << 20)) return false;

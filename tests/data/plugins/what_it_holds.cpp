@@ -1,7 +1,7 @@
 // A student's vacuum algorithm that looks at what its process holds, and says it as its fault:
 // how many descriptors it has open, whether the teacher's environment reached it
-// (AULA_TEST_TEACHERS_SECRET, set by the test), and whether it runs inside the component (whose
-// command line has the run's bus).
+// (AULA_TEST_TEACHERS_SECRET, set by the test), whether it runs inside the component (whose
+// command line has the run's bus), and whether it may open a socket.
 #include <aula/vacuum/vacuum_algorithm.hpp>
 
 #include <cstdlib>
@@ -10,6 +10,9 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+
+#include <sys/socket.h>
+#include <unistd.h>
 
 namespace aula::vacuum {
 namespace {
@@ -25,9 +28,12 @@ class WhatItHolds : public VacuumAlgorithm {
     --fds;  // the iterator's own
     std::ifstream in("/proc/self/cmdline");
     const std::string cmdline((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const int socket_fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    if (socket_fd >= 0) ::close(socket_fd);
     throw std::runtime_error("holds: fds=" + std::to_string(fds) +
                              " secret=" + (std::getenv("AULA_TEST_TEACHERS_SECRET") != nullptr ? "yes" : "no") +
-                             " bus=" + (cmdline.find("--lcm-url") != std::string::npos ? "yes" : "no"));
+                             " bus=" + (cmdline.find("--lcm-url") != std::string::npos ? "yes" : "no") +
+                             " socket=" + (socket_fd >= 0 ? "yes" : "no"));
   }
 };
 
