@@ -154,8 +154,13 @@ bool AlgorithmHostBase::reloadPlugin() {
   const std::string file = fs::path(plugin_path_).filename().string();
   watchdog_.setInterrupter({});
   plugin_.reset();
+  box_.reset();
   try {
-    loadPlugin();
+    if (own_process_) {
+      startBox();
+    } else {
+      loadPlugin();
+    }
   } catch (const PluginError& e) {
     refused_mtime_ns_ = PluginLibrary::mtimeNs(plugin_path_);
     fault_ = "reloading " + file + " failed: " + e.what();
@@ -186,10 +191,7 @@ std::string AlgorithmHostBase::name() const {
 
 std::string AlgorithmHostBase::label() const {
   if (builtin_) return choice_;
-  if (own_process_) {
-    if (box_) return box_->loaded().label;
-    return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
-  }
+  if (box_) return box_->loaded().label;
   if (plugin_ == nullptr) return plugin_path_.empty() ? choice_ : fs::path(plugin_path_).filename().string() + " (not loaded)";
   const char* when = PluginLibrary::isPythonFile(plugin_->path()) ? " (saved " : " (built ";
   return fs::path(plugin_->path()).filename().string() + when + plugin_->builtAt() + ")";
@@ -269,21 +271,6 @@ void AlgorithmHostBase::startBox() {
   plugin_path_ = box_->loaded().plugin_path;
   builtin_ = box_->loaded().builtin;
   // (that process said which file and build runs)
-}
-
-bool AlgorithmHostBase::restartBox() {
-  box_.reset();
-  try {
-    startBox();
-  } catch (const PluginError& e) {
-    refused_mtime_ns_ = PluginLibrary::mtimeNs(plugin_path_);
-    fault_ = "reloading " + fs::path(plugin_path_).filename().string() + " failed: " + e.what();
-    motors_.stop();
-    std::cerr << program_ << ": " << fault_ << std::endl;
-    return false;
-  }
-  std::cerr << program_ << ": loaded " << label() << std::endl;
-  return true;
 }
 
 bool AlgorithmHostBase::callBox(uint64_t seed, const char* what, CallKind kind,

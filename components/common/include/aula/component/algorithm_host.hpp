@@ -106,7 +106,8 @@ class AlgorithmHostBase {
   AlgorithmHostBase(std::string program, std::string exercise, std::string choice, Motors& motors,
                     const AlgorithmBudgets& budgets, bool own_process);
   void loadPlugin();
-  // Loads the plugin again; a file that cannot be used becomes the fault.
+  // Loads the plugin again (in a process of its own: starts that process again); a file that
+  // cannot be used becomes the fault.
   bool reloadPlugin();
   // Runs `call` under the watchdog (or on the AlgorithmThread); an exception becomes the fault.
   // False when it threw or hung. `call` must own what it uses: a hung call outlives this frame.
@@ -114,8 +115,6 @@ class AlgorithmHostBase {
   const AlgorithmBudgets& budgets() const { return budgets_; }
   // In a process of its own: starts it (the algorithm loaded there); PluginError as loadPlugin's.
   void startBox();
-  // Starts it again (hot reload); a file that cannot be used becomes the fault.
-  bool restartBox();
   // One call in that process; false when it failed (the fault says why).
   bool callBox(uint64_t seed, const char* what, CallKind kind, const std::function<void(BoxWire&)>& inputs,
                const std::function<void(BoxWire&)>& outputs);
@@ -198,8 +197,7 @@ class AlgorithmHost : public AlgorithmHostBase {
   bool reload() {
     if (hung()) return false;  // the abandoned call may still be running in the algorithm
     fault_.clear();
-    if (ownProcess()) return restartBox();
-    dropAlgorithm();
+    dropAlgorithm();  // none here when it runs in a process of its own
     return reloadPlugin();
   }
 
