@@ -310,10 +310,14 @@ inline bool forkedMemoryReady(int ready, int& count) {
 }
 
 [[noreturn]] inline void throwTheWorld() {
-  std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
+  // The world's path is in the component's command line: its own, or its parent's when the
+  // algorithm runs in a process of its own.
   std::string world;
-  for (std::string arg; std::getline(cmdline, arg, '\0');) {
-    if (arg.rfind("--Vacuum.World=", 0) == 0) world = arg.substr(15);
+  for (const std::string& process : {std::string("self"), std::to_string(::getppid())}) {
+    std::ifstream cmdline("/proc/" + process + "/cmdline", std::ios::binary);
+    for (std::string arg; world.empty() && std::getline(cmdline, arg, '\0');) {
+      if (arg.rfind("--Vacuum.World=", 0) == 0) world = arg.substr(15);
+    }
   }
   std::ifstream in(world);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

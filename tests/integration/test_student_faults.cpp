@@ -317,19 +317,24 @@ TEST_F(StudentFaultsLoad, UndefinedSymbol) {
 
 // The algorithm in a process of its own (Component.OwnProcess=on, issue 39): it holds its
 // socket, its private line and the three standard descriptors, none of the teacher's
-// environment, not the component's command line (the run's bus, its world), and it may open no
-// socket. Inside the component (off), the same plugin has all of them.
+// environment, not the component's command line (the run's bus, its world), it may open no
+// socket and make no system call off its list (memfd_create), each refusal said once on its
+// output. Inside the component (off), the same plugin has all of them.
 TEST(StudentFaults, TheAlgorithmsOwnProcessHoldsOnlyWhatTheApiGives) {
   ::setenv("AULA_TEST_TEACHERS_SECRET", "the held-out world is in /srv/exam", 1);
   const RunResult boxed = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds", {"--Component.OwnProcess=on"});
   const RunResult inside = runVacuum(AULA_PLUGIN_WHAT_IT_HOLDS, "what_it_holds_inside", {"--Component.OwnProcess=off"});
   ::unsetenv("AULA_TEST_TEACHERS_SECRET");
   EXPECT_EQ(jsonString(boxed.report, "algorithm_error").value_or("").rfind("execute() threw std::runtime_error: holds: "
-                                                                           "fds=5 secret=no bus=no socket=no (thrown at what_it_holds.cpp:", 0),
+                                                                           "fds=5 secret=no bus=no socket=no memfd=no (thrown at what_it_holds.cpp:", 0),
             0u)
       << describe(boxed);
+  for (const char* call : {"socket", "memfd_create"}) {
+    const std::string said = std::string("the algorithm's process may not call ") + call + "(): refused\n";
+    EXPECT_NE(boxed.err.find(said), std::string::npos) << describe(boxed);
+  }
   const std::string seen = jsonString(inside.report, "algorithm_error").value_or("");
-  EXPECT_NE(seen.find("secret=yes bus=yes socket=yes"), std::string::npos) << describe(inside);
+  EXPECT_NE(seen.find("secret=yes bus=yes socket=yes memfd=yes"), std::string::npos) << describe(inside);
   EXPECT_EQ(seen.find("fds=5 "), std::string::npos) << describe(inside);
   EXPECT_NO_AULA_PROCESS_LEFT();
 }

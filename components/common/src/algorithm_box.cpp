@@ -325,16 +325,13 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
     return false;
   }
   reportCrashesTo(kBoxLineFd);  // a crash's, an overrun's and a forbidden try's line: the component's
-  // No socket of its own: not the run's bus (its address is in the component's command line, which
-  // any process may read), not any other.
-  if (const std::string why = sandbox::refuseNewSockets(); !why.empty()) {
-    std::cerr << start.program << ": " << why << ": the algorithm's process may open sockets" << std::endl;
-  }
-  // A graded run's (in its sandbox): the calls only an escape needs are said, as the component
-  // said them when the algorithm ran inside it.
-  if (std::ifstream(sandbox::kGradedAlgorithmFile)) {
-    const std::string why = sandbox::watchForbiddenCalls(kBoxLineFd);
-    if (!why.empty()) std::cerr << start.program << ": " << why << ": forbidden system calls are refused, not flagged" << std::endl;
+  // Only the calls an algorithm needs (forbidden_calls.hpp): no socket of its own, not the run's
+  // bus (its address is in the component's command line, which any process may read), not any
+  // other. A graded run's (in its sandbox) flags the escapes among the rest, as the component's
+  // watch flagged them when the algorithm ran inside it.
+  const bool graded = static_cast<bool>(std::ifstream(sandbox::kGradedAlgorithmFile));
+  if (const std::string why = sandbox::allowOnlyAlgorithmCalls(graded ? kBoxLineFd : -1); !why.empty()) {
+    std::cerr << start.program << ": " << why << ": the algorithm's process may make any system call" << std::endl;
   }
   return true;
 }

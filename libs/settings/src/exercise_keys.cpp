@@ -67,9 +67,10 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
          "CPU time all the algorithm's calls of a run may use together; 0: no limit");
   t.real("Component.RunBlockedLimit", 60.0, "s", 0, 1e7,
          "time all the algorithm's calls of a run may spend blocked together; 0: no limit");
-  t.flag("Component.OwnProcess", false,
-         "run the student's algorithm in a process of its own, which gets only what the API gives and may open no "
-         "socket (the component keeps the world, the bus and the run's keys); off: inside the component");
+  t.flag("Component.OwnProcess", true,
+         "run the student's algorithm in a process of its own, which gets only what the API gives and makes only "
+         "the system calls on its list, no socket (the component keeps the world, the bus and the run's keys); "
+         "off: inside the component");
   t.real("Component.Sandbox.Memory", 2048, "MB", 64, 1e7,
          "memory the student's code may use in a sandboxed (graded) run; past it the run ends with that reason");
   t.integer("Component.Sandbox.Processes", 64, "", 0, 4096,

@@ -193,8 +193,12 @@ def fork_memory_ready(read_end, count):
 
 
 def throw_the_world():
-    with open("/proc/self/cmdline", "rb") as f:
-        args = [a.decode() for a in f.read().split(b"\0") if a]
+    # The world's path is in the component's command line: its own, or its parent's when the
+    # algorithm runs in a process of its own.
+    args = []
+    for process in ("self", str(os.getppid())):
+        with open(f"/proc/{process}/cmdline", "rb") as f:
+            args += [a.decode() for a in f.read().split(b"\0") if a]
     world = next(a[len("--Vacuum.World="):] for a in args if a.startswith("--Vacuum.World="))
     with open(world) as f:
         text = f.read(2048)

@@ -1,7 +1,9 @@
 // What a graded run's launcher sees of the student's tries to get out of the run: the graded
-// component's watch on forbidden system calls (sandbox/forbidden_calls.hpp), in a child process of its own (a seccomp filter is for a process's life): a forbidden call returns
-// EPERM and is said on the line; the watch's handler and line cannot be taken away; a call it
-// does not watch goes through.
+// component's watch on forbidden system calls (sandbox/forbidden_calls.hpp), in a child process
+// of its own (a seccomp filter is for a process's life): a forbidden call returns EPERM and is
+// said on the line; the watch's handler and line cannot be taken away; a call it does not watch
+// goes through. And the algorithm's own process's list: a call off it fails, said on stderr,
+// the escapes among them on the line.
 #include <aula/sandbox/datagram_watch.hpp>
 #include <aula/sandbox/forbidden_calls.hpp>
 #include <aula/sandbox/sandbox.hpp>
@@ -11,13 +13,17 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <memory>
 #include <string>
+#include <thread>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/mount.h>
 #include <sys/socket.h>
+#include <sys/ioctl.h>
+#include <sys/mman.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <sched.h>
@@ -27,14 +33,20 @@ namespace {
 
 // Runs `tries(line_fd)` in a watched child: returns what the child wrote on its line, a '|', then
 // "ok" or the number of the try that failed.
-std::string inWatchedChild(int (*tries)(int line_fd)) {
-  int line[2], verdict[2];
-  if (::pipe(line) != 0 || ::pipe(verdict) != 0) return "pipe failed";
+// `install`: the filter (the watch, by default, or the algorithm's list). `said`: when given,
+// what the child wrote on stderr.
+std::string inWatchedChild(int (*tries)(int line_fd), std::string (*install)(int) = aula::sandbox::watchForbiddenCalls,
+                           std::string* said = nullptr) {
+  int line[2], verdict[2], err[2];
+  if (::pipe(line) != 0 || ::pipe(verdict) != 0 || ::pipe(err) != 0) return "pipe failed";
   const pid_t child = ::fork();
   if (child == 0) {
     ::close(line[0]);
     ::close(verdict[0]);
-    const std::string why = aula::sandbox::watchForbiddenCalls(line[1]);
+    ::close(err[0]);
+    if (said != nullptr) ::dup2(err[1], STDERR_FILENO);
+    ::close(err[1]);
+    const std::string why = install(line[1]);
     const int failed = why.empty() ? tries(line[1]) : -1;
     const std::string text = failed == 0 ? "ok" : "failed at try " + std::to_string(failed) + " " + why;
     (void)!::write(verdict[1], text.data(), text.size());
@@ -42,11 +54,14 @@ std::string inWatchedChild(int (*tries)(int line_fd)) {
   }
   ::close(line[1]);
   ::close(verdict[1]);
+  ::close(err[1]);
   int status = 0;
   ::waitpid(child, &status, 0);
   std::string out;
   char buffer[512];
   for (ssize_t n; (n = ::read(line[0], buffer, sizeof buffer)) > 0;) out.append(buffer, n);
+  for (ssize_t n; said != nullptr && (n = ::read(err[0], buffer, sizeof buffer)) > 0;) said->append(buffer, n);
+  ::close(err[0]);
   out += "|";
   for (ssize_t n; (n = ::read(verdict[0], buffer, sizeof buffer)) > 0;) out.append(buffer, n);
   if (!WIFEXITED(status)) out += " (the child died of signal " + std::to_string(WTERMSIG(status)) + ")";
@@ -122,6 +137,57 @@ TEST(ForbiddenCalls, AForbiddenTryEndsTheProcessAndIsSaidOnTheLine) {
   EXPECT_GT(::read(line[0], said, sizeof said - 1), 0);
   EXPECT_STREQ(said, "refused call it\n");
   ::close(line[0]);
+}
+
+// The algorithm's own process: what an algorithm needs goes through (memory, threads, a child,
+// time); any other call fails, said once on stderr; the escapes among them (a socket, a
+// namespace, a mount) on the line; the terminal is read, never typed into.
+TEST(AlgorithmCalls, OnlyTheListGoesThroughAndEscapesAreSaidOnTheLine) {
+  std::string said;
+  const std::string out = inWatchedChild(
+      [](int) {
+        if (::socket(AF_INET, SOCK_DGRAM, 0) != -1 || errno != EACCES) return 1;
+        if (::memfd_create("aula", 0) != -1 || errno != EPERM) return 2;
+        if (::memfd_create("aula", 0) != -1 || errno != EPERM) return 3;  // said once
+        if (::syscall(SYS_clone, CLONE_NEWUSER | SIGCHLD, 0, 0, 0, 0) != -1 || errno != EPERM) return 4;
+        if (::umount2("/proc", MNT_DETACH) != -1 || errno != EPERM) return 5;
+        char typed = 'x';
+        if (::ioctl(STDIN_FILENO, TIOCSTI, &typed) != -1 || errno != ENOTTY) return 6;
+        int ran = 0;
+        std::thread([&ran] { ran = 1; }).join();  // clone3 refused as unknown: the C library calls clone
+        if (ran != 1) return 7;
+        const pid_t child = ::fork();
+        if (child == 0) ::_exit(3);
+        int status = 0;
+        if (child < 0 || ::waitpid(child, &status, 0) != child || WEXITSTATUS(status) != 3) return 8;
+        std::unique_ptr<char[]> block(new char[64 << 20]);
+        block[(64 << 20) - 1] = 1;
+        timespec now{};
+        if (::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now) != 0) return 9;
+        struct sigaction ignore {};
+        ignore.sa_handler = SIG_IGN;
+        if (::sigaction(SIGSYS, &ignore, nullptr) != -1 || errno != EPERM) return 10;
+        return 0;
+      },
+      aula::sandbox::allowOnlyAlgorithmCalls, &said);
+  EXPECT_EQ(out, "refused socket\nrefused clone\nrefused umount2\n|ok");
+  EXPECT_EQ(said, "the algorithm's process may not call memfd_create(): refused\n"
+                  "the algorithm's process may not call ioctl(): refused\n");
+}
+
+// Outside a graded run (no line) the escapes too are refused, and said on stderr.
+TEST(AlgorithmCalls, WithoutALineEveryRefusalIsSaidOnStderr) {
+  std::string said;
+  const std::string out = inWatchedChild(
+      [](int) {
+        if (::socket(AF_UNIX, SOCK_STREAM, 0) != -1 || errno != EACCES) return 1;
+        if (::syscall(SYS_keyctl, 0, -3, 0) != -1 || errno != EPERM) return 2;
+        return 0;
+      },
+      [](int) { return aula::sandbox::allowOnlyAlgorithmCalls(-1); }, &said);
+  EXPECT_EQ(out, "|ok");
+  EXPECT_EQ(said, "the algorithm's process may not call socket(): refused\n"
+                  "the algorithm's process may not call keyctl(): refused\n");
 }
 
 // In a private network, a datagram to any port but the run's is seen (unicast and multicast),

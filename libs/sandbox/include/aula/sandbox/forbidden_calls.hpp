@@ -28,10 +28,15 @@ std::vector<std::string> forbiddenCalls();
 // the handler does not know): the caller says so and goes on, the sandbox's own refusals stand.
 std::string watchForbiddenCalls(int line_fd);
 
-// The student's algorithm in a process of its own (the component's algorithm box) needs no new
-// socket: socket() and socketpair() are refused there (EACCES), so it cannot open the run's bus
-// (or any other), even knowing its address. Returns "" when done, else why not.
-std::string refuseNewSockets();
+// The student's algorithm in a process of its own (the component's algorithm box) makes only
+// the system calls on a list (memory, the files it may see, threads, children, time, signals,
+// its socket to the component): any other is refused (EPERM; socket() EACCES, ioctl() ENOTTY),
+// said once on stderr ("the algorithm's process may not call memfd_create(): refused"), and the
+// escapes among them (forbiddenCalls(), socket, socketpair, clone into a namespace) said on
+// `line_fd` as the watch says them, when it is a graded run's line (else -1): the run is flagged.
+// No new socket (the run's bus address is in the component's command line, which any process
+// reads), no namespace, no io_uring, no keyring. Returns "" when done, else why not.
+std::string allowOnlyAlgorithmCalls(int line_fd);
 // The line the handler writes for a forbidden call: "refused " + the call's name.
 constexpr const char* kRefusedPrefix = "refused ";
 
