@@ -4,6 +4,8 @@
 #include <aula/component/crash_report.hpp>
 #include <aula/component/plugin_library.hpp>
 #include <aula/process/exit_codes.hpp>
+#include <aula/config/paths.hpp>
+#include <aula/sandbox/file_view.hpp>
 #include <aula/sandbox/forbidden_calls.hpp>
 #include <aula/sandbox/sandbox.hpp>
 
@@ -303,6 +305,33 @@ BoxEnded AlgorithmBox::endOf(const char* what) {
 
 namespace aula::component {
 
+namespace {
+
+// A graded run's algorithm process sees only what running an algorithm needs: the system's files,
+// Aula's programs and runtime, the student's plugin (or the folder of their MyAlgorithm.py), and
+// a folder of its own to write in (its TMPDIR, HOME and cache: a plugin's copy goes there). Not
+// the run's world, its parsed cache or its settings, which the sandbox binds for the component.
+std::string narrowGradedView(const BoxStart& start) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path own = fs::temp_directory_path(error) / "algorithm";
+  fs::create_directories(own, error);
+  if (error) return own.string() + ": " + error.message();
+  for (const char* name : {"TMPDIR", "HOME", "XDG_CACHE_HOME"}) ::setenv(name, own.c_str(), 1);
+  sandbox::FileView view;
+  view.readable = {"/usr", "/lib", "/lib64", "/lib32", "/bin", "/sbin", "/etc", "/proc", "/sys", config::libDir(),
+                   fs::read_symlink("/proc/self/exe", error).parent_path().string()};
+  const bool is_path = start.choice.find('/') != std::string::npos || fs::path(start.choice).has_extension();
+  if (is_path) {
+    const fs::path algorithm = fs::absolute(start.choice, error).lexically_normal();
+    view.readable.push_back(algorithm.extension() == ".py" ? algorithm.parent_path().string() : algorithm.string());
+  }
+  view.writable = {own.string(), "/dev/null", "/dev/zero", "/dev/full", "/dev/random", "/dev/urandom"};
+  return sandbox::narrowFileView(view);
+}
+
+}  // namespace
+
 bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
   ::close_range(kBoxLineFd + 1, ~0U, 0);
   // A component hands its box an open socket; a box without one was started by the algorithm of
@@ -330,6 +359,11 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
   // other. A graded run's (in its sandbox) flags the escapes among the rest, as the component's
   // watch flagged them when the algorithm ran inside it.
   const bool graded = static_cast<bool>(std::ifstream(sandbox::kGradedAlgorithmFile));
+  if (graded) {
+    if (const std::string why = narrowGradedView(start); !why.empty()) {
+      std::cerr << start.program << ": " << why << ": the algorithm's process sees the sandbox's files" << std::endl;
+    }
+  }
   if (const std::string why = sandbox::allowOnlyAlgorithmCalls(graded ? kBoxLineFd : -1); !why.empty()) {
     std::cerr << start.program << ": " << why << ": the algorithm's process may make any system call" << std::endl;
   }
