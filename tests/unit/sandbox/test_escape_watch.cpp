@@ -153,6 +153,9 @@ TEST(AlgorithmCalls, OnlyTheListGoesThroughAndEscapesAreSaidOnTheLine) {
         if (::umount2("/proc", MNT_DETACH) != -1 || errno != EPERM) return 5;
         char typed = 'x';
         if (::ioctl(STDIN_FILENO, TIOCSTI, &typed) != -1 || errno != ENOTTY) return 6;
+        cpu_set_t cpus;  // its CPUs are read, never changed (a graded run's CPU is its own)
+        if (::sched_getaffinity(0, sizeof cpus, &cpus) != 0) return 11;
+        if (::sched_setaffinity(0, sizeof cpus, &cpus) != -1 || errno != EPERM) return 12;
         int ran = 0;
         std::thread([&ran] { ran = 1; }).join();  // clone3 refused as unknown: the C library calls clone
         if (ran != 1) return 7;
@@ -172,7 +175,8 @@ TEST(AlgorithmCalls, OnlyTheListGoesThroughAndEscapesAreSaidOnTheLine) {
       aula::sandbox::allowOnlyAlgorithmCalls, &said);
   EXPECT_EQ(out, "refused socket\nrefused clone\nrefused umount2\n|ok");
   EXPECT_EQ(said, "the algorithm's process may not call memfd_create(): refused\n"
-                  "the algorithm's process may not call ioctl(): refused\n");
+                  "the algorithm's process may not call ioctl(): refused\n"
+                  "the algorithm's process may not call sched_setaffinity(): refused\n");
 }
 
 // Outside a graded run (no line) the escapes too are refused, and said on stderr.
