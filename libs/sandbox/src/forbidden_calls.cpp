@@ -65,8 +65,8 @@ constexpr std::array<const char*, 149> kAlgorithmCalls = {
     "setitimer", "alarm",
     // who and where it is
     "getpid", "getppid", "gettid", "getuid", "geteuid", "getgid", "getegid", "getgroups", "getresuid",
-    "getresgid", "getpgrp", "getpgid", "setpgid", "getsid", "setsid", "getrusage", "times", "sysinfo", "uname", "getrandom", "prlimit64", "getrlimit",
-    "arch_prctl", "prctl", "seccomp"};
+    "getresgid", "getpgrp", "getpgid", "setpgid", "getsid", "setsid", "getrusage", "times", "sysinfo", "uname",
+    "getrandom", "prlimit64", "getrlimit", "arch_prctl", "prctl", "seccomp"};
 
 // Past the list, what the algorithm's process tries and a graded run flags as an escape: the
 // escape calls above, and the sockets and namespaces only an escape needs there.
