@@ -321,10 +321,10 @@ std::string narrowGradedView(const BoxStart& start) {
   sandbox::FileView view;
   view.readable = {"/usr", "/lib", "/lib64", "/lib32", "/bin", "/sbin", "/etc", "/proc", "/sys", config::libDir(),
                    fs::read_symlink("/proc/self/exe", error).parent_path().string()};
-  const bool is_path = start.choice.find('/') != std::string::npos || fs::path(start.choice).has_extension();
-  if (is_path) {
+  if (AlgorithmHostBase::namesPlugin(start.choice)) {  // else a built-in, under libDir()
     const fs::path algorithm = fs::absolute(start.choice, error).lexically_normal();
-    view.readable.push_back(algorithm.extension() == ".py" ? algorithm.parent_path().string() : algorithm.string());
+    view.readable.push_back(PluginLibrary::isPythonFile(start.choice) ? algorithm.parent_path().string()
+                                                                      : algorithm.string());
   }
   view.writable = {own.string(), "/dev/null", "/dev/zero", "/dev/full", "/dev/random", "/dev/urandom"};
   return sandbox::narrowFileView(view);

@@ -190,6 +190,13 @@ int keepTheWatch(scmp_filter_ctx ctx, int line_fd, bool allow) {
   return rc;
 }
 
+// Loads `ctx` into this process (every thread) when all its rules (`rc`) were added.
+std::string load(scmp_filter_ctx ctx, int rc) {
+  if (rc != 0) return "a seccomp rule could not be added";
+  if (seccomp_load(ctx) != 0) return std::string("seccomp_load: ") + std::strerror(errno);
+  return "";
+}
+
 }  // namespace
 
 std::vector<std::string> forbiddenCalls() { return {kForbidden.begin(), kForbidden.end()}; }
@@ -208,9 +215,7 @@ std::string watchForbiddenCalls(int line_fd) {
     if (number >= 0) rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_TRAP, number, 0);
   }
   rc |= keepTheWatch(ctx.get(), line_fd, false);
-  if (rc != 0) return "a seccomp rule could not be added";
-  if (seccomp_load(ctx.get()) != 0) return std::string("seccomp_load: ") + std::strerror(errno);
-  return "";
+  return load(ctx.get(), rc);
 #endif
 }
 
@@ -240,9 +245,7 @@ std::string allowOnlyAlgorithmCalls(int line_fd) {
     rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ALLOW, SCMP_SYS(ioctl), 1, SCMP_A1(SCMP_CMP_EQ, request));
   }
   rc |= keepTheWatch(ctx.get(), line_fd, true);
-  if (rc != 0) return "a seccomp rule could not be added";
-  if (seccomp_load(ctx.get()) != 0) return std::string("seccomp_load: ") + std::strerror(errno);
-  return "";
+  return load(ctx.get(), rc);
 #endif
 }
 
