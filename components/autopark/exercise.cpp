@@ -93,7 +93,7 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.005;
   // The time allowance: the thesis's reactive parker's time on that street.
   e.calibration = settings::ExerciseCalibration{"park_time_s", "", "reactive", {"Autopark.Referee.FullMarkTime"},
-                                                settings::reachKeys("Autopark"), "parked", "planner"};
+                                                settings::reachKeys("Autopark"), "parked", "", "planner"};
   e.generator = settings::WorldGenerator{"street", "make_autopark.py", 0.1};
   e.referee_scene = "parking_street";
   return e;

@@ -96,7 +96,7 @@ settings::Exercise declareExercise() {
   e.physics_step_s = 0.005;
   // The speed scale: the reference's driving time to that destination.
   e.calibration = settings::ExerciseCalibration{"driving_time_s", "", "reference", {"TeleTaxi.Referee.FullMarkTime"},
-                                                settings::reachKeys("TeleTaxi"), "reached", ""};
+                                                settings::reachKeys("TeleTaxi"), "reached", "", ""};
   auto& context = e.calibration->context_keys;  // the destination first, as files record it
   context.insert(context.begin(), "TeleTaxi.Destination");
   e.generator = settings::WorldGenerator{"city", "make_city.py", 1.25};

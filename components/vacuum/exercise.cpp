@@ -88,7 +88,7 @@ settings::Exercise declareExercise() {
   // The coverage scale: the random-bounce baseline's median at a 5, the reference's at a 10.
   e.calibration = settings::ExerciseCalibration{"coverage_percent", "bounce", "reference",
                                                 {"Vacuum.Referee.HalfMarkCoverage", "Vacuum.Referee.FullMarkCoverage"},
-                                                settings::reachKeys("Vacuum"), "", ""};
+                                                settings::reachKeys("Vacuum"), "", "wedged", "classic"};
   auto& context = e.calibration->context_keys;  // the episode's length first, as files record it
   context.insert(context.begin(), "Vacuum.Referee.Duration");
   e.generator = settings::WorldGenerator{"house", "make_house.py", 0.05};

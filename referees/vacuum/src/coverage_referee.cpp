@@ -52,13 +52,24 @@ void CoverageReferee::onPose(int64_t sim_utime, double x_m, double y_m) {
     window_x_ = x_m;
     window_y_ = y_m;
   } else if (utime - window_start_utime_ >= window_us) {
+    const double window_s = (utime - window_start_utime_) / 1e6;
     if (std::hypot(x_m - window_x_, y_m - window_y_) < settings_.stuck_distance_m) {
-      stuck_s_ += (utime - window_start_utime_) / 1e6;
+      stuck_s_ += window_s;
+      stuck_at_end_s_ += window_s;  // consecutive stuck windows are one stretch
+    } else {
+      stuck_at_end_s_ = 0;
     }
     window_start_utime_ = utime;
     window_x_ = x_m;
     window_y_ = y_m;
   }
+}
+
+bool CoverageReferee::wedged() const {
+  // A robot pressed in a corner for the episode's last fifth (180 s of 900) has given up: its
+  // coverage is what it reached before, and a calibration must not take such a run as its anchor.
+  // A shorter stop at the end (a bump, a turn in place) is still a cleaner at work.
+  return stuck_at_end_s_ >= settings_.wedged_fraction * settings_.duration_s;
 }
 
 void CoverageReferee::onBump(int64_t, bool pressed) {

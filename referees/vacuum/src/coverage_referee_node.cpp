@@ -146,6 +146,8 @@ void CoverageRefereeNode::addGrading(referee::Report& out) const {
   out.set("floor_area_m2", r.grid().floorAreaM2());
   out.set("bumps", r.bumps());
   out.set("stuck_s", r.stuckS());
+  out.set("stuck_at_end_s", r.stuckAtEndS());
+  out.set("wedged", r.wedged());
   out.set("final_pose", std::vector<double>{x_m_, y_m_, yaw_rad_});
   // 50 Hz x the run: fewer means the bus lost messages and the coverage is an underestimate.
   out.set("pose_messages", pose_messages_);

@@ -27,6 +27,31 @@ aula::geometry::MapTransform tinyTransform() {
   return t;
 }
 
+// The robot's true pose at 50 Hz over [from_s, to_s) of sim time, with the referee's 1 s ticks:
+// circling (0.15 m radius, 20 s a turn: 9 cm in each 2 s window), or still where the circle
+// starts (a turn ends there, so the two join without a jump).
+void drive(CoverageReferee& r, int64_t from_s, int64_t to_s, bool moving) {
+  for (int64_t t = from_s * 1'000'000; t < to_s * 1'000'000; t += 20'000) {
+    const double a = moving ? 2 * M_PI * (t / 20e6) : 0.0;
+    r.onPose(t, 0.3 + 0.15 * std::cos(a), 0.5 + 0.15 * std::sin(a));
+    if (t % 1'000'000 == 0) r.onTick(t);
+  }
+}
+
+// A 300 s episode: a fifth is 60 s.
+CoverageReferee shortEpisode() {
+  CoverageSettings s;
+  s.duration_s = 300;
+  s.robot_radius_m = 0.1;
+  return CoverageReferee(CoverageGrid(tinyMap(), tinyTransform(), 0.3, 0.5), s);
+}
+
+void endEpisode(CoverageReferee& r, bool moving) {
+  drive(r, 299, 300, moving);
+  r.onTick(300'000'000);
+  ASSERT_TRUE(r.finished());
+}
+
 template <typename T, typename = void>
 struct HasGetX : std::false_type {};
 template <typename T>
@@ -133,6 +158,36 @@ TEST(CoverageReferee, CountsBumpsAndTimeStuck) {
   EXPECT_EQ(r.bumps(), 2);
   for (int64_t t = 0; t <= 10'000'000; t += 20'000) r.onPose(t, 0.3, 0.5);  // 10 s without moving
   EXPECT_NEAR(r.stuckS(), 10.0, 0.1);
+}
+
+TEST(CoverageReferee, ARunThatEndsStuckForAFifthOfItsEpisodeEndedWedged) {
+  CoverageReferee r = shortEpisode();
+  drive(r, 0, 200, true);
+  EXPECT_DOUBLE_EQ(r.stuckS(), 0.0);  // the circle is never stuck
+  drive(r, 200, 299, false);          // pressed in a corner for the last 100 s
+  endEpisode(r, false);
+  EXPECT_NEAR(r.stuckAtEndS(), 100.0, 2.1);  // to within a window
+  EXPECT_DOUBLE_EQ(r.stuckAtEndS(), r.stuckS());
+  EXPECT_TRUE(r.wedged());
+}
+
+TEST(CoverageReferee, ARunStuckInTheMiddleOrBrieflyAtTheEndIsNotWedged) {
+  // 100 s stuck in the middle, then cleaning again to the end: stuck, not wedged.
+  CoverageReferee middle = shortEpisode();
+  drive(middle, 0, 100, true);
+  drive(middle, 100, 200, false);
+  drive(middle, 200, 299, true);
+  endEpisode(middle, true);
+  EXPECT_NEAR(middle.stuckS(), 100.0, 2.1);
+  EXPECT_DOUBLE_EQ(middle.stuckAtEndS(), 0.0);
+  EXPECT_FALSE(middle.wedged());
+  // Stuck for the last 40 s, under a fifth of 300 s: said, not wedged.
+  CoverageReferee brief = shortEpisode();
+  drive(brief, 0, 260, true);
+  drive(brief, 260, 299, false);
+  endEpisode(brief, false);
+  EXPECT_NEAR(brief.stuckAtEndS(), 40.0, 2.1);
+  EXPECT_FALSE(brief.wedged());
 }
 
 TEST(VacuumApi, GivesTheStudentNoPosition) {

@@ -32,6 +32,9 @@ struct ExerciseCalibration {
   // A report field every anchor run must have true ("parked"; "" for none): an anchor that failed
   // would anchor the scale on a failure.
   std::string success;
+  // A report field every anchor run must have false ("wedged"; "" for none): the same, where every
+  // run ends with a measure (a cleaner that gave up in a corner still covered some floor).
+  std::string failure;
   std::string other_anchor;  // the algorithm to suggest when the anchor fails ("" for none)
 };
 

@@ -26,6 +26,7 @@ struct CoverageSettings {
   double robot_radius_m = 0.165;
   double stuck_window_s = 2.0;     // stuck = moved less than stuck_distance_m over this window
   double stuck_distance_m = 0.05;
+  double wedged_fraction = 0.2;    // wedged = the run ended stuck for this share of duration_s or more
 };
 
 // 0 for a NaN coverage or a scale without 0 < half < full.
@@ -55,6 +56,12 @@ class CoverageReferee {
   const std::vector<double>& coveragePer100s() const { return per_100s_; }  // gain in each 100 s
   long long bumps() const { return bumps_; }
   double stuckS() const { return stuck_s_; }
+  // The length of the stuck stretch the run is in, or ended in: its consecutive stuck windows; 0
+  // after a window in which it moved.
+  double stuckAtEndS() const { return stuck_at_end_s_; }
+  // The run ended stuck for settings().wedged_fraction of its episode or more (pressed in a
+  // corner for good): the report's "wedged", which a calibration's anchor must not be.
+  bool wedged() const;
   const CoverageGrid& grid() const { return grid_; }
   const CoverageSettings& settings() const { return settings_; }
 
@@ -68,6 +75,7 @@ class CoverageReferee {
   bool pressed_ = false;
   long long bumps_ = 0;
   double stuck_s_ = 0;
+  double stuck_at_end_s_ = 0;
   std::vector<double> per_100s_;
   double coverage_at_last_boundary_ = 0;
   // Stuck detection: the pose one window ago.

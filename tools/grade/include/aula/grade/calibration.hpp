@@ -6,6 +6,7 @@
 // "default"; "fixed" and "original" never look at it.
 
 #include <aula/config/config.hpp>
+#include <aula/grade/grade_plan.hpp>
 #include <aula/settings/tables.hpp>
 
 #include <optional>
@@ -53,6 +54,15 @@ struct Calibration {
 // plays no part), measures, and computes the rubric. Throws config::ConfigError when a run
 // failed or the anchor does not beat the baseline on this world (no scale can be drawn).
 Calibration calibrate(const CalibrationRequest& request, const std::string& bin_dir);
+
+// Refuses the calibration when an anchor run of `manifest` (student "anchor") cannot set the scale:
+// it earned no mark, or its report has the spec's success field not true ("parked") or its failure
+// field true ("wedged"). The config::ConfigError names the world, the seed, the field, the spec's
+// other anchor (unless that is `anchor`) and the run's log.
+void requireAnchorSucceeded(const Manifest& manifest, const CalibrationSpec& spec, const std::string& anchor);
+// How an anchor run went by the spec's success and failure fields, for its progress line:
+// " (parked)", " (not parked)", " (wedged)", " (not wedged)"; "" when the spec declares neither.
+std::string anchorNote(const nlohmann::ordered_json& result, const CalibrationSpec& spec);
 
 // The calibration file: the rubric settings, what was measured (as Calibration.* keys), the
 // world's SHA-256 and the Aula version.
