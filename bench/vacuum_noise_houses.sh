@@ -21,6 +21,9 @@ houses=(
   "d07-4x2|--seed 44 --rooms-x 4 --rooms-y 2 --room-size 2.8 --door-width 0.7"
   "d09-3x2-large|--seed 21 --rooms-x 3 --rooms-y 2 --room-size 4.4 --furniture 2"
   "d08-3x3|--seed 57 --rooms-x 3 --rooms-y 3 --room-size 3.6 --door-width 0.8 --furniture 3"
+  # Drawn after the work of 2026-11-29 and held out of it.
+  "d06-4x3-held|--seed 303 --rooms-x 4 --rooms-y 3 --door-width 0.6 --furniture 2"
+  "d06-3x3-held|--seed 404 --rooms-x 3 --rooms-y 3 --door-width 0.6 --furniture 2"
 )
 median() { sort -g | awk '{a[NR]=$1} END {if (NR % 2) print a[(NR+1)/2]; else print (a[NR/2] + a[NR/2+1]) / 2}'; }
 field() { grep "^  \"$1\"" "$2" | head -1 | sed 's/.*: \([0-9.]*\),*/\1/'; }

@@ -130,3 +130,44 @@ TEST(CoveragePlanner, ABlockIsAGoalUntilItsFloorIsSwept) {
   EXPECT_EQ(wall.rep, -1) << "no passable cell in the wall";
   EXPECT_EQ(wall.goal, -1);
 }
+
+// The nearest unswept floor worth a trip is an area, not a sliver the lanes left: with a few
+// cells left unswept beside the robot and a whole quarter of the room beyond, the search for an
+// area goes to the quarter; the plain search, to the sliver.
+TEST(CoveragePlanner, ATripIsForAnAreaBeforeASliver) {
+  ScanMap map;
+  for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(roomScan(yaw), yaw, {0, 0});
+  CoveragePlanner planner(map);
+  // Swept from every place but the quarter and those near the sliver's spot: its disc (0.16 m)
+  // leaves a hole of about 0.05 m round the spot, a dozen cells.
+  const Point2 sliver{-0.5, 0};
+  for (int j = map.minRow(); j <= map.maxRow(); ++j) {
+    for (int i = map.minCol(); i <= map.maxCol(); ++i) {
+      const Point2 c = map.centre(i, j);
+      const bool quarter = c.x_m > 0.8 && c.y_m > 0.8;
+      if (planner.traversable(i, j) && !quarter && std::hypot(c.x_m - sliver.x_m, c.y_m - sliver.y_m) > 0.21) {
+        planner.sweep(c);
+      }
+    }
+  }
+  const Point2 from{-0.2, 0};
+  const auto any = planner.pathToUnswept(from);
+  const auto area = planner.pathToUnswept(from, false, true);
+  ASSERT_FALSE(any.empty());
+  ASSERT_FALSE(area.empty());
+  EXPECT_LT(any.back().x_m, 0.0) << "the plain search: the nearest unswept floor, left beside the robot";
+  EXPECT_GT(area.back().x_m, 0.5) << "worth a trip: the quarter not swept";
+  EXPECT_GT(area.back().y_m, 0.5);
+}
+
+// Boxed in by its own bumps (the plans keep away from them, and it bumped all round), the robot
+// still finds its way out from where it stands: it found none and took the house for swept.
+TEST(CoveragePlanner, ItsOwnBumpsNeverBoxTheRobotIn) {
+  ScanMap map;
+  for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(roomScan(yaw), yaw, {0, 0});
+  CoveragePlanner planner(map);
+  const Point2 at{-1.0, -1.0};
+  for (int k = 0; k < 8; ++k) planner.addBump({at.x_m + 0.2 * std::cos(k * M_PI / 4), at.y_m + 0.2 * std::sin(k * M_PI / 4)}, 60.0);
+  ASSERT_FALSE(planner.traversable(at));
+  EXPECT_FALSE(planner.pathToUnswept(at).empty()) << "out past its bumps, to the unswept room";
+}

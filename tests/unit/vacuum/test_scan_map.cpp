@@ -132,3 +132,29 @@ TEST(ScanMap, AWallsOtherFaceIsNotMatchedToTheFaceSeen) {
   EXPECT_TRUE(map.seen(other_face, {1.2, 0}).empty());
   EXPECT_LT(map.score(other_face, {1.0, 0}), 0.05) << "shifted onto the face seen, it must not fit";
 }
+
+// A beam lost (no echo: it reads the laser's maximum range, as the realistic noise's 1 % do)
+// says nothing of the walls: carved free, it ran through them and drew rooms not seen yet as seen.
+TEST(ScanMap, ABeamWithNoEchoCarvesNothing) {
+  auto scan = aula::test::syntheticScan(181, -0.5, 0.5, [](double a) { return 1.0 / std::cos(a); });
+  scan.values_m[90] = static_cast<float>(scan.maxRange);  // straight ahead: lost
+  ScanMap map;
+  map.insert(scan, 0, {-1.0, 0});  // facing +x, the wall's face at x = 0
+  const int row = map.row(0.0);
+  EXPECT_TRUE(map.knownFree(map.col(-0.5), map.row(0.1))) << "its neighbours carve the floor before the wall";
+  EXPECT_FALSE(map.known(map.col(2.0), row)) << "nothing beyond the wall is seen";
+  EXPECT_FALSE(map.known(map.col(-0.5), row) && !map.knownFree(map.col(-0.5), row)) << "no wall where it ended";
+}
+
+// bounded: the best fit within the window, even where a better one lies just beyond it.
+TEST(ScanMap, ABoundedMatchStaysInItsWindow) {
+  const auto scan = aula::test::syntheticScan(181, -0.5, 0.5, [](double a) { return 1.0 / std::cos(a); });
+  ScanMap map;
+  map.insert(scan, 0, {-1.0, 0});
+  const auto points = ScanMap::endpoints(scan, 0, 9.0);
+  const Point2 predicted{-1.12, 0};  // the laser was 0.12 m further on
+  EXPECT_NEAR(map.matchSeen(points, predicted, 0.05).laser_m.x_m, -1.0, 0.01) << "the climb leaves the window";
+  const auto bounded = map.matchSeen(points, predicted, 0.05, true);
+  EXPECT_LE(std::abs(bounded.laser_m.x_m - predicted.x_m), 0.05 + 1e-9);
+  EXPECT_GT(bounded.laser_m.x_m, predicted.x_m + 0.03) << "the window's best, towards the fit";
+}

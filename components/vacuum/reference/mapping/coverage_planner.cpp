@@ -160,14 +160,14 @@ std::pair<Point2, Lane> CoveragePlanner::besideWall(Point2 from_m, int wall_dx, 
 
 // A block of k x k cells (corner bi, bj) for the nearest-unswept search. Why blocks: a search
 // over every 2.5 cm cell of a house at each decision cost more than the run could spend.
-PlanBlock CoveragePlanner::planBlock(int bi, int bj, int k, bool relaxed) const {
+PlanBlock CoveragePlanner::planBlock(int bi, int bj, int k, bool relaxed, bool leaving) const {
   PlanBlock out;
   out.rep = -1;
   double best_m = -1, best_goal_m = -1;
   int unswept = 0;
   for (int j = bj; j < bj + k; ++j) {
     for (int i = bi; i < bi + k; ++i) {
-      if (!planPassable(i, j, relaxed)) continue;
+      if (!planPassable(i, j, relaxed, leaving)) continue;
       const double c_m = map_.clearanceM(i, j);
       if (c_m > best_m) {
         best_m = c_m;
@@ -183,13 +183,15 @@ PlanBlock CoveragePlanner::planBlock(int bi, int bj, int k, bool relaxed) const 
     }
   }
   out.unswept = unswept >= kMinUnsweptCells;
+  out.unswept_cells = unswept;
   return out;
 }
 
 // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
 // map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
 // (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
-bool CoveragePlanner::planPassable(int i, int j, bool relaxed) const {
+bool CoveragePlanner::planPassable(int i, int j, bool relaxed, bool leaving) const {
+  if (leaving && map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.leave_clearance_m) return true;
   if (!relaxed) return traversable(i, j);
   return (map_.knownFree(i, j) || !map_.known(i, j)) && map_.clearanceM(i, j) >= s_.relaxed_clearance_m && !bumped(i, j);
 }
@@ -207,7 +209,7 @@ bool CoveragePlanner::nextToUnknown(int i, int j, int k) const {
   return false;
 }
 
-std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) const {
+std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed, bool worth_a_trip) const {
   // Blocks of k x k cells over what the map has seen. A block is traversable when any of its
   // cells is (a narrow passage between furniture is narrower than a block), through the one
   // farthest from walls; unswept when enough of its traversable cells are (not a sliver).
@@ -217,8 +219,23 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
   if (map_.maxCol() < i0 || w <= 0 || h <= 0) return {};
   std::vector<PlanBlock> blocks(static_cast<size_t>(w) * h);  // each looked at once, when the search reaches it
   const auto block = [&](int b) -> const PlanBlock& {
-    if (blocks[b].rep == -2) blocks[b] = planBlock(i0 + (b % w) * k, j0 + (b / w) * k, k, relaxed);
+    if (blocks[b].rep == -2) {
+      const int bi = i0 + (b % w) * k, bj = j0 + (b / w) * k;
+      const Point2 c = map_.centre(bi + k / 2, bj + k / 2);
+      blocks[b] = planBlock(bi, bj, k, relaxed, std::hypot(c.x_m - from_m.x_m, c.y_m - from_m.y_m) <= s_.leave_m);
+    }
     return blocks[b];
+  };
+  // The unswept cells of block b and the 8 round it.
+  const auto area = [&](int b) {
+    int cells = 0;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = b % w + dx, y = b / w + dy;
+        if (x >= 0 && y >= 0 && x < w && y < h) cells += block(y * w + x).unswept_cells;
+      }
+    }
+    return cells;
   };
   const auto point = [&](int cell) { return map_.centre(cell % map_.width(), cell / map_.width()); };
   const int sx = std::clamp((map_.col(from_m.x_m) - i0) / k, 0, w - 1);
@@ -227,7 +244,12 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed) 
   std::vector<int> parent;
   const int goal = nearestGoal(
       w, h, start, [&](int b) { return block(b).rep >= 0; },
-      [&](int b) { return block(b).goal >= 0 && (block(b).unswept || block(b).frontier); }, parent);
+      [&](int b) {
+        const PlanBlock& g = block(b);
+        if (g.goal < 0 || !(g.unswept || g.frontier)) return false;
+        return !worth_a_trip || g.frontier || area(b) >= s_.area_cells;
+      },
+      parent);
   if (goal < 0) return {};
   std::vector<Point2> chain;
   chain.push_back(point(block(goal).goal));

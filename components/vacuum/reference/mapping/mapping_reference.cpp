@@ -202,7 +202,20 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
   // Pressed on something, it does not go where it is told, backing off included (h2: wedged in a
   // box's corner, every backoff it did not make moved the estimate 6 cm, and it was lost).
   const bool blocked = bumped && cmd_v_ != 0;
-  if (!blocked) est_ = along(est_, cmd_v_ * dt, last_yaw_ + dyaw / 2);
+  if (!blocked) {
+    const Point2 before = est_;
+    est_ = along(est_, cmd_v_ * dt, last_yaw_ + dyaw / 2);
+    // The wheels deliver their command only so well: the estimate's uncertainty grows along
+    // each axis with the way driven along it.
+    sigma_x_m_ += s_.slip_per_m * std::abs(est_.x_m - before.x_m);
+    sigma_y_m_ += s_.slip_per_m * std::abs(est_.y_m - before.y_m);
+  }
+  if (bumped) {  // pressed on something, it may slide or be pushed any way
+    sigma_x_m_ += s_.pressed_sigma_m;
+    sigma_y_m_ += s_.pressed_sigma_m;
+  }
+  sigma_x_m_ = std::min(sigma_x_m_, s_.lost_window_m);
+  sigma_y_m_ = std::min(sigma_y_m_, s_.lost_window_m);
 
   if (scan.timeStamp != last_stamp_) {
     // Where the laser was when it scanned: back along the last command, the yaw interpolated.
@@ -217,7 +230,7 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
       last_insert_ = predicted;
       last_insert_yaw_ = yaw_s;
     } else if (w_max <= s_.match_max_w_radps) {
-      correct(scan, yaw_s, predicted, w_max);
+      correct(scan, yaw_s, predicted, w_max, bumped);
     }
   }
   last_now_s_ = now_s_;
@@ -227,39 +240,73 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
 
 // Matches a scan taken at yaw_s from `predicted` (the laser's place by the commands) and
 // corrects the estimate by it; draws it into the map when it fits well.
-void MappingReference::correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max) {
+//
+// How far from the prediction a fit may move the estimate (its gate) is what the estimate may be
+// off by now, per axis: 2.5 sigma, which grows with the way driven since that axis was last fixed
+// (2 % of wheel slip under realistic noise) and while pressed on something. Along a corridor (an
+// axis the scan does not sharpen) the best fit is anywhere along it: only the sharp axes say
+// where the laser is. Beyond the gate, a fit is a jump: taken only when clearly better than the
+// best fit within the gate, and confirmed (confirmJump); else tracking goes on with that best
+// fit within the gate, and draws nothing. Measured under realistic noise (docs/performance.md):
+// a fixed 5 cm gate refused the true correction once the estimate had drifted along a corridor,
+// and the cleaner never corrected again.
+void MappingReference::correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max,
+                               bool pressed) {
   const auto all = ScanMap::endpoints(scan, yaw_s, s_.match_range_m, s_.match_stride);
-  const ScanMatch m = map_.matchSeen(all, predicted, poor_matches_ > 0 ? s_.lost_window_m : s_.track_window_m);
+  const double gate_x_m = std::max(s_.track_window_m, s_.gate_sigmas * sigma_x_m_);
+  const double gate_y_m = std::max(s_.track_window_m, s_.gate_sigmas * sigma_y_m_);
+  const double gate_m = std::min(s_.lost_window_m, std::max(gate_x_m, gate_y_m));
+  // After a poor match, or while a jump is being confirmed, the widest search.
+  const bool searching = poor_matches_ > 0 || jump_count_ > 0;
+  ScanMatch m = map_.matchSeen(all, predicted, searching ? s_.lost_window_m : gate_m);
   if (m.points < 10) return;
-  // A correction wider than tracking ever needs must fit better: a scan half explained at the
-  // wrong place (a corridor's end, a room like another, a wall's other face) scores about as well.
-  const bool far = distance(m.laser_m, predicted) > s_.track_window_m;
-  if (far ? !confirmJump(m, predicted, all.size(), w_max) : m.score < s_.good_match) {
+  const auto sharpOffset = [&](const ScanMatch& fit) {
+    return Point2{fit.sharpness_x >= s_.min_sharpness ? fit.laser_m.x_m - predicted.x_m : 0.0,
+                  fit.sharpness_y >= s_.min_sharpness ? fit.laser_m.y_m - predicted.y_m : 0.0};
+  };
+  const auto withinGate = [&](Point2 offset) { return std::abs(offset.x_m) <= gate_x_m && std::abs(offset.y_m) <= gate_y_m; };
+  bool jump = !withinGate(sharpOffset(m)), ambiguous = false;
+  if (jump) {
+    const ScanMatch near = map_.matchSeen(all, predicted, gate_m, true);
+    const bool better = m.score >= near.score + s_.jump_margin;
+    if (!better) jump_count_ = 0;
+    if (!(better && confirmJump(m, predicted, all.size(), w_max, pressed))) {
+      if (near.points < 10 || near.score < s_.good_match || !withinGate(sharpOffset(near))) {
+        ++poor_matches_;
+        return;
+      }
+      m = near;
+      jump = false;
+      ambiguous = true;
+    }
+  } else if (m.score < s_.good_match) {
     ++poor_matches_;
     return;
   }
-  if (!far) jump_count_ = 0;
+  if (!jump && !ambiguous) jump_count_ = 0;
   poor_matches_ = 0;
-  // Along a corridor the scan cannot say where along it: keep the prediction there, draw nothing.
   const bool sharp_x = m.sharpness_x >= s_.min_sharpness, sharp_y = m.sharpness_y >= s_.min_sharpness;
   if (sharp_x) est_.x_m += m.laser_m.x_m - predicted.x_m;
   if (sharp_y) est_.y_m += m.laser_m.y_m - predicted.y_m;
+  if (sharp_x) sigma_x_m_ = s_.fixed_sigma_m;
+  if (sharp_y) sigma_y_m_ = s_.fixed_sigma_m;
   const bool moved = distance(m.laser_m, last_insert_) >= s_.map_every_m ||
                      std::abs(wrapAngle(yaw_s - last_insert_yaw_)) >= s_.map_every_rad;
   // Enough of the scan on walls the map has (a face seen for the first time is not, and must be
-  // drawn from a scan placed by the rest).
+  // drawn from a scan placed by the rest), and no fit elsewhere about as good.
   const bool enough = m.points * 4 >= static_cast<int>(all.size());
-  if (sharp_x && sharp_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
+  if (!ambiguous && sharp_x && sharp_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
     map_.insert(scan, yaw_s, m.laser_m);
     last_insert_ = m.laser_m;
     last_insert_yaw_ = yaw_s;
   }
 }
 
-// A far correction is taken only when it explains most of the scan (h2 seed 9: a jump of 0.19 m
-// fitted 27 of 52 points) and the next scans, driving straight, find the same offset.
-bool MappingReference::confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max) {
-  if (m.score < s_.map_good_match || w_max > s_.jump_max_w_radps ||
+// A jump is taken only when it explains most of the scan (h2 seed 9: a jump of 0.19 m fitted 27
+// of 52 points) and the next scans, driving straight and not pressed on anything (scans from one
+// place agree whatever they fit), find the same offset.
+bool MappingReference::confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max, bool pressed) {
+  if (m.score < s_.map_good_match || w_max > s_.jump_max_w_radps || pressed ||
       m.points < s_.jump_min_explained * static_cast<double>(points)) {
     jump_count_ = 0;
     return false;
@@ -306,7 +353,8 @@ void MappingReference::decide() {
   if (newLane(p)) return;
   // 3. The nearest unswept floor, then a lane from there.
   on_lane_ = false;
-  std::vector<Point2> path = coverage_.pathToUnswept(p);
+  std::vector<Point2> path = coverage_.pathToUnswept(p, false, true);
+  if (path.empty()) path = coverage_.pathToUnswept(p);
   if (path.empty()) path = coverage_.pathToUnswept(p, true);
   if (!path.empty()) {
     enterFollow(std::move(path));

@@ -3,15 +3,18 @@
 // and bounces is --algorithm=classic): it maps the house from its own laser and plans its
 // coverage, with the student API alone (yaw, laser, bumper, motors; no x, y):
 //   localize  predict from its own speed commands along the measured yaw, then match each scan
-//             against the map so far (ScanMap::match) and draw it in (ScanMap::insert);
+//             against the map so far (ScanMap::match) within a gate that grows with the way
+//             driven since the last fix, and draw it in (ScanMap::insert);
 //   cover     lanes along the map's axes, a sidestep of lane_spacing_m at each end and back
 //             (boustrophedon), the first and last of a run along walls, and a lane along a wall
 //             goes on round the corner along the next; where no lane is left, the way to the
-//             nearest unswept floor (CoveragePlanner); when all is swept, a second pass over
+//             nearest unswept floor worth a trip (CoveragePlanner), slivers only when none is
+//             left; when all is swept, a second pass over
 //             the floor near walls, along them;
 //   recover   a bump backs off (forward if backing off bumps) and keeps the plans away from the
 //             spot for a while; a poor match keeps the prediction and widens the next search,
-//             where only a clearly better fit, driving straight, may move the estimate far;
+//             where only a clearly better fit, driving straight and not pressed on anything,
+//             may move the estimate beyond the gate;
 //             nothing new swept for no_fresh_s: out by the laser; bumped wedge_bumps times in
 //             one spot (wedged in a gap): back out along its own trail, and never back there;
 //             wedged there again: a move on an arc or a turn per bump, each way in turn (wiggle).
@@ -35,8 +38,12 @@ struct MappingSettings {
   // Localization.
   double match_range_m = 9.0;         // beams beyond this are not matched
   int match_stride = 3;               // every third beam
-  double track_window_m = 0.05;       // search half-width around the prediction
-  double lost_window_m = 0.3;         // ... after a poor match
+  double track_window_m = 0.05;       // the least gate (how far a fit may move the estimate)...
+  double gate_sigmas = 2.5;           // ... or this many times the estimate's uncertainty, per axis:
+  double slip_per_m = 0.03;           // ... growing this much a metre driven along that axis...
+  double pressed_sigma_m = 0.001;     // ... and this much a period pressed on something,
+  double fixed_sigma_m = 0.01;        // ... and this after a fit that sharpens the axis
+  double lost_window_m = 0.3;         // the widest search (after a poor match) and the widest gate
   double good_match = 0.75;           // mean match field a scan needs to correct the pose
   double map_good_match = 0.85;       // ... and to be drawn into the map
   double min_sharpness = 0.03;        // a match this much better than 5 cm off, along x (y), fixes x (y)
@@ -44,7 +51,8 @@ struct MappingSettings {
   // turn it about the laser, and a turned scan fits a wall nearby better shifted.
   double match_max_w_radps = 0.25;    // turning faster than this: prediction only
   double map_max_w_radps = 0.15;      // ... and drawn into the map only below this
-  double jump_max_w_radps = 0.05;     // a correction beyond track_window_m only when this straight
+  double jump_margin = 0.08;          // a correction beyond the gate only when its fit beats the best within by this...
+  double jump_max_w_radps = 0.05;     // ... driving this straight
   double jump_min_explained = 0.6;    // ... and a share of the scan's points on walls the map has seen...
   double jump_agree_m = 0.03;         // ... and the same offset from the prediction (this close)...
   int jump_confirm_scans = 3;         // ... in this many scans in a row
@@ -115,8 +123,8 @@ class MappingReference : public VacuumAlgorithm {
  private:
   enum class Mode { Spin, Follow, Backoff };
   void localize(const component::LaserData& scan, double yaw_rad, bool bumped);
-  void correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max);
-  bool confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max);
+  void correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max, bool pressed);
+  bool confirmJump(const ScanMatch& m, Point2 predicted, size_t points, double w_max, bool pressed);
   void spin(double yaw, double& w);
   void onBump(int bumper, double yaw);
   void decide();
@@ -148,6 +156,7 @@ class MappingReference : public VacuumAlgorithm {
   int64_t last_stamp_ = -1;
   double last_yaw_ = 0, cmd_v_ = 0, cmd_w_ = 0, prev_cmd_w_ = 0;
   int poor_matches_ = 0;
+  double sigma_x_m_ = 0, sigma_y_m_ = 0;  // how far off the estimate may be, per axis (one sigma)
   int jump_count_ = 0;       // scans in a row that found the same far correction...
   Point2 jump_offset_;       // ... this one (from the prediction)
   bool mapped_once_ = false;

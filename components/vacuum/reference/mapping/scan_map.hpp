@@ -67,12 +67,15 @@ class ScanMap {
   void insert(const component::LaserData& scan, double laser_yaw_rad, Point2 laser_m);
 
   // The laser's position that best fits `points` (endpoints()) to the map, searched within
-  // +-search_half_m of `predicted_m` (then refined by a hill climb that may leave the window).
-  ScanMatch match(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m) const;
+  // +-search_half_m of `predicted_m` (then refined by a hill climb that may leave the window,
+  // unless `bounded`: then the best fit within it).
+  ScanMatch match(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m,
+                  bool bounded = false) const;
   // match() on the points seen(): chosen at the prediction first, then again from where they
   // fit (a prediction 0.3 m off keeps the points that happen to land near walls from there).
   // ScanMatch::points: how many were matched.
-  ScanMatch matchSeen(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m) const;
+  ScanMatch matchSeen(const std::vector<ScanPoint>& points, Point2 predicted_m, double search_half_m,
+                      bool bounded = false) const;
   double score(const std::vector<ScanPoint>& points, Point2 laser_m) const;
   // The points that, from laser_m, end near a wall the map has seen from their side: only they
   // can say where the laser is; the rest is new (a wall's other face, a room not seen yet).
