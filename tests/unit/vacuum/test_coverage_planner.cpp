@@ -161,7 +161,8 @@ TEST(CoveragePlanner, ATripIsForAnAreaBeforeASliver) {
 }
 
 // Boxed in by its own bumps (the plans keep away from them, and it bumped all round), the robot
-// still finds its way out from where it stands: it found none and took the house for swept.
+// still finds its way out from where it stands, by the relaxed search (the one for a pocket the
+// map has closed): it found none and took the house for swept. The plain search keeps off them.
 TEST(CoveragePlanner, ItsOwnBumpsNeverBoxTheRobotIn) {
   ScanMap map;
   for (double yaw : {0.0, M_PI / 2, M_PI, -M_PI / 2}) map.insert(roomScan(yaw), yaw, {0, 0});
@@ -169,5 +170,5 @@ TEST(CoveragePlanner, ItsOwnBumpsNeverBoxTheRobotIn) {
   const Point2 at{-1.0, -1.0};
   for (int k = 0; k < 8; ++k) planner.addBump({at.x_m + 0.2 * std::cos(k * M_PI / 4), at.y_m + 0.2 * std::sin(k * M_PI / 4)}, 60.0);
   ASSERT_FALSE(planner.traversable(at));
-  EXPECT_FALSE(planner.pathToUnswept(at).empty()) << "out past its bumps, to the unswept room";
+  EXPECT_FALSE(planner.pathToUnswept(at, true).empty()) << "out past its bumps, to the unswept room";
 }

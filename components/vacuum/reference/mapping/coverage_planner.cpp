@@ -189,7 +189,8 @@ PlanBlock CoveragePlanner::planBlock(int bi, int bj, int k, bool relaxed, bool l
 
 // Relaxed: also through floor not seen yet and closer to walls, the way out of a pocket the
 // map has closed (a passage seen too narrow, a wall drawn a little off); never through a bump
-// (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s).
+// (h2: a path along a corridor clipped a box's corner, bumped, and was planned again, 50 s),
+// except where the robot stands (leaving).
 bool CoveragePlanner::planPassable(int i, int j, bool relaxed, bool leaving) const {
   if (leaving && map_.knownFree(i, j) && map_.clearanceM(i, j) >= s_.leave_clearance_m) return true;
   if (!relaxed) return traversable(i, j);
@@ -222,7 +223,7 @@ std::vector<Point2> CoveragePlanner::pathToUnswept(Point2 from_m, bool relaxed, 
     if (blocks[b].rep == -2) {
       const int bi = i0 + (b % w) * k, bj = j0 + (b / w) * k;
       const Point2 c = map_.centre(bi + k / 2, bj + k / 2);
-      blocks[b] = planBlock(bi, bj, k, relaxed, std::hypot(c.x_m - from_m.x_m, c.y_m - from_m.y_m) <= s_.leave_m);
+      blocks[b] = planBlock(bi, bj, k, relaxed, relaxed && std::hypot(c.x_m - from_m.x_m, c.y_m - from_m.y_m) <= s_.leave_m);
     }
     return blocks[b];
   };

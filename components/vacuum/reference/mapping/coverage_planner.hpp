@@ -31,9 +31,11 @@ struct CoverageSettings {
   // (0.33 m) barely fits: a robot that went in there was wedged between both sides (0.33 m; at
   // 0.17, h2's 0.34 m gap between two boxes).
   double relaxed_clearance_m = 0.18;
-  // Where the robot stands, the way out may pass its own bumps and walls this near (the disc is
-  // there, so it fits): boxed in by its bumps in a gap beside a box, it found no way anywhere and
-  // took the house for swept (d06-4x3 under realistic noise: all swept at 416 s, 43 % covered).
+  // In the relaxed search, where the robot stands, the way out may pass its own bumps and walls
+  // this near (the disc is there, so it fits): boxed in by its bumps in a gap beside a box, it
+  // found no way anywhere and took the house for swept (d06-4x3 under realistic noise: all swept
+  // at 416 s, 43 % covered). Only there: in every search it undid "never back there" of a wedge,
+  // and h2 seed 10 went back into one for its last 494 s.
   double leave_m = 0.4;
   double leave_clearance_m = 0.15;
   // The nearest unswept floor worth a trip first: a frontier, or a block whose 3 x 3 blocks round
@@ -106,7 +108,7 @@ class CoveragePlanner {
   // worth_a_trip: only a frontier or an area (CoverageSettings::area_cells), no sliver.
   std::vector<Point2> pathToUnswept(Point2 from_m, bool relaxed = false, bool worth_a_trip = false) const;
   // A block of k x k cells from corner (bi, bj), for the nearest-unswept search; leaving: it is
-  // where the robot stands or next to it (CoverageSettings::leave_m).
+  // where the robot stands or next to it, in the relaxed search (CoverageSettings::leave_m).
   PlanBlock planBlock(int bi, int bj, int k, bool relaxed, bool leaving = false) const;
   // The traversable place nearest to `from` within radius_m (the robot pushed too close to a wall
   // gets out that way); `from` itself if there is none.
