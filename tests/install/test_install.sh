@@ -17,6 +17,9 @@ case "$exercise" in
   teletaxi) short="--TeleTaxi.Referee.Timeout=20" ;;
   autopark) short="--Autopark.Referee.Timeout=20" ;;
 esac
+# A slow machine is waited for: the default backstop (the episode x 1.5 + 60 s, 90 s here) ran
+# out on a loaded 2-core machine before the Python template's process had started.
+short="$short --timeout=900"
 # Every header the exercise's API installs must compile from the prefix alone (each one may
 # include others: they must be installed too). They go first in the student's file.
 extra=""
