@@ -6,13 +6,7 @@
 #   bench/vacuum_noise_houses.sh [BUILD_DIR] [SEEDS] [AULA RUN OPTIONS...]
 #   e.g. bench/vacuum_noise_houses.sh build "1 2 3"
 set -euo pipefail
-build="${1:-build}"
-seeds="${2:-1 2 3}"
-shift $(( $# < 2 ? $# : 2 ))
-here="$(cd "$(dirname "$0")/.." && pwd)"
-out="$(mktemp -d)"
-trap 'rm -rf "$out"' EXIT
-port=$((20000 + $$ % 20000))
+. "$(dirname "$0")/house_bench.sh"
 # name | make_house.py arguments
 houses=(
   "d06-4x3-issue|--seed 101 --rooms-x 4 --rooms-y 3 --door-width 0.6 --furniture 2"
@@ -26,13 +20,11 @@ houses=(
   "d06-3x3-held|--seed 404 --rooms-x 3 --rooms-y 3 --door-width 0.6 --furniture 2"
 )
 median() { sort -g | awk '{a[NR]=$1} END {if (NR % 2) print a[(NR+1)/2]; else print (a[NR/2] + a[NR/2+1]) / 2}'; }
-field() { grep "^  \"$1\"" "$2" | head -1 | sed 's/.*: \([0-9.]*\),*/\1/'; }
 printf '| house | make_house.py arguments | floor | coverage, no noise | coverage, realistic noise | most bumps, stuck (noise) |\n|---|---|---|---|---|---|\n'
 for entry in "${houses[@]}"; do
   name="${entry%%|*}"
   args="${entry#*|}"
-  # shellcheck disable=SC2086
-  python3 "$here/worlds/tools/make_house.py" --out "$out/$name.world" $args >/dev/null
+  house "$name" "$args"
   row=()
   floor=""
   for noise in off realistic; do
@@ -41,8 +33,7 @@ for entry in "${houses[@]}"; do
     stuck=0
     for seed in $seeds; do
       report="$out/$name-$noise-$seed.json"
-      "$build/bin/aula" run vacuum --headless --world="$out/$name.world" --algorithm=reference --seed="$seed" \
-        --Simulator.Noise="$noise" --report="$report" --lcm-url="udpm://239.255.76.67:$port?ttl=0" "$@" >/dev/null 2>&1 || true
+      run_reference "$out/$name.world" "$seed" "$report" --Simulator.Noise="$noise" "$@"
       field coverage_percent "$report" >> "$out/$name-$noise.coverage"
       floor="$(field floor_area_m2 "$report")"
       bumps=$(( $(field bumps "$report") > bumps ? $(field bumps "$report") : bumps ))

@@ -295,7 +295,13 @@ void MappingReference::correct(const component::LaserData& scan, double yaw_s, P
   // Enough of the scan on walls the map has (a face seen for the first time is not, and must be
   // drawn from a scan placed by the rest), and no fit elsewhere about as good.
   const bool enough = m.points * 4 >= static_cast<int>(all.size());
-  if (!ambiguous && sharp_x && sharp_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
+  // Each axis fixed by this fit or still known from the last (within insert_sigma_m). A room just
+  // entered shows the scan few walls the map has, often along one axis only: drawn only where
+  // both were sharp, the room was never drawn, its floor never planned, and the cleaner left it
+  // for good (the house under noise, seed 3: half the house unvisited, 32 %).
+  const bool held_x = sharp_x || sigma_x_m_ <= s_.insert_sigma_m, held_y = sharp_y || sigma_y_m_ <= s_.insert_sigma_m;
+  if (!ambiguous && held_x && held_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
+    m.laser_m = {sharp_x ? m.laser_m.x_m : predicted.x_m, sharp_y ? m.laser_m.y_m : predicted.y_m};
     map_.insert(scan, yaw_s, m.laser_m);
     last_insert_ = m.laser_m;
     last_insert_yaw_ = yaw_s;

@@ -45,7 +45,8 @@ struct MappingSettings {
   double fixed_sigma_m = 0.01;        // ... and this after a fit that sharpens the axis
   double lost_window_m = 0.3;         // the widest search (after a poor match) and the widest gate
   double good_match = 0.75;           // mean match field a scan needs to correct the pose
-  double map_good_match = 0.85;       // ... and to be drawn into the map
+  double map_good_match = 0.85;       // ... and to be drawn into the map, where an axis the scan
+  double insert_sigma_m = 0.02;       // ... does not sharpen is known this well (one sigma)
   double min_sharpness = 0.03;        // a match this much better than 5 cm off, along x (y), fixes x (y)
   // Turning, a scan's yaw is known only as well as its timing: a few hundredths of a radian
   // turn it about the laser, and a turned scan fits a wall nearby better shifted.
