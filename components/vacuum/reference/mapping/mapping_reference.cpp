@@ -301,9 +301,9 @@ void MappingReference::correct(const component::LaserData& scan, double yaw_s, P
   // for good (the house under noise, seed 3: half the house unvisited, 32 %).
   const bool held_x = sharp_x || sigma_x_m_ <= s_.insert_sigma_m, held_y = sharp_y || sigma_y_m_ <= s_.insert_sigma_m;
   if (!ambiguous && held_x && held_y && enough && m.score >= s_.map_good_match && w_max <= s_.map_max_w_radps && moved) {
-    m.laser_m = {sharp_x ? m.laser_m.x_m : predicted.x_m, sharp_y ? m.laser_m.y_m : predicted.y_m};
-    map_.insert(scan, yaw_s, m.laser_m);
-    last_insert_ = m.laser_m;
+    const Point2 drawn_at{sharp_x ? m.laser_m.x_m : predicted.x_m, sharp_y ? m.laser_m.y_m : predicted.y_m};
+    map_.insert(scan, yaw_s, drawn_at);
+    last_insert_ = drawn_at;
     last_insert_yaw_ = yaw_s;
   }
 }
