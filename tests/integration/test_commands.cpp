@@ -175,12 +175,25 @@ TEST(Commands, InputThatNeverEndsOrIsOutOfRangeIsRefusedNamingIt) {
        "--calibration-seeds=9223372036854775807"},
       {{aula, "grade", "--collect=" + dir + "/collect"}, "vacuum-seed1.json: not a result"},
       {{aula, "new", "vacuum", dir + "/ana"}, "MyAlgorithm.py already exists: " + dir + "/ana is a Python project"},
+      // An output that is not a file is never replaced: a link (its target stays), a pipe.
+      {{aula, "run", "vacuum", "--headless", "--report=" + dir + "/link.json"}, "is a symbolic link, not a file"},
+      {{aula, "run", "vacuum", "--headless", "--trace=" + dir + "/pipe.json"}, "is a named pipe, not a file"},
+      // A key set twice, by its option and by name: neither wins unchecked.
+      {{aula, "run", "vacuum", "--headless", "--duration=5", "--Vacuum.Referee.Duration=abc"},
+       "--duration=5 and --Vacuum.Referee.Duration=abc set the same setting"},
+      {{aula, "run", "vacuum", "--headless", "--algorithm=reference", "--Vacuum.Algorithm=bounce"},
+       "--algorithm=reference and --Vacuum.Algorithm=bounce set the same setting"},
   };
+  std::ofstream(dir + "/target.json") << "the teacher's file\n";
+  fs::create_symlink(dir + "/target.json", dir + "/link.json");
+  ASSERT_EQ(::mkfifo((dir + "/pipe.json").c_str(), 0600), 0);
   for (const auto& [args, said] : cases) {
     const Outcome out = runToEnd(args, 60s);  // a backstop: each is refused before anything runs
     EXPECT_EQ(out.code.value_or(-1), 2) << args.back() << "\n" << out.output;
     EXPECT_NE(out.output.find(said), std::string::npos) << args.back() << "\n" << out.output;
   }
   EXPECT_FALSE(fs::exists(dir + "/ana/MyAlgorithm.cpp"));  // aula new wrote nothing
+  EXPECT_EQ(readFile(dir + "/target.json"), "the teacher's file\n");
+  EXPECT_TRUE(fs::is_symlink(dir + "/link.json"));
   fs::remove_all(dir);
 }

@@ -19,7 +19,9 @@ using aula::process::ChildProcess;
 using aula::testing::jsonNumber;
 using aula::testing::privateDir;
 using aula::testing::privateLcmUrl;
+using aula::testing::csvFields;
 using aula::testing::readFile;
+using aula::testing::readGrades;
 
 namespace {
 
@@ -35,40 +37,6 @@ int runToEnd(const std::vector<std::string>& argv, const std::string& out_path, 
 void writeFile(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
   std::ofstream(path) << text;
-}
-
-// One CSV line, with quoted fields.
-std::vector<std::string> csvFields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  bool quoted = false;
-  for (size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      fields.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      fields.emplace_back();
-    } else {
-      fields.back() += c;
-    }
-  }
-  return fields;
-}
-
-std::map<std::string, std::map<std::string, std::string>> readGrades(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  const auto header = csvFields(line);
-  std::map<std::string, std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const auto fields = csvFields(line);
-    EXPECT_EQ(fields.size(), header.size()) << line;
-    for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i) rows[fields[0]][header[i]] = fields[i];
-  }
-  return rows;
 }
 
 }  // namespace
@@ -118,8 +86,8 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   ASSERT_EQ(rows.size(), 4u) << first_csv;
   // Beside the mark, the raw measure the referee's report names (its "measures").
   EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
-            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,failures,"
-            "language,aula_version");
+            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,runs_retried,"
+            "runs_incomplete,failures,retries,incomplete,language,aula_version");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;

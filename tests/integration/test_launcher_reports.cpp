@@ -7,6 +7,7 @@
 // batch tasks.
 #include <aula/process/child_process.hpp>
 #include <aula/process/cpu_affinity.hpp>
+#include <aula/process/exit_codes.hpp>
 
 #include "test_support.hpp"
 
@@ -131,7 +132,7 @@ TEST(LauncherReports, ADeadRefereeLeavesAReportWithoutAMark) {
   ASSERT_GT(referee, 0) << readFile(out);
   std::this_thread::sleep_for(1s);
   ::kill(referee, SIGKILL);
-  EXPECT_EQ(run.wait(30s).value_or(-1), 1) << readFile(out);
+  EXPECT_EQ(run.wait(30s).value_or(-1), aula::process::kExitMachine) << readFile(out);
   const std::string json = readFile(report);
   EXPECT_NE(json.find("\"aborted\": \"the machine's reason: vacuum-cleaner-referee died (SIGKILL)\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"finished\": false"), std::string::npos) << json;
@@ -155,7 +156,7 @@ TEST(LauncherReports, ARunPastItsWallClockBudgetEndsWithTheReason) {
   auto argv = slowRun(report);
   argv.push_back("--timeout=3");
   ChildProcess run(argv, out, out);
-  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
+  EXPECT_EQ(run.wait(120s).value_or(-1), aula::process::kExitMachine) << readFile(out);
   const std::string json = readFile(report);
   EXPECT_NE(json.find("the machine's reason: the run's wall-clock backstop of 3 s ran out"), std::string::npos)
       << json << readFile(out);
@@ -177,7 +178,14 @@ TEST_P(StoppedProcess, IsWaitedForAndTheReportIsTheSame) {
   };
   ChildProcess calm(runTo(dir + "/calm.json"), dir + "/calm.txt", dir + "/calm.txt");
   ChildProcess stopped(runTo(dir + "/stopped.json"), dir + "/stopped.txt", dir + "/stopped.txt");
-  const pid_t process = waitForChild(stopped.pid(), GetParam());
+  // "a/b": the child b of the launcher's child a (the algorithm's own process, the component's child).
+  const std::string path = GetParam();
+  pid_t process = stopped.pid();
+  for (size_t from = 0; from != std::string::npos && process > 0;) {
+    const size_t to = path.find('/', from);
+    process = waitForChild(process, path.substr(from, to == std::string::npos ? std::string::npos : to - from));
+    from = to == std::string::npos ? to : to + 1;
+  }
   ASSERT_GT(process, 0) << readFile(dir + "/stopped.txt");
   std::this_thread::sleep_for(1s);
   stopFor(process, 3s);
@@ -190,9 +198,14 @@ TEST_P(StoppedProcess, IsWaitedForAndTheReportIsTheSame) {
   fs::remove_all(dir);
 }
 
+std::string stoppedName(size_t index) {
+  const char* names[] = {"Simulator", "Component", "Referee", "AlgorithmsOwnProcess"};
+  return names[index];
+}
+
 INSTANTIATE_TEST_SUITE_P(LauncherReports, StoppedProcess,
-                         ::testing::Values("aula-sim", "vacuum-cleaner", "vacuum-cleaner-referee"),
-                         [](const auto& info) { return std::string(info.index == 0 ? "Simulator" : info.index == 1 ? "Component" : "Referee"); });
+                         ::testing::Values("aula-sim", "vacuum-cleaner", "vacuum-cleaner-referee", "vacuum-cleaner/vacuum-cleaner"),
+                         [](const auto& info) { return stoppedName(info.index); });
 
 // Simulator.Lockstep.DropAfterMs is only a starved machine's backstop: past it a graded run ends
 // for the machine's reason, never the student's (aula grade runs it again).
@@ -205,7 +218,7 @@ TEST(LauncherReports, ASilentClientPastTheBackstopIsTheMachinesReason) {
   ASSERT_GT(client, 0) << readFile(out);
   std::this_thread::sleep_for(1s);
   stopFor(client, 4s);
-  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
+  EXPECT_EQ(run.wait(120s).value_or(-1), aula::process::kExitMachine) << readFile(out);
   const std::string json = readFile(report);
   EXPECT_NE(json.find("\"aborted\": \"the machine's reason: lockstep client 'vacuum-cleaner' silent for 1."), std::string::npos)
       << json << readFile(out);
@@ -222,7 +235,7 @@ TEST(LauncherReports, AComponentKilledFromOutsideIsTheMachinesReason) {
   ASSERT_GT(component, 0) << readFile(out);
   std::this_thread::sleep_for(1s);
   ::kill(component, SIGKILL);
-  EXPECT_EQ(run.wait(120s).value_or(-1), 1) << readFile(out);
+  EXPECT_EQ(run.wait(120s).value_or(-1), aula::process::kExitMachine) << readFile(out);
   const std::string json = readFile(report);
   EXPECT_NE(json.find("\"aborted\": \"the machine's reason: the component was killed (SIGKILL) from outside the run\""),
             std::string::npos)

@@ -182,9 +182,15 @@ TEST(RecordRegrade, ALogCutShortIsNotAFinishedRun) {
     }
   }
   const std::string report = cut + ".json", text = cut + ".txt";
-  // A cut log is not what was signed: regraded only when told so.
+  // A cut log is not what was signed: regraded only when told so; without its key it is only
+  // "not signed", with its key beside it, it was cut.
   aula::process::ChildProcess refused({kAula, "regrade", cut, "--report=" + report}, text, text);
   EXPECT_EQ(refused.wait(60s).value_or(-1), 2) << readFile(text);
+  EXPECT_NE(readFile(text).find("it is not signed"), std::string::npos) << readFile(text);
+  std::filesystem::copy_file(g.log_path + ".key", cut + ".key", std::filesystem::copy_options::overwrite_existing);
+  aula::process::ChildProcess said({kAula, "regrade", cut, "--report=" + report}, text, text);
+  EXPECT_EQ(said.wait(60s).value_or(-1), 2) << readFile(text);
+  EXPECT_NE(readFile(text).find("it was cut or damaged after it was recorded"), std::string::npos) << readFile(text);
   aula::process::ChildProcess regrade({kAula, "regrade", cut, "--unsigned", "--report=" + report}, text, text);
   EXPECT_EQ(regrade.wait(60s).value_or(-1), 1) << readFile(text);
   EXPECT_NE(readFile(text).find("the log ends before the end of the episode"), std::string::npos) << readFile(text);

@@ -11,10 +11,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 #include <regex>
 #include <sstream>
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -75,6 +77,41 @@ inline Outcome runToEnd(std::vector<std::string> args, std::chrono::seconds limi
   if (!out.code) child.stop();
   out.output = readFile(dir + "/err.log") + readFile(dir + "/out.log");
   return out;
+}
+
+// One CSV line, with quoted fields.
+inline std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// grades.csv as rows by student, each field by its column's name.
+inline std::map<std::string, std::map<std::string, std::string>> readGrades(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  const auto header = csvFields(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const auto fields = csvFields(line);
+    EXPECT_EQ(fields.size(), header.size()) << line;
+    for (size_t i = 0; i < std::min(fields.size(), header.size()); ++i) rows[fields[0]][header[i]] = fields[i];
+  }
+  return rows;
 }
 
 }  // namespace aula::testing

@@ -24,6 +24,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace aula::component {
@@ -63,6 +64,7 @@ void ioStart(BoxWire& wire, BoxStart& start, AlgorithmBudgets& budgets) {
   ioBudget(wire, budgets.plan);
   wire.io(budgets.run.cpu_s, "budgets");
   wire.io(budgets.run.blocked_s, "budgets");
+  wire.io(budgets.memory_bytes, "budgets");
 }
 
 bool readAll(int fd, char* data, size_t n) {
@@ -352,6 +354,14 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
   } catch (const BoxWireError& e) {
     std::cerr << "--algorithm-box: " << e.what() << std::endl;
     return false;
+  }
+  // Its memory, in every run (a sandbox's limit is on the component already, and may be lower).
+  rlimit memory{};
+  if (budgets.memory_bytes > 0 && ::getrlimit(RLIMIT_AS, &memory) == 0 &&
+      (memory.rlim_cur == RLIM_INFINITY || memory.rlim_cur > budgets.memory_bytes)) {
+    memory.rlim_cur = budgets.memory_bytes;
+    if (memory.rlim_max != RLIM_INFINITY && memory.rlim_max < memory.rlim_cur) memory.rlim_cur = memory.rlim_max;
+    ::setrlimit(RLIMIT_AS, &memory);
   }
   reportCrashesTo(kBoxLineFd);  // a crash's, an overrun's and a forbidden try's line: the component's
   // Only the calls an algorithm needs (forbidden_calls.hpp): no socket of its own, not the run's

@@ -32,4 +32,17 @@ std::vector<pid_t> descendantsOf(pid_t pid) {
   return found;
 }
 
+double waitedForCpuS(const std::vector<pid_t>& pids) {
+  double waited_ns = 0;
+  for (const pid_t pid : pids) {
+    std::error_code error;
+    for (const auto& task : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/task", error)) {
+      std::ifstream in(task.path() / "schedstat");
+      double on_cpu_ns = 0, run_delay_ns = 0;
+      if (in >> on_cpu_ns >> run_delay_ns) waited_ns += run_delay_ns;
+    }
+  }
+  return waited_ns * 1e-9;
+}
+
 }  // namespace aula::process

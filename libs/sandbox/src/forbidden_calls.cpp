@@ -39,7 +39,10 @@ constexpr std::array<const char*, 28> kForbidden = {
 // what a computing program may need beside them: memory, files, threads, children, time, signals.
 // No new socket, no namespace, no other process's memory, no keyring, no io_uring; and no move to
 // another CPU (sched_setaffinity: a graded run has one of its own, beside other students' runs).
-constexpr std::array<const char*, 149> kAlgorithmCalls = {
+// Signals go only to itself and its own children (kill, tkill, tgkill: narrowed by a second filter,
+// signalsStayInside), never a stop signal. restart_syscall: what a process stopped and continued
+// (a debugger, an admin's kill -STOP) makes to go on with the call it was in.
+constexpr std::array<const char*, 150> kAlgorithmCalls = {
     // memory
     "brk", "mmap", "munmap", "mprotect", "madvise", "mremap", "msync", "mincore", "mlock", "munlock",
     "get_mempolicy", "set_mempolicy", "membarrier",
@@ -60,6 +63,7 @@ constexpr std::array<const char*, 149> kAlgorithmCalls = {
     "sched_getparam", "sched_getscheduler", "getpriority", "getcpu",
     // signals
     "rt_sigprocmask", "rt_sigreturn", "rt_sigsuspend", "rt_sigtimedwait", "sigaltstack", "kill", "tgkill", "tkill",
+    "restart_syscall",
     // time
     "clock_gettime", "clock_getres", "clock_nanosleep", "nanosleep", "gettimeofday", "time", "getitimer",
     "setitimer", "alarm",
@@ -69,8 +73,10 @@ constexpr std::array<const char*, 149> kAlgorithmCalls = {
     "getrandom", "prlimit64", "getrlimit", "arch_prctl", "prctl", "seccomp"};
 
 // Past the list, what the algorithm's process tries and a graded run flags as an escape: the
-// escape calls above, and the sockets and namespaces only an escape needs there.
-constexpr std::array<const char*, 3> kAlgorithmEscapes = {"socket", "socketpair", "clone"};
+// escape calls above, the sockets and namespaces only an escape needs there, and a signal to a
+// process of the run's (its component: a kill would be "killed from outside the run", a stop would
+// stall the run) or a stop signal (signalsStayInside).
+constexpr std::array<const char*, 6> kAlgorithmEscapes = {"socket", "socketpair", "clone", "kill", "tkill", "tgkill"};
 
 constexpr int kCallNumbers = 1024;  // above every x86_64 and aarch64 system call number
 
@@ -197,6 +203,34 @@ std::string load(scmp_filter_ctx ctx, int rc) {
   return "";
 }
 
+// A second filter, stacked on the list (the kernel takes the stricter answer of the two): a signal
+// goes to this process, its threads or its children only, which are numbered after it in its
+// process namespace (its component, bubblewrap's init and every process outside are numbered
+// before it, or not seen); never a process group (0, negative) and never a stop signal (a stopped
+// process uses no time a budget counts: it would stall the run). Its own filter because libseccomp
+// compares an argument once a rule, and the range `own <= pid <= INT_MAX` takes two; 32-bit
+// comparisons, as the kernel reads a pid and a signal.
+std::string signalsStayInside() {
+  std::unique_ptr<void, void (*)(scmp_filter_ctx)> ctx(seccomp_init(SCMP_ACT_ALLOW), seccomp_release);
+  if (!ctx) return "seccomp_init failed";
+  int rc = seccomp_attr_set(ctx.get(), SCMP_FLTATR_CTL_TSYNC, 1);
+  const auto own = static_cast<scmp_datum_t>(::getpid());
+  struct Signalling {
+    int call;
+    unsigned target, signal;  // argument numbers
+  };
+  for (const Signalling s : {Signalling{SCMP_SYS(kill), 0, 1}, Signalling{SCMP_SYS(tkill), 0, 1},
+                             Signalling{SCMP_SYS(tgkill), 0, 2}}) {
+    rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_TRAP, s.call, 1, SCMP_CMP32(s.target, SCMP_CMP_LT, own));
+    rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_TRAP, s.call, 1, SCMP_CMP32(s.target, SCMP_CMP_GT, 0x7fffffffu));
+    for (const int stop : {SIGSTOP, SIGTSTP, SIGTTIN, SIGTTOU}) {
+      rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_TRAP, s.call, 1,
+                             SCMP_CMP32(s.signal, SCMP_CMP_EQ, static_cast<scmp_datum_t>(stop)));
+    }
+  }
+  return load(ctx.get(), rc);
+}
+
 }  // namespace
 
 std::vector<std::string> forbiddenCalls() { return {kForbidden.begin(), kForbidden.end()}; }
@@ -245,7 +279,8 @@ std::string allowOnlyAlgorithmCalls(int line_fd) {
     rc |= seccomp_rule_add(ctx.get(), SCMP_ACT_ALLOW, SCMP_SYS(ioctl), 1, SCMP_A1(SCMP_CMP_EQ, request));
   }
   rc |= keepTheWatch(ctx.get(), line_fd, true);
-  return load(ctx.get(), rc);
+  if (std::string why = load(ctx.get(), rc); !why.empty()) return why;
+  return signalsStayInside();
 #endif
 }
 

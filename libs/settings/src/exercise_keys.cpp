@@ -72,7 +72,8 @@ void motionKeys(SettingsTable& t, const std::string& section, double max_v, doub
          "the system calls on its list, no socket (the component keeps the world, the bus and the run's keys); "
          "off: inside the component");
   t.real("Component.Sandbox.Memory", 2048, "MB", 64, 1e7,
-         "memory the student's code may use in a sandboxed (graded) run; past it the run ends with that reason");
+         "memory the student's code may use: in a sandboxed (graded) run its processes together, past it the run ends "
+         "with that reason; in every run the address space of the algorithm's own process (Component.OwnProcess)");
   t.integer("Component.Sandbox.Processes", 64, "", 0, 4096,
             "processes the student's code may start in a sandboxed run; past it the run ends with that reason");
   t.real("Component.Sandbox.FileSize", 64, "MB", 1, 1e7,

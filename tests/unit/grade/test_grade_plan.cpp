@@ -126,25 +126,32 @@ TEST(GradePlan, TwoWorldsWithOneFileNameAreNamedApartAndAModelChangesTheHash) {
 
 // A resumed grade runs again what ended for the machine's reason (a starved process, the wall
 // budget), never what the algorithm did: the same run gives the same result, so only time is spent.
+// The machine's reason is the grade's own verdict (`machine_reason`), never read from the failure's
+// text, which a student's exception or compiler error can write.
 TEST(GradePlan, ARunThatFailedForTheMachinesReasonIsNotUpToDate) {
   const std::string dir = scratch();
   aula::grade::PlannedRun run;
   run.result_path = dir + "/r.json";
   run.student = "ada";
   run.seed = 1;
-  auto resultFailing = [&](const std::string& failure) {
+  auto resultFailing = [&](const std::string& failure, bool machine) {
     std::ofstream(run.result_path) << "{\"plugin_sha256\": \"\", \"world_sha256\": \"\", \"seed\": 1, \"student\": \"ada\", "
-                                      "\"settings\": [], \"failure\": \"" << failure << "\"}";
+                                      "\"settings\": [], \"failure\": \"" << failure << "\", \"machine_reason\": "
+                                   << (machine ? "true" : "false") << "}";
     return aula::grade::upToDate(run);
   };
-  EXPECT_TRUE(resultFailing(""));
-  EXPECT_TRUE(resultFailing("execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12)"));
-  EXPECT_TRUE(resultFailing("the algorithm used more than 2048 MB of memory"));
-  EXPECT_TRUE(resultFailing("execute() used more than 2 s of CPU time (an endless loop?) (Component.ExecuteBudget)"));
-  EXPECT_FALSE(resultFailing("the machine's reason: the run failed (exit 1): aula-sim: stopped at 674 s"));
-  EXPECT_FALSE(resultFailing("the machine's reason: lockstep client 'vacuum-cleaner' silent for 600.1 s of wall time"));
-  EXPECT_FALSE(resultFailing("the machine's reason: the run's wall-clock backstop of 60 s ran out (--timeout)"));
-  EXPECT_FALSE(resultFailing("the machine's reason: the component was killed (SIGKILL) from outside the run"));
+  EXPECT_TRUE(resultFailing("", false));
+  EXPECT_TRUE(resultFailing("execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12)", false));
+  EXPECT_TRUE(resultFailing("the algorithm used more than 2048 MB of memory", false));
+  EXPECT_TRUE(resultFailing("execute() used more than 2 s of CPU time (an endless loop?) (Component.ExecuteBudget)", false));
+  // A student's text that says it: their failure, kept.
+  EXPECT_TRUE(resultFailing("the machine's reason: the component was killed (SIGKILL) from outside the run", false));
+  EXPECT_TRUE(resultFailing("execute() threw Exception: the machine's reason: try again (MyAlgorithm.py:3)", false));
+  EXPECT_TRUE(resultFailing("did not compile: MyAlgorithm.cpp:1: #error the machine's reason: ", false));
+  EXPECT_FALSE(resultFailing("the machine's reason: the run failed (exit 1): aula-sim: stopped at 674 s", true));
+  EXPECT_FALSE(resultFailing("the machine's reason: lockstep client 'vacuum-cleaner' silent for 600.1 s of wall time", true));
+  EXPECT_FALSE(resultFailing("the machine's reason: the run's wall-clock backstop of 60 s ran out (--timeout)", true));
+  EXPECT_FALSE(resultFailing("the machine's reason: the component was killed (SIGKILL) from outside the run", true));
   fs::remove_all(dir);
 }
 

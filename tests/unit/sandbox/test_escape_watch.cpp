@@ -179,6 +179,68 @@ TEST(AlgorithmCalls, OnlyTheListGoesThroughAndEscapesAreSaidOnTheLine) {
                   "the algorithm's process may not call sched_setaffinity(): refused\n");
 }
 
+// The algorithm's process signals itself and its own children only, never with a stop signal: its
+// component (its parent, numbered before it), a process group and a forged 64-bit pid are refused
+// and flagged, so no kill of the component passes for the machine's and no stop stalls the run.
+TEST(AlgorithmCalls, SignalsStayWithItselfAndItsChildren) {
+  std::string said;
+  const std::string out = inWatchedChild(
+      [](int) {
+        const pid_t parent = ::getppid();
+        if (::kill(parent, SIGKILL) != -1 || errno != EPERM) return 1;
+        if (::kill(parent, 0) != -1 || errno != EPERM) return 2;
+        if (::kill(0, SIGTERM) != -1 || errno != EPERM) return 3;   // its process group: its parent's too
+        if (::kill(-1, SIGKILL) != -1 || errno != EPERM) return 4;  // every process it may signal
+        if (::syscall(SYS_kill, (1L << 32) | parent, SIGKILL) != -1 || errno != EPERM) return 5;  // the kernel reads 32 bits
+        if (::kill(::getpid(), SIGSTOP) != -1 || errno != EPERM) return 6;
+        if (::raise(SIGTSTP) == 0) return 7;  // tgkill, to itself: a stop signal all the same
+        if (::kill(::getpid(), 0) != 0) return 8;
+        signal(SIGUSR1, SIG_IGN);
+        if (::raise(SIGUSR1) != 0) return 9;
+        int never[2];
+        if (::pipe(never) != 0) return 11;
+        const pid_t child = ::fork();
+        if (child == 0) {
+          char c = 0;
+          (void)!::read(never[0], &c, 1);  // until it is killed
+          ::_exit(0);
+        }
+        int status = 0;
+        if (::kill(child, SIGKILL) != 0 || ::waitpid(child, &status, 0) != child || !WIFSIGNALED(status)) return 10;
+        return 0;
+      },
+      aula::sandbox::allowOnlyAlgorithmCalls, &said);
+  EXPECT_EQ(out, "refused kill\nrefused kill\nrefused kill\nrefused kill\nrefused kill\nrefused kill\nrefused tgkill\n|ok");
+  EXPECT_EQ(said, "");
+}
+
+// Stopped and continued from outside (a debugger, an admin's kill -STOP) in the middle of a sleep,
+// the algorithm's process goes on: the kernel resumes the call with restart_syscall, on its list.
+TEST(AlgorithmCalls, AStopAndContinueFromOutsideIsNoFault) {
+  int slept[2];
+  ASSERT_EQ(::pipe(slept), 0);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::close(slept[0]);
+    if (!aula::sandbox::allowOnlyAlgorithmCalls(-1).empty()) ::_exit(2);
+    (void)!::write(slept[1], "s", 1);
+    timespec nap{1, 0};
+    ::_exit(::nanosleep(&nap, nullptr) == 0 ? 0 : 1);
+  }
+  ::close(slept[1]);
+  char c = 0;
+  ASSERT_EQ(::read(slept[0], &c, 1), 1);
+  ::usleep(200000);  // in its sleep (were it not, the call would not need restarting, and pass)
+  ::kill(child, SIGSTOP);
+  ::usleep(200000);
+  ::kill(child, SIGCONT);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ::close(slept[0]);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      << (WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status)) : "exit " + std::to_string(WEXITSTATUS(status)));
+}
+
 // Outside a graded run (no line) the escapes too are refused, and said on stderr.
 TEST(AlgorithmCalls, WithoutALineEveryRefusalIsSaidOnStderr) {
   std::string said;

@@ -17,7 +17,15 @@ namespace {
 // Why the log cannot be trusted, or "" when it can; says on the terminal what it found.
 std::string distrust(const std::string& log, const std::string& key_path) {
   lcmbus::readRunRecord(log);  // a recorded run at all (else a usage error naming what it is)
-  if (!supervision::isSigned(log)) return "it is not signed (recorded without a graded run's key)";
+  if (!supervision::isSigned(log)) {
+    // A graded run's log is signed last: with its key beside it, a log that reads to no signature
+    // was cut short or damaged after it was recorded (LCM's reader stops at the first bad event).
+    if (std::filesystem::exists(key_path)) {
+      return "it was cut or damaged after it was recorded: its key (" + key_path +
+             ") says it was signed, but its signature, the log's last event, cannot be read";
+    }
+    return "it is not signed (recorded without a graded run's key)";
+  }
   if (!std::filesystem::exists(key_path)) return "it is signed, but its key (" + key_path + ") is not there to check it";
   const supervision::LogCheck check = supervision::checkLog(log, supervision::readKeyFile(key_path));
   if (!check.intact) return "it was altered after it was signed: " + check.altered + " differ from what was signed";

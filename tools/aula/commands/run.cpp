@@ -44,15 +44,22 @@ bool noDisplay() {
 }
 
 // What a run's options stand for in the processes' settings.
+// An option and its key given both (--duration=5 --Vacuum.Referee.Duration=abc) are refused: one
+// would silently win, and the other go unchecked.
 Config overridesOf(const Exercise& ex, const Arguments& args, bool headless) {
   Config overrides = settingsOf(args);
-  if (args.given("algorithm")) overrides.set(ex.section + ".Algorithm", args.text("algorithm"), "command line --algorithm");
+  auto setFrom = [&](const char* option, const std::string& key, const std::string& value) {
+    if (overrides.has(key)) {
+      throw ConfigError(args.spelled(option) + " and --" + key + "=" + overrides.getString(key) +
+                        " set the same setting: give only one");
+    }
+    overrides.set(key, value, std::string("command line --") + option);
+  };
+  if (args.given("algorithm")) setFrom("algorithm", ex.section + ".Algorithm", args.text("algorithm"));
   if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
-  if (args.given("world")) overrides.set(ex.section + ".World", args.text("world"), "command line --world");
-  if (args.given("seed")) overrides.set("Simulator.Seed", args.text("seed"), "command line --seed");
-  if (args.given("duration") && !ex.episode_key.empty()) {
-    overrides.set(ex.episode_key, args.text("duration"), "command line --duration");
-  }
+  if (args.given("world")) setFrom("world", ex.section + ".World", args.text("world"));
+  if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
+  if (args.given("duration") && !ex.episode_key.empty()) setFrom("duration", ex.episode_key, args.text("duration"));
   return overrides;
 }
 
@@ -108,9 +115,23 @@ std::vector<std::vector<std::string>> commandLines(const Exercise& ex, const Arg
 
 // The referee's output files: a folder that is not there is refused before anything starts, and
 // a report from an earlier run must never pass for this one's, whatever happens next.
+// What is at an output's path is replaced only when it is a file: never a link (its target, or
+// the link, would be a file the user did not name), a named pipe or a device (/dev/full).
 void prepareOutputs(const Arguments& args) {
-  for (const char* output : {"report", "picture", "trace", "report-html"}) {
-    if (args.given(output)) config::requireWritableFolder(args.text(output), args.spelled(output));
+  for (const char* output : {"report", "picture", "trace", "report-html", "record"}) {
+    if (!args.given(output)) continue;
+    config::requireWritableFolder(args.text(output), args.spelled(output));
+    std::error_code error;
+    const auto status = std::filesystem::symlink_status(args.text(output), error);
+    if (!error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+      const char* what = std::filesystem::is_symlink(status)     ? "a symbolic link"
+                         : std::filesystem::is_directory(status) ? "a folder"
+                         : std::filesystem::is_fifo(status)      ? "a named pipe"
+                         : std::filesystem::is_socket(status)    ? "a socket"
+                                                                 : "a device or special file";
+      throw ConfigError(args.spelled(output) + ": " + args.text(output) + " is " + what +
+                        ", not a file: give the path of a new or regular file");
+    }
   }
   for (const char* output : {"report", "picture", "trace", "report-html"}) {
     if (!outputPath(args, output).empty()) std::filesystem::remove(outputPath(args, output));

@@ -23,14 +23,23 @@ using config::ConfigError;
 
 namespace {
 
-void printGrades(const std::vector<StudentGrade>& grades, const std::string& out_dir) {
+// Prints the grades; the exit code: 1 when a run never completed (the machine's reason on every
+// try), which the grade leaves out and the same command runs again.
+int printGrades(const std::vector<StudentGrade>& grades, const std::string& out_dir) {
   std::printf("%-20s %7s %7s %7s %9s\n", "student", "median", "min", "max", "failed");
+  int incomplete = 0;
   for (const auto& g : grades) {
     const std::string tampered = g.runs_tampered > 0 ? " TAMPERING in " + std::to_string(g.runs_tampered) + " runs;" : "";
     std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d%s %s\n", g.student.c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
                 tampered.c_str(), g.failures.substr(0, 80).c_str());
+    incomplete += g.runs_incomplete;
   }
   std::printf("grades: %s/grades.csv, %s/report.html\n", out_dir.c_str(), out_dir.c_str());
+  if (incomplete == 0) return 0;
+  std::fflush(stdout);
+  std::cerr << "aula grade: " << incomplete << " run(s) did not complete, for the machine's reason on every try (left out "
+            << "of the marks; grades.csv names them in 'incomplete'): run the same command again\n";
+  return process::kExitFailed;
 }
 
 std::string formatDuration(double seconds) {
@@ -115,7 +124,7 @@ int reportStopped(const GradeStopped& stop, const Manifest& manifest) {
   std::cerr << "\naula grade: stopped after " << finished << " of " << total << " runs: " << stop.what() << "\n"
             << std::flush;
   try {
-    printGrades(collect(manifest.out_dir), manifest.out_dir);
+    (void)printGrades(collect(manifest.out_dir), manifest.out_dir);
     std::cerr << "aula grade: grades.csv and report.html hold the " << finished << " finished runs only\n";
   } catch (const std::runtime_error& e) {
     std::cerr << "aula grade: no grades.csv either: " << e.what() << "\n"
@@ -177,11 +186,11 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
       return reportStopped(stop, manifest);
     }
   }
-  printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{}, request.exercise,
-                      request.similarity_rules, request.known),
-              request.out_dir);
+  const int code = printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{},
+                                       request.exercise, request.similarity_rules, request.known),
+                               request.out_dir);
   if (request.similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", request.out_dir.c_str());
-  return 0;
+  return code;
 }
 
 int gradeTask(const std::string& manifest_path, const std::string& text) {
@@ -211,17 +220,14 @@ int collectGrades(const std::string& dir) {
   }
   // The class is compared as the grade would have (its manifest keeps the folders and rules).
   const fs::path manifest_path = fs::path(dir) / "manifest.json";
-  if (!fs::exists(manifest_path)) {
-    printGrades(collect(dir), dir);
-    return 0;
-  }
+  if (!fs::exists(manifest_path)) return printGrades(collect(dir), dir);
   const Manifest manifest = Manifest::load(manifest_path.string());
   const bool similarity = manifest.similarity_rules.has_value();
-  printGrades(collect(dir, manifest.submissions, manifest.exercise, manifest.similarity_rules.value_or(SimilarityRules{}),
-                      manifest.known),
-              dir);
+  const int code = printGrades(collect(dir, manifest.submissions, manifest.exercise,
+                                       manifest.similarity_rules.value_or(SimilarityRules{}), manifest.known),
+                               dir);
   if (similarity) std::printf("similar work: %s/similarity.csv (flagged pairs in report.html)\n", dir.c_str());
-  return 0;
+  return code;
 }
 
 }  // namespace aula::grade

@@ -93,6 +93,7 @@ Manifest planRuns(const GradeRequest& request, const std::vector<Submission>& su
         r.plugin = s.plugin;
         r.plugin_sha256 = s.plugin_sha256;
         r.compile_error = s.compile_error;
+        r.build_machine = s.build_machine;
         r.language = s.language;
         r.wall_limit_s = request.wall_limit_s;
         const fs::path stem = fs::path(request.out_dir) / (s.known ? "known" : "runs") / (s.known ? s.dir_name : s.student) /

@@ -1,5 +1,6 @@
 #include "aula/grade/grade_runner.hpp"
 
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/machine_reason.hpp>
 
 #include <aula/config/paths.hpp>
@@ -80,12 +81,25 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
   result["settings"] = run.settings;
   result["wall_time_s"] = std::round(wall_s * 100) / 100;
   if (exit_code) result["exit_code"] = *exit_code;
+  // The machine's reason is what this grade or the launcher saw for itself (machine_reason.hpp):
+  // the grade's backstop, the launcher's exit code, a launcher killed or ending with no report, a
+  // build stopped at its backstop. No text of a report, a log or a compiler decides it.
   std::string failure;
+  bool machine = false;
+  const bool launcher_killed = exit_code && *exit_code > 128;  // SIGKILL, SIGTERM from outside the grade
   if (!run.compile_error.empty()) {
     failure = run.compile_error;
+    machine = run.build_machine;
   } else if (timed_out) {
     failure = process::machineReason("the grade's wall-clock backstop of " +
                                      std::to_string(static_cast<int>(run.wall_limit_s)) + " s ran out");
+    machine = true;
+  } else if (exit_code && (*exit_code == process::kExitMachine || launcher_killed)) {
+    const std::string said = result.value("aborted", std::string());
+    failure = process::saysMachineReason(said)
+                  ? said
+                  : process::machineReason("the run ended (exit " + std::to_string(*exit_code) + "): " + lastLine(run.log_path));
+    machine = true;
   } else if (result.contains("algorithm_error")) {
     failure = result["algorithm_error"].get<std::string>();
   } else if (result.contains("aborted")) {
@@ -96,8 +110,10 @@ nlohmann::ordered_json resultOf(const PlannedRun& run, std::optional<int> exit_c
     // No report, no reason of the student's: the launcher itself failed or was killed.
     failure = process::machineReason("the run failed (exit " + (exit_code ? std::to_string(*exit_code) : std::string("?")) +
                                      "): " + lastLine(run.log_path));
+    machine = true;
   }
   if (!failure.empty()) result["failure"] = failure;
+  result["machine_reason"] = machine;  // this grade's own word, over any the report had
   result["log"] = run.log_path;
   return result;
 }
@@ -118,7 +134,9 @@ class RunInProgress {
  public:
   // `cpu` >= 0: the run's processes run on that CPU only (given before the launcher starts, which
   // keeps it: see aula/process/cpu_affinity.hpp).
-  RunInProgress(const PlannedRun& run, int cpu) : run_(run), started_(Clock::now()), cpu_(cpu) {
+  // `earlier`: why the earlier tries of this run ended (the machine's reasons), for its result.
+  RunInProgress(const PlannedRun& run, int cpu, std::vector<std::string> earlier = {})
+      : run_(run), started_(Clock::now()), cpu_(cpu), earlier_(std::move(earlier)) {
     fs::create_directories(fs::path(run.result_path).parent_path());
     // A report or picture from an earlier try must not pass for this one's.
     fs::remove(run.report_path);
@@ -146,6 +164,10 @@ class RunInProgress {
     }
     const double wall_s = std::chrono::duration<double>(Clock::now() - started_).count();
     auto result = resultOf(run_, code, timed_out, wall_s);
+    if (!earlier_.empty()) {  // a retry is said, never hidden: how many and why
+      result["retried"] = earlier_.size();
+      result["retried_because"] = earlier_;
+    }
     const fs::path folder = fs::path(run_.result_path).parent_path();
     std::error_code error;
     const uint64_t free_bytes = fs::space(folder, error).available;
@@ -169,6 +191,7 @@ class RunInProgress {
   const PlannedRun& run_;
   Clock::time_point started_;
   int cpu_;
+  std::vector<std::string> earlier_;
   std::unique_ptr<process::ChildProcess> child_;
 };
 
@@ -191,8 +214,10 @@ std::string tamperingOf(const nlohmann::json& result) {
 }
 
 std::string machineFailureOf(const nlohmann::json& result) {
+  const auto verdict = result.find("machine_reason");
+  if (verdict == result.end() || !verdict->is_boolean() || !verdict->get<bool>()) return "";
   const std::string failure = result.value("failure", std::string());
-  return process::isMachineReason(failure) ? failure : "";
+  return failure.empty() ? process::machineReason("the run did not complete") : failure;
 }
 
 bool upToDate(const PlannedRun& run) {
@@ -251,11 +276,12 @@ void runLocal(const Manifest& manifest, int jobs,
   }
   CpuShares cpus;
   std::vector<std::pair<const PlannedRun*, std::unique_ptr<RunInProgress>>> running;
-  std::map<const PlannedRun*, int> retries;
+  std::map<const PlannedRun*, std::vector<std::string>> retried_because;
   size_t next = 0;
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
-      running.emplace_back(pending[next], std::make_unique<RunInProgress>(*pending[next], cpus.quietest()));
+      running.emplace_back(pending[next],
+                           std::make_unique<RunInProgress>(*pending[next], cpus.quietest(), retried_because[pending[next]]));
       ++next;
     }
     for (auto it = running.begin(); it != running.end();) {
@@ -274,10 +300,12 @@ void runLocal(const Manifest& manifest, int jobs,
         continue;
       }
       cpus.release(it->second->cpu());
-      // Ended for the machine's reason (a process starved past the lockstep's limits): the same
-      // run again, twice at most; it gives the same result whenever it runs.
+      // Ended for the machine's reason (a process starved past the lockstep's limits), as the
+      // launcher or this grade saw it: the same run again (the same command, seed and world:
+      // nothing tells it apart), twice at most; it gives the same result whenever it runs.
       const std::string machine = machineFailureOf(*result);
-      if (!machine.empty() && retries[it->first]++ < 2) {
+      if (!machine.empty() && retried_because[it->first].size() < kMachineRetries) {
+        retried_because[it->first].push_back(machine);
         std::cerr << "aula grade: " << it->first->student << " " << it->first->world_name << " seed " << it->first->seed
                   << " ended for " << machine << ": running it again\n";
         pending.push_back(it->first);

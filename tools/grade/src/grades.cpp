@@ -92,10 +92,21 @@ struct Runs {
   std::map<std::string, std::vector<double>> by_world;
   std::map<std::string, std::vector<double>> by_measure;
   std::map<std::string, int> failures;
-  std::vector<std::string> failure_order;
+  std::map<std::string, int> retries;  // why runs were tried again
+  std::vector<std::string> incomplete;
   int failed = 0;
   int tampered = 0;
+  int retried = 0;
 };
+
+// "reason (x2); other reason", the reasons sorted.
+std::string counted(const std::map<std::string, int>& reasons) {
+  std::string text;
+  for (const auto& [reason, count] : reasons) {
+    text += (text.empty() ? "" : "; ") + reason + (count > 1 ? " (x" + std::to_string(count) + ")" : "");
+  }
+  return text;
+}
 
 // Adds result `r` to its student's runs; new worlds and measures (as the reports name them, first
 // seen first) join the lists.
@@ -104,6 +115,17 @@ void addRun(const nlohmann::json& r, Runs& runs, std::set<std::string>& worlds, 
   const std::string world = gradedWorldOf(r);
   if (runs.language.empty()) runs.language = r.value("language", std::string());
   worlds.insert(world);
+  if (r.contains("retried_because") && r["retried_because"].is_array()) {
+    ++runs.retried;
+    for (const auto& why : r["retried_because"]) {
+      if (why.is_string()) ++runs.retries[why.get<std::string>()];
+    }
+  }
+  // Never completed, for the machine's reason on every try: no mark, no 0 in the medians.
+  if (!machineFailureOf(r).empty()) {
+    runs.incomplete.push_back(world + " seed " + std::to_string(r.value("seed", 0LL)));
+    return;
+  }
   runs.marks.push_back(mark);
   runs.by_world[world].push_back(mark);
   if (r.contains("measures") && r["measures"].is_array()) {
@@ -118,7 +140,7 @@ void addRun(const nlohmann::json& r, Runs& runs, std::set<std::string>& worlds, 
   const std::string failure = failureOf(r);
   if (failure.empty()) return;
   ++runs.failed;
-  if (runs.failures[failure]++ == 0) runs.failure_order.push_back(failure);
+  ++runs.failures[failure];
 }
 
 StudentGrade gradeOf(const std::string& student, Runs& runs, const std::set<std::string>& worlds,
@@ -127,8 +149,8 @@ StudentGrade gradeOf(const std::string& student, Runs& runs, const std::set<std:
   g.student = student;
   g.language = runs.language;
   g.median = median(runs.marks);
-  g.min = *std::min_element(runs.marks.begin(), runs.marks.end());
-  g.max = *std::max_element(runs.marks.begin(), runs.marks.end());
+  g.min = runs.marks.empty() ? 0.0 : *std::min_element(runs.marks.begin(), runs.marks.end());
+  g.max = runs.marks.empty() ? 0.0 : *std::max_element(runs.marks.begin(), runs.marks.end());
   for (const std::string& world : worlds) {
     const auto it = runs.by_world.find(world);
     g.world_medians.emplace_back(world, it == runs.by_world.end() ? 0.0 : median(it->second));
@@ -140,11 +162,11 @@ StudentGrade gradeOf(const std::string& student, Runs& runs, const std::set<std:
   g.runs = static_cast<int>(runs.marks.size());
   g.runs_failed = runs.failed;
   g.runs_tampered = runs.tampered;
-  std::sort(runs.failure_order.begin(), runs.failure_order.end());
-  for (const std::string& failure : runs.failure_order) {
-    const int count = runs.failures[failure];
-    g.failures += (g.failures.empty() ? "" : "; ") + failure + (count > 1 ? " (x" + std::to_string(count) + ")" : "");
-  }
+  g.runs_retried = runs.retried;
+  g.runs_incomplete = static_cast<int>(runs.incomplete.size());
+  g.failures = counted(runs.failures);
+  g.retries = counted(runs.retries);
+  for (const std::string& run : runs.incomplete) g.incomplete += (g.incomplete.empty() ? "" : "; ") + run;
   return g;
 }
 
@@ -166,12 +188,14 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
     for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
-  csv += ",runs,runs_failed,runs_tampered,failures,language,aula_version\n";
+  csv += ",runs,runs_failed,runs_tampered,runs_retried,runs_incomplete,failures,retries,incomplete,language,aula_version\n";
   for (const StudentGrade& g : grades) {
     csv += csvField(g.student) + "," + twoDecimals(g.median) + "," + twoDecimals(g.min) + "," + twoDecimals(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + twoDecimals(value);
     for (const auto& [measure, value] : g.measure_medians) csv += "," + twoDecimals(value);
-    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," + csvField(g.failures) + "," + csvField(g.language) + "," + kVersion + "\n";
+    csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," +
+           std::to_string(g.runs_retried) + "," + std::to_string(g.runs_incomplete) + "," + csvField(g.failures) + "," +
+           csvField(g.retries) + "," + csvField(g.incomplete) + "," + csvField(g.language) + "," + kVersion + "\n";
   }
   return csv;
 }

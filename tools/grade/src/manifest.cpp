@@ -35,6 +35,7 @@ nlohmann::ordered_json Manifest::toJson() const {
                             {"plugin_sha256", r.plugin_sha256},
                             {"language", r.language},
                             {"compile_error", r.compile_error},
+                            {"build_machine", r.build_machine},
                             {"command", r.argv},
                             {"settings", r.settings},
                             {"result", r.result_path},
@@ -70,6 +71,7 @@ Manifest Manifest::fromJson(const nlohmann::json& json) {
     r.plugin = j.at("plugin").get<std::string>();
     r.plugin_sha256 = j.at("plugin_sha256").get<std::string>();
     r.compile_error = j.at("compile_error").get<std::string>();
+    r.build_machine = j.value("build_machine", false);
     r.language = j.value("language", std::string("C++"));
     r.argv = j.at("command").get<std::vector<std::string>>();
     r.settings = j.value("settings", std::vector<std::string>{});

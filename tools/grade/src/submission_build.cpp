@@ -1,5 +1,7 @@
 #include "aula/grade/submission_build.hpp"
 
+#include <aula/process/machine_reason.hpp>
+
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_plan.hpp>
@@ -210,8 +212,9 @@ Compiling startBuild(size_t index, Submission& s, const SubmissionFiles& files, 
 void finishBuild(Submission& s, const Compiling& c, std::optional<int> code, bool boxed) {
   writeUnused(c.log, c.unused);
   if (!code) {
-    s.compile_error = "the build ran past " + std::to_string(kBuildWallBackstop.count()) +
-                      " s of wall time: the machine's reason, not the student's (the same command builds it again)";
+    s.compile_error = process::machineReason("the build ran past " + std::to_string(kBuildWallBackstop.count()) +
+                                             " s of wall time (the same command builds it again)");
+    s.build_machine = true;
     s.plugin.clear();
   } else if (*code != 0 || !fs::is_regular_file(s.plugin)) {
     const std::string sources = boxed ? std::string(kProjectInside) + "/src" : (fs::path(c.log).parent_path() / "src").string();

@@ -38,6 +38,8 @@ std::string signalName(int code) {
   return std::string("SIG") + (name != nullptr ? name : std::to_string(code - 128));
 }
 
+const int kComponentKilledFromOutside = 128 + SIGKILL;
+
 std::string componentFault(int code) {
   if (code == process::kExitAlgorithmHung) return "a call into the algorithm overran its budget";
   if (code == process::kExitAlgorithmExited) return "the algorithm ended the component (exit() inside execute())";
@@ -46,8 +48,9 @@ std::string componentFault(int code) {
   // A forbidden call tried with SIGSYS blocked: the kernel ends the process (forbidden_calls.hpp).
   if (code == 128 + SIGSYS) return "the algorithm made a system call the sandbox forbids (SIGSYS)";
   // SIGKILL is never the sandbox's own limit (those end a run with their reason first), nor a
-  // crash: someone outside the run killed it (the out-of-memory killer).
-  if (code == 128 + SIGKILL) return process::machineReason("the component was killed (SIGKILL) from outside the run");
+  // crash, nor the algorithm's process (it may signal no process but its own and its children:
+  // sandbox/forbidden_calls.hpp): someone outside the run killed it (the out-of-memory killer).
+  if (code == kComponentKilledFromOutside) return process::machineReason("the component was killed (SIGKILL) from outside the run");
   if (code > 128) return "component crashed (" + signalName(code) + ")";
   return "";
 }
@@ -78,6 +81,7 @@ ExitVerdict onExit(const ExitEvent& e, const std::string& program) {
                                                                    : " exited with code " + std::to_string(e.code)));
     v.message = v.tell_referee;
     v.result = 1;
+    v.machine = true;
     return v;
   }
   if (e.has_referee && referee && e.code > 128) {
@@ -85,6 +89,7 @@ ExitVerdict onExit(const ExitEvent& e, const std::string& program) {
     v.message = v.aborted_report + ": the run has no mark";
     v.result = 1;
     v.run_over = true;
+    v.machine = true;
     return v;
   }
   v.discard = e.has_referee && !referee && e.code == process::kExitUsage;
@@ -108,6 +113,7 @@ ExitVerdict onExit(const ExitEvent& e, const std::string& program) {
     v.tell_referee = fault;
     v.algorithm_fault = crashInStudentLines(fault, e.crash_line);
     v.result = 1;
+    v.machine = component && e.code == kComponentKilledFromOutside;
     return v;  // the referee grades what there is and ends the run
   }
   const bool faulted_component = e.referee_told && component;

@@ -3,6 +3,7 @@
 #include <aula/auth/run_key.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/process/child_process.hpp>
+#include <aula/process/exit_codes.hpp>
 #include <aula/process/line_pipe.hpp>
 #include <aula/process/machine_reason.hpp>
 #include <aula/process/process_tree.hpp>
@@ -149,16 +150,31 @@ class RunSupervisor {
     result_ = 1;
   }
 
+  // The backstop counts the wall time the run's processes had, not the time they waited for a CPU
+  // that other work held (schedstat, looked at every 500 ms): on a loaded machine a run is waited
+  // for, and a student's endless loop meets its CPU budget (the student's reason) before it. At
+  // most nine tenths of the wall time is so forgiven: a machine that never gives the run a CPU
+  // still ends it, at ten times the budget.
   void checkWallBudget() {
-    const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    if (run_.wall_budget_s > 0 && wall_s > run_.wall_budget_s && !ending_since_) {
+    const auto now = std::chrono::steady_clock::now();
+    const double wall_s = std::chrono::duration<double>(now - started_).count();
+    if (run_.wall_budget_s <= 0 || ending_since_ || wall_s <= run_.wall_budget_s) return;
+    if (now - waited_checked_ >= std::chrono::milliseconds(500)) {
+      waited_checked_ = now;
+      std::vector<pid_t> run = process::descendantsOf(::getpid());
+      const double waited_s = process::waitedForCpuS(run);
+      // A process that ended takes its count with it: keep the most seen of each process set.
+      waited_s_ = std::max(waited_s_, waited_s);
+    }
+    const double had_s = wall_s - std::min(waited_s_, 0.9 * wall_s);
+    if (had_s > run_.wall_budget_s) {
       std::ostringstream what;
       what << "the run's wall-clock backstop of " << run_.wall_budget_s
            << " s ran out (--timeout): the machine was too slow or too busy for this run";
-      std::ostringstream why;
-      why << process::machineReason(what.str());
-      std::cerr << "aula: " << why.str() << "\n";
-      endRun(why.str());
+      const std::string why = process::machineReason(what.str());
+      std::cerr << "aula: " << why << "\n";
+      machine_ = true;
+      endRun(why);
     }
   }
 
@@ -208,6 +224,8 @@ class RunSupervisor {
     for (const std::string& line : simulator_status_->lines()) {
       if (line.rfind("ended ", 0) != 0 || simulator_ended_run_) continue;
       simulator_ended_run_ = true;
+      // The simulator's own pipe, which no student's code writes: its lockstep backstop.
+      if (process::saysMachineReason(line.substr(6))) machine_ = true;
       std::cerr << "aula: the simulator ended the run: " << line.substr(6) << "\n";
       endRun(line.substr(6));
     }
@@ -250,6 +268,7 @@ class RunSupervisor {
       tellReferee(verdict.tell_referee);
     }
     if (verdict.result) result_ = *verdict.result;
+    if (verdict.machine) machine_ = true;
     return verdict.run_over;
   }
 
@@ -271,10 +290,12 @@ class RunSupervisor {
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
       std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
-      writeAbortedReport(run_, process::isMachineReason(abort_reason_)
-                                   ? abort_reason_ + "; the referee did not answer"
-                                   : process::machineReason(abort_reason_ + "; the referee did not grade in time"));
+      writeAbortedReport(run_, machine_ ? abort_reason_ + "; the referee did not answer"
+                                        : process::machineReason(abort_reason_ + "; the referee did not grade in time"));
+      machine_ = true;
     }
+    // What the launcher saw itself, in its exit code: the only word `aula grade` takes for it.
+    if (machine_ && result_ != 0 && result_ != 128 + SIGINT && result_ != 128 + SIGTERM) result_ = process::kExitMachine;
   }
 
   const Supervision& run_;
@@ -287,9 +308,12 @@ class RunSupervisor {
   EscapeWatch escapes_{run_.watched_lcm_port};  // what the student's code tried to get out of the run
   int result_ = 0;
   bool told_referee_ = false, referee_exited_ = false, simulator_ended_run_ = false;
+  bool machine_ = false;  // the run ends for the machine's reason, as the launcher saw it
   std::string abort_reason_;
   std::optional<std::chrono::steady_clock::time_point> ending_since_;
   std::chrono::steady_clock::time_point processes_checked_;
+  std::chrono::steady_clock::time_point waited_checked_;
+  double waited_s_ = 0;  // the run's processes' wait for a CPU, as last read
   std::unique_ptr<CappedOutput> output_;
 };
 

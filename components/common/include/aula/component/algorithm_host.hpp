@@ -43,6 +43,10 @@ struct AlgorithmBudgets {
   CallBudget execute{2, 10, "Component.ExecuteBudget"};
   CallBudget plan{60, 10, "Component.PlanBudget"};
   RunBudget run{600, 60};
+  // The address space the algorithm's own process may map (RLIMIT_AS, Component.Sandbox.Memory),
+  // in every run, sandboxed or not: a plain `aula run` of a runaway Python program stops there,
+  // not at the machine's memory. 0: no limit of its own.
+  uint64_t memory_bytes = 0;
 };
 
 // Which budget a call has.

@@ -38,6 +38,7 @@ inline AlgorithmBudgets budgetsOf(const config::Config& cfg) {
   b.execute = {cfg.getDouble("Component.ExecuteBudget"), blocked_s, "Component.ExecuteBudget"};
   b.plan = {cfg.getDouble("Component.PlanBudget"), blocked_s, "Component.PlanBudget"};
   b.run = {cfg.getDouble("Component.RunBudget"), cfg.getDouble("Component.RunBlockedLimit")};
+  b.memory_bytes = static_cast<uint64_t>(cfg.getDouble("Component.Sandbox.Memory") * (1 << 20));
   return b;
 }
 

@@ -83,6 +83,7 @@ struct Submission {
   std::string plugin;   // the built .so, or the copy of MyAlgorithm.py ("" when it did not compile)
   std::string plugin_sha256;
   std::string compile_error;  // "did not compile: <the compiler's first error lines>"
+  bool build_machine = false;  // the build was stopped at its wall-clock backstop: not the student's
   // A known algorithm, compared with every student and never graded: one of the exercise's
   // built-ins (student "reference 'classic'", plugin "classic": the name aula run takes) or one of
   // the teacher's --known solutions (student "known 'NAME'"). Its runs go to OUT/known/<dir_name>.
@@ -109,6 +110,7 @@ struct PlannedRun {
   std::string student, world_name, world_sha256;  // world_name: the file's name ("vacuum.world")
   long long seed = 0;
   std::string plugin, plugin_sha256, compile_error;
+  bool build_machine = false;     // Submission::build_machine
   std::string language;  // the submission's: "C++", "Python" or "" (none)
   std::vector<std::string> argv;  // the exact command ("" when the plugin did not compile)
   // What the run was graded under besides its plugin, world and seed: the grade's --Key=value and

@@ -30,8 +30,12 @@ constexpr uint64_t kRoomForARunBytes = 1u << 20;
 // lockstep's wall-clock limits, the run's wall budget), is run again: a run is the same run
 // whenever it runs (sim time is its only clock), so this costs time, never a mark.
 bool upToDate(const PlannedRun& run);
-// That reason in a run's failure, or "" ("the simulator stopped (no SIM_CLOCK for 2 s...").
+// The run's failure when this grade found it the machine's (the result's `machine_reason`, which
+// only resultOf() writes, from what the grade and the launcher saw), or "".
 std::string machineFailureOf(const nlohmann::json& result);
+// How many times a run that ended for the machine's reason is run again before it is left out
+// of the grade as not completed (grades.hpp: runs_incomplete; the grade then exits 1).
+constexpr size_t kMachineRetries = 2;
 
 // Runs one entry to its end (Slurm's `aula grade-task MANIFEST INDEX`). Returns the result;
 // throws GradeStopped.

@@ -22,7 +22,12 @@ struct StudentGrade {
   std::vector<std::pair<std::string, double>> measure_medians;
   int runs = 0, runs_failed = 0;
   int runs_tampered = 0;  // runs whose referee counted forged messages (tamperingOf)
-  std::string failures;  // "reason (x2); other reason"
+  // Runs tried again for the machine's reason (grade_runner.hpp), and runs that never completed
+  // (the machine's reason on every try): those are left out of the marks, named in `incomplete`.
+  int runs_retried = 0, runs_incomplete = 0;
+  std::string failures;    // "reason (x2); other reason"
+  std::string retries;     // why runs were tried again: "reason (x2); other reason"
+  std::string incomplete;  // the runs left out: "vacuum seed 3; ..."
 };
 
 // A CSV field: as it is, or quoted (its quotes doubled, its line breaks as spaces) when it holds a
@@ -39,7 +44,8 @@ std::string twoDecimals(double value);
 // destination's ("city-plaza" for city.world's destination "plaza").
 std::string gradedWorldOf(const nlohmann::json& result);
 // grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
-// runs_tampered, failures, language, aula_version (docs/grading.md's list is generated from it).
+// runs_tampered, runs_retried, runs_incomplete, failures, retries, incomplete, language, aula_version
+// (docs/grading.md's list is generated from it).
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 // `similarity`: compare the class's submissions too (similarity.csv and report.html's section);

@@ -30,6 +30,8 @@ std::string signalName(int code);
 // "component crashed (SIGSEGV)", "a call into the algorithm overran its budget", or "" when the
 // component's exit is not the student's doing.
 std::string componentFault(int code);
+// The component's exit code when it was killed from outside the run (SIGKILL): the machine's reason.
+extern const int kComponentKilledFromOutside;
 
 // "component crashed (SIGSEGV) at MyAlgorithm.cpp:14 (MyAlgorithm::execute)": the `fault` the
 // exit code gives, where the component's own crash line (its --crash-fd) says where the same
@@ -61,6 +63,9 @@ struct ExitVerdict {
   std::string aborted_report;     // the referee died: write a report with this reason, no mark
   bool discard = false;           // the run never started: the referee gives no mark
   std::string message;            // one line for the terminal ("" for none)
+  // The launcher saw a process of Aula's end from outside the run (killed, died): the machine's
+  // reason (process/machine_reason.hpp), decided here and never read back from any text.
+  bool machine = false;
 };
 
 // A graded (headless, refereed) component that exits 0 before the referee was told why the run
