@@ -125,6 +125,21 @@ TEST(Commands, AStaleBuildIsRefusedWithItsReason) {
   EXPECT_NE(stale.output.find("MyAlgorithm.cpp changed after libmy_algorithm.so was built"), std::string::npos) << stale.output;
 }
 
+// --algorithm=reference runs each exercise's default reference: its built-in of that name, or the
+// one its calibration anchors on (Autopark's reactive parker; it exited 2 before).
+TEST(Commands, ReferenceNamesEachExercisesDefaultReference) {
+  const std::string dir = aula::testing::privateDir();
+  const std::map<std::string, std::string> expected = {{"vacuum", "reference"}, {"teletaxi", "reference"}, {"autopark", "reactive"}};
+  for (const auto& [exercise, algorithm] : expected) {
+    const std::string report = dir + "/" + exercise + ".json";
+    const Outcome out = runToEnd({kBin + "/aula", "run", exercise, "--headless", "--duration=2", "--algorithm=reference",
+                                  "--report=" + report, "--lcm-url=" + aula::testing::privateLcmUrl()},
+                                 120s);
+    EXPECT_EQ(out.code.value_or(-1), 0) << exercise << "\n" << out.output;
+    EXPECT_NE(readFile(report).find("\"algorithm\": \"" + algorithm + "\""), std::string::npos) << exercise << "\n" << readFile(report);
+  }
+}
+
 // --duration is the referee's episode length: each exercise's run ends there, in sim time.
 TEST(Commands, RunHonoursDurationForEveryExercise) {
   const std::string dir = aula::testing::privateDir();

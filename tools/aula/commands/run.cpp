@@ -16,6 +16,7 @@
 #include <aula/supervision/supervisor.hpp>
 
 #include <cstdlib>
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -55,7 +56,15 @@ Config overridesOf(const Exercise& ex, const Arguments& args, bool headless) {
     }
     overrides.set(key, value, std::string("command line --") + option);
   };
-  if (args.given("algorithm")) setFrom("algorithm", ex.section + ".Algorithm", args.text("algorithm"));
+  if (args.given("algorithm")) {
+    // "reference" names each exercise's default reference: its own built-in of that name, else the
+    // one its calibration anchors the scale on (Autopark's "reactive").
+    std::string algorithm = args.text("algorithm");
+    const config::SettingSpec* choices = ex.component_settings->find(ex.section + ".Algorithm");
+    const bool has_reference = choices != nullptr && std::count(choices->choices.begin(), choices->choices.end(), "reference") > 0;
+    if (algorithm == "reference" && !has_reference && ex.calibration) algorithm = ex.calibration->anchor;
+    setFrom("algorithm", ex.section + ".Algorithm", algorithm);
+  }
   if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
   if (args.given("world")) setFrom("world", ex.section + ".World", args.text("world"));
   if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
