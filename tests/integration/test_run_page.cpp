@@ -190,10 +190,17 @@ const char* kProbe = R"JS(
     out.frameWidth = wide(doc);
     p.seek(0);
     key(' '); out.spacePlays = p.playing; key(' '); out.spacePauses = !p.playing;
+    out.playingAfterPause = p.status.dataset.playing;
     const base = p.end / 2;
     p.seek(base); key('ArrowRight'); out.right = p.time - base;
     p.seek(base); key('ArrowLeft'); out.left = p.time - base;
     p.seek(base); key('ArrowRight', true); out.shiftRight = p.time - base;
+    // Once the time slider was touched, the arrows still step 1 s (Shift 10 s), not the slider's 1 %.
+    const slide = (k, shift) => p.slider.dispatchEvent(new KeyboardEvent('keydown', {key: k, shiftKey: !!shift, bubbles: true}));
+    p.slider.focus();
+    p.seek(base); slide('ArrowRight'); out.sliderRight = p.time - base;
+    p.seek(base); slide('ArrowLeft', true); out.sliderShiftLeft = p.time - base;
+    p.slider.blur();
     p.seek(0); key('n'); out.n = p.time; key('n'); out.n2 = p.time; key('p'); out.p = p.time;
     out.end = p.end;
     // Every layer the run has, switched on, drawn mid-run: what its switches and notes say.
@@ -309,6 +316,9 @@ std::string expectAGoodPage(const GradedRun& run, const std::string& page_path, 
     EXPECT_NEAR(probe["right"].get<double>(), std::min(1.0, end - base), 1e-6);
     EXPECT_NEAR(probe["left"].get<double>(), -std::min(1.0, base), 1e-6);
     EXPECT_NEAR(probe["shiftRight"].get<double>(), std::min(10.0, end - base), 1e-6);
+    EXPECT_NEAR(probe["sliderRight"].get<double>(), std::min(1.0, end - base), 1e-6) << "the arrows on the slider";
+    EXPECT_NEAR(probe["sliderShiftLeft"].get<double>(), -std::min(10.0, base), 1e-6) << "Shift and an arrow on the slider";
+    EXPECT_EQ(probe["playingAfterPause"], "no") << "the status says a paused player plays";
     const auto after = eventTimesAfter(run.trace, 0.0);
     if (after.size() >= 2) {
       EXPECT_NEAR(probe["n"].get<double>(), after[0], 1e-6);
@@ -460,6 +470,54 @@ TEST(RunPage, ClassPageOpensARunLazily) {
   EXPECT_NEAR(std::stod(attribute(dom, "robot-y-mm")), y_mm, 1.0);
   EXPECT_NE(dom.find("<iframe class=\"player-frame\""), std::string::npos);
   EXPECT_LT(fs::file_size(report), 200u * 1024u) << "no run's data in the class page: each run's page has it";
+}
+
+// The class report read on a phone and on a desk: a long failure (a traceback) is a readable cell
+// (at least 150 px wide at 1280 px, its beginning shown and the whole on demand), and the
+// histograms keep every bin's label inside them at 400 px.
+TEST(RunPage, ClassReportFailuresAndHistogramsAreReadable) {
+  const GradedRun run = makeRun("dave", {"vacuum", "--algorithm=reference", "--Vacuum.Referee.Duration=20"});
+  nlohmann::json failed = run.result;  // a classmate whose run failed with a long traceback
+  failed["student"] = "erin";
+  std::string traceback = "MyAlgorithm.py:12: ValueError: boom (traceback, most recent call last:";
+  for (int i = 0; i < 12; ++i) traceback += " MyAlgorithm.py:" + std::to_string(20 + i) + " in step_" + std::to_string(i) + ": `x = y[" + std::to_string(i) + "]`;";
+  failed["failure"] = traceback + ")";
+  failed["log"] = run.dir + "/runs/erin/vacuum-seed1.log";
+  fs::create_directories(run.dir + "/runs/erin");
+  std::ofstream(run.dir + "/runs/erin/vacuum-seed1.json") << failed.dump(2) << "\n";
+  aula::grade::collect(run.dir);
+  const std::string report = run.dir + "/report.html", probed = run.dir + "/report.probed.html";
+  std::string html = readFile(report);
+  ASSERT_NE(html.find("<details><summary>MyAlgorithm.py:12: ValueError: boom"), std::string::npos) << "the beginning shown";
+  html.insert(html.rfind("</body>"), R"(<script>
+(() => {
+  const out = {why: [], labelsInside: true, labels: 0};
+  for (const td of document.querySelectorAll('table.students td.why')) if (td.textContent) out.why.push(Math.round(td.getBoundingClientRect().width));
+  for (const svg of document.querySelectorAll("svg[aria-label='marks histogram']")) {
+    const box = svg.getBoundingClientRect();
+    for (const t of svg.querySelectorAll('text')) {
+      const r = t.getBoundingClientRect();
+      ++out.labels;
+      if (r.width <= 0 || r.left < box.left - 1 || r.right > box.right + 1) out.labelsInside = false;
+    }
+  }
+  document.body.dataset.probe = JSON.stringify(out);
+})();
+</script>
+)");
+  std::ofstream(probed) << html;
+  for (const int width : {1280, 400}) {
+    SCOPED_TRACE(width);
+    const Page page = loadInChromium("file://" + probed, width);
+    const nlohmann::json probe = probeOf(page.dom);
+    ASSERT_TRUE(probe.is_object()) << page.dom.substr(0, 2000);
+    EXPECT_GT(probe["labels"].get<int>(), 10) << "a histogram with its labels";
+    EXPECT_TRUE(probe["labelsInside"].get<bool>()) << "a histogram's labels cut off";
+    ASSERT_FALSE(probe["why"].empty());
+    if (width == 1280) {
+      for (const auto& w : probe["why"]) EXPECT_GE(w.get<int>(), 150) << "a failure squeezed into a narrow column";
+    }
+  }
 }
 
 // The trace's layers in the player: each one the run has is a switch, draws without an error and

@@ -14,6 +14,7 @@ const AulaPlayer = (() => {
                    start: '#1565c0', end: '#222', arrival: '#2e7d32', parked: '#2e7d32', fault: '#6a1b9a',
                    aborted: '#6a1b9a', tampering: '#6a1b9a', lost: '#6a1b9a', 'non-finite': '#6a1b9a'};
   const STEP_S = 1, BIG_STEP_S = 10;  // the arrow keys' steps (Shift: the big one)
+  const MIN_ROBOT_PX = 14;  // the robot's drawn length at the least, at every zoom
   const ZOOMS = [1, 2, 4, 8];
   // Each exercise's drawing, by name: {init(player), scene(player, ctx, t) under the trail, overlay(player,
   // ctx, t) over the view, clock(player, pose, t) text after the time}. Filled by the exercises' player.js
@@ -273,7 +274,7 @@ const AulaPlayer = (() => {
       };
       requestAnimationFrame(step);
     }
-    pause() { this.playing = false; this.play.textContent = 'Play'; }
+    pause() { this.playing = false; this.play.textContent = 'Play'; this.status.dataset.playing = 'no'; }
     // The next (`direction` 1) or previous (-1) event's time, paused there.
     jumpEvent(direction) {
       this.pause();
@@ -287,16 +288,17 @@ const AulaPlayer = (() => {
       const target = e.target, tag = target && target.tagName;
       if (tag === 'INPUT' && target.type !== 'range') return false;  // typing in a search box
       if (tag === 'TEXTAREA' || tag === 'SELECT') return false;
-      const native = tag === 'BUTTON' || (tag === 'INPUT' && target.type === 'range');  // Space clicks, arrows slide
+      const native = tag === 'BUTTON';  // Space clicks a focused button (on the slider it plays)
       switch (e.key) {
         case ' ': if (native) return false; this.toggle(); return true;
+        // The arrows step 1 s (Shift 10 s) whatever has the focus: on the slider too, whose own step
+        // would be 1 % of the run (9 s of a vacuum run).
         case 'ArrowRight': case 'ArrowLeft':
-          if (native && tag === 'INPUT') return false;
           this.pause();
           this.seek(this.time + (e.key === 'ArrowRight' ? 1 : -1) * (e.shiftKey ? BIG_STEP_S : STEP_S));
           return true;
-        case 'Home': if (native && tag === 'INPUT') return false; this.pause(); this.seek(0); return true;
-        case 'End': if (native && tag === 'INPUT') return false; this.pause(); this.seek(this.end); return true;
+        case 'Home': this.pause(); this.seek(0); return true;
+        case 'End': this.pause(); this.seek(this.end); return true;
         case 'n': case 'N': this.jumpEvent(1); return true;
         case 'p': case 'P': this.jumpEvent(-1); return true;
         case '+': case '=': case '-': {
@@ -408,8 +410,10 @@ const AulaPlayer = (() => {
           reach = tr.robot.radius_m;
           ctx.beginPath(); ctx.arc(u, v, Math.max(3, this.len(reach)), 0, 2 * Math.PI);
         } else {
-          reach = tr.robot.length_m / 2;
-          this.box(ctx, x, y, yaw, tr.robot.length_m, tr.robot.width_m);
+          // Never shorter than MIN_ROBOT_PX on the screen (a 4 m taxi in a 500 m city is 4 px).
+          const grow = Math.max(1, MIN_ROBOT_PX / Math.max(this.len(tr.robot.length_m), 1e-9));
+          reach = tr.robot.length_m / 2 * grow;
+          this.box(ctx, x, y, yaw, tr.robot.length_m * grow, tr.robot.width_m * grow);
         }
         ctx.fill(); ctx.stroke();
         const [hx, hy] = this.px(x + Math.cos(yaw) * reach, y + Math.sin(yaw) * reach);

@@ -71,7 +71,9 @@ std::string histogramSvg(const std::vector<double>& marks, const std::string& wh
   for (int n : bins) top = std::max(top, n);
   const int w = 440, h = 180, bar = 40, base = 150;
   std::ostringstream svg;
-  svg << "<svg width='" << w << "' height='" << h << "' role='img' aria-label='marks histogram'>";
+  // A viewBox: narrower than its width (a phone), it scales whole, bin labels and all.
+  svg << "<svg width='" << w << "' height='" << h << "' viewBox='0 0 " << w << " " << h
+      << "' role='img' aria-label='marks histogram'>";
   for (int i = 0; i < 10; ++i) {
     const int bar_h = static_cast<int>(std::lround(120.0 * bins[i] / top));
     const int x = 20 + i * bar;
@@ -91,6 +93,16 @@ std::string histogramSvg(const std::vector<double>& marks, const std::string& wh
   return svg.str();
 }
 
+
+// A reason in the students' table: as it is when short, else its beginning, the whole on demand
+// (a traceback is no 20-line cell).
+std::string whyCell(const std::string& text) {
+  constexpr size_t kShownBytes = 140;
+  if (text.size() <= kShownBytes + 20) return escapeHtml(text);
+  size_t cut = kShownBytes;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return "<details><summary>" + escapeHtml(text.substr(0, cut)) + "</summary>" + escapeHtml(text.substr(cut)) + "</details>";
+}
 
 // A run's id in the page ("alice/vacuum-seed3"): its card, its data block, `#run=`.
 std::string runId(const nlohmann::json& r) {
@@ -210,8 +222,8 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
     for (const auto& [world, value] : g.world_medians) html << "<td>" << twoDecimals(value) << "</td>";
     for (const auto& [measure, value] : g.measure_medians) html << "<td>" << twoDecimals(value) << "</td>";
     html << "<td>" << escapeHtml(g.language) << "</td><td>" << g.runs << "</td><td>" << g.runs_failed << "</td><td" << (g.runs_tampered > 0 ? " class='failed'" : "")
-         << ">" << g.runs_tampered << "</td><td class='why'>" << escapeHtml(flag == flags.end() ? "" : flag->second)
-         << "</td><td class='why'>" << escapeHtml(g.failures) << "</td></tr>\n";
+         << ">" << g.runs_tampered << "</td><td class='why'>" << whyCell(flag == flags.end() ? "" : flag->second)
+         << "</td><td class='why'>" << whyCell(g.failures) << "</td></tr>\n";
   }
   html << "</tbody></table></div>\n";
 }

@@ -12,7 +12,10 @@ table.sortable th { background: #eef2f8; cursor: pointer; user-select: none; }
 table.sortable th:after { content: ' \2195'; color: #999; }
 .table-box { overflow-x: auto; max-width: 100%; }
 td.name, td.why { text-align: left; }
-td.why { color: #b71c1c; max-width: 520px; overflow-wrap: anywhere; }
+td.why { color: #b71c1c; min-width: 18em; max-width: 40em; overflow-wrap: anywhere; }
+td.why details summary { cursor: pointer; }
+td.why details:not([open]) summary::after { content: '\2026 (more)'; }
+@media (max-width: 600px) { td.why { min-width: 12em; } }
 .runs { display: flex; flex-wrap: wrap; gap: 10px; }
 .run { border: 1px solid #ccc; padding: 6px; width: 320px; max-width: 100%; box-sizing: border-box; font-size: 13px; overflow-wrap: anywhere; }
 .run .failed, .run ul.diagnostics { color: #b71c1c; }
