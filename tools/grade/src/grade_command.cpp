@@ -5,6 +5,7 @@
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/grades.hpp>
+#include <aula/grade/lms_export.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/exit_codes.hpp>
 
@@ -31,6 +32,11 @@ void printGrades(const std::vector<StudentGrade>& grades, const std::string& out
                 tampered.c_str(), g.failures.substr(0, 80).c_str());
   }
   std::printf("grades: %s/grades.csv, %s/report.html\n", out_dir.c_str(), out_dir.c_str());
+  const fs::path lms = fs::path(out_dir) / "lms-grades.csv";
+  if (fs::exists(lms)) {
+    std::printf("for the LMS: %s%s (docs/grading.md, \"From your LMS and back\")\n", lms.string().c_str(),
+                fs::exists(fs::path(out_dir) / "lms-feedback.zip") ? ", lms-feedback.zip" : "");
+  }
 }
 
 std::string formatDuration(double seconds) {
@@ -151,6 +157,16 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   fs::create_directories(request.out_dir);
   prepareWorlds(request, bin_dir);  // generated and calibrated before any student's run
   const std::string prefix = fs::path(bin_dir).parent_path().string();
+  // The students as given: an LMS's export read into hand-ins, each staged into OUT/hand-ins.
+  std::vector<std::string> folders;
+  const std::vector<Student> students_given =
+      readHandIns(request.submissions, request.lms, request.out_dir, request.hand_in_limits, folders);
+  request.submissions = folders;
+  for (size_t i = 0; i < students_given.size(); ++i) {
+    if (!students_given[i].refused.empty()) request.refused_hand_ins[folders[i]] = students_given[i].refused;
+  }
+  saveStudents(request.out_dir, students_given, request.lms_assignment);
+  if (request.similarity_auto) request.similarity = request.submissions.size() >= 3;
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
             << std::flush;
   auto submissions = compileSubmissions(request, prefix);
