@@ -90,7 +90,7 @@ TEST(GradeFromAnLms, AMoodleExportIsGradedAndItsGradesGoBack) {
   EXPECT_EQ(sheet[2], "Participant 1044,Bob Empty,0.00,10.00,0: nothing handed in");
   EXPECT_EQ(sheet[3].rfind("Participant 1030,Grace Hopper,0.00,10.00,0: did not compile: MyAlgorithm.py:7: SyntaxError: ", 0), 0u)
       << worksheet;
-  EXPECT_EQ(sheet[4].rfind("Participant 1050,Mallory Sparse,0.00,10.00,0: refused: ", 0), 0u) << worksheet;
+  EXPECT_EQ(sheet[4].rfind("Participant 1050,Mallory Sparse,0.00,10.00,\"0: refused: ", 0), 0u) << worksheet;
   EXPECT_NE(sheet[4].find("is a sparse file"), std::string::npos) << worksheet;
   // The sparse hand-in left nothing of its 1.5 GB in the grade's folder.
   EXPECT_FALSE(fs::exists(out / "hand-ins-as-found" / "Mallory_Sparse-1050"));
