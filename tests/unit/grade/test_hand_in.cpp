@@ -371,6 +371,8 @@ TEST(HandIn, APythonFileThatCannotRunIsRefusedWithItsReason) {
       {"x = 1\nprint(x)\n", "not an algorithm: MyAlgorithm.py defines no class MyAlgorithm"},
       {"class MyAlgorithm:\n    def __init__(self, seed):\n        pass\n", "not an algorithm: MyAlgorithm.py's class MyAlgorithm has no execute"},
       {"import HAL\nwhile True:\n    HAL.setV(0.2)\n", ""},
+      {"import HAL\nfor i in range(100000):\n    HAL.setV(0.2)\n", ""},
+      {"class Base:\n    def execute(self, api):\n        pass\n\nclass MyAlgorithm(Base):\n    pass\n", ""},
       {kBounce, ""}};
   for (size_t i = 0; i < cases.size(); ++i) {
     SCOPED_TRACE(cases[i].first);

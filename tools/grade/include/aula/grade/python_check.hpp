@@ -8,9 +8,10 @@
 namespace aula::grade {
 
 // "" when `py_file` parses and is one of the Python host's two shapes (components/common/python/
-// host.py): it defines class MyAlgorithm with an execute method, or it is a program with a loop
-// (`while`). Else the reason, in the student's lines: "did not compile: MyAlgorithm.py:7:
-// SyntaxError: invalid syntax", "not an algorithm: ...". `log`: the checker's output.
+// host.py): it defines class MyAlgorithm with an execute method (or a base to inherit it from),
+// or it is a program with a loop (`while`, `for`) or a time.sleep. Else the reason, in the
+// student's lines: "did not compile: MyAlgorithm.py:7: SyntaxError: invalid syntax", "not an
+// algorithm: ...". `log`: the checker's output.
 std::string pythonNotRunnable(const std::string& py_file, const std::string& log);
 
 }  // namespace aula::grade
