@@ -118,8 +118,8 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   ASSERT_EQ(rows.size(), 4u) << first_csv;
   // Beside the mark, the raw measure the referee's report names (its "measures").
   EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
-            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,failures,"
-            "language,aula_version");
+            "student,lms_id,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,failures,"
+            "language,hand_in,aula_version");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;

@@ -112,3 +112,31 @@ TEST(GradeFromAnLms, AMoodleExportIsGradedAndItsGradesGoBack) {
   }
   fs::remove_all(dir);
 }
+
+// What the teacher names and is not what --lms says, or is no export, stops the grade before any
+// run or calibration: exit 2, naming the path.
+TEST(GradeFromAnLms, AnExportThatIsNotWhatLmsSaysIsAUsageError) {
+  const fs::path dir = privateDir();
+  const std::string aula = std::string(AULA_BIN_DIR) + "/aula";
+  const fs::path moodle = dir / "export";
+  std::ofstream((fs::create_directories(moodle / "Ada Lovelace_1021_assignsubmission_file_"),
+                 moodle / "Ada Lovelace_1021_assignsubmission_file_" / "MyAlgorithm.py"))
+      << "class MyAlgorithm:\n    def execute(self, api):\n        pass\n";
+  std::ofstream(dir / "notes.txt") << "not a zip";
+  auto grade = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> argv = {aula, "grade", "vacuum"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const std::string log = (dir / "grade.txt").string();
+    aula::process::ChildProcess child(argv, log, log);
+    const auto code = child.wait(std::chrono::seconds(120));
+    return std::make_pair(code.value_or(-1), readFile(log));
+  };
+  auto [code, text] = grade({moodle.string(), "--lms=canvas", "--out=" + (dir / "out").string()});
+  EXPECT_EQ(code, 2) << text;
+  EXPECT_NE(text.find("--lms=canvas: " + moodle.string() + " is not a canvas export (it is moodle's)"), std::string::npos) << text;
+  EXPECT_FALSE(fs::exists(dir / "out" / "calibrations"));
+  std::tie(code, text) = grade({(dir / "notes.txt").string(), "--out=" + (dir / "out").string()});
+  EXPECT_EQ(code, 2) << text;
+  EXPECT_NE(text.find("not a folder nor an LMS's export zip"), std::string::npos) << text;
+  fs::remove_all(dir);
+}

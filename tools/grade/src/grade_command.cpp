@@ -155,9 +155,8 @@ void addKnownAlgorithms(const GradeRequest& request, const std::string& prefix, 
 int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   GradeRequest request = asked;
   fs::create_directories(request.out_dir);
-  prepareWorlds(request, bin_dir);  // generated and calibrated before any student's run
-  const std::string prefix = fs::path(bin_dir).parent_path().string();
-  // The students as given: an LMS's export read into hand-ins, each staged into OUT/hand-ins.
+  // The students as given: an LMS's export read into hand-ins, each staged into OUT/hand-ins
+  // (before the worlds: an export that does not read stops the grade before any calibration).
   std::vector<std::string> folders;
   const std::vector<Student> students_given =
       readHandIns(request.submissions, request.lms, request.out_dir, request.hand_in_limits, folders);
@@ -167,6 +166,8 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   }
   saveStudents(request.out_dir, students_given, request.lms_assignment);
   if (request.similarity_auto) request.similarity = request.submissions.size() >= 3;
+  prepareWorlds(request, bin_dir);  // generated and calibrated before any student's run
+  const std::string prefix = fs::path(bin_dir).parent_path().string();
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
             << std::flush;
   auto submissions = compileSubmissions(request, prefix);
