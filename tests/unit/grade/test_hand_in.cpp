@@ -339,6 +339,10 @@ TEST(LmsExport, ACanvasExportIsReadWithItsLateAndRenamedFiles) {
   const std::string csv = lmsGradesCsv("canvas", {gradeOf("lovelaceada-4410", 8.5), gradeOf("nunezjose-4522", 3)},
                                        by_folder, "Vacuum (123)");
   EXPECT_EQ(csv, "Student,ID,SIS User ID,Section,Vacuum (123)\nlovelaceada,4410,,,8.50\nnunezjose,4522,,,3.00\n");
+  // A name that starts as a spreadsheet formula stays text.
+  by_folder["lovelaceada-4410"].name = "=HYPERLINK(\"http://x\")";
+  EXPECT_NE(lmsGradesCsv("canvas", {gradeOf("lovelaceada-4410", 8.5)}, by_folder, "V").find("\n\"'=HYPERLINK(\"\"http://x\"\")\",4410,"),
+            std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -166,6 +166,13 @@ std::vector<ExportStudent> readCanvas(const fs::path& folder) {
   return students;
 }
 
+// A name as a spreadsheet cell: one that starts as a formula does ("=HYPERLINK(...)", a name a
+// student may set) is kept as text. The LMSs match rows by the id, never by this column.
+std::string nameCell(const std::string& name) {
+  const bool formula = !name.empty() && std::string("=+-@\t\r").find(name[0]) != std::string::npos;
+  return csvField(formula ? "'" + name : name);
+}
+
 }  // namespace
 
 std::string exportLayout(const std::string& folder) { return layoutOfFolder(classFolder(folder)); }
@@ -297,10 +304,10 @@ std::string lmsGradesCsv(const std::string& lms, const std::vector<StudentGrade>
     const auto s = students.find(g.student);
     if (s == students.end() || s->second.lms != lms || s->second.lms_id.empty()) continue;
     if (lms == "moodle") {
-      csv += csvField("Participant " + s->second.lms_id) + "," + csvField(s->second.name) + "," + twoDecimals(g.median) +
+      csv += csvField("Participant " + s->second.lms_id) + "," + nameCell(s->second.name) + "," + twoDecimals(g.median) +
              ",10.00," + csvField(markReason(g)) + "\n";
     } else {
-      csv += csvField(s->second.name) + "," + s->second.lms_id + ",,," + twoDecimals(g.median) + "\n";
+      csv += nameCell(s->second.name) + "," + s->second.lms_id + ",,," + twoDecimals(g.median) + "\n";
     }
   }
   return csv;
