@@ -174,6 +174,15 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   for (const Submission& s : submissions) {
     if (!s.compile_error.empty()) std::cout << "  " << s.student << ": " << s.compile_error << "\n";
   }
+  // A refused hand-in is never read again: its code is not compared (a sparse MyAlgorithm.cpp would
+  // be read whole by the comparison), here nor by a later --collect (the manifest's folders).
+  std::vector<std::string> compared;
+  for (const std::string& folder : request.submissions) {
+    if (request.refused_hand_ins.count(folder) == 0 && checkHandIn({{folder, ""}}, request.hand_in_limits).empty()) {
+      compared.push_back(folder);
+    }
+  }
+  request.submissions = compared;
   const size_t students = submissions.size();
   if (request.similarity) addKnownAlgorithms(request, prefix, submissions);
   const Manifest manifest = planRuns(request, submissions, bin_dir);
