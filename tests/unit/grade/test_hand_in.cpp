@@ -269,6 +269,17 @@ TEST(LmsExport, AMoodleExportIsReadAsItsZipAndItsFolder) {
   const fs::path dir = scratch();
   const fs::path root = moodleExport(dir / "moodle");
   EXPECT_EQ(exportLayout(root.string()), "moodle");
+  {  // A file of the teacher's among the participants' folders: the export, named, not a student's folder.
+    writeFile(root / "grading.csv", "x");
+    std::vector<std::string> folders;
+    try {
+      readHandIns({root.string()}, "auto", (dir / "out-odd").string(), HandInLimits{}, folders);
+      ADD_FAILURE() << "an odd entry in an export was taken";
+    } catch (const aula::config::ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("grading.csv: not a participant's folder of a Moodle export"), std::string::npos) << e.what();
+    }
+    fs::remove(root / "grading.csv");
+  }
   writeZip((dir / "export.zip").string(), zipOfFolder(root));
   for (const fs::path& given : {root, dir / "export.zip"}) {
     SCOPED_TRACE(given.string());

@@ -53,16 +53,21 @@ fs::path classFolder(const fs::path& folder) {
   return folder;
 }
 
+// An export's layout by its names. One Moodle name is enough (no student names a file
+// "..._assignsubmission_file_"); Canvas's are plainer, so half the entries and two at least. An
+// entry that does not fit the layout found then stops the grade, named (readMoodle, readCanvas),
+// rather than the export being graded as one student's folder.
 std::string layoutOfFolder(const fs::path& folder) {
   const auto entries = entriesOf(folder);
-  if (entries.empty()) return "";
-  const auto all = [&](const std::regex& pattern, bool dirs_ok) {
-    return std::all_of(entries.begin(), entries.end(), [&](const fs::directory_entry& e) {
+  const auto count = [&](const std::regex& pattern, bool dirs_ok) {
+    return static_cast<size_t>(std::count_if(entries.begin(), entries.end(), [&](const fs::directory_entry& e) {
       return (dirs_ok || !e.is_directory()) && std::regex_match(e.path().filename().string(), pattern);
-    });
+    }));
   };
-  if (all(moodleName(), true)) return "moodle";
-  if (all(canvasName(), false)) return "canvas";
+  if (count(moodleName(), true) >= 1) return "moodle";
+  const size_t canvas = count(canvasName(), false);
+  if (canvas >= 2 && 2 * canvas >= entries.size()) return "canvas";
+  if (canvas >= 1 && canvas == entries.size()) return "canvas";  // a class of one
   return "";
 }
 
