@@ -174,6 +174,21 @@ TEST(HandIn, HostileZipsAreRefusedAndWriteNothingOutside) {
     EXPECT_FALSE(fs::exists(work / "as-found")) << "a refused hand-in keeps nothing";
     EXPECT_TRUE(fs::is_empty(work / "code"));
   }
+  {  // A bomb that lies: its directory says 1000 bytes; what comes out is bounded, and refused.
+    const fs::path student = dir / "class" / "liar";
+    fs::create_directories(student);
+    const fs::path zip = student / "submission.zip";
+    writeZip(zip.string(), {{"MyAlgorithm.py", kBounce}, {"zeros.bin", std::string(100u << 20, '\0')}});
+    std::string bytes = readAll(zip);
+    const std::string central("PK\x01\x02", 4);
+    const size_t second = bytes.find(central, bytes.find(central) + 4);
+    ASSERT_NE(second, std::string::npos);
+    bytes.replace(second + 24, 4, std::string("\xe8\x03\x00\x00", 4));  // uncompressed size: 1000
+    std::ofstream(zip, std::ios::binary | std::ios::trunc) << bytes;
+    const StagedHandIn staged = stageFolder(student, dir / "work" / "liar");
+    EXPECT_NE(staged.refused.find("refused: submission.zip: zeros.bin is damaged"), std::string::npos) << staged.refused;
+    EXPECT_FALSE(fs::exists(dir / "work" / "liar" / "as-found"));
+  }
   EXPECT_FALSE(fs::exists(dir / "evil.py"));
   EXPECT_FALSE(fs::exists(dir / "work" / "evil.py"));
   EXPECT_FALSE(fs::exists(dir / "work" / "dotdot" / "evil.py"));

@@ -100,7 +100,7 @@ std::string unzipInto(unzFile zip, const std::string& into, const UnzipLimits& l
     const int out = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (out < 0) return printableName(name) + " cannot be written (" + std::strerror(errno) + ")";
     std::string why;
-    if (unzOpenCurrentFile(zip) != UNZ_OK) why = printableName(name) + " does not read";
+    if (unzOpenCurrentFile(zip) != UNZ_OK) why = printableName(name) + " is damaged (its headers disagree)";
     while (why.empty()) {
       const int got = unzReadCurrentFile(zip, buffer.data(), static_cast<unsigned>(buffer.size()));
       if (got < 0) {
