@@ -81,6 +81,13 @@ TEST(GradeFromAnLms, AMoodleExportIsGradedAndItsGradesGoBack) {
   EXPECT_NE(csv.find("Grace Hopper,1030,0.00,0.00,0.00"), std::string::npos) << csv;
   EXPECT_NE(csv.find("Mallory Sparse,1050,0.00,0.00,0.00"), std::string::npos) << csv;
 
+  // The class report names each student as the LMS does, and says what they handed in.
+  const std::string report = readFile((out / "report.html").string());
+  EXPECT_NE(report.find("<h2 id='Ada_Lovelace-1021'>Ada Lovelace</h2>"), std::string::npos);
+  EXPECT_NE(report.find("<p class='hand-in'>handed in 2 files (ada.zip/lab/MyAlgorithm (1).py, ada.zip/lab/MyAlgorithm.py); "
+                        "graded MyAlgorithm.py (from ada.zip/lab/MyAlgorithm (1).py)</p>"),
+            std::string::npos);
+
   const std::string worksheet = readFile((out / "lms-grades.csv").string());
   const auto sheet = lines(worksheet);
   ASSERT_EQ(sheet.size(), 5u) << worksheet;
