@@ -49,7 +49,7 @@ int gradeSubmissions(const cli::Arguments& args) {
 cli::Command grade() {
   const grade::SimilarityRules defaults;  // the similarity rules' defaults are declared once, there
   const grade::HandInLimits hand_in;      // and a hand-in's bounds', in hand_in.hpp
-  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py) x world x seed, headless");
+  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py, or an LMS's export) x world x seed, headless");
   c.positionals = {{"EXERCISE", settings::exerciseNames(false), false, true},
                    {"SUBMISSION", "a student's folder (the student is named after it), or an LMS's export: its zip or "
                                   "folder (Moodle's or Canvas's \"download all submissions\")", true, true}};
