@@ -138,6 +138,12 @@ TEST(HandIn, SpecialFilesLinksAndTooMuchAreRefusedWithTheirReason) {
   fs::create_directory_symlink("/etc", dir / "etc_link");
   EXPECT_EQ(checkHandIn({{(dir / "etc_link").string(), ""}}, HandInLimits{}),
             "refused: the hand-in is a symbolic link: a hand-in holds its own files");
+  // Given as "etc_link/" too: the link itself is the student's folder, never followed.
+  std::vector<std::string> folders;
+  const auto students = readHandIns({(dir / "etc_link").string() + "/"}, "auto", (dir / "out").string(), HandInLimits{}, folders);
+  ASSERT_EQ(folders.size(), 1u);
+  EXPECT_EQ(students[0].folder, "etc_link");
+  EXPECT_EQ(checkHandIn({{folders[0], ""}}, HandInLimits{}), "refused: the hand-in is a symbolic link: a hand-in holds its own files");
   fs::remove_all(dir);
 }
 

@@ -257,8 +257,7 @@ void takeCode(const fs::path& root, const std::vector<std::string>& files, const
   for (const std::string& file : files) {
     if (fs::path(file).parent_path() != folder || file == main_file) continue;
     const auto [name, copy] = copyOf(fs::path(file).filename().string(), canvas_copies);
-    if (!isSource(name) || name == main_name || copyOf(name, true).first == main_name) continue;
-    if (copyOf(fs::path(file).filename().string(), true).first == main_name) continue;
+    if (!isSource(name) || copyOf(name, true).first == main_name) continue;
     auto it = beside.find(name);
     if (it == beside.end() || it->second.copy < copy) beside[name] = {file, copy};
   }

@@ -201,7 +201,9 @@ std::vector<Student> readHandIns(const std::vector<std::string>& given, const st
     students.push_back(s);
   };
   for (const std::string& path : given) {
-    const fs::path absolute = fs::absolute(path).lexically_normal();
+    fs::path absolute = fs::absolute(path).lexically_normal();
+    // "alice/" is alice: its name, and a link is a link (with the slash, the system would follow it).
+    if (!absolute.has_filename()) absolute = absolute.parent_path();
     fs::path folder = absolute;
     if (fs::is_regular_file(absolute)) {
       if (!looksLikeZip(absolute.string())) throw ConfigError("aula grade: " + path + ": neither a folder nor an LMS's export zip");
@@ -229,7 +231,7 @@ std::vector<Student> readHandIns(const std::vector<std::string>& given, const st
       }
       // A plain student folder, named after it; staged only when its code is not where the grade reads it.
       Student s;
-      s.folder = (absolute.has_filename() ? absolute : absolute.parent_path()).filename().string();
+      s.folder = absolute.filename().string();
       s.name = s.folder;
       if (!used.insert(s.folder).second) {
         throw ConfigError("aula grade: two submissions are named '" + s.folder + "' (a student is named after the folder)");
