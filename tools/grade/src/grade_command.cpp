@@ -28,7 +28,7 @@ void printGrades(const std::vector<StudentGrade>& grades, const std::string& out
   std::printf("%-20s %7s %7s %7s %9s\n", "student", "median", "min", "max", "failed");
   for (const auto& g : grades) {
     const std::string tampered = g.runs_tampered > 0 ? " TAMPERING in " + std::to_string(g.runs_tampered) + " runs;" : "";
-    std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d%s %s\n", g.student.c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
+    std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d%s %s\n", (g.name.empty() ? g.student : g.name).c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
                 tampered.c_str(), g.failures.substr(0, 80).c_str());
   }
   std::printf("grades: %s/grades.csv, %s/report.html\n", out_dir.c_str(), out_dir.c_str());
