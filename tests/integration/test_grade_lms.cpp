@@ -147,3 +147,37 @@ TEST(GradeFromAnLms, AnExportThatIsNotWhatLmsSaysIsAUsageError) {
   EXPECT_NE(text.find("not a folder nor an LMS's export zip"), std::string::npos) << text;
   fs::remove_all(dir);
 }
+
+// Canvas's download, as its zip: Ada's resubmitted file (Canvas's "-1") and her helper, José's
+// late single file of another name. lms-grades.csv is Canvas's gradebook import, its assignment
+// column as --lms-assignment names it, a row per user id.
+TEST(GradeFromAnLms, ACanvasExportIsGradedIntoItsGradebookColumn) {
+  const fs::path dir = privateDir();
+  const std::string bounce = readFile(std::string(AULA_TEST_DATA_DIR) + "/python/vacuum_bounce/MyAlgorithm.py");
+  aula::grade::writeZip((dir / "submissions.zip").string(),
+                        {{"lovelaceada_4410_90001_MyAlgorithm.py", "class MyAlgorithm:\n    pass\n"},
+                         {"lovelaceada_4410_90007_MyAlgorithm-1.py", bounce},
+                         {"nunezjose_LATE_4522_91000_cleaner.py", bounce}});
+  const fs::path out = dir / "lab3";
+  const std::string log = (dir / "grade.txt").string();
+  aula::process::ChildProcess grade({std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum", (dir / "submissions.zip").string(),
+                                     "--lms=canvas", "--lms-assignment=Lab 3 (4021)", "--seeds=1", "--jobs=2",
+                                     "--out=" + out.string(), "--Vacuum.Referee.Duration=60", "--calibration-seeds=off"},
+                                    log, log);
+  const auto code = grade.wait(std::chrono::seconds(900));
+  ASSERT_TRUE(code.has_value()) << readFile(log);
+  ASSERT_EQ(*code, 0) << readFile(log);
+  const auto sheet = lines(readFile((out / "lms-grades.csv").string()));
+  ASSERT_EQ(sheet.size(), 3u);
+  EXPECT_EQ(sheet[0], "Student,ID,SIS User ID,Section,Lab 3 (4021)");
+  EXPECT_EQ(sheet[1].rfind("lovelaceada,4410,,,", 0), 0u) << sheet[1];
+  EXPECT_EQ(sheet[2].rfind("nunezjose,4522,,,", 0), 0u) << sheet[2];
+  // The same program, the same seed: the same mark, whichever file name it came in.
+  EXPECT_EQ(sheet[1].substr(sheet[1].rfind(',')), sheet[2].substr(sheet[2].rfind(',')));
+  EXPECT_NE(sheet[1].substr(sheet[1].rfind(',')), ",0.00");
+  EXPECT_FALSE(fs::exists(out / "lms-feedback.zip")) << "Canvas takes no feedback zip";
+  const std::string csv = readFile((out / "grades.csv").string());
+  EXPECT_NE(csv.find("nunezjose,4522,"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("late; handed in 1 file (cleaner.py); graded MyAlgorithm.py (from cleaner.py)"), std::string::npos) << csv;
+  fs::remove_all(dir);
+}
