@@ -21,6 +21,8 @@ build_packages=(
   libeigen3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libssl-dev libseccomp-dev
+  # aula grade: students' zips and LMS exports (the same name on Debian 12 and 13)
+  libminizip-dev
   # to run: the sandbox, a run's private network, the generators
   libgl1-mesa-dri bubblewrap iproute2 procps python3
   # the embedded Python of a student's MyAlgorithm.py

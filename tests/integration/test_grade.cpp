@@ -86,8 +86,8 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   ASSERT_EQ(rows.size(), 4u) << first_csv;
   // Beside the mark, the raw measure the referee's report names (its "measures").
   EXPECT_EQ(first_csv.substr(0, first_csv.find('\n')),
-            "student,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,runs_retried,"
-            "runs_incomplete,failures,retries,incomplete,language,aula_version");
+            "student,lms_id,median,min,max,median_vacuum,median_coverage_percent,runs,runs_failed,runs_tampered,"
+            "runs_retried,runs_incomplete,failures,retries,incomplete,language,hand_in,aula_version");
 
   EXPECT_EQ(rows["good"]["median"], reference_median) << first_csv;
   EXPECT_EQ(rows["good"]["median_coverage_percent"], coverage_median) << first_csv;
@@ -193,8 +193,8 @@ TEST(GradeAClass, AMixedClassOfPythonAndCppStudents) {
       {"\u00fcn\u00ef \U0001F4C1", {"C++", "thrown at MyAlgorithm.cpp:12"}},  // the crash's line, whatever the folder
       {"cpp_broken", {"C++", "did not compile: "}},
       {"empty_cpp", {"C++", "undefined symbol"}},
-      {"nothing", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}},
-      {"etc_link", {"", "no MyAlgorithm.py or MyAlgorithm.cpp in "}}};
+      {"nothing", {"", "nothing handed in"}},
+      {"etc_link", {"", "refused: the hand-in is a symbolic link"}}};
   for (const auto& [student, want] : expected) {
     SCOPED_TRACE(student);
     EXPECT_EQ(rows[student]["language"], want.first);

@@ -41,7 +41,9 @@ std::string readAll(const fs::path& path) {
 TEST(GradePlan, APythonFolderIsNotCompiledAndItsRunsLoadACopyOfItsFile) {
   const fs::path root = scratch();
   fs::create_directories(root / "ana");
-  std::ofstream(root / "ana" / "MyAlgorithm.py") << "from helpers import speed\n";
+  std::ofstream(root / "ana" / "MyAlgorithm.py") << "from helpers import speed\n\nclass MyAlgorithm:\n"
+                                                  << "    def __init__(self, seed):\n        pass\n\n"
+                                                  << "    def execute(self, api):\n        api.motors.sendV(speed)\n";
   std::ofstream(root / "ana" / "helpers.py") << "speed = 0.3\n";
   std::ofstream(root / "ana" / "notes.txt") << "not code\n";
   aula::grade::GradeRequest request;

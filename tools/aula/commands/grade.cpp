@@ -21,6 +21,11 @@ int gradeSubmissions(const cli::Arguments& args) {
   grade::GradeOptions options;
   options.exercise = args.positional(0);
   options.submissions.assign(args.positional().begin() + 1, args.positional().end());
+  options.lms = args.text("lms");
+  options.lms_assignment = args.given("lms-assignment") ? args.text("lms-assignment") : "";
+  options.hand_in_limits.max_bytes = static_cast<uint64_t>(args.integer("hand-in-size")) << 20;
+  options.hand_in_limits.max_files = static_cast<uint64_t>(args.integer("hand-in-files"));
+  options.hand_in_limits.max_depth = static_cast<int>(args.integer("hand-in-depth"));
   options.worlds = args.text("worlds");
   options.seeds = args.text("seeds");
   options.calibration_seeds = args.text("calibration-seeds");
@@ -43,9 +48,11 @@ int gradeSubmissions(const cli::Arguments& args) {
 
 cli::Command grade() {
   const grade::SimilarityRules defaults;  // the similarity rules' defaults are declared once, there
-  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py) x world x seed, headless");
+  const grade::HandInLimits hand_in;      // and a hand-in's bounds', in hand_in.hpp
+  cli::Command c("grade", "grade a class: every submission (a folder with MyAlgorithm.cpp or MyAlgorithm.py, or an LMS's export) x world x seed, headless");
   c.positionals = {{"EXERCISE", settings::exerciseNames(false), false, true},
-                   {"SUBMISSION", "a student's folder (the student is named after it)", true, true}};
+                   {"SUBMISSION", "a student's folder (the student is named after it), or an LMS's export: its zip or "
+                                  "folder (Moodle's or Canvas's \"download all submissions\")", true, true}};
   c.takes_settings = true;
   c.options.add(cli::valueOption("worlds", "W1,W2", "the worlds every submission runs on (default: the exercise's own); "
                                  "generate:KIND:5,seed=7 writes held-out worlds into OUT/worlds (" + grade::generatedWorldKinds() + ")"))
@@ -75,6 +82,17 @@ cli::Command grade() {
       .add(cli::valueOption("known", "DIR",
                             "your own solutions, one folder each (MyAlgorithm.cpp or .py): run and compared with every "
                             "student like the exercise's built-in algorithms, never graded (with similarity on)"))
+      .choice("lms", "auto", {"auto", "moodle", "canvas"},
+              "what the submissions are: auto tells an LMS's export by its names (else a folder per student); moodle "
+              "or canvas: each is that LMS's export (lms-grades.csv goes back in its format)")
+      .add(cli::valueOption("lms-assignment", "NAME",
+                            "Canvas: the assignment's column in lms-grades.csv, as the gradebook's export names it "
+                            "(\"Vacuum (12345)\"; default \"aula EXERCISE\")"))
+      .integer("hand-in-size", static_cast<long long>(hand_in.max_bytes >> 20), "MiB", 1, 1 << 20,
+               "a student's hand-in may hold this much, its zips unpacked (a file as long as it says it is)")
+      .integer("hand-in-files", static_cast<long long>(hand_in.max_files), "files", 1, 10000000,
+               "a student's hand-in may hold this many files and folders, its zips' included")
+      .integer("hand-in-depth", hand_in.max_depth, "folders", 1, 1000, "a student's hand-in may be this many folders deep")
       .add(cli::valueOption("collect", "DIR", "only collect: grades.csv and report.html from DIR's runs (after a Slurm job)"));
   c.details = "out: DIR/grades.csv (median, min, max per student; failures with reasons), DIR/report.html, DIR/runs/\n"
               "see docs/grading.md\n";

@@ -5,6 +5,7 @@
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/grades.hpp>
+#include <aula/grade/lms_export.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/process/exit_codes.hpp>
 
@@ -30,11 +31,16 @@ int printGrades(const std::vector<StudentGrade>& grades, const std::string& out_
   int incomplete = 0;
   for (const auto& g : grades) {
     const std::string tampered = g.runs_tampered > 0 ? " TAMPERING in " + std::to_string(g.runs_tampered) + " runs;" : "";
-    std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d%s %s\n", g.student.c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
+    std::printf("%-20s %7.2f %7.2f %7.2f %5d/%-3d%s %s\n", (g.name.empty() ? g.student : g.name).c_str(), g.median, g.min, g.max, g.runs_failed, g.runs,
                 tampered.c_str(), g.failures.substr(0, 80).c_str());
     incomplete += g.runs_incomplete;
   }
   std::printf("grades: %s/grades.csv, %s/report.html\n", out_dir.c_str(), out_dir.c_str());
+  const fs::path lms = fs::path(out_dir) / "lms-grades.csv";
+  if (fs::exists(lms)) {
+    std::printf("for the LMS: %s%s (docs/grading.md, \"From your LMS and back\")\n", lms.string().c_str(),
+                fs::exists(fs::path(out_dir) / "lms-feedback.zip") ? ", lms-feedback.zip" : "");
+  }
   if (incomplete == 0) return 0;
   std::fflush(stdout);
   std::cerr << "aula grade: " << incomplete << " run(s) did not complete, for the machine's reason on every try (left out "
@@ -158,6 +164,17 @@ void addKnownAlgorithms(const GradeRequest& request, const std::string& prefix, 
 int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   GradeRequest request = asked;
   fs::create_directories(request.out_dir);
+  // The students as given: an LMS's export read into hand-ins, each staged into OUT/hand-ins
+  // (before the worlds: an export that does not read stops the grade before any calibration).
+  std::vector<std::string> folders;
+  const std::vector<Student> students_given =
+      readHandIns(request.submissions, request.lms, request.out_dir, request.hand_in_limits, folders);
+  request.submissions = folders;
+  for (size_t i = 0; i < students_given.size(); ++i) {
+    if (!students_given[i].refused.empty()) request.refused_hand_ins[folders[i]] = students_given[i].refused;
+  }
+  saveStudents(request.out_dir, students_given, request.lms_assignment);
+  if (request.similarity_auto) request.similarity = request.submissions.size() >= 3;
   prepareWorlds(request, bin_dir);  // generated and calibrated before any student's run
   const std::string prefix = fs::path(bin_dir).parent_path().string();
   std::cout << "compiling " << request.submissions.size() << " submission(s) into " << request.out_dir << "/build\n"
@@ -166,6 +183,15 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
   for (const Submission& s : submissions) {
     if (!s.compile_error.empty()) std::cout << "  " << s.student << ": " << s.compile_error << "\n";
   }
+  // A refused hand-in is never read again: its code is not compared (a sparse MyAlgorithm.cpp would
+  // be read whole by the comparison), here nor by a later --collect (the manifest's folders).
+  std::vector<std::string> compared;
+  for (const std::string& folder : request.submissions) {
+    if (request.refused_hand_ins.count(folder) == 0 && checkHandIn({{folder, ""}}, request.hand_in_limits).empty()) {
+      compared.push_back(folder);
+    }
+  }
+  request.submissions = compared;
   const size_t students = submissions.size();
   if (request.similarity) addKnownAlgorithms(request, prefix, submissions);
   const Manifest manifest = planRuns(request, submissions, bin_dir);

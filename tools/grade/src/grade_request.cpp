@@ -1,6 +1,8 @@
 #include "aula/grade/grade_plan.hpp"
 
 #include <aula/config/paths.hpp>
+#include <aula/grade/lms_export.hpp>
+#include <aula/grade/zip_archive.hpp>
 #include <aula/settings/tables.hpp>
 
 #include <algorithm>
@@ -120,7 +122,9 @@ GradeRequest parseRequest(const GradeOptions& options) {
     // A typo of the teacher's stops the grade; a student's folder without a submission (empty, a
     // link elsewhere) is that student's row ("no MyAlgorithm.py or MyAlgorithm.cpp").
     if (!fs::exists(folder)) throw ConfigError("aula grade: submission " + given + ": not a folder (there is no such path)");
-    if (!fs::is_directory(folder)) throw ConfigError("aula grade: submission " + given + ": not a folder");
+    // An LMS's export comes as its zip too (lms_export.hpp): its students are read when it is unpacked.
+    const bool export_zip = fs::is_regular_file(folder) && looksLikeZip(folder.string());
+    if (!fs::is_directory(folder) && !export_zip) throw ConfigError("aula grade: submission " + given + ": not a folder nor an LMS's export zip");
     if (!students.insert(student).second) {
       throw ConfigError("aula grade: two submissions are named '" + student + "' (a student is named after the folder)");
     }
@@ -146,9 +150,17 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.engine = options.engine;
   r.out_dir = fs::absolute(options.out_dir).lexically_normal().string();
   r.overrides = options.overrides;
+  r.lms = options.lms;
+  r.lms_assignment = options.lms_assignment.empty() ? "aula " + r.exercise : options.lms_assignment;
+  r.hand_in_limits = options.hand_in_limits;
   r.record = options.record;
   r.build_sandbox = options.build_sandbox;
-  r.similarity = options.similarity == "on" || (options.similarity == "auto" && r.submissions.size() >= 3);
+  // An export is a class: auto is on for it until its students are counted (gradeClass).
+  const bool an_export = std::any_of(r.submissions.begin(), r.submissions.end(), [](const std::string& s) {
+    return !fs::is_directory(s) || !exportLayout(s).empty();
+  });
+  r.similarity_auto = options.similarity == "auto";
+  r.similarity = options.similarity == "on" || (r.similarity_auto && (r.submissions.size() >= 3 || an_export));
   r.similarity_rules = options.similarity_rules;
   if (!options.known.empty()) r.known = knownFolders(options.known, r.similarity);
   return r;

@@ -7,6 +7,7 @@
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/lms_export.hpp>
 #include <aula/grade/report_html.hpp>
 #include <aula/grade/run_page.hpp>
 #include <aula/grade/similarity.hpp>
@@ -183,19 +184,21 @@ std::vector<StudentGrade> gradeStudents(const std::vector<nlohmann::json>& resul
 }
 
 std::string gradesCsv(const std::vector<StudentGrade>& grades) {
-  std::string csv = "student,median,min,max";
+  std::string csv = "student,lms_id,median,min,max";
   if (!grades.empty()) {
     for (const auto& [world, value] : grades.front().world_medians) csv += ",median_" + csvField(world);
     for (const auto& [measure, value] : grades.front().measure_medians) csv += ",median_" + csvField(measure);
   }
-  csv += ",runs,runs_failed,runs_tampered,runs_retried,runs_incomplete,failures,retries,incomplete,language,aula_version\n";
+  csv += ",runs,runs_failed,runs_tampered,runs_retried,runs_incomplete,failures,retries,incomplete,language,hand_in,aula_version\n";
   for (const StudentGrade& g : grades) {
-    csv += csvField(g.student) + "," + twoDecimals(g.median) + "," + twoDecimals(g.min) + "," + twoDecimals(g.max);
+    csv += csvField(g.name.empty() ? g.student : g.name) + "," + csvField(g.lms_id);
+    csv += "," + twoDecimals(g.median) + "," + twoDecimals(g.min) + "," + twoDecimals(g.max);
     for (const auto& [world, value] : g.world_medians) csv += "," + twoDecimals(value);
     for (const auto& [measure, value] : g.measure_medians) csv += "," + twoDecimals(value);
     csv += "," + std::to_string(g.runs) + "," + std::to_string(g.runs_failed) + "," + std::to_string(g.runs_tampered) + "," +
            std::to_string(g.runs_retried) + "," + std::to_string(g.runs_incomplete) + "," + csvField(g.failures) + "," +
-           csvField(g.retries) + "," + csvField(g.incomplete) + "," + csvField(g.language) + "," + kVersion + "\n";
+           csvField(g.retries) + "," + csvField(g.incomplete) + "," + csvField(g.language) + "," + csvField(g.hand_in) + "," +
+           kVersion + "\n";
   }
   return csv;
 }
@@ -246,8 +249,23 @@ std::string compareSubmissions(const std::string& out_dir, const std::vector<std
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions,
                                   const std::string& exercise, const SimilarityRules& rules,
                                   const std::vector<std::string>& known) {
-  const auto results = readResults(out_dir);
-  const auto grades = gradeStudents(results);
+  auto results = readResults(out_dir);
+  auto grades = gradeStudents(results);
+  // Who each folder is, as the LMS's export named them: the rows, the pages and the report say it.
+  const auto students = loadStudents(out_dir);
+  for (StudentGrade& g : grades) {
+    const auto s = students.find(g.student);
+    if (s == students.end()) continue;
+    g.name = s->second.name;
+    g.lms_id = s->second.lms_id;
+    g.hand_in = s->second.hand_in;
+  }
+  for (auto& r : results) {
+    const auto s = students.find(r.value("student", std::string()));
+    if (s == students.end()) continue;
+    r["student_name"] = s->second.name;
+    if (!s->second.hand_in.empty()) r["hand_in"] = s->second.hand_in;
+  }
   // The grades first: on a disk with little room left, they are what matters most.
   config::writeFileAtomically((fs::path(out_dir) / "grades.csv").string(), gradesCsv(grades), "the grades");
   const std::string similar = submissions.empty() ? "" : compareSubmissions(out_dir, submissions, exercise, results, rules, known);
@@ -262,6 +280,7 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
     const RunFiles theirs = forTheStudent(runFilesOf(r), world_texts.ofRun(r["log"].get<std::string>()));
     config::writeFileAtomically(page.string(), runPageHtml(theirs), "the run's page");
   }
+  writeLmsFiles(out_dir, grades);  // after the pages: Moodle's feedback zip holds them
   return grades;
 }
 

@@ -216,7 +216,8 @@ void writeStudents(std::ostringstream& html, const std::vector<StudentGrade>& gr
     const auto flag = flags.find(g.student);
     const bool is_flagged = g.runs_failed > 0 || g.runs_tampered > 0 || flag != flags.end();
     html << "<tr data-student='" << escapeHtml(g.student) << "'" << (is_flagged ? " class='flagged'" : "")
-         << "><td class='name'><a href='#" << escapeHtml(g.student) << "'>" << escapeHtml(g.student) << "</a></td><td>"
+         << "><td class='name'><a href='#" << escapeHtml(g.student) << "'>" << escapeHtml(g.name.empty() ? g.student : g.name)
+         << "</a></td><td>"
          << twoDecimals(g.median) << "</td><td>" << twoDecimals(g.max - g.min) << "</td><td>" << twoDecimals(g.min) << "</td><td>"
          << twoDecimals(g.max) << "</td>";
     for (const auto& [world, value] : g.world_medians) html << "<td>" << twoDecimals(value) << "</td>";
@@ -278,7 +279,11 @@ void writeRuns(std::ostringstream& html, const std::vector<nlohmann::json>& resu
     bool any_flagged = false;
     for (const nlohmann::json* r : runs) any_flagged = any_flagged || flagged(*r);
     html << "<section class='student' data-student='" << escapeHtml(student) << "' data-flagged='" << (any_flagged ? "yes" : "no")
-         << "'><h2 id='" << escapeHtml(student) << "'>" << escapeHtml(student) << "</h2>\n<div class='runs'>\n";
+         << "'><h2 id='" << escapeHtml(student) << "'>" << escapeHtml(runs.front()->value("student_name", student)) << "</h2>\n";
+    // What was handed in and what of it was graded (an LMS's export, a folder without MyAlgorithm).
+    const std::string hand_in = runs.front()->value("hand_in", std::string());
+    if (!hand_in.empty()) html << "<p class='hand-in'>" << escapeHtml(hand_in) << "</p>\n";
+    html << "<div class='runs'>\n";
     for (const nlohmann::json* r : runs) writeCard(html, *r);
     html << "</div></section>\n";
   }

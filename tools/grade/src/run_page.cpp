@@ -140,7 +140,7 @@ std::string noNetworkPolicy() {
 RunFiles runFilesOf(const nlohmann::json& result) {
   RunFiles run;
   run.report = result;
-  run.title = result.value("student", std::string("?")) + ", " + fs::path(result.value("world", std::string("?"))).stem().string() +
+  run.title = result.value("student_name", result.value("student", std::string("?"))) + ", " + fs::path(result.value("world", std::string("?"))).stem().string() +
               " seed " + std::to_string(result.value("seed", 0LL));
   if (!result.contains("log") || !result["log"].is_string()) return run;
   fs::path stem = result["log"].get<std::string>();
@@ -188,7 +188,10 @@ std::string runPageHtml(const RunFiles& given) {
        << escapeHtml(run.title) << "</title><style>" << kPageStyle << kPlayerStyleCss << "</style></head><body>\n<h1>"
        << escapeHtml(run.title) << (exercise.empty() ? "" : ": " + escapeHtml(exercise)) << ", mark " << std::fixed;
   html.precision(2);
-  html << r.value("mark", 0.0) << " / 10</h1>\n" << diagnosticsHtml(runDiagnostics(r));
+  html << r.value("mark", 0.0) << " / 10</h1>\n";
+  // What the student handed in and what of it was graded, when the grade had to look for it.
+  if (r.contains("hand_in") && r["hand_in"].is_string()) html << "<p class='hand-in'>" << escapeHtml(r["hand_in"].get<std::string>()) << "</p>\n";
+  html << diagnosticsHtml(runDiagnostics(r));
   if (run.trace_json.empty()) {
     html << "<p>" << (r.contains("failure") ? "This run has no replay: it stopped before the referee could trace it (see above)."
                                             : "This run has no trace (the referee was not asked for one).")

@@ -5,6 +5,7 @@
 #include <aula/config/config.hpp>
 #include <aula/config/paths.hpp>
 #include <aula/grade/grade_plan.hpp>
+#include <aula/grade/python_check.hpp>
 #include <aula/process/child_process.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -166,6 +167,12 @@ void preparePython(Submission& s, const SubmissionFiles& files, const fs::path& 
     s.compile_error = copied;
     return;
   }
+  // Every way of not running is the same 0 with its reason, as a C++ compile error is.
+  const std::string not_runnable = pythonNotRunnable((project / "MyAlgorithm.py").string(), (project / "check.log").string());
+  if (!not_runnable.empty()) {
+    s.compile_error = not_runnable;
+    return;
+  }
   s.plugin = (project / "MyAlgorithm.py").string();
   s.plugin_sha256 = world::sha256OfFile(s.plugin);
 }
@@ -243,6 +250,15 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
       Submission& s = out[next];
       const fs::path project = fs::path(request.out_dir) / "build" / s.student;
       const size_t index = next++;
+      // A hand-in is bounded before anything of it is read or copied (hand_in.hpp).
+      const auto refused_hand_in = request.refused_hand_ins.find(s.folder);
+      std::string bounded = refused_hand_in != request.refused_hand_ins.end() ? refused_hand_in->second : "";
+      if (bounded.empty()) bounded = checkHandIn({{s.folder, ""}}, request.hand_in_limits);
+      if (!bounded.empty()) {
+        s.compile_error = bounded;
+        s.language = "";
+        continue;
+      }
       const SubmissionFiles files = submissionFiles(s.folder);
       if (!files.refused.empty()) {  // a row, mark 0, with the reason; nothing of it is built
         s.compile_error = files.refused;
@@ -251,7 +267,7 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
       }
       if (fs::exists(fs::path(s.folder) / "MyAlgorithm.cpp") && fs::exists(fs::path(s.folder) / "MyAlgorithm.py")) {
         // Which one the student meant is theirs to say: the grade never picks one silently.
-        s.compile_error = "both MyAlgorithm.cpp and MyAlgorithm.py in " + s.folder + ": keep only the one to grade";
+        s.compile_error = "both MyAlgorithm.cpp and MyAlgorithm.py handed in: which one to grade is the student's to say";
         s.language = "";
         continue;
       }
@@ -260,7 +276,8 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
         continue;
       }
       if (!fs::is_regular_file(fs::path(s.folder) / "MyAlgorithm.cpp")) {  // nothing to grade: a row, mark 0
-        s.compile_error = "no MyAlgorithm.py or MyAlgorithm.cpp in " + s.folder;
+        // Never the teacher's folder: this text goes to the student's page and the LMS.
+        s.compile_error = fs::is_directory(s.folder) && fs::is_empty(s.folder) ? "nothing handed in" : "no MyAlgorithm.py or MyAlgorithm.cpp handed in";
         s.language = "";
         continue;
       }

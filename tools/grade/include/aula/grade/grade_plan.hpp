@@ -6,6 +6,7 @@
 
 #include <aula/config/config.hpp>
 #include <aula/grade/generated_worlds.hpp>
+#include <aula/grade/hand_in.hpp>
 #include <aula/grade/similarity.hpp>
 
 #include <nlohmann/json.hpp>
@@ -22,7 +23,11 @@ namespace aula::grade {
 
 struct GradeRequest {
   std::string exercise;
-  std::vector<std::string> submissions;  // folders: each has MyAlgorithm.cpp (and maybe more .cpp)
+  std::vector<std::string> submissions;  // folders: each has MyAlgorithm.cpp (and maybe more .cpp); or LMS exports (lms_export.hpp)
+  std::string lms = "auto";              // what the submissions are: auto (an export by its layout), moodle or canvas
+  std::string lms_assignment;            // Canvas's assignment column in lms-grades.csv
+  HandInLimits hand_in_limits;           // what one student's hand-in may hold
+  std::map<std::string, std::string> refused_hand_ins;  // by submission folder: why nothing of it is graded
   std::vector<std::string> worlds;       // absolute paths; empty: the exercise's own world
   std::vector<WorldsToGenerate> generate;  // held-out worlds to write into OUT/worlds and grade on too
   std::vector<long long> seeds;
@@ -36,6 +41,7 @@ struct GradeRequest {
   std::string engine = "local";  // local | slurm
   double wall_limit_s = 600;     // per run; the sim-time limit is the referee's own
   bool similarity = false;       // compare the submissions (similarity.csv, report.html's section)
+  bool similarity_auto = false;  // --similarity=auto: decided again once an export's students are counted
   // --known=DIR: the teacher's own solutions (one folder each, like a submission), run and compared
   // with every student as the exercise's built-in algorithms are (similarity on), never graded.
   std::vector<std::string> known;
@@ -49,6 +55,9 @@ struct GradeRequest {
 struct GradeOptions {
   std::string exercise;
   std::vector<std::string> submissions;  // as given
+  std::string lms = "auto";
+  std::string lms_assignment;            // "" for "aula EXERCISE"
+  HandInLimits hand_in_limits;
   std::string worlds;                    // "W1,W2"; "" for the exercise's own
   std::string seeds = "1";
   std::string calibration_seeds = "1-10";  // "" or "off": no calibration

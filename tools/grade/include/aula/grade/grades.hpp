@@ -15,6 +15,7 @@ namespace aula::grade {
 
 struct StudentGrade {
   std::string student;
+  std::string name, lms_id, hand_in;  // as OUT/students.json says (lms_export.hpp); name "" : the student's folder
   std::string language;  // "C++", "Python", or "" when there was nothing to run
   double median = 0, min = 0, max = 0;
   std::vector<std::pair<std::string, double>> world_medians;  // by world name
@@ -43,9 +44,9 @@ std::string twoDecimals(double value);
 // The world a run was graded on, as the class's results name it: the world file's stem, or a
 // destination's ("city-plaza" for city.world's destination "plaza").
 std::string gradedWorldOf(const nlohmann::json& result);
-// grades.csv: student, median, min, max, one median per world, one per measure, runs, runs_failed,
-// runs_tampered, runs_retried, runs_incomplete, failures, retries, incomplete, language, aula_version
-// (docs/grading.md's list is generated from it).
+// grades.csv: student (the name), lms_id, median, min, max, one median per world, one per measure,
+// runs, runs_failed, runs_tampered, runs_retried, runs_incomplete, failures, retries, incomplete,
+// language, hand_in, aula_version (docs/grading.md's list is generated from it).
 std::string gradesCsv(const std::vector<StudentGrade>& grades);
 // Writes DIR/grades.csv and DIR/report.html; returns the grades.
 // `similarity`: compare the class's submissions too (similarity.csv and report.html's section);
