@@ -29,10 +29,10 @@
 #   sleeps: one pass per period; RoboticsAcademy's shape only);
 # - starts another pass of a top-level `while True:` loop in the same period (RoboticsAcademy
 #   2021-23 ran the loop's body once a period);
-# - reads the clock (time.time(), perf_counter(), monotonic(), datetime.now()...) again at the
-#   same place of its code (the same line, called from the same lines) with the clock unchanged
-#   since that read: a loop that waits on the clock costs what a time.sleep does. Reads from
-#   other modules only (logging...) wait at the CLOCK_READS_PER_PERIOD-th in one period.
+# - reads the clock (time.time(), perf_counter(), monotonic(), datetime.now()...) again at a
+#   place of its code (the same line, called from the same lines) that read it at this sim time
+#   already: a loop that waits on the clock costs what a time.sleep does. Reads from other
+#   modules only (logging...) wait at the CLOCK_READS_PER_PERIOD-th in one period.
 # A call of Aula's shape that waits is resumed, not called again, at the next periods.
 #
 # The clock: time.time(), time.perf_counter(), time.monotonic() (each with its _ns form),
@@ -315,8 +315,8 @@ class Runner:
         self.api = None
         self.read_this_period = set()
         self.clock_reads = 0
-        self.clock_site = None       # where the program read the clock last, and at what sim time
-        self.clock_site_us = None
+        self.clock_sites = set()     # where the program read the clock at this sim time
+        self.clock_sites_us = None
         self.loop_pass_us = None     # sim time the last pass of a top-level loop began
         self._student_files = {}
         self.closing = False
@@ -500,9 +500,12 @@ class Runner:
                 self.wait_period()
             return
         site = tuple(site)
-        if site == self.clock_site and _now_us == self.clock_site_us:
-            self.wait_period()  # read again here, the clock unchanged: a wait on the clock
-        self.clock_site, self.clock_site_us = site, _now_us
+        if self.clock_sites_us != _now_us:
+            self.clock_sites, self.clock_sites_us = set(), _now_us
+        if site in self.clock_sites:
+            self.wait_period()  # read here already, the clock unchanged since: a wait on the clock
+            self.clock_sites, self.clock_sites_us = set(), _now_us
+        self.clock_sites.add(site)
 
     def close(self):
         """Ends a paused program (GreenletExit inside it) when it can: on its own thread."""
