@@ -89,7 +89,7 @@ class YawOnlyPose3dClient(_Device):
 
     def getPose3d(self):
         api = _ra.api("pose3d.getPose3d()")
-        return _ra.YawOnlyPose3d(api.pose3d.getYaw(), api.time_s(), self._exercise)
+        return _ra.YawOnlyPose3d(api.pose3d.getYaw(), api.time_s(), self._exercise, "pose3d.getPose3d()")
 
     def getYaw(self):
         return self._device("getYaw").getYaw()
