@@ -427,14 +427,16 @@ TEST(PythonShapes, TeletaxiProgramsOfEveryGenerationRunToTheEndTheSameTwice) {
 }
 
 // Dead at its import (line 4), in every exercise: mark 0, the reason in the report, whatever the
-// exercise's rubric gives a robot that stays still (Autopark's NotParkedMark gave 1.00).
+// exercise's rubric gives a robot that stays still (Autopark's NotParkedMark gave 1.00); its
+// recorded run regrades to the same report.
 TEST(PythonShapes, AProgramThatDiesAtImportGetsZeroInEveryExercise) {
   const std::vector<std::pair<std::string, std::string>> exercises = {
       {"vacuum", "--Vacuum.Referee.Duration=20"},
       {"teletaxi", "--TeleTaxi.Referee.Timeout=20"},
       {"autopark", "--Autopark.Referee.Timeout=20"}};
   for (const auto& [exercise, option] : exercises) {
-    const PyRun run = runHeadless(exercise, kPython + "dies_at_import/MyAlgorithm.py", {option});
+    const std::string recorded = aula::testing::privateDir() + "/" + exercise + ".lcmlog";
+    const PyRun run = runHeadless(exercise, kPython + "dies_at_import/MyAlgorithm.py", {option, "--record=" + recorded});
     ASSERT_FALSE(run.report.empty()) << exercise << "\n" << describe(run);
     EXPECT_EQ(jsonNumber(run.report, "mark"), 0.0) << exercise << "\n" << describe(run);
     const auto error = jsonString(run.report, "algorithm_error");
@@ -443,6 +445,11 @@ TEST(PythonShapes, AProgramThatDiesAtImportGetsZeroInEveryExercise) {
     EXPECT_NE(run.report.find("\"mark_note\": \"0: the student's algorithm failed before the robot moved"),
               std::string::npos)
         << exercise << "\n" << run.report;
+    // Graded again from its log alone: the same 0, for the same reason.
+    const aula::testing::Outcome again = aula::testing::runToEnd(
+        {std::string(AULA_BIN_DIR) + "/aula", "regrade", recorded, "--report=" + recorded + ".json"});
+    EXPECT_EQ(again.code, run.code) << again.output;  // a run that ended early, both times
+    EXPECT_EQ(readFile(recorded + ".json"), run.report) << exercise;
   }
 }
 
