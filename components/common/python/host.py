@@ -31,8 +31,8 @@
 #   2021-23 ran the loop's body once a period);
 # - reads the clock (time.time(), perf_counter(), monotonic(), datetime.now()...) again at a
 #   place of its code (the same line, called from the same lines) that read it at this sim time
-#   already: a loop that waits on the clock costs what a time.sleep does. Reads from other
-#   modules only (logging...) wait at the CLOCK_READS_PER_PERIOD-th in one period.
+#   already: a loop that waits on the clock costs what a time.sleep does. Reads made by other
+#   modules (logging's timestamps...) wait only at the CLOCK_READS_PER_PERIOD-th in one period.
 # A call of Aula's shape that waits is resumed, not called again, at the next periods.
 #
 # The clock: time.time(), time.perf_counter(), time.monotonic() (each with its _ns form),
@@ -63,6 +63,8 @@ _real = types.SimpleNamespace(sleep=time.sleep, datetime=_datetime.datetime, dat
                               perf_counter=time.perf_counter, perf_counter_ns=time.perf_counter_ns)
 _now_us = 0          # sim time of the control period now running, microseconds
 _runner = None       # the Runner whose call is running (None between calls)
+
+_HOST_FILE = "<aula:host.py>"  # this file's name in tracebacks (python_host.cpp compiles it so)
 
 def now_us():
     return _now_us
@@ -487,13 +489,18 @@ class Runner:
     def clock_read(self):
         if greenlet.getcurrent() is not self.program:
             return
+        # Who read it: the first frame outside this file. A module's read (logging's timestamps)
+        # is not the program waiting on the clock, even when the program called that module.
+        frame = sys._getframe(2)
+        while frame is not None and frame.f_code.co_filename == _HOST_FILE:
+            frame = frame.f_back
         # Where in the student's code the clock is read: its frames' code and instruction.
         site = []
-        frame = sys._getframe(2)
-        while frame is not None:
-            if self._student_frame(frame):
-                site.append((frame.f_code, frame.f_lasti))
-            frame = frame.f_back
+        if frame is not None and self._student_frame(frame):
+            while frame is not None:
+                if self._student_frame(frame):
+                    site.append((frame.f_code, frame.f_lasti))
+                frame = frame.f_back
         if not site:
             self.clock_reads += 1
             if self.clock_reads >= CLOCK_READS_PER_PERIOD:
