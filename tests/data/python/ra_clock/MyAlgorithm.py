@@ -3,6 +3,7 @@
 # each check raises AssertionError with what it saw; all passed, it prints "CLOCK OK" and drives.
 import GUI
 import HAL
+import logging
 import math
 import time
 import datetime
@@ -11,6 +12,10 @@ import Frequency
 from datetime import datetime as dt
 
 PERIOD = 0.08
+log = logging.getLogger("ra_clock")
+log.setLevel(logging.INFO)
+log.addHandler(logging.NullHandler())
+log.propagate = False
 
 
 def check(condition, what):
@@ -45,6 +50,13 @@ check(p0 == t4 and time.perf_counter_ns() == round(t4 * 1e9), "perf_counter is n
 r0 = aula_profile.perf_counter()
 sum(range(200000))
 check(aula_profile.perf_counter() > r0 and time.time() == t4, "aula_profile.perf_counter is not real, or time.time() moved")
+t7 = time.time()
+for beam in range(5):
+    log.info("beam %d", beam)         # logging reads the clock: not the program waiting on it
+check(time.time() == t7, f"five log lines took {time.time() - t7} s")
+for _ in range(3):
+    last = time.time()                # read here again, the clock unchanged: a period each time
+check(abs(last - t7 - 2 * PERIOD) < 1e-9, f"three reads at one place took {last - t7} s")
 t5 = time.time()
 Frequency.tick(2)                     # the first tick: the rate's period (0.5 s) of sim time
 Frequency.tick(2)                     # the next: 0.5 s after the first ended
