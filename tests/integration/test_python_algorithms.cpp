@@ -466,6 +466,23 @@ TEST(PythonShapes, AHandInOfSeveralFilesIsGradedAsAClass) {
   EXPECT_GT(jsonNumber(subclass.report, "coverage_percent"), 1.0) << subclass.report;
 }
 
+// Under `aula grade` (sandboxed, the submission's .py files copied): the two-file hand-in is a class.
+TEST(PythonShapes, AHandInOfSeveralFilesIsGradedAsAClassByAulaGrade) {
+  const fs::path dir = aula::testing::privateDir();
+  fs::create_directories(dir / "class");
+  fs::copy(kPython + "multi_file_import", dir / "class" / "two_files", fs::copy_options::recursive);
+  const aula::testing::Outcome graded = aula::testing::runToEnd(
+      {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum", (dir / "class" / "two_files").string(), "--seeds=1",
+       "--calibration-seeds=off", "--similarity=off", "--Vacuum.Referee.Duration=60", "--out=" + (dir / "out").string()},
+      600s);
+  ASSERT_EQ(graded.code.value_or(-1), 0) << graded.output;
+  const std::string result = readFile((dir / "out" / "runs" / "two_files" / "vacuum-seed1.json").string());
+  EXPECT_EQ(result.find("algorithm_error"), std::string::npos) << result;
+  EXPECT_NE(result.find("\"sandboxed\": true"), std::string::npos) << result;
+  EXPECT_GT(jsonNumber(result, "coverage_percent"), 1.0) << result;
+  fs::remove_all(dir);
+}
+
 // A file with neither a class nor a loop is told why it got 0.
 TEST(PythonShapes, AFileWithNeitherAClassNorALoopIsToldWhyItGotZero) {
   const PyRun run = runHeadless("vacuum", kPython + "nothing_to_run/MyAlgorithm.py", kShortVacuum);
