@@ -8,6 +8,10 @@
 //   a recorded run regrades to the same report.
 // - Programs in RoboticsAcademy's shape (`import HAL, GUI`, `while True:`, `time.sleep`), unchanged,
 //   each doing its job; the simulator's clock in both shapes; under `aula grade` (issue 41).
+// - Every generation of the course's program, told from the file (issue 54): RoboticsAcademy
+//   2021-23 (`from HAL import HAL`, MAP), 2025 (WebGUI, Frequency), JdeRobot-Academy 2017-18's
+//   classes made with the original's devices; a hand-in of several files graded as a class
+//   (issue 57); a program that dies at import gets 0 in every exercise; clock waits as sleeps.
 #include "test_support.hpp"
 
 #include <aula/belief_t.hpp>
@@ -19,6 +23,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <optional>
 #include <regex>
@@ -82,7 +87,7 @@ void expectPythonFault(const PyRun& run, const std::string& message) {
   EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
 }
 
-const std::vector<std::string> kShortVacuum = kShortVacuum;
+const std::vector<std::string> kShortVacuum = {"--Vacuum.Referee.Duration=20"};
 
 }  // namespace
 
@@ -361,4 +366,155 @@ TEST(RoboticsAcademyPrograms, AutoparkProgramIsGradedByAulaGrade) {
   const std::string log = readFile((dir / "out" / "runs" / "ra_student" / "autopark-seed1.log").string());
   EXPECT_NE(log.find("parked at ("), std::string::npos) << log;
   fs::remove_all(dir);
+}
+
+// Every generation of the course's program, in each exercise (issue 54): our own small programs in
+// each shape (tests/data/python/README.md), each run twice. Each runs to the end of its episode
+// without an error, drives (it is not a robot standing still), says what it printed, and the same
+// seed gives the same report.
+namespace {
+struct ShapeRun {
+  std::string folder;
+  std::string printed;  // a line it prints, on the component's output
+};
+
+// `moved`: the report says the robot went somewhere (a program standing still would pass the rest).
+void expectEachRunsToTheEndTheSameTwice(const std::string& exercise, const std::vector<ShapeRun>& programs,
+                                        const std::vector<std::string>& options,
+                                        const std::function<bool(const std::string&)>& moved) {
+  for (const ShapeRun& program : programs) {
+    SCOPED_TRACE(exercise + " " + program.folder);
+    const PyRun first = runHeadless(exercise, kPython + program.folder + "/MyAlgorithm.py", options, 300s);
+    const PyRun second = runHeadless(exercise, kPython + program.folder + "/MyAlgorithm.py", options, 300s);
+    expectCleanRun(first);
+    EXPECT_NE(first.output.find(program.printed), std::string::npos) << describe(first);
+    EXPECT_TRUE(moved(first.report)) << first.report;
+    EXPECT_EQ(first.report, second.report);
+  }
+}
+}  // namespace
+
+TEST(PythonShapes, VacuumProgramsOfEveryGenerationRunToTheEndTheSameTwice) {
+  expectEachRunsToTheEndTheSameTwice("vacuum",
+                                     {{"ra2021_vacuum", "ahead again at "},
+                                      {"ra2025_vacuum", "following walls"},
+                                      {"academy_vacuum", "call 100 at 8.00 s, yaw "}},
+                                     {"--seed=2", "--Vacuum.Referee.Duration=60"}, [](const std::string& report) {
+                                       return report.find("\"finished\": true") != std::string::npos &&
+                                              jsonNumber(report, "coverage_percent") > 1.0;
+                                     });
+}
+
+TEST(PythonShapes, AutoparkProgramsOfEveryGenerationRunToTheEndTheSameTwice) {
+  expectEachRunsToTheEndTheSameTwice("autopark",
+                                     {{"ra2021_autopark", "front beams"},
+                                      {"ra2025_autopark", "closest on the right: "},
+                                      {"academy_autopark", "stopped at x "}},
+                                     {"--seed=1", "--Autopark.Referee.Timeout=30"}, [](const std::string& report) {
+                                       return report.find("\"finished\": true") != std::string::npos &&
+                                              report.find("\"case\": \"stayed_still\"") == std::string::npos;
+                                     });
+}
+
+TEST(PythonShapes, TeletaxiProgramsOfEveryGenerationRunToTheEndTheSameTwice) {
+  expectEachRunsToTheEndTheSameTwice("teletaxi",
+                                     {{"ra2021_teletaxi", "a path of "},
+                                      {"ra2025_teletaxi", " of a "},
+                                      {"academy_teletaxi", "LOOKING FOR SHORTER PATH"}},
+                                     {"--seed=1", "--TeleTaxi.Referee.Timeout=60"}, [](const std::string& report) {
+                                       return jsonNumber(report, "path_length_m") > 10.0;
+                                     });
+}
+
+// Dead at its import (line 4), in every exercise: mark 0, the reason in the report, whatever the
+// exercise's rubric gives a robot that stays still (Autopark's NotParkedMark gave 1.00); its
+// recorded run regrades to the same report.
+TEST(PythonShapes, AProgramThatDiesAtImportGetsZeroInEveryExercise) {
+  const std::vector<std::pair<std::string, std::string>> exercises = {
+      {"vacuum", "--Vacuum.Referee.Duration=20"},
+      {"teletaxi", "--TeleTaxi.Referee.Timeout=20"},
+      {"autopark", "--Autopark.Referee.Timeout=20"}};
+  for (const auto& [exercise, option] : exercises) {
+    const std::string recorded = aula::testing::privateDir() + "/" + exercise + ".lcmlog";
+    const PyRun run = runHeadless(exercise, kPython + "dies_at_import/MyAlgorithm.py", {option, "--record=" + recorded});
+    ASSERT_FALSE(run.report.empty()) << exercise << "\n" << describe(run);
+    EXPECT_EQ(jsonNumber(run.report, "mark"), 0.0) << exercise << "\n" << describe(run);
+    const auto error = jsonString(run.report, "algorithm_error");
+    ASSERT_TRUE(error.has_value()) << exercise << "\n" << describe(run);
+    EXPECT_EQ(error->rfind("MyAlgorithm.py:4: ZeroDivisionError: float division by zero", 0), 0u) << *error;
+    EXPECT_NE(run.report.find("\"mark_note\": \"0: the student's algorithm failed before the robot moved"),
+              std::string::npos)
+        << exercise << "\n" << run.report;
+    // Graded again from its log alone: the same 0, for the same reason.
+    const aula::testing::Outcome again = aula::testing::runToEnd(
+        {std::string(AULA_BIN_DIR) + "/aula", "regrade", recorded, "--report=" + recorded + ".json"});
+    EXPECT_EQ(again.code, run.code) << again.output;  // a run that ended early, both times
+    EXPECT_EQ(readFile(recorded + ".json"), run.report) << exercise;
+  }
+}
+
+// A hand-in of several files (issue 57): MyAlgorithm imported from a module beside it, or a class
+// MyAlgorithm subclassing one from a module beside it, is graded as a class: it drives.
+TEST(PythonShapes, AHandInOfSeveralFilesIsGradedAsAClass) {
+  const PyRun imported = runHeadless("vacuum", kPython + "multi_file_import/MyAlgorithm.py", {"--Vacuum.Referee.Duration=60"});
+  expectCleanRun(imported);
+  EXPECT_NE(imported.output.find("Cleaner made with seed "), std::string::npos) << describe(imported);
+  EXPECT_GT(jsonNumber(imported.report, "coverage_percent"), 1.0) << imported.report;
+  const PyRun subclass = runHeadless("vacuum", kPython + "multi_file_subclass/MyAlgorithm.py", {"--Vacuum.Referee.Duration=60"});
+  expectCleanRun(subclass);
+  EXPECT_NE(subclass.output.find("MyAlgorithm(Cleaner): 100 calls"), std::string::npos) << describe(subclass);
+  EXPECT_GT(jsonNumber(subclass.report, "coverage_percent"), 1.0) << subclass.report;
+}
+
+// Under `aula grade` (sandboxed, the submission's .py files copied): the two-file hand-in is a class.
+TEST(PythonShapes, AHandInOfSeveralFilesIsGradedAsAClassByAulaGrade) {
+  const fs::path dir = aula::testing::privateDir();
+  fs::create_directories(dir / "class");
+  fs::copy(kPython + "multi_file_import", dir / "class" / "two_files", fs::copy_options::recursive);
+  const aula::testing::Outcome graded = aula::testing::runToEnd(
+      {std::string(AULA_BIN_DIR) + "/aula", "grade", "vacuum", (dir / "class" / "two_files").string(), "--seeds=1",
+       "--calibration-seeds=off", "--similarity=off", "--Vacuum.Referee.Duration=60", "--out=" + (dir / "out").string()},
+      600s);
+  ASSERT_EQ(graded.code.value_or(-1), 0) << graded.output;
+  const std::string result = readFile((dir / "out" / "runs" / "two_files" / "vacuum-seed1.json").string());
+  EXPECT_EQ(result.find("algorithm_error"), std::string::npos) << result;
+  EXPECT_NE(result.find("\"sandboxed\": true"), std::string::npos) << result;
+  EXPECT_GT(jsonNumber(result, "coverage_percent"), 1.0) << result;
+  fs::remove_all(dir);
+}
+
+// A file with neither a class nor a loop is told why it got 0.
+TEST(PythonShapes, AFileWithNeitherAClassNorALoopIsToldWhyItGotZero) {
+  const PyRun run = runHeadless("vacuum", kPython + "nothing_to_run/MyAlgorithm.py", kShortVacuum);
+  expectPythonFault(run, "MyAlgorithm.py: the file ran to its end in its first call and never waited for the simulator: "
+                         "it has neither a class MyAlgorithm");
+  EXPECT_NE(run.report.find("It defines execute(): put it in class MyAlgorithm"), std::string::npos) << run.report;
+  EXPECT_EQ(jsonNumber(run.report, "mark"), 0.0) << run.report;
+}
+
+// Waiting on time.perf_counter() is a time.sleep on Aula: the same run, byte for byte.
+TEST(PythonShapes, APerfCounterTimedProgramBehavesAsItsSleepTwin) {
+  const std::vector<std::string> options = {"--seed=4", "--Vacuum.Referee.Duration=120"};
+  const PyRun busy = runHeadless("vacuum", kPython + "busy_wait_twin/MyAlgorithm.py", options);
+  const PyRun sleeping = runHeadless("vacuum", kPython + "sleep_twin/MyAlgorithm.py", options);
+  expectCleanRun(busy);
+  expectCleanRun(sleeping);
+  EXPECT_GT(jsonNumber(sleeping.report, "coverage_percent"), 1.0) << sleeping.report;
+  EXPECT_EQ(busy.report, sleeping.report);
+}
+
+// Errors that teach: a name RoboticsAcademy's HAL has and this exercise's lacks, imported; a module
+// in other letters; Python 2's print; a module Debian packages.
+TEST(PythonShapes, ImportMistakesSayWhatAulaOffers) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"teach_import_name", "MyAlgorithm.py:3: ImportError: HAL.getFrontLaserData: not in Aula's HAL for this exercise; "
+                            "it has getLaserData()"},
+      {"teach_module_case", "MyAlgorithm.py:2: ModuleNotFoundError: no module named 'hal' (Aula's is `HAL`, in these "
+                            "letters"},
+      {"teach_python2", "MyAlgorithm.py:5: SyntaxError: Missing parentheses in call to 'print'."},
+      {"missing_import", "MyAlgorithm.py:2: ModuleNotFoundError: no module named 'pandas' (it is Debian's python3-pandas)"}};
+  for (const auto& [folder, message] : cases) {
+    const PyRun run = runHeadless("vacuum", kPython + folder + "/MyAlgorithm.py", kShortVacuum);
+    expectPythonFault(run, message);
+  }
 }

@@ -11,8 +11,8 @@
 # The same API as MyAlgorithm.cpp, under the same names (aula_autopark.pyi, for your editor).
 # Aula's Python has Debian's standard library, numpy and cv2.
 # Time is the simulator's: time.time(), time.sleep() and datetime.now() are sim time (as
-# api.time_s()); time.perf_counter() stays real. A RoboticsAcademy program (import HAL, GUI;
-# while True: ... time.sleep()) runs here too: docs/exercises/from-roboticsacademy.md.
+# api.time_s()), and time.perf_counter(); aula_profile.perf_counter() is real. A program of
+# RoboticsAcademy (import HAL...) or JdeRobot-Academy runs here too: docs/exercises/from-roboticsacademy.md.
 from aula_autopark import AutoparkApi
 
 

@@ -68,17 +68,18 @@ class YawOnlyPose3d:
     """A Pose3d for a robot that is not told where it is (the vacuum): .yaw and .timeStamp; the
     position's attributes say what exists instead."""
 
-    _MISSING = ("x", "y", "z", "q", "h", "pitch", "roll")
+    _MISSING = ("x", "y", "z", "q", "q0", "q1", "q2", "q3", "h", "pitch", "roll")
 
-    def __init__(self, yaw, timeStamp, exercise):
+    def __init__(self, yaw, timeStamp, exercise, source="HAL.getPose3d()"):
         self.yaw = yaw
         self.timeStamp = timeStamp
         self._exercise = exercise
+        self._source = source  # what the program called: "HAL.getPose3d()", "pose3d.getPose3d()"
 
     def __getattr__(self, name):
         if name in YawOnlyPose3d._MISSING:
             raise AttributeError(
-                f"HAL.getPose3d().{name}: the {self._exercise} has no localization in Aula: getPose3d() gives "
+                f"{self._source}.{name}: the {self._exercise} has no localization in Aula: getPose3d() gives "
                 ".yaw (rad) and .timeStamp (s) only; find your way with the laser, the bumper and the yaw")
         raise AttributeError(f"'Pose3d' object has no attribute '{name}'")
 

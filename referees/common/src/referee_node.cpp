@@ -13,6 +13,11 @@
 #include <filesystem>
 
 namespace aula::referee {
+namespace {
+const char* const kFailedBeforeMoving =
+    "0: the student's algorithm failed before the robot moved (algorithm_error says why), whatever the rubric gives a "
+    "robot that stayed still";
+}  // namespace
 
 RefereeNode::RefereeNode(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
                          const std::optional<auth::Key>& run_key, const std::string& exercise)
@@ -61,6 +66,9 @@ void RefereeNode::deferSensorWakeUps(lcmbus::Bus& bus) const {
 void RefereeNode::onPoseMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::pose3d_t* msg) {
   if (!outcome_.truth().accept(channel, *msg)) return;  // forged: counted, not graded
   if (msg->utime <= episode_from_utime_) return;
+  if (!first_pose_) first_pose_ = *msg;
+  moved_ = moved_ || std::hypot(msg->x - first_pose_->x, msg->y - first_pose_->y) > kStillWithinM ||
+           std::abs(std::remainder(msg->yaw - first_pose_->yaw, 2 * M_PI)) > kStillWithinRad;
   onTruePose(*msg);
 }
 
@@ -77,6 +85,8 @@ void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string&
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
     end_.reset();
+    first_pose_.reset();
+    moved_ = false;
     non_finite_event_ = -1;
     startNewEpisode(msg->utime);
   }
@@ -89,7 +99,7 @@ void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string&
 void RefereeNode::announceEnd() {
   outcome_.announceOnce(finished(), [this] {
     const EpisodeStatus s = status();
-    end_ = EpisodeEnd{gradedTimeS(), mark(), s.finished ? s.ending : "Stopped",
+    end_ = EpisodeEnd{gradedTimeS(), gradedMark(), s.finished ? s.ending : "Stopped",
                       outcome_.fault().empty() ? outcome_.aborted() : outcome_.fault()};
     if (on_finished_) on_finished_();
   });
@@ -110,7 +120,8 @@ std::string RefereeNode::clockText(double elapsed_s) const {
 
 void RefereeNode::traceFault(int64_t utime) {
   trace_.addEvent(utime, "fault", "the student's algorithm failed: " + outcome_.fault(),
-                  "grading stops here: the mark is what was earned so far");
+                  moved_ ? "grading stops here: the mark is what was earned so far"
+                         : "grading stops here, before the robot moved: the mark is 0");
 }
 
 void RefereeNode::traceNonFinite(int64_t utime) {
@@ -164,17 +175,23 @@ Report RefereeNode::report() const {
   Report out;
   out.set("exercise", exercise_);
   out.set("aula_version", kVersion);
-  out.set("mark", mark());
+  out.set("mark", gradedMark());
   out.set("sim_time_s", gradedTimeS());
   out.set("seed", static_cast<long long>(clock_->lastTick().seed));
   out.set("world", world_file_);
   out.set("world_sha256", world_sha256_);
   out.set("finished", gradedToEnd());
   addGrading(out);
+  if (failedBeforeMoving()) out.set("mark_note", std::string(kFailedBeforeMoving));
   out.set("rubric", rubric_);
   out.set("measures", measures());
   outcome_.addTo(out);
   return out;
+}
+
+std::string RefereeNode::summary() const {
+  const std::string zero = failedBeforeMoving() ? std::string("  the mark is ") + kFailedBeforeMoving + "\n" : "";
+  return gradeSummary() + zero + outcome_.summary();
 }
 
 void RefereeNode::writePicture(const std::string& png_path) const {
@@ -188,7 +205,7 @@ std::string RefereeNode::traceJson() const {
   out.set("world", world_file_);
   out.set("seed", static_cast<long long>(clock_->lastTick().seed));
   out.set("algorithm", outcome_.algorithm());
-  out.set("mark", mark());
+  out.set("mark", gradedMark());
   out.set("sim_time_s", gradedTimeS());
   addTrace(out);
   RunTrace whole = trace_;

@@ -13,7 +13,8 @@ namespace aula::python {
 namespace {
 
 // What runs in Python is host.py (the student's file on a greenlet, the sim clock, faults in
-// the student's lines) and aula_ra.py (RoboticsAcademy's types for the exercises' HAL and GUI),
+// the student's lines) and the modules it offers programs (aula_ra.py: RoboticsAcademy's types for
+// the exercises' HAL and GUI; aula_academy.py: JdeRobot-Academy's devices; Frequency, WebGUI...),
 // compiled in as text (embed_sources.cmake).
 const Source& hostSource(const char* name) {
   for (const Source& source : hostSources()) {
@@ -153,8 +154,10 @@ PythonAlgorithm::PythonAlgorithm(uint64_t seed, const char* api_module) {
   Call running;
   try {
     py::module_::import(api_module);  // the API's types
-    py::list modules;                  // RoboticsAcademy's HAL and GUI, and what they share
-    modules.append(py::make_tuple("aula_ra", hostSource("aula_ra").text));
+    py::list modules;  // what the host offers every exercise (aula_ra...), then the exercise's HAL, GUI...
+    for (const Source& source : hostSources()) {
+      if (std::string(source.name) != "host") modules.append(py::make_tuple(source.name, source.text));
+    }
     for (const Source& source : exerciseSources()) modules.append(py::make_tuple(source.name, source.text));
     runner_ = interpreter().helpers.attr("Runner")(interpreter().file, seed, modules);
   } catch (py::error_already_set& e) {

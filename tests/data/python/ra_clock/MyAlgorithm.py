@@ -1,13 +1,21 @@
-# The clock and the pacing of a program in RoboticsAcademy's shape (vacuum, Period 0.08 s):
+# The clock and the pacing of a program in RoboticsAcademy's shape (vacuum, Period 0.08 s),
+# Frequency.tick() included:
 # each check raises AssertionError with what it saw; all passed, it prints "CLOCK OK" and drives.
 import GUI
 import HAL
+import logging
 import math
 import time
 import datetime
+import aula_profile
+import Frequency
 from datetime import datetime as dt
 
 PERIOD = 0.08
+log = logging.getLogger("ra_clock")
+log.setLevel(logging.INFO)
+log.addHandler(logging.NullHandler())
+log.propagate = False
 
 
 def check(condition, what):
@@ -38,8 +46,27 @@ check(abs((now - datetime.datetime(1970, 1, 1)).total_seconds() - time.time()) <
 check(dt.now() == now and datetime.date.today() == datetime.date(1970, 1, 1), "from datetime import datetime")
 check(dt.fromtimestamp(time.time()) == now, f"datetime.fromtimestamp(time.time()) is {dt.fromtimestamp(time.time())}")
 p0, t4 = time.perf_counter(), time.time()
+check(p0 == t4 and time.perf_counter_ns() == round(t4 * 1e9), "perf_counter is not sim time")
+r0 = aula_profile.perf_counter()
 sum(range(200000))
-check(time.perf_counter() > p0 and time.time() == t4, "perf_counter is not real, or time.time() moved")
+check(aula_profile.perf_counter() > r0 and time.time() == t4, "aula_profile.perf_counter is not real, or time.time() moved")
+t7 = time.time()
+for beam in range(5):
+    log.info("beam %d", beam)         # logging reads the clock: not the program waiting on it
+check(time.time() == t7, f"five log lines took {time.time() - t7} s")
+for _ in range(3):
+    last = time.time()                # read here again, the clock unchanged: a period each time
+check(abs(last - t7 - 2 * PERIOD) < 1e-9, f"three reads at one place took {last - t7} s")
+t5 = time.time()
+Frequency.tick(2)                     # the first tick: the rate's period (0.5 s) of sim time
+Frequency.tick(2)                     # the next: 0.5 s after the first ended
+check(1.0 - 1e-9 <= time.time() - t5 < 1.0 + 2 * PERIOD, f"two ticks at 2 Hz took {time.time() - t5} s")
+time.sleep(0.6)
+t6 = time.time()
+Frequency.tick(2)                     # the pass took longer than its period: no wait
+check(time.time() == t6, f"a tick after a long pass waited {time.time() - t6} s")
+from HAL import HAL as RoboticsAcademy2021
+check(RoboticsAcademy2021 is HAL, "from HAL import HAL is not the HAL module")
 laser = HAL.getLaserData()
 check(isinstance(laser.values, list) and len(laser.values) == 180, "the laser's values are not a list of 180")
 check(abs(laser.minAngle) < 1e-6 and abs(laser.maxAngle - math.pi) < 1e-6, f"angles {laser.minAngle}..{laser.maxAngle}")

@@ -48,8 +48,14 @@ class RefereeNode {
   // escapeAttempt). Not graded; counted, traced once per kind, and the run is flagged.
   void escapeAttempt(const std::string& what);
   bool aborted() const { return !outcome_.aborted().empty(); }
+  // The student's algorithm failed (at its import, its first call, or later) before the robot
+  // moved: the run earns 0, whatever the exercise's rubric gives a robot that stayed still
+  // (Autopark's NotParkedMark). The report's mark and the window's end say so.
+  bool failedBeforeMoving() const { return !outcome_.fault().empty() && !moved_; }
+  // The run's mark: the exercise's (mark()), or 0 when failedBeforeMoving().
+  double gradedMark() const { return failedBeforeMoving() ? 0.0 : mark(); }
   Report report() const;
-  std::string summary() const { return gradeSummary() + outcome_.summary(); }  // for the terminal
+  std::string summary() const;  // for the terminal: the exercise's, and how the run ended
   void writePicture(const std::string& png_path) const;                        // --picture
   // --trace: the run as the referee graded it, for the player (aula/referee/run_trace.hpp).
   std::string traceJson() const;
@@ -144,6 +150,11 @@ class RefereeNode {
   std::unique_ptr<lcmbus::LockstepClient> clock_;
   std::function<void()> on_finished_;
   std::optional<EpisodeEnd> end_;
+  // The episode's first true pose, and whether the robot has left it since (failedBeforeMoving):
+  // farther than kStillWithinM or turned more than kStillWithinRad (a robot at rest settles by less).
+  static constexpr double kStillWithinM = 0.01, kStillWithinRad = 0.02;
+  std::optional<aula::pose3d_t> first_pose_;
+  bool moved_ = false;
 };
 
 }  // namespace aula::referee

@@ -7,13 +7,17 @@
 //   no python from PATH), its path cut to Debian's stdlib and dist-packages (numpy, cv2), started
 //   once and never shut down (numpy cannot start twice);
 // - the student's file, read and run afresh for every new algorithm (hot reload), its folder
-//   first on sys.path (its own modules, dropped again on reload), in either shape: Aula's
-//   (class MyAlgorithm, execute(api) every period) or RoboticsAcademy's (`import HAL, GUI`, a
-//   program run from its top with `while True:` and `time.sleep`); the student's code runs on a
-//   greenlet of the calling thread, and waiting for sim time returns the call (host.py says when);
-// - Python's clock is the simulator's (time.time, monotonic, sleep, datetime.now: host.py);
+//   first on sys.path (its own modules, dropped again on reload), in any generation's shape, told
+//   from the file (host.py): Aula's (class MyAlgorithm(seed), execute(api) every period),
+//   JdeRobot-Academy 2017-18's (MyAlgorithm(pose3d, motors, ...), its own run() loop) or
+//   RoboticsAcademy's (`import HAL, GUI` or WebGUI, Frequency; a program run from its top with
+//   `while True:`); the student's code runs on a greenlet of the calling thread, and waiting for
+//   sim time returns the call (host.py says when);
+// - Python's clocks are the simulator's (time.time, perf_counter, monotonic, sleep, datetime.now:
+//   host.py);
 // - the exercise's HAL and GUI modules (RoboticsAcademy's names, components/<exercise>/python/),
-//   made afresh for every algorithm;
+//   and the modules a generation's program imports (MAP, WebGUI, Frequency, jderobot...), made
+//   afresh for every algorithm;
 // - what the student prints goes to the component's stdout/stderr as before and to the window's
 //   console (takeConsole);
 // - `random` and numpy's global generator seeded with the run's seed before the file runs, and
@@ -33,8 +37,9 @@
 namespace aula::python {
 namespace py = pybind11;
 
-// A Python module's text, compiled in (embed_sources.cmake): host.py and aula_ra.py in
-// hostSources(), the exercise's HAL.py and GUI.py in exerciseSources() (each host module's own).
+// A Python module's text, compiled in (embed_sources.cmake): host.py and the modules every
+// exercise shares in hostSources(), the exercise's HAL.py, GUI.py... in exerciseSources() (each
+// host module's own).
 struct Source {
   const char* name;  // the module's name ("HAL")
   const char* text;
@@ -72,7 +77,7 @@ class PythonAlgorithm {
     keepThreadState(gil);
     run(method, py::cast(&api, py::return_value_policy::reference), api.clock.utime());
   }
-  // A program in RoboticsAcademy's shape (no class MyAlgorithm) rather than Aula's.
+  // A program in RoboticsAcademy's shape (no class MyAlgorithm) rather than a class.
   bool isProgram() const;
 
  private:
