@@ -3,7 +3,8 @@
 # Builds a student's algorithm as a plugin (lib<name>.so) that an Aula component loads with
 # --algorithm=PATH.so. The student's sources define makeStudentAlgorithm(...) exactly as in the
 # exercise's template; this function adds the C entry points the component looks for (the
-# exercise, the ABI version and aula_<exercise>_algorithm_v1), so students never write them.
+# exercise, the ABI versions (the common API's and the exercise's own) and
+# aula_<exercise>_algorithm_v1), so students never write them.
 # The plugin calls the exercise's API (Grid, SlotDetector...) in the component that loads it;
 # everything of its own stays hidden, so two plugins (or a plugin and the component) never
 # mix each other's functions.
@@ -33,6 +34,7 @@ function(aula_add_algorithm)
   get_target_property(AULA_HEADER ${_api} AULA_ALGORITHM_HEADER)
   get_target_property(AULA_CLASS ${_api} AULA_ALGORITHM_CLASS)
   get_target_property(AULA_MAKE ${_api} AULA_ALGORITHM_MAKE)
+  get_target_property(AULA_EXERCISE_ABI_VERSION ${_api} AULA_ALGORITHM_ABI_VERSION)
   if(ARG_HEADER)
     set(AULA_HEADER "${ARG_HEADER}")
   endif()
@@ -64,13 +66,21 @@ endfunction()
 #
 # An exercise's API target (an INTERFACE library named aula_<exercise>_api) says what a plugin of
 # that exercise implements: the header declaring the algorithm's class, the class, and the C++
-# expression that makes the student's algorithm from `uint64_t seed` (a std::unique_ptr). The
-# properties are exported with the target, so an installed Aula's plugins read them too.
+# expression that makes the student's algorithm from `uint64_t seed` (a std::unique_ptr), and the
+# exercise's ABI version (its aula_exercise() ABI_VERSION, declared before). The properties are
+# exported with the target, so an installed Aula's plugins read them too.
 function(aula_declare_algorithm_api)
   cmake_parse_arguments(ARG "" "TARGET;HEADER;CLASS;MAKE" "" ${ARGN})
+  string(REGEX REPLACE "^aula_(.*)_api$" "\\1" _exercise "${ARG_TARGET}")
+  get_property(_abi GLOBAL PROPERTY AULA_EXERCISE_${_exercise}_ABI_VERSION)
+  if(NOT _abi)
+    message(FATAL_ERROR "aula_declare_algorithm_api(TARGET ${ARG_TARGET}): declare aula_exercise(NAME ${_exercise} "
+                        "... ABI_VERSION n) first")
+  endif()
   set_target_properties(${ARG_TARGET} PROPERTIES
     AULA_ALGORITHM_HEADER "${ARG_HEADER}" AULA_ALGORITHM_CLASS "${ARG_CLASS}" AULA_ALGORITHM_MAKE "${ARG_MAKE}"
-    EXPORT_PROPERTIES "AULA_ALGORITHM_HEADER;AULA_ALGORITHM_CLASS;AULA_ALGORITHM_MAKE")
+    AULA_ALGORITHM_ABI_VERSION "${_abi}"
+    EXPORT_PROPERTIES "AULA_ALGORITHM_HEADER;AULA_ALGORITHM_CLASS;AULA_ALGORITHM_MAKE;AULA_ALGORITHM_ABI_VERSION")
 endfunction()
 
 # A component exports to the plugins it loads only the student API (the common patterns of

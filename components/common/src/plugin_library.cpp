@@ -3,6 +3,7 @@
 #include <aula/component/algorithm_plugin.hpp>
 #include <aula/component/throw_site.hpp>
 #include <aula/config/paths.hpp>
+#include <aula/settings/tables.hpp>
 
 #include <algorithm>
 #include <array>
@@ -149,6 +150,16 @@ void PluginLibrary::bindEntryPoints(const std::string& exercise) {
     dlclose(handle_);
     throw PluginError(path + ": ABI mismatch: built for algorithm ABI " + std::to_string(abi) + ", this Aula has ABI " +
                       std::to_string(kAlgorithmAbiVersion) + "; rebuild it against this Aula");
+  }
+  // Built before the exercises had versions of their own: for each one's first (issue 59).
+  const auto exercise_abi_of = reinterpret_cast<int (*)()>(symbol("aula_algorithm_exercise_abi_version"));
+  const int exercise_abi = exercise_abi_of != nullptr ? exercise_abi_of() : 1;
+  const int wanted = settings::requireExercise(exercise).abi_version;
+  if (exercise_abi != wanted) {
+    dlclose(handle_);
+    throw PluginError(path + ": ABI mismatch: built for the " + exercise + " API version " + std::to_string(exercise_abi) +
+                      ", this Aula's " + exercise + " API is version " + std::to_string(wanted) +
+                      "; rebuild it against this Aula");
   }
   const std::string factory = "aula_" + exercise + "_algorithm_v1";
   factory_ = symbol(factory);

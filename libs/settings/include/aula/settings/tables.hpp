@@ -69,6 +69,9 @@ struct Exercise {
   // What the referee needs in a world besides the robot: "" (nothing), or "parking_street" (a curb
   // and parked cars, aula/scoring/parking_geometry.hpp): `aula check-world` checks it.
   std::string referee_scene;
+  // The version of the exercise's plugin API (its aula_exercise() ABI_VERSION, set by the
+  // generated registry): a plugin built for another is refused (plugin_library.cpp).
+  int abi_version = 0;
 
   std::vector<const config::SettingsTable*> tables() const;
 };

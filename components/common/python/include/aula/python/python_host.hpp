@@ -110,10 +110,11 @@ class PythonExecuteAlgorithm : public Algorithm {
 
 }  // namespace aula::python
 
-// The entry points of the exercise's host module: the three of algorithm_plugin.hpp, the factory
+// The entry points of the exercise's host module: the four of algorithm_plugin.hpp, the factory
 // making `PythonClass(seed)` (an ALGORITHM), and the three of the Python host.
 #define AULA_PYTHON_HOST_ENTRY_POINTS(EXERCISE, ALGORITHM, PythonClass)                                        \
   AULA_PLUGIN_EXPORT int aula_algorithm_abi_version() { return AULA_ALGORITHM_ABI_VERSION; }                  \
+  AULA_PLUGIN_EXPORT int aula_algorithm_exercise_abi_version() { return AULA_EXERCISE_ABI_VERSION; }         \
   AULA_PLUGIN_EXPORT const char* aula_algorithm_exercise() { return #EXERCISE; }                             \
   AULA_PLUGIN_EXPORT ALGORITHM* aula_##EXERCISE##_algorithm_v1(uint64_t seed) { return new PythonClass(seed); } \
   AULA_PLUGIN_EXPORT const char* aula_python_set_file(const char* path) {                                    \
