@@ -16,7 +16,7 @@ if [ ! -f build-sanitize/build.ninja ]; then
   cmake --preset sanitize >/dev/null
 fi
 # Only what the run needs: the unit tests (their discovery runs them under the sanitizers too),
-# and the programs and student plugins of the three exercises.
+# and the programs and student plugins of every exercise.
 cmake --build build-sanitize -j"$(nproc)" --target aula_unit_tests aula_all_exercises
 ctest --test-dir build-sanitize -L unit -j"$(nproc)" --output-on-failure
 
@@ -39,8 +39,10 @@ run() {  # run NAME aula-run-arguments...
   if [ "$status" -ne 0 ]; then cat "$log" >&2; fi
   echo "sanitize: $name: $(grep -h '"mark"' "$out/$name.json" 2>/dev/null | tr -d ' ,')"
 }
-run vacuum vacuum --algorithm=reference --Vacuum.Referee.Duration=120
-run teletaxi teletaxi --algorithm=reference
-run autopark autopark --algorithm=reactive
-run autopark-planner autopark --algorithm=planner --world=worlds/autopark_ackermann_1.3L.world
+# Each exercise's runs as it declares them (RUNS and SANITIZE_ARGS of its aula_exercise()).
+while read -r label exercise args <&3; do  # fd 3: the runs keep the script's stdin
+  case "$label" in ''|'#'*) continue ;; esac
+  # shellcheck disable=SC2086  # the declared arguments, one word each
+  run "$label" "$exercise" $args
+done 3<build-sanitize/exercises/sanitize-runs.txt
 exit "$status"

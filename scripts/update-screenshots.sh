@@ -30,9 +30,14 @@ shoot() {
   wait "$sim" || true
 }
 
-shoot vacuum Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee --Vacuum.Algorithm=reference --screenshot-at=905
-shoot teletaxi TeleTaxi cityLarge.world teletaxi teletaxi-referee --TeleTaxi.Algorithm=reference
-shoot autopark Autopark autopark.world autopark autopark-referee --Autopark.Algorithm=planner --screenshot-at=120
+# Each exercise's pictures as it declares them (SCREENSHOT of its aula_exercise()).
+shot=()
+while read -r line <&3; do  # fd 3: the programs keep the script's stdin
+  case "$line" in ''|'#'*) continue ;; esac
+  # shellcheck disable=SC2086  # the declared arguments, one word each
+  shoot $line
+  shot+=("${line%% *}")
+done 3<"$build/exercises/screenshots.txt"
 # A student's MyAlgorithm.py that divides by zero on its 31st call: the traceback in the fault panel.
 shoot vacuum_python_fault Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-referee \
   --Vacuum.Algorithm="$root/tests/data/python/raises/MyAlgorithm.py" --screenshot-at=6
@@ -43,4 +48,4 @@ shoot crash_fault_panel Vacuum vacuum.world vacuum-cleaner vacuum-cleaner-refere
   --Vacuum.Algorithm="$build/tests/integration/plugins/libaula_test_fault_segfault.so" --screenshot-at=3
 mv "$out/crash_fault_panel_component.png" "$out/crash-fault-panel.png"
 rm -f "$out/crash_fault_panel_referee.png"
-echo "written: $out/{vacuum,teletaxi,autopark}_{component,referee}.png, $out/vacuum_python_fault_component.png, $out/crash-fault-panel.png: look at each"
+echo "written: $out/{$(IFS=,; echo "${shot[*]}")}_{component,referee}.png, $out/vacuum_python_fault_component.png, $out/crash-fault-panel.png: look at each"
