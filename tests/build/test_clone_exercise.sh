@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
-# An exercise is its own folders (docs/adding-an-exercise.md): copy every file whose path names
-# the vacuum exercise (tests aside) under a new name, with the name replaced inside those copies
-# only, and nothing else edited. The copy must build, be listed by `aula --help`, and its
-# reference must cover what vacuum's covers on the same world and seed.
+# An exercise is its own folders: the short way of docs/adding-an-exercise.md, step by step. Copy
+# every file whose path names the vacuum exercise (its tests, bench scripts and pictures included)
+# under a new name, with the name replaced inside those copies only, and nothing else edited. The
+# copy must build whole, pass its own unit tests and the docs check
+# (scripts/update-doc-lists.py --check), be listed by `aula --help`, be in CI's lists of runs,
+# and its reference must cover what vacuum's covers on the same world and seed. The whole build
+# is the test's cost (most of an hour cold on 2 cores; the clone sits at a fixed path in the
+# build folder, so ccache makes the next run's quick).
 # Usage: test_clone_exercise.sh SOURCE_DIR BUILD_DIR (BUILD_DIR: the tree's own build, for vacuum's run)
 set -euo pipefail
 source_dir="$(cd "$1" && pwd)"
 build_dir="$(cd "$2" && pwd)"
 name=sweeper
-work="$(mktemp -d "${TMPDIR:-/tmp}/aula-clone.XXXXXX")"
+work="$build_dir/clone_exercise"  # a fixed path: the next run's compiles are ccache's hits
+rm -rf "$work"
+mkdir -p "$work"
 trap 'rm -rf "$work"' EXIT
 clone="$work/src"
 
@@ -18,11 +24,10 @@ mkdir -p "$clone"
   (cd "$source_dir" && xargs -0 cp --parents -P -t "$clone" || true)  # a file deleted but not yet committed: said, not fatal
 [ -f "$clone/CMakeLists.txt" ] || { echo "FAIL: could not copy the tree"; exit 1; }
 
-# 2. The clone: each path naming vacuum, outside tests/, copied under the new name; text files
-# get the name replaced (vacuum, Vacuum, VACUUM), pictures are copied as they are.
+# 2. The clone (the page's steps 1 and 2): each path naming vacuum copied under the new name; text
+# files get the name replaced (vacuum, Vacuum, VACUUM), pictures are copied as they are.
 copied=0
 while IFS= read -r -d '' path; do
-  case "$path" in tests/*) continue ;; esac
   target="${path//vacuum/$name}"
   target="${target//Vacuum/${name^}}"
   mkdir -p "$clone/$(dirname "$target")"
@@ -38,16 +43,31 @@ done < <(cd "$source_dir" && git ls-files -z --cached --others --exclude-standar
 echo "copied $copied files naming vacuum as $name"
 [ "$copied" -gt 10 ] || { echo "FAIL: too few files name vacuum ($copied)"; exit 1; }
 
-# 3. Its build: what `./aula run $name` builds, nothing else. ccache when the machine has it.
+# 3. Its build (the page's step 3): everything. ccache when the machine has it.
 launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
 cmake -S "$clone" -B "$clone/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DAULA_WERROR=ON "${launcher[@]}" \
   >"$work/configure.log" 2>&1 || { tail -30 "$work/configure.log"; echo "FAIL: the clone does not configure"; exit 1; }
-cmake --build "$clone/build" --target "aula_run_$name" -j"$(nproc)" >"$work/build.log" 2>&1 ||
+cmake --build "$clone/build" -j"$(nproc)" >"$work/build.log" 2>&1 ||
   { grep -E 'error|FAILED' "$work/build.log" | head -30; echo "FAIL: the clone does not build"; exit 1; }
-echo "the clone builds aula_run_$name"
+echo "the clone builds whole"
+
+# Its own unit tests (components/$name/tests/, added from tests/unit), and the docs check.
+[ -f "$clone/components/$name/tests/CMakeLists.txt" ] || { echo "FAIL: the copy has no tests of its own"; exit 1; }
+ctest --test-dir "$clone/build/tests/unit/$name" -j"$(nproc)" --output-on-failure >"$work/ctest.log" 2>&1 ||
+  { grep -E 'tests passed|Failed|\*\*\*' "$work/ctest.log" | tail -30; echo "FAIL: the copy's unit tests fail"; exit 1; }
+grep -q "tests passed, 0 tests failed out of [1-9]" "$work/ctest.log" ||
+  { tail -5 "$work/ctest.log"; echo "FAIL: the copy ran no unit test"; exit 1; }
+echo "the copy's unit tests pass: $(grep 'tests passed' "$work/ctest.log")"
+(cd "$clone" && python3 scripts/update-doc-lists.py --check build) >"$work/docs.log" 2>&1 ||
+  { cat "$work/docs.log"; echo "FAIL: the docs check fails in the clone"; exit 1; }
+echo "scripts/update-doc-lists.py --check passes in the clone"
+# CI's lists (scripts/sanitize-check.sh, scripts/ci-debian13.sh read them) run the copy.
+grep -q "^$name $name " "$clone/build/exercises/runs.txt" ||
+  { cat "$clone/build/exercises/runs.txt"; echo "FAIL: CI's runs leave $name out"; exit 1; }
+echo "CI's runs include $name"
 
 # 4. Listed by the front door.
 "$clone/build/bin/aula" --help >"$work/help.txt"

@@ -2,7 +2,7 @@
 // curbs and walls at the lasers' height, the car's three lasers ray-cast, the car moving on its
 // own kinematics (turning in place, or car-like about its rear axle with |w| <= |v| / R) and
 // stopped by any overlap (tests/unit/support/plain_robot.hpp). No LCM, no DART, no process.
-#include "../support/plain_robot.hpp"
+#include "support/plain_robot.hpp"
 #include <aula/autopark/references.hpp>
 
 #include <aula/autopark/autopark_algorithm.hpp>

@@ -1,7 +1,7 @@
 // TeleTaxi's reference (Gradient Path Planning and its pilot) on plain data: the city's map as
 // the component draws it, the taxi moving on planar kinematics against the buildings
 // (tests/unit/support/plain_robot.hpp), no LCM, no DART, no process.
-#include "../support/plain_robot.hpp"
+#include "support/plain_robot.hpp"
 #include <aula/teletaxi/references.hpp>
 
 #include <aula/teletaxi/grid.hpp>

@@ -1,7 +1,7 @@
 // The mapping reference's coverage planner on a map drawn from synthetic scans of a square room
 // (4 m a side, centred on the start): where it may drive, bumps it keeps away from for a while,
 // and which floor is still worth a trip.
-#include "../support/synthetic_scan.hpp"
+#include "support/synthetic_scan.hpp"
 
 #include <aula/geometry/raycaster2d.hpp>
 #include <coverage_planner.hpp>

@@ -1,7 +1,7 @@
 // The mapping reference over whole runs on plain data (tests/unit/support/plain_robot.hpp): its
 // estimated pose against the truth, and the floor it covers by the referee's own measure
 // (CoverageGrid on the house's map).
-#include "../support/plain_robot.hpp"
+#include "support/plain_robot.hpp"
 
 #include <mapping_reference.hpp>
 

@@ -1,7 +1,7 @@
 // The vacuum's reference and baseline algorithms on plain data (no LCM, no DART, no process):
 // the shipped house's walls and furniture at the laser's height, the roomba's laser ray-cast and
 // its bumper pressed when its disc meets an obstacle (tests/unit/support/plain_robot.hpp).
-#include "../support/plain_robot.hpp"
+#include "support/plain_robot.hpp"
 #include <aula/vacuum/references.hpp>
 
 #include <aula/vacuum/vacuum_algorithm.hpp>

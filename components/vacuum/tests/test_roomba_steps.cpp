@@ -1,6 +1,6 @@
 // The classic vacuum reference's steps on plain numbers (roomba_steps.hpp): its laser sectors,
 // its spiral, its wall following and its turns on the spot.
-#include "../support/synthetic_scan.hpp"
+#include "support/synthetic_scan.hpp"
 
 #include <roomba_steps.hpp>
 

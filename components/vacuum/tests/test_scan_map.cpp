@@ -1,8 +1,8 @@
 // The mapping reference's localization on ray-cast scans of two shipped houses
 // (tests/unit/support/plain_robot.hpp): a map drawn from a spin at one spot, then a scan from a
 // known translation away (up to 0.3 m), matched from a prediction at the first spot.
-#include "../support/plain_robot.hpp"
-#include "../support/synthetic_scan.hpp"
+#include "support/plain_robot.hpp"
+#include "support/synthetic_scan.hpp"
 
 #include <scan_map.hpp>
 
