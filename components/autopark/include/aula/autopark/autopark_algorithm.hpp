@@ -11,9 +11,9 @@
 
 namespace aula::autopark {
 
-// Where a laser sits on the car: body frame (x forward, y left), metres and radians.
+/// Where a laser sits on the car: body frame (x forward, y left), metres and radians.
 struct LaserMount {
-  double x_m = 0, y_m = 0, yaw_rad = 0;
+  double x_m = 0, y_m = 0, yaw_rad = 0;  ///< metres, metres, radians (0: facing forward, CCW)
 };
 
 // Calls echo(x_m, y_m) with the world position of every beam of `scan` that hit something
@@ -33,33 +33,33 @@ void forEachEcho(double car_x_m, double car_y_m, double car_yaw_rad, const Laser
 }
 
 struct AutoparkApi {
-  component::Pose3d& pose3d;  // getX(), getY(), getYaw(): the car's centre, metres, radians
-  component::Laser& laser1;   // front: 180 beams over -90..90 degrees, metres and mm
-  component::Laser& laser2;   // rear
-  component::Laser& laser3;   // right
-  component::Motors& motors;  // sendV(), sendW(), clamped to MaxV / MaxW
-  double period_s;                 // sim seconds between execute() calls
-  LaserMount mount1, mount2, mount3;  // the lasers' mounting poses (from the world)
-  double car_length_m = 4.0, car_width_m = 2.0;
-  // Turning radius the car needs: 0 for a car that turns in place ("diff"), else |w| <= |v| / R.
+  component::Pose3d& pose3d;  ///< getX(), getY(), getYaw(): the car's centre in the world frame, metres, radians
+  component::Laser& laser1;   ///< front: 180 beams over -90..90 degrees of its mount, metres and mm
+  component::Laser& laser2;   ///< rear: the same, mounted backwards
+  component::Laser& laser3;   ///< right: the same, mounted facing right
+  component::Motors& motors;  ///< sendV() m/s, sendW() rad/s, clamped to Autopark.MaxV / Autopark.MaxW
+  double period_s;            ///< sim seconds between execute() calls (> 0)
+  LaserMount mount1, mount2, mount3;  ///< the lasers' mounting poses, body frame (from the world)
+  double car_length_m = 4.0, car_width_m = 2.0;  ///< the car's footprint, metres
+  /// Turning radius the car needs, m: 0 for a car that turns in place ("diff"), else |w| <= |v| / R.
   double min_turn_radius_m = 0.0;
-  // Body-frame x of the point the car turns about: 0 (its centre) for a car that turns in place,
-  // its rear axle (about -1.3 m) for a car-like one. That point moves on circles of radius v / w.
+  /// Body-frame x of the point the car turns about, m: 0 (its centre) for a car that turns in place,
+  /// its rear axle (about -1.3 m) for a car-like one. That point moves on circles of radius v / w.
   double turn_centre_x_m = 0.0;
-  double wheelbase_m = 2.6;  // for drawing the wheels
-  // What the algorithm says about where it stands ("slot too short for a reactive park: 5.0 m,
-  // need 5.9 m"): the window shows it under the car's numbers.
+  double wheelbase_m = 2.6;  ///< metres, for drawing the wheels
+  /// What the algorithm says about where it stands ("slot too short for a reactive park: 5.0 m,
+  /// need 5.9 m"): the window shows it under the car's numbers.
   std::string status{};
-  component::SimClock clock{};  // the sim time of this period (the component sets it)
+  component::SimClock clock{};  ///< the sim time of this period (the component sets it)
 
-  // Sim time of this control period, seconds since the simulation started.
+  /// Sim time of this control period, seconds since the simulation started.
   double time_s() const { return clock.time_s(); }
 };
 
 class AutoparkAlgorithm {
  public:
   virtual ~AutoparkAlgorithm() = default;
-  virtual void execute(AutoparkApi& api) = 0;
+  /** Every control period of sim time (api.period_s): read the pose and lasers, send the motors. */ virtual void execute(AutoparkApi& api) = 0;
 };
 
 std::unique_ptr<AutoparkAlgorithm> makeStudentAlgorithm(uint64_t seed);

@@ -13,18 +13,18 @@
 #include <vector>
 
 namespace aula::component {
-
+/// The robot's pose in the world frame (x east, y north, z up; the world's origin), on the ground plane.
 class Pose3d {
  public:
-  double getX() const { return x_m_; }      // metres
-  double getY() const { return y_m_; }      // metres
-  double getYaw() const { return yaw_rad_; }  // radians, counter-clockwise from +x
-  // TeleTaxi's original names.
+  /** the robot's centre, world frame, metres */ double getX() const { return x_m_; }
+  /** the robot's centre, world frame, metres */ double getY() const { return y_m_; }
+  /** heading, radians, counter-clockwise from +x, in (-pi, pi] */ double getYaw() const { return yaw_rad_; }
+  /// TeleTaxi's original names of getX(), getY(), getYaw().
   double getRobotX() const { return getX(); }
   double getRobotY() const { return getY(); }
   double getRobotTheta() const { return getYaw(); }
-  bool received() const { return received_; }
-  int64_t utime() const { return utime_; }  // sim time of the reading, microseconds
+  /** false until the first reading came */ bool received() const { return received_; }
+  /** sim time of the reading, microseconds */ int64_t utime() const { return utime_; }
 
   void set(double x_m, double y_m, double yaw_rad, int64_t utime) {
     x_m_ = x_m;
@@ -40,14 +40,14 @@ class Pose3d {
   bool received_ = false;
 };
 
-// The simulator's clock as the algorithm sees it: the sim time of the control period now running
-// (the component sets it before every call). Sim time is what the referee grades on; a headless
-// run goes many times faster than the wall clock, so time an algorithm's manoeuvres with this.
+/// The simulator's clock as the algorithm sees it: the sim time of the control period now running
+/// (the component sets it before every call). Sim time is what the referee grades on; a headless
+/// run goes many times faster than the wall clock, so time an algorithm's manoeuvres with this.
 class SimClock {
  public:
-  // Seconds since the simulation started.
+  /// Seconds since the simulation started (>= 0).
   double time_s() const { return static_cast<double>(utime_) / 1e6; }
-  // The same, microseconds (the sensors' timeStamp is on this clock).
+  /// The same, microseconds (the sensors' timeStamp is on this clock).
   int64_t utime() const { return utime_; }
   void set(int64_t utime) { utime_ = utime; }
 
@@ -55,22 +55,22 @@ class SimClock {
   int64_t utime_ = 0;
 };
 
-// Like JdeRobot's LaserData: ranges in metres, plus the original's millimetre view.
+/// One scan, like JdeRobot's LaserData: ranges in metres, plus the original's millimetre view.
 struct LaserData {
-  std::vector<float> values_m;        // metres, beam i at minAngle + i * angleIncrement
-  std::vector<int> distanceData;      // the same ranges in millimetres (the original's ints)
-  int numLaser = 0;
-  double minAngle = 0, maxAngle = 0, angleIncrement = 0;  // radians
-  double minRange = 0, maxRange = 0;                      // metres
-  int64_t timeStamp = 0;                                  // sim time, microseconds
-
+  std::vector<float> values_m;    ///< range of beam i, metres, in [minRange, maxRange] (maxRange: no echo)
+  std::vector<int> distanceData;  ///< the same ranges in millimetres (the original's ints)
+  int numLaser = 0;               ///< beams in the scan (0 before the first)
+  double minAngle = 0, maxAngle = 0, angleIncrement = 0;  ///< radians, in the laser's frame (0 ahead, CCW)
+  double minRange = 0, maxRange = 0;                      ///< metres
+  int64_t timeStamp = 0;                                  ///< sim time of the scan, microseconds
+  /// Beam i's angle, radians in the laser's frame (0 ahead, counter-clockwise): minAngle + i * angleIncrement.
   double angle(int i) const { return minAngle + i * angleIncrement; }
 };
-
+/// A laser range finder: its latest scan.
 class Laser {
  public:
-  const LaserData& getLaserData() const { return data_; }
-  bool received() const { return data_.numLaser > 0; }
+  /** the latest scan (the control period's) */ const LaserData& getLaserData() const { return data_; }
+  /** false until the first scan came */ bool received() const { return data_.numLaser > 0; }
 
   // A scan in metres; the millimetre view is derived here, once. The values go into the buffers
   // this laser already has (while the beam count stays): a view of them that the algorithm
@@ -91,41 +91,41 @@ class Laser {
  private:
   LaserData data_;
 };
-
+/// The bumper's state.
 struct BumperData {
-  int bumper = 1;  // 0 left, 1 centre, 2 right
-  int state = 0;   // 1 pressed
-  int64_t timeStamp = 0;
+  int bumper = 1;         ///< which side touched: 0 left, 1 centre, 2 right
+  int state = 0;          ///< 1 while pressed, else 0
+  int64_t timeStamp = 0;  ///< sim time of the reading, microseconds
 };
-
+/// The robot's front bumper.
 class Bumper {
  public:
-  const BumperData& getBumperData() const { return data_; }
+  /** its state this control period */ const BumperData& getBumperData() const { return data_; }
   void set(const BumperData& data) { data_ = data; }
 
  private:
   BumperData data_;
 };
 
-// Motor commands, clamped to the exercise's limits. A non-finite command (NaN, inf) stops that
-// axis (the safe choice) and is counted, so the window and the log can say so.
+/// Motor commands in the robot's frame (x forward, y left), held until the next; clamped to the
+/// exercise's limits. A non-finite command (NaN, inf) stops that axis and is counted.
 class Motors {
  public:
   Motors(double max_v_mps, double max_w_radps) : max_v_(max_v_mps), max_w_(max_w_radps) {}
-
+  /// Forward speed, m/s, clamped to [-maxV(), maxV()] (negative: backwards).
   void sendV(double v_mps) { v_ = accept(v_mps, max_v_, non_finite_v_); }
-  void sendW(double w_radps) { w_ = accept(w_radps, max_w_, non_finite_w_); }
-  void sendL(double l_mps) { l_ = accept(l_mps, max_v_, non_finite_l_); }
-  // TeleTaxi's original names.
+  /** turn rate, rad/s, CCW, in [-maxW(), maxW()] */ void sendW(double w_radps) { w_ = accept(w_radps, max_w_, non_finite_w_); }
+  /** sideways speed, m/s (left), where the robot has it */ void sendL(double l_mps) { l_ = accept(l_mps, max_v_, non_finite_l_); }
+  /// TeleTaxi's original names of sendV(), sendW().
   void setV(double v_mps) { sendV(v_mps); }
   void setW(double w_radps) { sendW(w_radps); }
-  void stop() { v_ = w_ = l_ = 0.0; }
-
+  /** every axis to 0 */ void stop() { v_ = w_ = l_ = 0.0; }
+  /// The commands now in force: m/s, rad/s, m/s.
   double getV() const { return v_; }
   double getW() const { return w_; }
   double getL() const { return l_; }
-  double maxV() const { return max_v_; }
-  double maxW() const { return max_w_; }
+  /** the exercise's limit (SECTION.MaxV), m/s */ double maxV() const { return max_v_; }
+  /** the exercise's limit (SECTION.MaxW), rad/s */ double maxW() const { return max_w_; }
 
   // How many commands were not finite, per axis, since the start.
   int64_t nonFiniteV() const { return non_finite_v_; }
@@ -147,23 +147,23 @@ class Motors {
   int64_t non_finite_v_ = 0, non_finite_w_ = 0, non_finite_l_ = 0;
 };
 
-// An occupancy grid an algorithm built: `width` x `height` cells of `resolution_m`, row-major
-// from the cell whose corner is (origin_x_m, origin_y_m); each cell 0 (free) to 255 (occupied),
-// 128 for unknown.
+/// An occupancy grid an algorithm built: `width` x `height` cells of `resolution_m`, row-major
+/// from the cell whose corner is (origin_x_m, origin_y_m); each cell 0 (free) to 255 (occupied),
+/// 128 for unknown.
 struct BeliefMap {
-  int width = 0, height = 0;
-  double resolution_m = 0, origin_x_m = 0, origin_y_m = 0;
-  std::vector<uint8_t> cells;
+  int width = 0, height = 0;                                ///< cells, > 0
+  double resolution_m = 0, origin_x_m = 0, origin_y_m = 0;  ///< metres, in the algorithm's own frame
+  std::vector<uint8_t> cells;                               ///< width * height, row y = 0 first
 };
 
-// What the algorithm believes, when it says: where it is (its own estimate, in its own frame: a
-// robot that is not told its position starts where it likes, usually at 0, 0) and the map it
-// built. Never graded and never fed back to the algorithm: the window draws it beside the truth
-// and the run's log keeps it (the component publishes it), so a student sees what their
-// localization gives. Bad values are the caller's error, said as such.
+/// What the algorithm believes, when it says: where it is (its own estimate, in its own frame: a
+/// robot that is not told its position starts where it likes, usually at 0, 0) and the map it
+/// built. Never graded and never fed back to the algorithm: the window draws it beside the truth
+/// and the run's log keeps it (the component publishes it), so a student sees what their
+/// localization gives. Bad values throw std::invalid_argument.
 class Belief {
  public:
-  void setPose(double x_m, double y_m, double yaw_rad) {
+  /** metres, metres, radians (CCW), finite */ void setPose(double x_m, double y_m, double yaw_rad) {
     if (!std::isfinite(x_m) || !std::isfinite(y_m) || !std::isfinite(yaw_rad)) {
       throw std::invalid_argument("Belief::setPose: x, y and yaw must be finite numbers");
     }
@@ -172,7 +172,7 @@ class Belief {
     yaw_rad_ = yaw_rad;
     has_pose_ = true;
   }
-  void setMap(BeliefMap map) {
+  /** the map it built (see BeliefMap) */ void setMap(BeliefMap map) {
     if (map.width <= 0 || map.height <= 0 || map.cells.size() != static_cast<size_t>(map.width) * map.height) {
       throw std::invalid_argument("Belief::setMap: " + std::to_string(map.cells.size()) + " cells for a " +
                                   std::to_string(map.width) + " x " + std::to_string(map.height) + " map");

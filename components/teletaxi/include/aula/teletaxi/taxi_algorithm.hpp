@@ -12,15 +12,15 @@
 namespace aula::teletaxi {
 
 struct TaxiApi {
-  component::Pose3d& pose3d;  // getX/getY/getYaw, or getRobotX/getRobotY/getRobotTheta
-  component::Motors& motors;  // sendV/sendW, or setV/setW (clamped to MaxV/MaxW)
-  Grid& grid;
-  // The original names.
-  component::Pose3d& sensor;
-  component::Motors& vel;
-  component::SimClock clock{};  // the sim time of this call (the component sets it)
+  component::Pose3d& pose3d;  ///< getX/getY m, getYaw rad: the taxi in the world frame (or getRobotX/getRobotY/getRobotTheta)
+  component::Motors& motors;  ///< sendV m/s, sendW rad/s, or setV/setW (clamped to TeleTaxi.MaxV / TeleTaxi.MaxW)
+  Grid& grid;                 ///< the city's map, its destination and the path (grid.hpp)
+  // The original names of pose3d and motors.
+  component::Pose3d& sensor;  ///< the same as pose3d (the original's name)
+  component::Motors& vel;     ///< the same as motors (the original's name)
+  component::SimClock clock{};  ///< the sim time of this call (the component sets it)
 
-  // Sim time of this call, seconds since the simulation started.
+  /// Sim time of this call, seconds since the simulation started.
   double time_s() const { return clock.time_s(); }
 
   TaxiApi(component::Pose3d& p, component::Motors& m, Grid& g)
@@ -30,11 +30,11 @@ struct TaxiApi {
 class TaxiAlgorithm {
  public:
   virtual ~TaxiAlgorithm() = default;
-  virtual void generatePath(TaxiApi& api) = 0;
-  virtual void execute(TaxiApi& api) = 0;
+  /** Once, on "Generate Path": fill the grid's path to the destination. */ virtual void generatePath(TaxiApi& api) = 0;
+  /** Every control period of sim time after "GO!": drive along the path. */ virtual void execute(TaxiApi& api) = 0;
 };
 
-// The student's algorithm (student/MyAlgorithm.cpp; the reference is not part of the API).
+/// The student's algorithm (student/MyAlgorithm.cpp; the reference is not part of the API).
 std::unique_ptr<TaxiAlgorithm> makeStudentAlgorithm();
 
 }  // namespace aula::teletaxi
