@@ -80,6 +80,12 @@ std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings&
     sim.push_back("--lockstep");
     sim.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
   }
+  // With windows, in lockstep, the world is held at 0 s until the first Run (or teleoperation):
+  // the episode starts where a headless run of the seed starts, and is that run (the component
+  // resumes the simulator: ExerciseComponent::releaseTheStart).
+  if (!headless && args.flag("lockstep") && clients > 1 && !run.overrides.has("Simulator.StartPaused")) {
+    sim.push_back("--Simulator.StartPaused=true");
+  }
   // Headless runs go as fast as possible unless --rtf says otherwise; --rtf counts in every mode.
   if (args.given("rtf")) sim.push_back("--rtf=" + args.text("rtf"));
   else if (headless) sim.push_back("--rtf=0");
@@ -298,7 +304,8 @@ cli::Command declare() {
       .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
       .flag("3d", false, "also show the world in 3D (the simulator's OpenSceneGraph window)")
       .flag("stale", false, "run a plugin even when its sources changed after it was built")
-      .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
+      .flag("lockstep", true, "with windows: the world waits for the component and the referee at every tick and is held at 0 s "
+                              "until Run, so the windowed run is the headless (graded) run of its seed; --lockstep=off: it does not wait")
       .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,
                              "real-time factor (0: as fast as possible; default 1 with windows, 0 headless)"))
       .add(cli::numberOption("duration", config::SettingType::Double, "s", 0, 1e6,
