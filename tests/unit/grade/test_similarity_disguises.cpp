@@ -246,12 +246,13 @@ std::string renamed(const std::string& source, bool python) {
 }
 
 // After every line that ends a statement, a statement that changes nothing (one of several
-// kinds, in turn): dead stores to names nothing reads, lone values, casts to void, self-assignments.
+// kinds, in turn): dead stores to names nothing reads (one under an if, which reads no name), lone
+// values, casts to void, self-assignments.
 std::string paddedWithNoOps(const std::string& source, bool python) {
   const std::vector<std::string> cpp = {"scratch = 5;", "0;", "(void)0;", "scratch = scratch;", "spare += 3;", "spare++;",
-                                        "scratch = spare * 2;", "(void)(scratch + 1);"};
+                                        "scratch = spare * 2;", "(void)(scratch + 1);", "if (true) scratch = 1;"};
   const std::vector<std::string> py = {"scratch = 5", "pass", "0", "scratch = scratch", "spare = 3", "spare += 1",
-                                       "scratch = spare * 2", "(scratch, 1)"};
+                                       "scratch = spare * 2", "(scratch, 1)", "if True: scratch = 1"};
   std::vector<std::string> out;
   size_t n = 0;
   for (const std::string& line : linesOf(source)) {

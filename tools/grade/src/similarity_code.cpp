@@ -265,6 +265,31 @@ bool pureExpression(const std::vector<Token>& t, size_t k, size_t end, bool pyth
   return true;
 }
 
+// Whether the name at `i`, inside `s`, is stored there and not read (`if (c) junk = 0;`, `f(x = 1)`):
+// a plain name or a `this->`/`self.` member followed by an assignment.
+bool storedAt(const std::vector<Token>& t, size_t i, const Statement& s, bool python) {
+  if (i > s.begin && t[i - 1].text == ".") {
+    if (!(python && i >= s.begin + 2 && t[i - 2].text == "self")) return false;
+  } else if (i > s.begin + 1 && t[i - 1].text == ">" && t[i - 2].text == "-") {
+    if (!(i >= s.begin + 3 && t[i - 3].text == "this")) return false;
+  }
+  return pastStore(t, i, s.end, python, false) != 0;
+}
+
+// A store under an `if` of its own, with no block (`if (c) junk = 1;`, Python `if c: junk = 1`):
+// the names it stores, so that it is as dead as they are; none for any other statement.
+std::vector<std::string> guardedStore(const std::vector<Token>& t, size_t begin, size_t end, bool python) {
+  if (t[begin].text != "if") return {};
+  int depth = 0;
+  for (size_t i = begin + 1; i < end; ++i) {
+    const std::string& x = t[i].text;
+    depth += isOpenBracket(x) ? 1 : isCloseBracket(x) ? -1 : 0;
+    const bool condition_ends = python ? (depth == 0 && x == ":") : (depth == 0 && x == ")");
+    if (condition_ends) return i + 1 < end ? storedNames(t, i + 1, end, python) : std::vector<std::string>{};
+  }
+  return {};
+}
+
 // C++: statements end at `;` (outside brackets) or before `{`/`}`; Python: at a line's end
 // outside brackets.
 std::vector<Statement> statementsOf(const std::vector<Token>& t, bool python) {
@@ -274,6 +299,7 @@ std::vector<Statement> statementsOf(const std::vector<Token>& t, bool python) {
   auto close = [&](size_t end) {
     if (end > begin) {
       Statement s{begin, end, storedNames(t, begin, end, python), false};
+      if (s.targets.empty()) s.targets = guardedStore(t, begin, end, python);
       const bool ends = python || t[end - 1].text == ";";
       s.pure = s.targets.empty() && ends && pureExpression(t, begin, end, python);
       if (!ends) s.targets.clear();  // a for's head `for (int i = 0`, `x = {`: never dropped
@@ -316,9 +342,10 @@ std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& file
     if (taken[index]) return;
     taken[index] = true;
     const auto& [file, s] = statements[index];
+    const std::unordered_set<std::string> own(s.targets.begin(), s.targets.end());
     for (size_t i = s.begin; i < s.end; ++i) {
       const Token& token = files[file][i];
-      if (token.text != "I" || std::find(s.targets.begin(), s.targets.end(), token.raw) != s.targets.end()) continue;
+      if (token.text != "I" || own.count(token.raw) != 0 || storedAt(files[file], i, s, python[file])) continue;
       if (read.insert(token.raw).second) pending.push_back(token.raw);
     }
   };

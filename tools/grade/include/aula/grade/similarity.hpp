@@ -37,11 +37,12 @@ std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python);
 // Dead code, seen across all of a submission's files (`files`: each file's tokens, `python` each
 // file's language): the names whose value nothing reads. A name is read when it appears in a
 // statement that stores no name (a call, a condition, a return, a loop's head...) or in one that
-// stores a name that is read; `x = 5; x = x + 1; y = x;` with y never read leaves x and y unread.
+// stores a name that is read, other than as an assignment's target; `x = 5; x = x + 1; y = x;`
+// with y never read leaves x and y unread, and `if (c) y = 1;` stores y as `y = 1;` does.
 // Only plain names and `this->`/`self.` members are stores: `api.motors.v = 1` is a read of all.
 std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python);
 // The tokens less the dead statements: a store to a name in `unread` (`junk = 5;`, `junk += i;`,
-// `junk++;`, `int junk;`), and an expression statement that calls nothing and stores nothing
+// `junk++;`, `int junk;`, `if (c) junk = 1;`), and an expression statement that calls nothing and stores nothing
 // (`a + b;`, `(void)(x * 2);`, Python `x + 1`, `(a, b)`).
 std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread);
 
