@@ -247,12 +247,12 @@ std::string renamed(const std::string& source, bool python) {
 
 // After every line that ends a statement, a statement that changes nothing (one of several
 // kinds, in turn): dead stores to names nothing reads (one under an if, which reads no name), lone
-// values, casts to void, self-assignments.
+// values, casts to void, self-assignments, a call of a function that does nothing.
 std::string paddedWithNoOps(const std::string& source, bool python) {
   const std::vector<std::string> cpp = {"scratch = 5;", "0;", "(void)0;", "scratch = scratch;", "spare += 3;", "spare++;",
-                                        "scratch = spare * 2;", "(void)(scratch + 1);", "if (true) scratch = 1;"};
+                                        "scratch = spare * 2;", "(void)(scratch + 1);", "if (true) scratch = 1;", "nop();"};
   const std::vector<std::string> py = {"scratch = 5", "pass", "0", "scratch = scratch", "spare = 3", "spare += 1",
-                                       "scratch = spare * 2", "(scratch, 1)", "if True: scratch = 1"};
+                                       "scratch = spare * 2", "(scratch, 1)", "if True: scratch = 1", "nop()"};
   std::vector<std::string> out;
   size_t n = 0;
   for (const std::string& line : linesOf(source)) {
@@ -266,7 +266,8 @@ std::string paddedWithNoOps(const std::string& source, bool python) {
       out.push_back(indent + py[n++ % py.size()]);
     }
   }
-  if (!python) out.insert(out.begin() + 6, "static double scratch = 0, spare = 0;");
+  if (!python) out.insert(out.begin() + 6, "static double scratch = 0, spare = 0;\nstatic void nop() { int k = 0; }");
+  if (python) out.insert(std::find(out.begin(), out.end(), "class MyAlgorithm:"), "def nop():\n    k = 0\n\n");
   return joined(out);
 }
 

@@ -374,14 +374,70 @@ std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& file
   return unread;
 }
 
-std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread) {
+namespace {
+
+// For each bracket, the index of the one that closes it (SIZE_MAX: none): one pass, whatever the nesting.
+std::vector<size_t> closingBrackets(const std::vector<Token>& t) {
+  std::vector<size_t> closing(t.size(), SIZE_MAX), open;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (isOpenBracket(t[i].text)) open.push_back(i);
+    if (isCloseBracket(t[i].text) && !open.empty()) {
+      closing[open.back()] = i;
+      open.pop_back();
+    }
+  }
+  return closing;
+}
+
+// Whether `[begin, end)` is a call of one of `names` and nothing else: `[this->|self.] NAME(...)` (C++: and `;`).
+bool callOf(const std::vector<Token>& t, size_t begin, size_t end, bool python, const std::vector<size_t>& closing,
+            const std::unordered_set<std::string>& names) {
+  size_t i = begin;
+  if (!python && i + 2 < end && t[i].text == "this" && t[i + 1].text == "-" && t[i + 2].text == ">") i += 3;
+  if (python && i + 1 < end && t[i].text == "self" && t[i + 1].text == ".") i += 2;
+  if (i + 1 >= end || t[i].text != "I" || t[i + 1].text != "(" || names.count(t[i].raw) == 0) return false;
+  return closing[i + 1] + (python ? 1 : 2) == end && (python || t[end - 1].text == ";");
+}
+
+}  // namespace
+
+std::vector<std::string> emptyFunctions(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python) {
+  static const std::set<std::string> returns = {"void", "int", "double", "float", "bool", "auto", "char", "long", "unsigned", "I", ">", "*", "&"};
+  std::set<std::string> names;
+  for (size_t f = 0; f < files.size(); ++f) {
+    const std::vector<Token>& t = files[f];
+    const std::vector<size_t> closing = closingBrackets(t);
+    for (size_t i = 1; i + 1 < t.size(); ++i) {
+      if (t[i].text != "I" || t[i + 1].text != "(" || closing[i + 1] == SIZE_MAX) continue;
+      size_t k = closing[i + 1] + 1;
+      if (python[f]) {  // def NAME(...) [-> T]: [a docstring] [pass], then the next definition or the end
+        if (t[i - 1].text != "def") continue;
+        while (k < t.size() && t[k].text != ":" && t[k].line == t[i].line) ++k;
+        size_t next = k + 1;
+        while (next < t.size() && (t[next].text == "S" || t[next].text == "pass")) ++next;
+        if (next == t.size() || t[next].text == "def" || t[next].text == "class" || t[next].text == "@") names.insert(t[i].raw);
+        continue;
+      }
+      // C++: TYPE NAME(...) [const] [override] [noexcept] {}
+      if (returns.count(t[i - 1].text) == 0) continue;
+      while (k < t.size() && (t[k].text == "const" || t[k].text == "override" || (t[k].text == "I" && t[k].raw == "noexcept"))) ++k;
+      if (k + 1 < t.size() && t[k].text == "{" && t[k + 1].text == "}") names.insert(t[i].raw);
+    }
+  }
+  return std::vector<std::string>(names.begin(), names.end());
+}
+
+std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread,
+                                         const std::vector<std::string>& empty_functions) {
   const std::unordered_set<std::string> dead(unread.begin(), unread.end());
+  const std::unordered_set<std::string> empty(empty_functions.begin(), empty_functions.end());
+  const std::vector<size_t> closing = closingBrackets(tokens);
   std::vector<Token> out;
   for (const Statement& s : statementsOf(tokens, python)) {
     const bool dead_store = !s.targets.empty() && std::all_of(s.targets.begin(), s.targets.end(), [&](const std::string& name) {
       return dead.count(name) != 0;
     });
-    if (s.pure || dead_store) continue;
+    if (s.pure || dead_store || (!empty.empty() && callOf(tokens, s.begin, s.end, python, closing, empty))) continue;
     out.insert(out.end(), tokens.begin() + static_cast<long>(s.begin), tokens.begin() + static_cast<long>(s.end));
   }
   return out;
@@ -395,9 +451,18 @@ std::vector<Fingerprint> codeFingerprints(const std::vector<SourceText>& files, 
     python.push_back(file.python);
   }
   const std::vector<std::string> unread = unreadNames(tokens, python);
+  // The functions left empty once their dead statements are dropped (`void nop() { int k = 0; }`
+  // is as empty as `{}`): their calls are dropped with the dead statements, in one pass.
+  std::vector<std::vector<Token>> cleaned;
+  std::vector<std::vector<Token>> live_statements;
+  for (size_t f = 0; f < files.size(); ++f) {
+    live_statements.push_back(withoutDeadStatements(tokens[f], python[f], unread));
+    cleaned.push_back(withoutNoOps(live_statements.back(), python[f]));
+  }
+  const std::vector<std::string> empty = emptyFunctions(live_statements, python);
   std::vector<Fingerprint> prints;
   for (size_t f = 0; f < files.size(); ++f) {
-    const std::vector<Token> live = withoutNoOps(withoutDeadStatements(tokens[f], python[f], unread), python[f]);
+    const std::vector<Token> live = empty.empty() ? cleaned[f] : withoutNoOps(withoutDeadStatements(tokens[f], python[f], unread, empty), python[f]);
     for (Fingerprint print : fingerprints(form == CodeForm::Common ? commonForm(live, python[f]) : live)) {
       print.file = static_cast<int>(f);
       prints.push_back(print);

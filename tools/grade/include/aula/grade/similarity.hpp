@@ -41,10 +41,15 @@ std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python);
 // with y never read leaves x and y unread, and `if (c) y = 1;` stores y as `y = 1;` does.
 // Only plain names and `this->`/`self.` members are stores: `api.motors.v = 1` is a read of all.
 std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python);
+// The functions whose body is empty, across all of a submission's files (`files` less their dead
+// statements): C++ `void nop() {}`, Python `def nop(): pass` (or a docstring alone, or nothing
+// left) followed by another definition or the end.
+std::vector<std::string> emptyFunctions(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python);
 // The tokens less the dead statements: a store to a name in `unread` (`junk = 5;`, `junk += i;`,
-// `junk++;`, `int junk;`, `if (c) junk = 1;`), and an expression statement that calls nothing and stores nothing
-// (`a + b;`, `(void)(x * 2);`, Python `x + 1`, `(a, b)`).
-std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread);
+// `junk++;`, `int junk;`, `if (c) junk = 1;`), an expression statement that calls nothing and stores nothing
+// (`a + b;`, `(void)(x * 2);`, Python `x + 1`, `(a, b)`), and a call alone of one of `empty_functions` (`nop();`).
+std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread,
+                                         const std::vector<std::string>& empty_functions = {});
 
 struct Fingerprint {
   uint64_t hash = 0;
@@ -65,7 +70,7 @@ std::vector<Token> commonForm(const std::vector<Token>& tokens, bool python);
 // pair across the two).
 enum class CodeForm { AsWritten, Common };
 // A source's fingerprints as similarity compares them: tokenize, withoutDeadStatements,
-// withoutNoOps, (commonForm,) fingerprints.
+// withoutNoOps, then the calls of emptyFunctions dropped, (commonForm,) fingerprints.
 std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python, CodeForm form = CodeForm::AsWritten);
 struct SourceText {
   std::string text;
