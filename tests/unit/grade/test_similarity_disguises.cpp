@@ -266,7 +266,9 @@ std::string paddedWithNoOps(const std::string& source, bool python) {
       out.push_back(indent + py[n++ % py.size()]);
     }
   }
-  if (!python) out.insert(out.begin() + 6, "static double scratch = 0, spare = 0;\nstatic void nop() { int k = 0; }");
+  if (!python) out.insert(out.begin() + 6, "static double spare = 0;\nstatic void nop() { int k = 0; }");
+  // scratch a member of the class, first after `private:`: a declaration, not a read.
+  if (!python) out.insert(std::find(out.begin(), out.end(), " private:") + 1, "  double scratch = 0;");
   if (python) out.insert(std::find(out.begin(), out.end(), "class MyAlgorithm:"), "def nop():\n    k = 0\n\n");
   return joined(out);
 }

@@ -199,12 +199,36 @@ size_t pastStore(const std::vector<Token>& t, size_t i, size_t end, bool python,
   return 0;
 }
 
+// Where a statement's own tokens start, past what only labels it: C++ `public:` (and the other
+// access specifiers), `default:`, `else`; Python `else:`. `private: double junk = 0;` stores junk.
+// C++ access specifiers and `default:` alone: what a dropped statement leaves of itself (the
+// class's layout is the original's).
+size_t pastAccessLabels(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
+  while (!python && (is(k, "public") || is(k, "private") || is(k, "protected") || is(k, "default")) && is(k + 1, ":")) k += 2;
+  return k;
+}
+
+size_t pastLabels(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
+  for (;;) {
+    const size_t labels = pastAccessLabels(t, k, end, python);
+    if (labels != k) {
+      k = labels;
+    } else if (is(k, "else")) {
+      k += python && is(k + 1, ":") ? 2 : 1;
+    } else {
+      return k;
+    }
+  }
+}
+
 // The names `[k, end)` stores: `[type...] [this->|self.] NAME (= | op= | ++ | --) ...`, `++NAME;`,
 // a C++ declaration of one or more names (`double a = 0, b;`), a Python tuple (`a, self.b = ...`).
 std::vector<std::string> storedNames(const std::vector<Token>& t, size_t k, size_t end, bool python) {
   auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
   static const std::set<std::string> types = {"int", "double", "float", "bool", "auto", "char", "long", "unsigned", "const", "static"};
-  size_t i = k;
+  size_t i = pastLabels(t, k, end, python);
   bool declared = false;
   if (!python) {
     while (i < end && types.count(t[i].text) != 0) ++i, declared = true;
@@ -279,7 +303,8 @@ bool storedAt(const std::vector<Token>& t, size_t i, const Statement& s, bool py
 // A store under an `if` of its own, with no block (`if (c) junk = 1;`, Python `if c: junk = 1`):
 // the names it stores, so that it is as dead as they are; none for any other statement.
 std::vector<std::string> guardedStore(const std::vector<Token>& t, size_t begin, size_t end, bool python) {
-  if (t[begin].text != "if") return {};
+  begin = pastLabels(t, begin, end, python);
+  if (begin >= end || t[begin].text != "if") return {};
   int depth = 0;
   for (size_t i = begin + 1; i < end; ++i) {
     const std::string& x = t[i].text;
@@ -437,7 +462,11 @@ std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool 
     const bool dead_store = !s.targets.empty() && std::all_of(s.targets.begin(), s.targets.end(), [&](const std::string& name) {
       return dead.count(name) != 0;
     });
-    if (s.pure || dead_store || (!empty.empty() && callOf(tokens, s.begin, s.end, python, closing, empty))) continue;
+    if (s.pure || dead_store || (!empty.empty() && callOf(tokens, s.begin, s.end, python, closing, empty))) {
+      const size_t labels = pastAccessLabels(tokens, s.begin, s.end, python);
+      out.insert(out.end(), tokens.begin() + static_cast<long>(s.begin), tokens.begin() + static_cast<long>(labels));
+      continue;
+    }
     out.insert(out.end(), tokens.begin() + static_cast<long>(s.begin), tokens.begin() + static_cast<long>(s.end));
   }
   return out;
