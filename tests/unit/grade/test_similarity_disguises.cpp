@@ -327,6 +327,24 @@ PairSimilarity comparePair(const fs::path& a, const fs::path& b, const std::stri
   return pairs.at(0);
 }
 
+// What is dead: the names only stored (however often, under an if, in a constructor's
+// initialisers, as the first member after `private:`), and those read only to store dead ones
+// (v_, a), across files; what is read stays (`c = d = 4` stores d, which h reads).
+TEST(SimilarityDisguises, DeadNamesAreThoseNothingReads) {
+  const std::string header = "class A {\n public:\n  A() : junk_(0), v_(1) {}\n  void f(Api& api);\n"
+                             " private:\n  double junk_ = 0;\n  int v_, w_;\n};\n";
+  const std::string source = "void A::f(Api& api) {\n  junk_ = 2;\n  if (v_ > 0) junk_ = 3;\n  ++junk_;\n  int a = 1, b = a;\n"
+                             "  api.motors.v = w_;\n  c = d = 4;\n  h(d);\n}\n";
+  const std::vector<std::vector<Token>> files = {tokenize(header, false), tokenize(source, false)};
+  EXPECT_EQ(unreadNames(files, {false, false}), (std::vector<std::string>{"a", "b", "c", "junk_", "v_"}));
+  // Nothing is dead in a file alone that another file reads.
+  EXPECT_EQ(unreadNames({tokenize("x = 1\ny = x\n", true), tokenize("print(y)\n", true)}, {true, true}), std::vector<std::string>{});
+  const auto kept = withoutDeadStatements(files[1], false, unreadNames(files, {false, false}));
+  std::string text;
+  for (const Token& t : kept) text += (t.text == "I" ? t.raw : t.text) + " ";
+  EXPECT_EQ(text, "void A : : f ( Api & api ) { api . motors . v = w_ ; c = d = N ; h ( d ) ; } ");
+}
+
 TEST(SimilarityDisguises, ACopyInAHelperFileIsCompared) {
   for (const bool python : {false, true}) {
     SCOPED_TRACE(python ? "Python" : "C++");

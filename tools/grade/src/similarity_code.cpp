@@ -255,6 +255,7 @@ std::vector<std::string> storedNames(const std::vector<Token>& t, size_t k, size
   size_t past = pastStore(t, i, end, python, declared);
   if (past == 0) return {};
   names.push_back(t[i].raw);
+  for (size_t next = past; is(next, "I") && is(next + 1, "=") && !is(next + 2, "="); next += 2) names.push_back(t[next].raw);  // a = b = 0
   if (!declared) return names;
   // A declaration's further names: after each comma at the top level, `NAME` then `=`, `,` or `;`.
   int depth = 0;
@@ -292,6 +293,11 @@ bool pureExpression(const std::vector<Token>& t, size_t k, size_t end, bool pyth
 // Whether the name at `i`, inside `s`, is stored there and not read (`if (c) junk = 0;`, `f(x = 1)`):
 // a plain name or a `this->`/`self.` member followed by an assignment.
 bool storedAt(const std::vector<Token>& t, size_t i, const Statement& s, bool python) {
+  // A constructor's member initialiser (`: junk_(0), v_{1}`) stores its member.
+  if (!python && i > s.begin && (t[i - 1].text == ":" || t[i - 1].text == ",") && i + 1 < s.end &&
+      (t[i + 1].text == "(" || t[i + 1].text == "{")) {
+    return true;
+  }
   if (i > s.begin && t[i - 1].text == ".") {
     if (!(python && i >= s.begin + 2 && t[i - 2].text == "self")) return false;
   } else if (i > s.begin + 1 && t[i - 1].text == ">" && t[i - 2].text == "-") {
