@@ -11,6 +11,7 @@
 #include <aula/grade/report_html.hpp>
 #include <aula/grade/run_page.hpp>
 #include <aula/grade/similarity.hpp>
+#include <aula/grade/submission_build.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -204,13 +205,28 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
 }
 
 // Similar work in the class (similarity.hpp): similarity.csv, and the section for report.html.
-// A folder's MyAlgorithm.cpp, else its MyAlgorithm.py, else "".
-std::string sourceOf(const std::string& folder) {
-  for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
-    const fs::path source = fs::path(folder) / file;
-    if (fs::is_regular_file(source)) return source.string();
+// Every source a folder holds that a grade takes (submissionFiles: a helper file is code too);
+// none when the folder is refused or holds none.
+std::vector<std::string> sourcesOf(const std::string& folder) {
+  std::vector<std::string> sources;
+  if (folder.empty()) return sources;
+  const SubmissionFiles files = submissionFiles(folder);
+  if (!files.refused.empty()) return sources;
+  for (const std::string& name : files.sources) sources.push_back((fs::path(folder) / name).string());
+  return sources;
+}
+
+// A built-in's installed sources: Aula's own files (links in the build tree, so not submissionFiles,
+// which takes no link from a student).
+std::vector<std::string> builtInSources(const std::string& folder) {
+  std::vector<std::string> sources;
+  std::error_code error;
+  if (folder.empty()) return sources;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    if (entry.is_regular_file(error) && isPlainSourceName(entry.path().filename().string())) sources.push_back(entry.path().string());
   }
-  return "";
+  std::sort(sources.begin(), sources.end());
+  return sources;
 }
 
 std::string compareSubmissions(const std::string& out_dir, const std::vector<std::string>& folders, const std::string& exercise,
@@ -218,13 +234,14 @@ std::string compareSubmissions(const std::string& out_dir, const std::vector<std
                                const std::vector<std::string>& known_folders) {
   std::vector<Submitted> students;
   for (const std::string& folder : folders) {
-    const std::string source = sourceOf(folder);
-    if (!source.empty()) students.push_back({fs::path(folder).filename().string(), source});
+    std::vector<std::string> sources = sourcesOf(folder);
+    if (!sources.empty()) students.push_back({fs::path(folder).filename().string(), std::move(sources)});
   }
-  // The known algorithms that ran: the built-ins by behaviour (no source here), the teacher's
-  // solutions by their code too.
-  std::map<std::string, std::string> known_sources;
-  for (const std::string& folder : known_folders) known_sources["known '" + fs::path(folder).filename().string() + "'"] = sourceOf(folder);
+  // The known algorithms that ran, each by its code too: the built-ins' installed sources
+  // (builtInAlgorithms' folder) and the teacher's solutions.
+  std::map<std::string, std::vector<std::string>> known_sources;
+  for (const Submission& builtin : builtInAlgorithms(exercise)) known_sources[builtin.student] = builtInSources(builtin.folder);
+  for (const std::string& folder : known_folders) known_sources["known '" + fs::path(folder).filename().string() + "'"] = sourcesOf(folder);
   std::set<std::string> known_names;
   for (const auto& r : readResults(out_dir, "known")) {
     const std::string name = r.value("student", std::string("?"));

@@ -173,9 +173,341 @@ std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python) {
   return out;
 }
 
+namespace {
+
+// A statement: tokens [begin, end); `targets` the names it stores (none: it stores nothing).
+struct Statement {
+  size_t begin = 0, end = 0;
+  std::vector<std::string> targets;
+  bool pure = false;  // stores nothing, calls nothing: an expression whose value is dropped
+};
+
+bool isOpenBracket(const std::string& x) { return x == "(" || x == "[" || x == "{"; }
+bool isCloseBracket(const std::string& x) { return x == ")" || x == "]" || x == "}"; }
+
+// Where the name stored at `i` is followed by an assignment (`=`, `op=`, C++ `++`/`--`, or a
+// declaration's end): the index past the operator, or 0 when it is no store.
+size_t pastStore(const std::vector<Token>& t, size_t i, size_t end, bool python, bool declared) {
+  auto is = [&](size_t k, const char* text) { return k < end && t[k].text == text; };
+  if (declared && (is(i + 1, ";") || is(i + 1, ","))) return i + 1;
+  if (is(i + 1, "=") && !is(i + 2, "=")) return i + 2;
+  static const std::set<std::string> ops = {"+", "-", "*", "/", "%", "&", "|", "^"};
+  size_t op = i + 1;
+  while (op < end && op < i + 3 && ops.count(t[op].text) != 0) ++op;
+  if (op > i + 1 && is(op, "=") && !is(op + 1, "=")) return op + 1;  // x += ..., x //= ..., x **= ...
+  if (!python && ((is(i + 1, "+") && is(i + 2, "+")) || (is(i + 1, "-") && is(i + 2, "-"))) && is(i + 3, ";")) return i + 3;
+  return 0;
+}
+
+// Where a statement's own tokens start, past what only labels it: C++ `public:` (and the other
+// access specifiers), `default:`, `else`; Python `else:`. `private: double junk = 0;` stores junk.
+// C++ access specifiers and `default:` alone: what a dropped statement leaves of itself (the
+// class's layout is the original's).
+size_t pastAccessLabels(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
+  while (!python && (is(k, "public") || is(k, "private") || is(k, "protected") || is(k, "default")) && is(k + 1, ":")) k += 2;
+  return k;
+}
+
+size_t pastLabels(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
+  for (;;) {
+    const size_t labels = pastAccessLabels(t, k, end, python);
+    if (labels != k) {
+      k = labels;
+    } else if (is(k, "else")) {
+      k += python && is(k + 1, ":") ? 2 : 1;
+    } else {
+      return k;
+    }
+  }
+}
+
+// The names `[k, end)` stores: `[type...] [this->|self.] NAME (= | op= | ++ | --) ...`, `++NAME;`,
+// a C++ declaration of one or more names (`double a = 0, b;`), a Python tuple (`a, self.b = ...`).
+std::vector<std::string> storedNames(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  auto is = [&](size_t i, const char* text) { return i < end && t[i].text == text; };
+  static const std::set<std::string> types = {"int", "double", "float", "bool", "auto", "char", "long", "unsigned", "const", "static"};
+  size_t i = pastLabels(t, k, end, python);
+  bool declared = false;
+  if (!python) {
+    while (i < end && types.count(t[i].text) != 0) ++i, declared = true;
+    if (is(i, "I") && is(i + 1, "I")) ++i, declared = true;  // a type of the student's: `Point p = ...`
+    if (((is(i, "+") && is(i + 1, "+")) || (is(i, "-") && is(i + 1, "-"))) && is(i + 2, "I") && is(i + 3, ";")) return {t[i + 2].raw};
+  }
+  std::vector<std::string> names;
+  auto member = [&](size_t& at) {
+    if (!python && is(at, "this") && is(at + 1, "-") && is(at + 2, ">")) at += 3;
+    if (python && is(at, "self") && is(at + 1, ".")) at += 2;
+  };
+  member(i);
+  if (!is(i, "I")) return {};
+  if (python && is(i + 1, ",")) {  // a, self.b = ...
+    while (is(i, "I")) {
+      names.push_back(t[i].raw);
+      if (is(i + 1, "=") && !is(i + 2, "=")) return names;
+      if (!is(i + 1, ",")) return {};
+      i += 2;
+      member(i);
+    }
+    return {};
+  }
+  size_t past = pastStore(t, i, end, python, declared);
+  if (past == 0) return {};
+  names.push_back(t[i].raw);
+  for (size_t next = past; is(next, "I") && is(next + 1, "=") && !is(next + 2, "="); next += 2) names.push_back(t[next].raw);  // a = b = 0
+  if (!declared) return names;
+  // A declaration's further names: after each comma at the top level, `NAME` then `=`, `,` or `;`.
+  int depth = 0;
+  for (size_t m = past - 1; m < end; ++m) {
+    const std::string& x = t[m].text;
+    depth += isOpenBracket(x) ? 1 : isCloseBracket(x) ? -1 : 0;
+    if (depth == 0 && x == "," && is(m + 1, "I") && pastStore(t, m + 1, end, python, true) != 0) names.push_back(t[m + 1].raw);
+  }
+  return names;
+}
+
+// Whether `[k, end)` only computes a value and drops it: no store, no call, no keyword but a
+// cast to void or literal ones.
+bool pureExpression(const std::vector<Token>& t, size_t k, size_t end, bool python) {
+  static const std::set<std::string> cpp_allowed = {"I", "N", "S", "true", "false", "nullptr", "this", "void", "+", "-", "*", "/",
+                                                    "%", "<", ">", "!", "~", "&", "|", "^", "?", ":", ".", ",", "[", "]", "(", ")", ";"};
+  static const std::set<std::string> py_allowed = {"I", "N", "S", "None", "True", "False", "self", "and", "or", "not", "in", "is",
+                                                   "if", "else", "+", "-", "*", "/", "%", "<", ">", "!", "~", "&", "|", "^", ":",
+                                                   ".", ",", "[", "]", "(", ")", "{", "}"};
+  const auto& allowed = python ? py_allowed : cpp_allowed;
+  if (k >= end || (python && (t[k].text == "if" || t[k].text == "else"))) return false;
+  for (size_t i = k; i < end; ++i) {
+    const std::string& x = t[i].text;
+    if (allowed.count(x) == 0) return false;
+    if ((x == "+" || x == "-") && i + 1 < end && t[i + 1].text == x) return false;  // ++, --
+    if (x == "(" && i > k) {
+      const std::string& before = t[i - 1].text;
+      const bool cast = before == ")" && i >= k + 3 && t[i - 2].text == "void" && t[i - 3].text == "(";
+      if ((before == "I" || before == ")" || before == "]" || before == "S" || before == ">") && !cast) return false;  // a call
+    }
+  }
+  return true;
+}
+
+// Whether the name at `i`, inside `s`, is stored there and not read (`if (c) junk = 0;`, `f(x = 1)`):
+// a plain name or a `this->`/`self.` member followed by an assignment.
+bool storedAt(const std::vector<Token>& t, size_t i, const Statement& s, bool python) {
+  // A constructor's member initialiser (`: junk_(0), v_{1}`) stores its member.
+  if (!python && i > s.begin && (t[i - 1].text == ":" || t[i - 1].text == ",") && i + 1 < s.end &&
+      (t[i + 1].text == "(" || t[i + 1].text == "{")) {
+    return true;
+  }
+  if (i > s.begin && t[i - 1].text == ".") {
+    if (!(python && i >= s.begin + 2 && t[i - 2].text == "self")) return false;
+  } else if (i > s.begin + 1 && t[i - 1].text == ">" && t[i - 2].text == "-") {
+    if (!(i >= s.begin + 3 && t[i - 3].text == "this")) return false;
+  }
+  return pastStore(t, i, s.end, python, false) != 0;
+}
+
+// A store under an `if` of its own, with no block (`if (c) junk = 1;`, Python `if c: junk = 1`):
+// the names it stores, so that it is as dead as they are; none for any other statement.
+std::vector<std::string> guardedStore(const std::vector<Token>& t, size_t begin, size_t end, bool python) {
+  begin = pastLabels(t, begin, end, python);
+  if (begin >= end || t[begin].text != "if") return {};
+  int depth = 0;
+  for (size_t i = begin + 1; i < end; ++i) {
+    const std::string& x = t[i].text;
+    depth += isOpenBracket(x) ? 1 : isCloseBracket(x) ? -1 : 0;
+    const bool condition_ends = python ? (depth == 0 && x == ":") : (depth == 0 && x == ")");
+    if (condition_ends) return i + 1 < end ? storedNames(t, i + 1, end, python) : std::vector<std::string>{};
+  }
+  return {};
+}
+
+// C++: statements end at `;` (outside brackets) or before `{`/`}`; Python: at a line's end
+// outside brackets.
+std::vector<Statement> statementsOf(const std::vector<Token>& t, bool python) {
+  std::vector<Statement> out;
+  size_t begin = 0;
+  int depth = 0;
+  auto close = [&](size_t end) {
+    if (end > begin) {
+      Statement s{begin, end, storedNames(t, begin, end, python), false};
+      if (s.targets.empty()) s.targets = guardedStore(t, begin, end, python);
+      const bool ends = python || t[end - 1].text == ";";
+      s.pure = s.targets.empty() && ends && pureExpression(t, begin, end, python);
+      if (!ends) s.targets.clear();  // a for's head `for (int i = 0`, `x = {`: never dropped
+      out.push_back(s);
+    }
+    begin = end;
+  };
+  for (size_t i = 0; i < t.size(); ++i) {
+    const std::string& x = t[i].text;
+    if (python) {
+      depth = std::max(0, depth + (isOpenBracket(x) ? 1 : isCloseBracket(x) ? -1 : 0));
+      if (depth == 0 && (i + 1 == t.size() || t[i + 1].line != t[i].line)) close(i + 1);
+      continue;
+    }
+    if (x == "(" || x == "[") ++depth;
+    if ((x == ")" || x == "]") && depth > 0) --depth;
+    if (depth > 0) continue;
+    if (x == ";") {
+      close(i + 1);
+    } else if (x == "{" || x == "}") {
+      close(i);
+      close(i + 1);  // the brace alone: no store
+    }
+  }
+  close(t.size());
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python) {
+  // A worklist, each statement's reads taken once: a chain of any length, a declaration of any
+  // number of names, cost one pass (a student's file is untrusted).
+  std::vector<std::pair<size_t, Statement>> statements;  // (file, statement)
+  std::unordered_map<std::string, std::vector<size_t>> stores;  // name -> the statements that store it
+  std::vector<bool> taken;
+  std::unordered_set<std::string> read;
+  std::vector<std::string> pending;
+  auto take = [&](size_t index) {
+    if (taken[index]) return;
+    taken[index] = true;
+    const auto& [file, s] = statements[index];
+    const std::unordered_set<std::string> own(s.targets.begin(), s.targets.end());
+    for (size_t i = s.begin; i < s.end; ++i) {
+      const Token& token = files[file][i];
+      if (token.text != "I" || own.count(token.raw) != 0 || storedAt(files[file], i, s, python[file])) continue;
+      if (read.insert(token.raw).second) pending.push_back(token.raw);
+    }
+  };
+  for (size_t f = 0; f < files.size(); ++f) {
+    for (Statement& s : statementsOf(files[f], python[f])) {
+      for (const std::string& name : s.targets) stores[name].push_back(statements.size());
+      statements.emplace_back(f, std::move(s));
+    }
+  }
+  taken.assign(statements.size(), false);
+  for (size_t i = 0; i < statements.size(); ++i) {
+    if (statements[i].second.targets.empty() && !statements[i].second.pure) take(i);  // a dropped value reads nothing
+  }
+  while (!pending.empty()) {
+    const std::string name = pending.back();
+    pending.pop_back();
+    const auto it = stores.find(name);
+    if (it == stores.end()) continue;
+    for (const size_t index : it->second) take(index);
+  }
+  std::vector<std::string> unread;
+  for (const auto& [name, where] : stores) {
+    if (read.count(name) == 0) unread.push_back(name);
+  }
+  std::sort(unread.begin(), unread.end());
+  return unread;
+}
+
+namespace {
+
+// For each bracket, the index of the one that closes it (SIZE_MAX: none): one pass, whatever the nesting.
+std::vector<size_t> closingBrackets(const std::vector<Token>& t) {
+  std::vector<size_t> closing(t.size(), SIZE_MAX), open;
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (isOpenBracket(t[i].text)) open.push_back(i);
+    if (isCloseBracket(t[i].text) && !open.empty()) {
+      closing[open.back()] = i;
+      open.pop_back();
+    }
+  }
+  return closing;
+}
+
+// Whether `[begin, end)` is a call of one of `names` and nothing else: `[this->|self.] NAME(...)` (C++: and `;`).
+bool callOf(const std::vector<Token>& t, size_t begin, size_t end, bool python, const std::vector<size_t>& closing,
+            const std::unordered_set<std::string>& names) {
+  size_t i = begin;
+  if (!python && i + 2 < end && t[i].text == "this" && t[i + 1].text == "-" && t[i + 2].text == ">") i += 3;
+  if (python && i + 1 < end && t[i].text == "self" && t[i + 1].text == ".") i += 2;
+  if (i + 1 >= end || t[i].text != "I" || t[i + 1].text != "(" || names.count(t[i].raw) == 0) return false;
+  return closing[i + 1] + (python ? 1 : 2) == end && (python || t[end - 1].text == ";");
+}
+
+}  // namespace
+
+std::vector<std::string> emptyFunctions(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python) {
+  static const std::set<std::string> returns = {"void", "int", "double", "float", "bool", "auto", "char", "long", "unsigned", "I", ">", "*", "&"};
+  std::set<std::string> names;
+  for (size_t f = 0; f < files.size(); ++f) {
+    const std::vector<Token>& t = files[f];
+    const std::vector<size_t> closing = closingBrackets(t);
+    for (size_t i = 1; i + 1 < t.size(); ++i) {
+      if (t[i].text != "I" || t[i + 1].text != "(" || closing[i + 1] == SIZE_MAX) continue;
+      size_t k = closing[i + 1] + 1;
+      if (python[f]) {  // def NAME(...) [-> T]: [a docstring] [pass], then the next definition or the end
+        if (t[i - 1].text != "def") continue;
+        while (k < t.size() && t[k].text != ":" && t[k].line == t[i].line) ++k;
+        size_t next = k + 1;
+        while (next < t.size() && (t[next].text == "S" || t[next].text == "pass")) ++next;
+        if (next == t.size() || t[next].text == "def" || t[next].text == "class" || t[next].text == "@") names.insert(t[i].raw);
+        continue;
+      }
+      // C++: TYPE NAME(...) [const] [override] [noexcept] {}
+      if (returns.count(t[i - 1].text) == 0) continue;
+      while (k < t.size() && (t[k].text == "const" || t[k].text == "override" || (t[k].text == "I" && t[k].raw == "noexcept"))) ++k;
+      if (k + 1 < t.size() && t[k].text == "{" && t[k + 1].text == "}") names.insert(t[i].raw);
+    }
+  }
+  return std::vector<std::string>(names.begin(), names.end());
+}
+
+std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread,
+                                         const std::vector<std::string>& empty_functions) {
+  const std::unordered_set<std::string> dead(unread.begin(), unread.end());
+  const std::unordered_set<std::string> empty(empty_functions.begin(), empty_functions.end());
+  const std::vector<size_t> closing = closingBrackets(tokens);
+  std::vector<Token> out;
+  for (const Statement& s : statementsOf(tokens, python)) {
+    const bool dead_store = !s.targets.empty() && std::all_of(s.targets.begin(), s.targets.end(), [&](const std::string& name) {
+      return dead.count(name) != 0;
+    });
+    if (s.pure || dead_store || (!empty.empty() && callOf(tokens, s.begin, s.end, python, closing, empty))) {
+      const size_t labels = pastAccessLabels(tokens, s.begin, s.end, python);
+      out.insert(out.end(), tokens.begin() + static_cast<long>(s.begin), tokens.begin() + static_cast<long>(labels));
+      continue;
+    }
+    out.insert(out.end(), tokens.begin() + static_cast<long>(s.begin), tokens.begin() + static_cast<long>(s.end));
+  }
+  return out;
+}
+
+std::vector<Fingerprint> codeFingerprints(const std::vector<SourceText>& files, CodeForm form) {
+  std::vector<std::vector<Token>> tokens;
+  std::vector<bool> python;
+  for (const SourceText& file : files) {
+    tokens.push_back(tokenize(file.text, file.python));
+    python.push_back(file.python);
+  }
+  const std::vector<std::string> unread = unreadNames(tokens, python);
+  // The functions left empty once their dead statements are dropped (`void nop() { int k = 0; }`
+  // is as empty as `{}`): their calls are dropped with the dead statements, in one pass.
+  std::vector<std::vector<Token>> cleaned;
+  std::vector<std::vector<Token>> live_statements;
+  for (size_t f = 0; f < files.size(); ++f) {
+    live_statements.push_back(withoutDeadStatements(tokens[f], python[f], unread));
+    cleaned.push_back(withoutNoOps(live_statements.back(), python[f]));
+  }
+  const std::vector<std::string> empty = emptyFunctions(live_statements, python);
+  std::vector<Fingerprint> prints;
+  for (size_t f = 0; f < files.size(); ++f) {
+    const std::vector<Token> live = empty.empty() ? cleaned[f] : withoutNoOps(withoutDeadStatements(tokens[f], python[f], unread, empty), python[f]);
+    for (Fingerprint print : fingerprints(form == CodeForm::Common ? commonForm(live, python[f]) : live)) {
+      print.file = static_cast<int>(f);
+      prints.push_back(print);
+    }
+  }
+  return prints;
+}
+
 std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python, CodeForm form) {
-  const std::vector<Token> tokens = withoutNoOps(tokenize(source, python), python);
-  return fingerprints(form == CodeForm::Common ? commonForm(tokens, python) : tokens);
+  return codeFingerprints(std::vector<SourceText>{{source, python}}, form);
 }
 
 std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k, size_t window) {
@@ -220,16 +552,15 @@ CodeMatch compareCode(const std::vector<Fingerprint>& a, const std::vector<Finge
     if (it == in_b.end()) continue;
     shared.insert(f.hash);
     auto& ranges = match.ranges;
-    const auto a_lines = std::make_pair(f.first_line, f.last_line);
-    const auto b_lines = std::make_pair(it->second->first_line, it->second->last_line);
+    const Fingerprint& g = *it->second;
     // Runs of matches next to each other in both files become one range.
-    if (!ranges.empty() && a_lines.first <= ranges.back().first.second + 1 && b_lines.first <= ranges.back().second.second + 1 &&
-        b_lines.second >= ranges.back().second.first - 1) {
-      ranges.back().first.second = std::max(ranges.back().first.second, a_lines.second);
-      ranges.back().second.first = std::min(ranges.back().second.first, b_lines.first);
-      ranges.back().second.second = std::max(ranges.back().second.second, b_lines.second);
+    if (!ranges.empty() && ranges.back().a_file == f.file && ranges.back().b_file == g.file &&
+        f.first_line <= ranges.back().a_last + 1 && g.first_line <= ranges.back().b_last + 1 && g.last_line >= ranges.back().b_first - 1) {
+      ranges.back().a_last = std::max(ranges.back().a_last, f.last_line);
+      ranges.back().b_first = std::min(ranges.back().b_first, g.first_line);
+      ranges.back().b_last = std::max(ranges.back().b_last, g.last_line);
     } else {
-      ranges.push_back({a_lines, b_lines});
+      ranges.push_back({f.file, f.first_line, f.last_line, g.file, g.first_line, g.last_line});
     }
   }
   const size_t smaller = std::min(a_own.size(), b_own);
