@@ -16,7 +16,6 @@
 #include <aula/supervision/supervisor.hpp>
 
 #include <cstdlib>
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -42,34 +41,6 @@ bool noDisplay() {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   return (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
-}
-
-// What a run's options stand for in the processes' settings.
-// An option and its key given both (--duration=5 --Vacuum.Referee.Duration=abc) are refused: one
-// would silently win, and the other go unchecked.
-Config overridesOf(const Exercise& ex, const Arguments& args, bool headless) {
-  Config overrides = settingsOf(args);
-  auto setFrom = [&](const char* option, const std::string& key, const std::string& value) {
-    if (overrides.has(key)) {
-      throw ConfigError(args.spelled(option) + " and --" + key + "=" + overrides.getString(key) +
-                        " set the same setting: give only one");
-    }
-    overrides.set(key, value, std::string("command line --") + option);
-  };
-  if (args.given("algorithm")) {
-    // "reference" names each exercise's default reference: its own built-in of that name, else the
-    // one its calibration anchors the scale on (Autopark's "reactive").
-    std::string algorithm = args.text("algorithm");
-    const config::SettingSpec* choices = ex.component_settings->find(ex.section + ".Algorithm");
-    const bool has_reference = choices != nullptr && std::count(choices->choices.begin(), choices->choices.end(), "reference") > 0;
-    if (algorithm == "reference" && !has_reference && ex.calibration) algorithm = ex.calibration->anchor;
-    setFrom("algorithm", ex.section + ".Algorithm", algorithm);
-  }
-  if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
-  if (args.given("world")) setFrom("world", ex.section + ".World", args.text("world"));
-  if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
-  if (args.given("duration") && !ex.episode_key.empty()) setFrom("duration", ex.episode_key, args.text("duration"));
-  return overrides;
 }
 
 // The simulator's command line: lockstep and as fast as possible when headless.
