@@ -106,6 +106,7 @@ class Reader {
   void addModel(const Model& model, WorldSpec& spec);
   void addRobot(const Model& model, WorldSpec& spec);
   void addRobotOrThrow(const Model& model, WorldSpec& spec);
+  bool gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& robot);
   void readDestinations(const XMLElement* world, WorldSpec& spec) const;
 
   std::string world_path_;
@@ -122,6 +123,16 @@ class Reader {
   };
   std::vector<std::pair<std::string, Skipped>> skipped_;  // by kind, in the order first met
 };
+
+// Gazebo's drive plugins Aula knows a robot by, and the kind of Aula robot each makes: a
+// planar-move robot is holonomic (moves sideways too), a differential or skid-steer drive is not.
+const std::map<std::string, bool>& gazeboDrives() {
+  static const std::map<std::string, bool> holonomic = {
+      {"libgazebo_ros_planar_move.so", true}, {"libgazebo_ros_diff_drive.so", false},
+      {"libgazebo_ros_skid_steer_drive.so", false}, {"libgazebo_ros_tricycle_drive.so", false},
+      {"gz-sim-diff-drive-system", false}, {"ignition-gazebo-diff-drive-system", false}};
+  return holonomic;
+}
 
 // What Aula does not simulate, by element: said once per kind, with the reason.
 std::string whySkipped(const std::string& element) {
@@ -469,8 +480,16 @@ Reader::Model Reader::modelOf(const XMLElement* element, const std::string& file
     model.plugins.emplace_back(p, file);
   }
   skipUnread(element, file, {"static", "pose", "link", "model", "include", "plugin"});
+  // A robot known by its Gazebo drive plugin has its sensors read (gazeboRobot); others' are skipped here.
+  const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
+    return gazeboDrives().count(attribute(p.first, "filename")) != 0;
+  });
   for (const XMLElement* link = element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
-    skipUnread(link, file, {"pose", "inertial", "collision"});
+    if (gazebo_drive) {
+      skipUnread(link, file, {"pose", "inertial", "collision", "sensor"});
+    } else {
+      skipUnread(link, file, {"pose", "inertial", "collision"});
+    }
     for (const XMLElement* c = link->FirstChildElement("collision"); c != nullptr; c = c->NextSiblingElement("collision")) {
       skipUnread(c, file, {"pose", "geometry"});
     }
@@ -783,6 +802,86 @@ void Reader::addStatics(const Model& model, const Eigen::Isometry3d& model_pose,
   }
 }
 
+namespace {
+std::string upper(std::string text) {
+  for (char& c : text) c = std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : '_';
+  return text;
+}
+
+std::string decimal(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+}  // namespace
+
+// A robot known by its Gazebo plugins (RoboticsAcademy's taxi_holo_ROS, with
+// libgazebo_ros_planar_move.so): Aula's robot of that kind, its drivers made from what the model
+// says. pose3d, motors (holonomic for a planar move) and bumper (every Aula robot senses contact),
+// on channels NAME_POSE, NAME_MOTORS, NAME_BUMPER; a laser per level <sensor type="ray"> of the
+// link (NAME_LASER_SENSOR; pose, samples, angles, range, rate from the sensor). Its other Gazebo
+// plugins and sensors are listed among what is skipped. False when it has no drive plugin Aula
+// knows (then its <plugin>s are Aula's drivers).
+bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& robot) {
+  const XMLElement* drive = nullptr;
+  for (const auto& [p, file] : model.plugins) {
+    if (gazeboDrives().count(attribute(p, "filename")) != 0) drive = p;
+  }
+  if (drive == nullptr) return false;
+  const std::string file = model.file;
+  const std::string where = world_path_ + ": model '" + model.name + "'";
+  const std::string prefix = upper(model.name);
+  for (const auto& [p, plugin_file] : model.plugins) {
+    if (p != drive) skip(p, plugin_file, "Gazebo <plugin filename=\"" + attribute(p, "filename") + "\"> of a robot", "its drive plugin makes the robot's drivers");
+  }
+  auto add = [&](const std::string& name, const std::string& type, std::map<std::string, std::string> params) {
+    PluginSpec spec;
+    spec.name = name;
+    spec.type = type;
+    spec.owner = model.name;
+    spec.params = std::move(params);
+    robot.plugins.push_back(std::move(spec));
+  };
+  add("pose3d", "pose3d", {{"channel", prefix + "_POSE"}});
+  add("motors", "motors", {{"channel", prefix + "_MOTORS"}, {"holonomic", gazeboDrives().at(attribute(drive, "filename")) ? "true" : "false"}});
+  add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
+  for (const XMLElement* sensor = link->FirstChildElement("sensor"); sensor != nullptr; sensor = sensor->NextSiblingElement("sensor")) {
+    const std::string type = attribute(sensor, "type");
+    const std::string name = nameOf(sensor, file, where);
+    const XMLElement* ray = sensor->FirstChildElement("ray");
+    if (ray == nullptr) ray = sensor->FirstChildElement("lidar");
+    if ((type != "ray" && type != "gpu_ray" && type != "lidar" && type != "gpu_lidar") || ray == nullptr) {
+      if (type != "contact") skip(sensor, file, "<sensor type=\"" + type + "\"> of a robot", whySkipped("sensor"));
+      continue;  // a contact sensor: the bumper above
+    }
+    const std::string in_sensor = where + ", sensor '" + name + "'";
+    const Eigen::Isometry3d pose = poseOf(sensor, file, in_sensor);
+    const Eigen::Vector3d z_axis = pose.linear().col(2);
+    if (z_axis.z() < std::cos(0.1)) {  // a cliff sensor looks down: not a planar laser
+      skip(sensor, file, "a robot's <sensor type=\"ray\"> not level", "Aula's lasers scan the plane");
+      continue;
+    }
+    const XMLElement* scan = ray->FirstChildElement("scan");
+    const XMLElement* horizontal = scan != nullptr ? scan->FirstChildElement("horizontal") : nullptr;
+    const XMLElement* range = ray->FirstChildElement("range");
+    auto value = [&](const XMLElement* parent, const char* key, double fallback) {
+      return number(parent != nullptr ? parent->FirstChildElement(key) : nullptr, file, in_sensor, fallback);
+    };
+    const Eigen::Vector3d at = pose.translation();
+    add(name, "laser",
+        {{"channel", prefix + "_LASER_" + upper(name)},
+         {"pose", decimal(at.x()) + " " + decimal(at.y()) + " " + decimal(at.z()) + " 0 0 " + decimal(yawOf(pose))},
+         {"samples", std::to_string(static_cast<int>(value(horizontal, "samples", 640)))},
+         {"min_angle", decimal(value(horizontal, "min_angle", 0))},
+         {"max_angle", decimal(value(horizontal, "max_angle", 0))},
+         {"min_range", decimal(value(range, "min", 0))},
+         {"max_range", decimal(value(range, "max", 10))},
+         {"rate_hz", decimal(number(sensor->FirstChildElement("update_rate"), file, in_sensor, 10))}});
+  }
+  return true;
+}
+
 // A world's model: static geometry, a robot, or a container (no link, no plugin, only nested
 // models, as JdeRobot's house_int2 holds its furniture) whose nested models are each what their
 // own <static> says, placed by the container's pose.
@@ -813,6 +912,10 @@ void Reader::addRobot(const Model& model, WorldSpec& spec) {
   } catch (const WorldError& e) {
     // A robot refused for its body: its drivers' problems are said in the same pass, after it.
     for (const auto& p : e.problems()) problems_.push_back(p);
+    const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
+      return gazeboDrives().count(attribute(p.first, "filename")) != 0;
+    });
+    if (gazebo_drive) return;  // its drivers are made from its Gazebo plugins, not read from them
     WorldSpec alone;
     alone.source_path = world_path_;
     alone.robots.emplace_back();
@@ -845,25 +948,35 @@ void Reader::addRobotOrThrow(const Model& model, WorldSpec& spec) {
   }
   const XMLElement* collision = link->FirstChildElement("collision");
   const std::string in_collision = where + ", collision '" + nameOf(collision, file, where) + "'";
+  RobotSpec robot;
+  robot.name = model.name;
+  const bool from_gazebo = gazeboRobot(model, link, robot);  // its drivers from its Gazebo plugins
   const XMLElement* geometry = collision->FirstChildElement("geometry");
-  if (geometry != nullptr && geometry->FirstChildElement("mesh") != nullptr) {  // refused before it is read
+  if (!from_gazebo && geometry != nullptr && geometry->FirstChildElement("mesh") != nullptr) {  // refused before it is read
     fail(in_collision, "a robot's collision must be a <box> or a <cylinder> (its footprint); a mesh or plane is not",
          geometry->FirstChildElement("mesh"), file);
   }
-  RobotSpec robot;
-  robot.name = model.name;
   robot.pose = model.pose * poseOf(link, file, where + ", link '" + link_name + "'");
   bool is_plane = false;
   robot.shape = shapeOf(collision, file, in_collision, &is_plane);
-  if (is_plane || robot.shape.kind == ShapeKind::Mesh) {
+  if (is_plane) {
     fail(in_collision, "a robot's collision must be a <box> or a <cylinder> (its footprint); a mesh or plane is not", collision, file);
   }
   robot.shape_offset = poseOf(collision, file, in_collision);
+  if (robot.shape.kind == ShapeKind::Mesh) {
+    // A Gazebo robot's mesh body: Aula's robot of that kind is the box around it (its footprint
+    // and height), placed where the mesh's bounding box is.
+    const Eigen::AlignedBox3d bounds = robot.shape.mesh->bounds_m;
+    robot.shape_offset = robot.shape_offset * Eigen::Translation3d(bounds.center());
+    robot.shape = Shape{};
+    robot.shape.box_size_m = bounds.sizes();
+    skip(collision, file, "a robot's <mesh> collision", "Aula's robot is the box around it");
+  }
   const XMLElement* inertial = link->FirstChildElement("inertial");
   const XMLElement* mass = inertial != nullptr ? inertial->FirstChildElement("mass") : nullptr;
   robot.mass_kg = number(mass, file, where, 1.0);  // SDF's default mass
   if (!(robot.mass_kg > 0)) fail(where, "the link needs an <inertial><mass> > 0", mass != nullptr ? mass : link, file);
-  robot.plugins = pluginsOf(model, where);
+  if (!from_gazebo) robot.plugins = pluginsOf(model, where);
   const bool duplicate = std::any_of(spec.robots.begin(), spec.robots.end(),
                                      [&](const RobotSpec& other) { return other.name == robot.name; });
   if (duplicate) fail(where, "duplicate robot name", e, file);

@@ -288,7 +288,7 @@ TEST_F(GazeboWorlds, EveryProblemOfAWorldIsListedAtOnceWithItsLine) {
       "<model name='bot'><link name='l'><collision name='c'><geometry><box><size>1 1 1</size></box></geometry>"
       "</collision></link><plugin name='drive' filename='motors'><max_vel>1</max_vel></plugin></model>\n"  // line 8
       "<model name='taxi'><link name='l'><collision name='c'><geometry><mesh><uri>gone.dae</uri></mesh></geometry>"
-      "</collision></link><plugin name='move' filename='libgazebo_ros_planar_move.so'/></model>\n"              // line 9
+      "</collision></link><plugin name='move' filename='libgazebo_ros_ackermann_drive.so'/></model>\n"          // line 9
       "<model name='ok'><static>true</static><link name='l'><collision name='c'><geometry><box><size>1 1 1</size></box>"
       "</geometry></collision></link></model>\n");
   ASSERT_EQ(problems.size(), 7u);
@@ -303,7 +303,7 @@ TEST_F(GazeboWorlds, EveryProblemOfAWorldIsListedAtOnceWithItsLine) {
   // A robot refused for its body still has its drivers checked.
   EXPECT_TRUE(contains(problems[4], "model 'taxi', collision 'c': a robot's collision must be a <box> or a <cylinder>")) << problems[4];
   EXPECT_TRUE(contains(problems[4], "w.world:9)")) << problems[4];
-  EXPECT_TRUE(contains(problems[5], "model 'taxi', plugin 'move': unknown driver filename 'libgazebo_ros_planar_move.so'")) << problems[5];
+  EXPECT_TRUE(contains(problems[5], "model 'taxi', plugin 'move': unknown driver filename 'libgazebo_ros_ackermann_drive.so'")) << problems[5];
   EXPECT_TRUE(contains(problems[6], "unknown key <max_vel> (did you mean <max_v>?)")) << problems[6];
 }
 
@@ -317,4 +317,53 @@ TEST_F(GazeboWorlds, AModelThatOnlyHoldsStaticModelsIsTheirContainer) {
   EXPECT_EQ(w.statics[0].name, "house::table::l::c");
   EXPECT_TRUE(w.statics[0].pose.translation().isApprox(Eigen::Vector3d(1, 2, 0.7)));
   EXPECT_TRUE(w.robots.empty());
+}
+
+TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
+  // As RoboticsAcademy's taxi_holo_ROS: one link, a mesh body, libgazebo_ros_planar_move.so; here
+  // with a level laser and a cliff sensor looking down.
+  fs::create_directories(dir_ + "/models/taxi/meshes");
+  aula::testing::writeCollada(dir_ + "/models/taxi/meshes/taxi.dae", {aula::testing::boxTriangles({{{-2, -1, 0}, {2, 1, 1.5}}})},
+                              {"body"});
+  write("models/taxi/model.config", "<model><sdf version='1.5'>model.sdf</sdf></model>");
+  write("models/taxi/model.sdf",
+        "<sdf version='1.5'><model name='taxi_holo'><static>false</static><link name='taxi_holo'>"
+        "<inertial><mass>750</mass></inertial>"
+        "<collision name='collision'><geometry><mesh><uri>model://taxi/meshes/taxi.dae</uri></mesh></geometry></collision>"
+        "<sensor name='front' type='ray'><pose>2.4 0 0.5 0 0 0</pose><update_rate>20</update_rate><ray><scan><horizontal>"
+        "<samples>180</samples><min_angle>-1.5708</min_angle><max_angle>1.5708</max_angle></horizontal></scan>"
+        "<range><min>0.08</min><max>11</max></range></ray>"
+        "<plugin name='laser_ros' filename='libgazebo_ros_laser.so'/></sensor>"
+        "<sensor name='cliff' type='ray'><pose>1.5 0 0.1 0 1.5708 0</pose><ray><range><min>0.01</min><max>0.04</max></range></ray></sensor>"
+        "</link><plugin name='object_controller' filename='libgazebo_ros_planar_move.so'><commandTopic>cmd_vel</commandTopic></plugin>"
+        "</model></sdf>");
+  const WorldSpec w = load("<include><uri>model://taxi</uri><pose>0 0 0 0 0 -1.5529944</pose></include>\n");
+  const RobotSpec& taxi = requireRobot(w, "taxi_holo");
+  EXPECT_EQ(taxi.shape.kind, ShapeKind::Box);
+  EXPECT_TRUE(taxi.shape.box_size_m.isApprox(Eigen::Vector3d(4, 2, 1.5)));
+  EXPECT_TRUE(taxi.shape_offset.translation().isApprox(Eigen::Vector3d(0, 0, 0.75)));
+  EXPECT_DOUBLE_EQ(taxi.mass_kg, 750);
+  EXPECT_EQ(channelOf(taxi, "pose3d"), "TAXI_HOLO_POSE");
+  EXPECT_EQ(channelOf(taxi, "motors"), "TAXI_HOLO_MOTORS");
+  EXPECT_EQ(channelOf(taxi, "bumper"), "TAXI_HOLO_BUMPER");
+  EXPECT_TRUE(taxi.findPlugin("motors")->getBool("holonomic", false));
+  const PluginSpec* laser = taxi.findPluginNamed("front");
+  ASSERT_NE(laser, nullptr);
+  EXPECT_EQ(laser->type, "laser");
+  EXPECT_EQ(laser->getInt("samples", 0), 180);
+  EXPECT_DOUBLE_EQ(laser->getDouble("max_range", 0), 11.0);
+  EXPECT_DOUBLE_EQ(laser->getDouble("rate_hz", 0), 20.0);
+  EXPECT_TRUE(laser->getPose("pose").translation().isApprox(Eigen::Vector3d(2.4, 0, 0.5)));
+  EXPECT_EQ(taxi.findPluginNamed("cliff"), nullptr) << "a ray looking down is no planar laser";
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "a robot's <sensor type=\"ray\"> not level (")) << skipped;
+  EXPECT_TRUE(contains(skipped, "a robot's <mesh> collision (")) << skipped;
+  // A robot with no drive plugin Aula knows keeps the rule: its plugins are Aula's drivers.
+  write("models/taxi/model.sdf", "<sdf version='1.5'><model name='taxi_holo'><link name='l'><collision name='c'><geometry>"
+                                 "<box><size>1 1 1</size></box></geometry></collision></link>"
+                                 "<plugin name='drive' filename='libgazebo_ros_ackermann_drive.so'/></model></sdf>");
+  const auto problems = problemsOf("<include><uri>model://taxi</uri></include>\n");
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_TRUE(contains(problems[0], "unknown driver filename 'libgazebo_ros_ackermann_drive.so'")) << problems[0];
 }
