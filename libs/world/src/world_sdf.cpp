@@ -106,7 +106,8 @@ class Reader {
   void addModel(const Model& model, WorldSpec& spec);
   void addRobot(const Model& model, WorldSpec& spec);
   void addRobotOrThrow(const Model& model, WorldSpec& spec);
-  bool gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& robot);
+  void addGazeboRobot(const Model& model, WorldSpec& spec);
+  void gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body_pose, RobotSpec& robot);
   void readDestinations(const XMLElement* world, WorldSpec& spec) const;
 
   std::string world_path_;
@@ -823,12 +824,7 @@ std::string decimal(double value) {
 // link (NAME_LASER_SENSOR; pose, samples, angles, range, rate from the sensor). Its other Gazebo
 // plugins and sensors are listed among what is skipped. False when it has no drive plugin Aula
 // knows (then its <plugin>s are Aula's drivers).
-bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& robot) {
-  const XMLElement* drive = nullptr;
-  for (const auto& [p, file] : model.plugins) {
-    if (gazeboDrives().count(attribute(p, "filename")) != 0) drive = p;
-  }
-  if (drive == nullptr) return false;
+void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body_pose, RobotSpec& robot) {
   const std::string file = model.file;
   const std::string where = world_path_ + ": model '" + model.name + "'";
   const std::string prefix = upper(model.name);
@@ -846,6 +842,9 @@ bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& 
   add("pose3d", "pose3d", {{"channel", prefix + "_POSE"}});
   add("motors", "motors", {{"channel", prefix + "_MOTORS"}, {"holonomic", gazeboDrives().at(attribute(drive, "filename")) ? "true" : "false"}});
   add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
+  for (const XMLElement* link = model.element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
+  // A sensor on a mount (a laser link on a fixed joint) is placed in the body's frame.
+  const Eigen::Isometry3d link_in_body = body_pose.inverse() * poseOf(link, file, where);
   for (const XMLElement* sensor = link->FirstChildElement("sensor"); sensor != nullptr; sensor = sensor->NextSiblingElement("sensor")) {
     const std::string type = attribute(sensor, "type");
     const std::string name = nameOf(sensor, file, where);
@@ -856,7 +855,7 @@ bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& 
       continue;  // a contact sensor: the bumper above
     }
     const std::string in_sensor = where + ", sensor '" + name + "'";
-    const Eigen::Isometry3d pose = poseOf(sensor, file, in_sensor);
+    const Eigen::Isometry3d pose = link_in_body * poseOf(sensor, file, in_sensor);
     const Eigen::Vector3d z_axis = pose.linear().col(2);
     if (z_axis.z() < std::cos(0.1)) {  // a cliff sensor looks down: not a planar laser
       skip(sensor, file, "a robot's <sensor type=\"ray\"> not level", "Aula's lasers scan the plane");
@@ -868,6 +867,10 @@ bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& 
     auto value = [&](const XMLElement* parent, const char* key, double fallback) {
       return number(parent != nullptr ? parent->FirstChildElement(key) : nullptr, file, in_sensor, fallback);
     };
+    if (value(horizontal, "samples", 640) < 2) {  // roombaROS's wall_sensor: an IR range finder, not the laser
+      skip(sensor, file, "a robot's one-beam <sensor type=\"ray\">", "Aula's lasers scan (an infrared range finder is not one)");
+      continue;
+    }
     const Eigen::Vector3d at = pose.translation();
     add(name, "laser",
         {{"channel", prefix + "_LASER_" + upper(name)},
@@ -879,7 +882,93 @@ bool Reader::gazeboRobot(const Model& model, const XMLElement* link, RobotSpec& 
          {"max_range", decimal(value(range, "max", 10))},
          {"rate_hz", decimal(number(sensor->FirstChildElement("update_rate"), file, in_sensor, 10))}});
   }
-  return true;
+  }
+}
+
+// A robot known by its Gazebo drive plugin, of one or more links: its first link is the body
+// (wheels and sensor mounts are part of it: listed as skipped), its collisions together its shape,
+// a cylinder when they are round seen from above (a roomba), else the box around them, in the
+// body's frame; its mass the links' together.
+void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
+  const std::string where = world_path_ + ": model '" + model.name + "'";
+  const std::string& file = model.file;
+  const XMLElement* drive = nullptr;
+  for (const auto& [p, plugin_file] : model.plugins) {
+    if (gazeboDrives().count(attribute(p, "filename")) != 0) drive = p;
+  }
+  const XMLElement* body = model.element->FirstChildElement("link");
+  if (body == nullptr) fail(where, "a robot needs a <link>", model.element, file);
+  const Eigen::Isometry3d body_pose = poseOf(body, file, where);
+  RobotSpec robot;
+  robot.name = model.name;
+  robot.pose = model.pose * body_pose;
+  robot.mass_kg = 0;
+  for (const XMLElement* link = body; link != nullptr; link = link->NextSiblingElement("link")) {
+    const XMLElement* inertial = link->FirstChildElement("inertial");
+    robot.mass_kg += number(inertial != nullptr ? inertial->FirstChildElement("mass") : nullptr, file, where, link == body ? 1.0 : 0.0);
+    if (link != body) skip(link, file, "a robot's <link> besides its body", "Aula's robot is one rigid body (its wheels and mounts are part of it)");
+  }
+  if (!(robot.mass_kg > 0)) fail(where, "the links need an <inertial><mass> > 0", body, file);
+  std::vector<Eigen::Vector3d> points;  // the body's collisions, in its frame
+  for (const XMLElement* c = body->FirstChildElement("collision"); c != nullptr; c = c->NextSiblingElement("collision")) {
+    const std::string in_collision = where + ", collision '" + nameOf(c, file, where) + "'";
+    const XMLElement* geometry = c->FirstChildElement("geometry");
+    if (const XMLElement* sphere = geometry != nullptr ? geometry->FirstChildElement("sphere") : nullptr) {
+      // A caster ball: part of the body's outline (a sphere is no static geometry of Aula's).
+      const double r = number(sphere->FirstChildElement("radius"), file, in_collision, 1.0);
+      const Eigen::Isometry3d pose = poseOf(c, file, in_collision);
+      for (int k = 0; k < 32; ++k) {
+        const double a = 2 * M_PI * k / 32;
+        points.push_back(pose * Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
+      }
+      points.push_back(pose * Eigen::Vector3d(0, 0, r));
+      points.push_back(pose * Eigen::Vector3d(0, 0, -r));
+      continue;
+    }
+    bool is_plane = false;
+    const Shape shape = shapeOf(c, file, in_collision, &is_plane);
+    if (is_plane) continue;
+    const Eigen::Isometry3d pose = poseOf(c, file, in_collision);
+    if (shape.kind == ShapeKind::Mesh) {
+      skip(c, file, "a robot's <mesh> collision", "Aula's robot is the box or cylinder around it");
+      for (const auto& v : shape.mesh->vertices_m) points.push_back(pose * v);
+    } else if (shape.kind == ShapeKind::Box) {
+      for (int i = 0; i < 8; ++i) {
+        points.push_back(pose * Eigen::Vector3d((i & 1 ? 0.5 : -0.5) * shape.box_size_m.x(), (i & 2 ? 0.5 : -0.5) * shape.box_size_m.y(),
+                                                (i & 4 ? 0.5 : -0.5) * shape.box_size_m.z()));
+      }
+    } else {
+      for (int k = 0; k < 32; ++k) {
+        const double a = 2 * M_PI * k / 32;
+        for (const double h : {-0.5, 0.5}) {
+          points.push_back(pose * Eigen::Vector3d(shape.radius_m * std::cos(a), shape.radius_m * std::sin(a), h * shape.length_m));
+        }
+      }
+    }
+  }
+  if (points.empty()) fail(where, "the robot's body link has no <collision> (its shape)", body, file);
+  Eigen::AlignedBox3d bounds;
+  for (const auto& p : points) bounds.extend(p);
+  const Eigen::Vector3d centre = bounds.center(), size = bounds.sizes();
+  double reach = 0;
+  for (const auto& p : points) reach = std::max(reach, std::hypot(p.x() - centre.x(), p.y() - centre.y()));
+  const double half = std::max(size.x(), size.y()) / 2;
+  robot.shape_offset = Eigen::Isometry3d(Eigen::Translation3d(centre));
+  if (std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.02 * half) {  // round: no corner sticks out
+    robot.shape.kind = ShapeKind::Cylinder;
+    robot.shape.radius_m = half;
+    robot.shape.length_m = size.z();
+  } else {
+    robot.shape.box_size_m = size;
+  }
+  if (!(robot.shape.kind == ShapeKind::Cylinder ? robot.shape.length_m > 0 : size.minCoeff() > 0)) {
+    fail(where, "the robot's collisions have no volume", body, file);
+  }
+  gazeboDrivers(model, drive, body_pose, robot);
+  const bool duplicate = std::any_of(spec.robots.begin(), spec.robots.end(),
+                                     [&](const RobotSpec& other) { return other.name == robot.name; });
+  if (duplicate) fail(where, "duplicate robot name", model.element, file);
+  spec.robots.push_back(std::move(robot));
 }
 
 // A world's model: static geometry, a robot, or a container (no link, no plugin, only nested
@@ -934,6 +1023,13 @@ void Reader::addRobotOrThrow(const Model& model, WorldSpec& spec) {
   if (!model.children.empty()) {
     fail(where, "a robot (non-static model) cannot nest models", e, file);
   }
+  const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
+    return gazeboDrives().count(attribute(p.first, "filename")) != 0;
+  });
+  if (gazebo_drive) {
+    addGazeboRobot(model, spec);
+    return;
+  }
   int link_count = 0;
   for (const XMLElement* l = e->FirstChildElement("link"); l != nullptr; l = l->NextSiblingElement("link")) ++link_count;
   if (link_count != 1) {
@@ -950,9 +1046,8 @@ void Reader::addRobotOrThrow(const Model& model, WorldSpec& spec) {
   const std::string in_collision = where + ", collision '" + nameOf(collision, file, where) + "'";
   RobotSpec robot;
   robot.name = model.name;
-  const bool from_gazebo = gazeboRobot(model, link, robot);  // its drivers from its Gazebo plugins
   const XMLElement* geometry = collision->FirstChildElement("geometry");
-  if (!from_gazebo && geometry != nullptr && geometry->FirstChildElement("mesh") != nullptr) {  // refused before it is read
+  if (geometry != nullptr && geometry->FirstChildElement("mesh") != nullptr) {  // refused before it is read
     fail(in_collision, "a robot's collision must be a <box> or a <cylinder> (its footprint); a mesh or plane is not",
          geometry->FirstChildElement("mesh"), file);
   }
@@ -963,20 +1058,11 @@ void Reader::addRobotOrThrow(const Model& model, WorldSpec& spec) {
     fail(in_collision, "a robot's collision must be a <box> or a <cylinder> (its footprint); a mesh or plane is not", collision, file);
   }
   robot.shape_offset = poseOf(collision, file, in_collision);
-  if (robot.shape.kind == ShapeKind::Mesh) {
-    // A Gazebo robot's mesh body: Aula's robot of that kind is the box around it (its footprint
-    // and height), placed where the mesh's bounding box is.
-    const Eigen::AlignedBox3d bounds = robot.shape.mesh->bounds_m;
-    robot.shape_offset = robot.shape_offset * Eigen::Translation3d(bounds.center());
-    robot.shape = Shape{};
-    robot.shape.box_size_m = bounds.sizes();
-    skip(collision, file, "a robot's <mesh> collision", "Aula's robot is the box around it");
-  }
   const XMLElement* inertial = link->FirstChildElement("inertial");
   const XMLElement* mass = inertial != nullptr ? inertial->FirstChildElement("mass") : nullptr;
   robot.mass_kg = number(mass, file, where, 1.0);  // SDF's default mass
   if (!(robot.mass_kg > 0)) fail(where, "the link needs an <inertial><mass> > 0", mass != nullptr ? mass : link, file);
-  if (!from_gazebo) robot.plugins = pluginsOf(model, where);
+  robot.plugins = pluginsOf(model, where);
   const bool duplicate = std::any_of(spec.robots.begin(), spec.robots.end(),
                                      [&](const RobotSpec& other) { return other.name == robot.name; });
   if (duplicate) fail(where, "duplicate robot name", e, file);

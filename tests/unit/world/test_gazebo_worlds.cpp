@@ -367,3 +367,48 @@ TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_TRUE(contains(problems[0], "unknown driver filename 'libgazebo_ros_ackermann_drive.so'")) << problems[0];
 }
+
+TEST_F(GazeboWorlds, ARoombaOfSeveralLinksIsAulasRoundRobot) {
+  // As RoboticsInfrastructure's roombaROS: a round base (here a cylinder and a bumper box inside
+  // its disc), two wheel links, a laser on a mount link, cliff rays and a contact sensor, driven
+  // by libgazebo_ros_planar_move.so.
+  const std::string wheel = "<inertial><mass>0.1</mass></inertial><collision name='c'><geometry><cylinder><radius>0.03</radius>"
+                            "<length>0.02</length></cylinder></geometry></collision>";
+  write("w.world",
+        "<sdf version='1.6'><world name='w'><model name='roomba'><pose>-1 1.5 0 0 0 0</pose>"
+        "<link name='base'><pose>0 0 0.02 0 0 0</pose><inertial><mass>2</mass></inertial>"
+        "<collision name='body'><pose>0 0 0.03 0 0 0</pose><geometry><cylinder><radius>0.165</radius><length>0.06</length>"
+        "</cylinder></geometry></collision>"
+        "<collision name='bumper'><pose>0.1 0 0.03 0 0 0</pose><geometry><box><size>0.05 0.2 0.04</size></box></geometry></collision>"
+        "<collision name='caster'><pose>0.13 0 0.017 0 0 0</pose><geometry><sphere><radius>0.018</radius></sphere></geometry></collision>"
+        "<sensor name='cliff' type='ray'><pose>0.15 0 0.01 0 1.5708 0</pose><ray/></sensor>"
+        "<sensor name='wall' type='ray'><pose>0.09 -0.12 0.06 0 0 -1</pose><ray><scan><horizontal><samples>1</samples>"
+        "</horizontal></scan></ray></sensor>"
+        "<sensor name='bump' type='contact'><contact><collision>bumper</collision></contact></sensor></link>"
+        "<link name='left_wheel'><pose>0 0.12 0.03 0 1.5708 1.5708</pose>" + wheel + "</link>"
+        "<link name='right_wheel'><pose>0 -0.12 0.03 0 1.5708 1.5708</pose>" + wheel + "</link>"
+        "<link name='laser'><pose>0.1 0 0.12 0 0 0</pose><sensor name='laser' type='ray'><ray><scan><horizontal>"
+        "<samples>360</samples><min_angle>-3.14</min_angle><max_angle>3.14</max_angle></horizontal></scan>"
+        "<range><min>0.1</min><max>8</max></range></ray></sensor></link>"
+        "<joint name='j' type='fixed'><parent>base</parent><child>laser</child></joint>"
+        "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
+  const WorldSpec w = loadWorld(dir_ + "/w.world", {dir_ + "/models"});
+  const RobotSpec& roomba = requireRobot(w, "roomba");
+  EXPECT_EQ(roomba.shape.kind, ShapeKind::Cylinder);
+  EXPECT_NEAR(roomba.shape.radius_m, 0.165, 1e-9);
+  EXPECT_NEAR(roomba.shape.length_m, 0.061, 1e-9);  // the caster ball reaches 1 mm below the body
+  EXPECT_TRUE(roomba.pose.translation().isApprox(Eigen::Vector3d(-1, 1.5, 0.02)));
+  EXPECT_NEAR(roomba.mass_kg, 2.2, 1e-12);
+  EXPECT_EQ(channelOf(roomba, "bumper"), "ROOMBA_BUMPER");
+  const PluginSpec* laser = roomba.findPluginNamed("laser");
+  ASSERT_NE(laser, nullptr);
+  EXPECT_TRUE(laser->getPose("pose").translation().isApprox(Eigen::Vector3d(0.1, 0, 0.1))) << "in the body's frame";
+  EXPECT_EQ(laser->getInt("samples", 0), 360);
+  EXPECT_EQ(roomba.plugins.size(), 4u);  // pose3d, motors, bumper, laser
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "a robot's <link> besides its body x3 (")) << skipped;
+  EXPECT_TRUE(contains(skipped, "<joint> in <model> (")) << skipped;
+  EXPECT_TRUE(contains(skipped, "a robot's one-beam <sensor type=\"ray\"> (")) << skipped;
+  EXPECT_EQ(roomba.findPluginNamed("wall"), nullptr) << "an infrared range finder is not the laser";
+}
