@@ -9,6 +9,7 @@
 #include <aula/config/config.hpp>
 #include <aula/grade/grade_plan.hpp>
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/run_page.hpp>
 #include <aula/grade/student_page.hpp>
 #include <aula/grade/submission_build.hpp>
 
@@ -20,6 +21,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -290,4 +293,40 @@ TEST(StudentPage, KeepsNoQuoteOfTheWorldNoTeachersFolderAndCapsTheStudentsText) 
   // A failure of the student's own, short and with no path: shown as it is, with the picture.
   run.report["failure"] = "execute() threw std::runtime_error: boom";
   EXPECT_EQ(forTheStudent(run, withheld).picture_png, "a picture that writes the failure");
+}
+
+// One copy of each trace (issue 58): a trace the student's page needs unchanged is the page's
+// alone, the referee's bytes read back from it; one the page had to change stays beside it, compact.
+TEST(StudentPage, TheGradeKeepsOneCopyOfEachTrace) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("aula-one-trace-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string world = "<?xml version='1.0'?>\n<sdf version='1.6'><world name='held_out'></world></sdf>\n";
+  const std::string plain = "{\"trace\": 1,\n \"events\": [{\"t_s\": 1.5, \"kind\": \"bump\", \"text\": \"a bump\"}],\n"
+                            " \"samples\": {\"x_mm\": [1,2,3]}}\n";
+  const std::string quoting = "{\"trace\": 1,\n \"events\": [{\"t_s\": 1.5, \"kind\": \"fault\", \"text\": \"" +
+                              std::string("<sdf version='1.6'><world name='held_out'>") + "\"}],\n \"samples\": {\"x_mm\": [1]}}\n";
+  for (const std::string& referees : {plain, quoting}) {
+    const std::string stem = (dir / (referees == plain ? "plain" : "quoting")).string();
+    std::ofstream(stem + ".trace.json", std::ios::binary) << referees;
+    aula::grade::RunFiles run;
+    run.report = {{"mark", 1.0}, {"log", stem + ".log"}};
+    run.trace_json = aula::grade::traceOfRun(stem);
+    ASSERT_EQ(run.trace_json, referees);
+    const aula::grade::RunFiles theirs = aula::grade::forTheStudent(run, {world});
+    const bool page_has_it = aula::grade::withoutPaths(theirs.trace_json) == referees;
+    EXPECT_EQ(page_has_it, referees == plain) << "unchanged, the student's copy is the referee's bytes";
+    const std::string html = aula::grade::runPageHtml(theirs);
+    std::ofstream(stem + ".html", std::ios::binary) << html;
+    aula::grade::keepOneTrace(stem, page_has_it);
+    EXPECT_FALSE(fs::exists(stem + ".trace.json"));
+    EXPECT_EQ(fs::exists(stem + ".trace.z"), !page_has_it);
+    EXPECT_EQ(aula::grade::traceOfRun(stem), referees) << "nothing lost: the referee's trace, byte for byte";
+    EXPECT_EQ(aula::grade::traceOfPage(html).find("sdf version"), std::string::npos) << "the page's copy withholds the world";
+  }
+  EXPECT_EQ(aula::grade::inflated(aula::grade::deflated(std::string(300000, 'x'))), std::string(300000, 'x'));
+  EXPECT_EQ(aula::grade::inflated("not a zlib stream"), "");
+  EXPECT_EQ(aula::grade::traceOfRun((dir / "none").string()), "");
+  fs::remove_all(dir);
 }
