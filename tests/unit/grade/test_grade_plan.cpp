@@ -330,3 +330,38 @@ TEST(StudentPage, TheGradeKeepsOneCopyOfEachTrace) {
   EXPECT_EQ(aula::grade::traceOfRun((dir / "none").string()), "");
   fs::remove_all(dir);
 }
+
+// The picture the grade keeps and inlines (issue 58): the same filtered rows, deflated at zlib's
+// best in one IDAT, the other chunks as they were; anything else left as it is.
+TEST(StudentPage, ThePictureIsKeptSmallerPixelForPixel) {
+  auto u32 = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+  auto chunk = [&](const std::string& type, const std::string& data) {  // the CRC is not read back here
+    return u32(static_cast<uint32_t>(data.size())) + type + data + u32(0);
+  };
+  std::string rows;  // 64 rows of 200 grey pixels, filter byte 0
+  for (int y = 0; y < 64; ++y) rows += '\0' + std::string(200, static_cast<char>(y % 7 ? 200 : 30));
+  const std::string packed = aula::grade::deflated(rows);
+  const std::string header = u32(200) + u32(64) + std::string{8, 0, 0, 0, 0};
+  const std::string signature("\x89PNG\r\n\x1a\n", 8);
+  // Three IDATs in a row (as encoders write them), around them IHDR, a text chunk and IEND.
+  const std::string png = signature + chunk("IHDR", header) + chunk("tEXt", std::string("a\0b", 3)) + chunk("IDAT", packed.substr(0, 10)) +
+                          chunk("IDAT", packed.substr(10, 20)) + chunk("IDAT", packed.substr(30)) +
+                          std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  const std::string smaller = aula::grade::smallerPng(png);
+  ASSERT_LT(smaller.size(), png.size());
+  EXPECT_EQ(smaller.substr(0, 8 + 12 + 13), png.substr(0, 8 + 12 + 13)) << "the signature and IHDR as they were";
+  const size_t idat = smaller.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  EXPECT_EQ(smaller.find("IDAT", idat + 1), std::string::npos) << "one IDAT";
+  const auto length = [&](size_t at) {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(smaller[at + i]);
+    return v;
+  };
+  EXPECT_EQ(aula::grade::inflated(smaller.substr(idat + 4, length(idat - 4))), rows) << "pixel for pixel";
+  EXPECT_EQ(smaller.substr(smaller.size() - 12), png.substr(png.size() - 12)) << "IEND as it was";
+  EXPECT_NE(smaller.find(std::string("tEXta\0b", 7)), std::string::npos) << "the other chunks kept";
+  EXPECT_EQ(aula::grade::smallerPng(smaller), smaller) << "once is enough";
+  EXPECT_EQ(aula::grade::smallerPng("not a picture"), "not a picture");
+  EXPECT_EQ(aula::grade::smallerPng(png.substr(0, png.size() - 30)), png.substr(0, png.size() - 30)) << "cut short";
+}

@@ -60,6 +60,10 @@ void keepOneTrace(const std::string& stem, bool page_has_it);
 // reads), and back ("" when `zlib` is not such a stream).
 std::string deflated(const std::string& bytes);
 std::string inflated(const std::string& zlib);
+// The referee's PNG `png` with its pixels (the same filtered rows) deflated at zlib's level 9 in
+// one IDAT, its other chunks as they were; `png` itself when that is not smaller or it is not a
+// PNG this reads. The grade writes each run's picture so before its page inlines it.
+std::string smallerPng(const std::string& png);
 
 // The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`), for the
 // student: no absolute path of the teacher's machine in it (withoutPaths).
