@@ -52,6 +52,8 @@ class RunInProgress {
     fs::remove(run.report_path);
     fs::remove(fs::path(run.result_path).replace_extension(".png"));
     fs::remove(fs::path(run.result_path).replace_extension(".trace.json"));
+    fs::remove(fs::path(run.result_path).replace_extension(".trace.z"));  // the grade's compact copy (run_page.hpp)
+    fs::remove(fs::path(run.result_path).replace_extension(".html"));  // its page holds the earlier trace
     if (run.compile_error.empty()) {
       child_ = std::make_unique<process::ChildProcess>(run.argv, run.log_path, run.log_path, std::vector<int>{},
                                                        process::Placement{cpu, false});

@@ -236,8 +236,25 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
     if (!r.contains("log") || !r["log"].is_string()) continue;
     fs::path page = r["log"].get<std::string>();
     page.replace_extension(".html");
-    const RunFiles theirs = forTheStudent(runFilesOf(r), world_texts.ofRun(r["log"].get<std::string>()));
+    // The picture at zlib's best, once (pixel for pixel the referee's): the page inlines it.
+    const std::string png = fs::path(page).replace_extension(".png").string();
+    if (fs::is_regular_file(png)) {
+      const std::string picture = config::readSmallFile(png, 64u << 20, "the run's picture");
+      const std::string smaller = smallerPng(picture);
+      if (smaller.size() < picture.size()) config::writeFileAtomically(png, smaller, "the run's picture");
+    }
+    const RunFiles referees = runFilesOf(r);
+    const RunFiles theirs = forTheStudent(referees, world_texts.ofRun(r["log"].get<std::string>()));
     config::writeFileAtomically(page.string(), runPageHtml(theirs), "the run's page");
+    // One copy of the trace: the page's, when it is the referee's byte for byte (run_page.hpp).
+    keepOneTrace(fs::path(page).replace_extension().string(),
+                 !referees.trace_json.empty() && withoutPaths(theirs.trace_json) == referees.trace_json);
+  }
+  // The known algorithms' runs have no page: their traces kept compact for the comparison.
+  if (!submissions.empty()) {
+    for (const auto& r : readResults(out_dir, "known")) {
+      if (r.contains("log") && r["log"].is_string()) keepOneTrace(fs::path(r["log"].get<std::string>()).replace_extension().string(), false);
+    }
   }
   writeLmsFiles(out_dir, grades);  // after the pages: Moodle's feedback zip holds them
   return grades;

@@ -9,7 +9,9 @@
 
 #include <QByteArray>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -137,6 +139,110 @@ std::string noNetworkPolicy() {
          "style-src 'unsafe-inline'; img-src data: 'self'; frame-src 'self'\">";
 }
 
+std::string deflated(const std::string& bytes) {
+  QByteArray packed = qCompress(QByteArray(bytes.data(), static_cast<int>(bytes.size())), 9);
+  packed.remove(0, 4);  // qCompress's length prefix: the rest is a zlib stream ("deflate" to a browser)
+  return packed.toStdString();
+}
+
+std::string inflated(const std::string& zlib) {
+  if (zlib.size() < 6) return "";
+  // qUncompress wants qCompress's 4-byte length first: a guess is enough (it grows its buffer).
+  const uint32_t guess = static_cast<uint32_t>(std::min<size_t>(zlib.size() * 8, 64u << 20));
+  QByteArray framed;
+  for (int shift : {24, 16, 8, 0}) framed.append(static_cast<char>((guess >> shift) & 0xff));
+  framed.append(zlib.data(), static_cast<int>(zlib.size()));
+  const QByteArray out = qUncompress(framed);
+  return std::string(out.constData(), static_cast<size_t>(out.size()));
+}
+
+namespace {
+
+uint32_t crc32Of(const std::string& bytes) {  // PNG's CRC (ISO 3309)
+  uint32_t crc = 0xffffffffu;
+  for (unsigned char byte : bytes) {
+    crc ^= byte;
+    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+  }
+  return crc ^ 0xffffffffu;
+}
+
+std::string bigEndian(uint32_t value) {
+  std::string out;
+  for (int shift : {24, 16, 8, 0}) out += static_cast<char>((value >> shift) & 0xff);
+  return out;
+}
+
+}  // namespace
+
+std::string smallerPng(const std::string& png) {
+  static const std::string kSignature("\x89PNG\r\n\x1a\n", 8);
+  if (png.compare(0, 8, kSignature) != 0) return png;
+  std::string before, after, idat;  // the chunks before the first IDAT and after the last one
+  bool seen = false;
+  for (size_t at = 8; at + 12 <= png.size();) {
+    const auto byte = [&](size_t i) { return static_cast<uint32_t>(static_cast<unsigned char>(png[i])); };
+    const uint32_t length = (byte(at) << 24) | (byte(at + 1) << 16) | (byte(at + 2) << 8) | byte(at + 3);
+    if (length > png.size() - at - 12) return png;  // cut short: left as it is
+    const std::string type = png.substr(at + 4, 4);
+    const std::string chunk = png.substr(at, 12 + length);
+    if (type == "IDAT") {
+      if (seen && !after.empty()) return png;  // IDATs not in a row: not a PNG to touch
+      idat += png.substr(at + 8, length);
+      seen = true;
+    } else {
+      (seen ? after : before) += chunk;
+    }
+    at += 12 + length;
+  }
+  const std::string pixels = inflated(idat);
+  if (!seen || pixels.empty()) return png;
+  const std::string packed = deflated(pixels);  // the same filtered rows, zlib's level 9
+  const std::string chunk = "IDAT" + packed;
+  const std::string out = kSignature + before + bigEndian(static_cast<uint32_t>(packed.size())) + chunk +
+                          bigEndian(crc32Of(chunk)) + after;
+  return out.size() < png.size() ? out : png;
+}
+
+namespace {
+
+constexpr const char* kTraceBlockOpen = "<script type='application/octet-stream' id='run-trace'>";
+
+}  // namespace
+
+std::string traceOfPage(const std::string& html) {
+  const size_t open = html.find(kTraceBlockOpen);
+  if (open == std::string::npos) return "";
+  const size_t from = open + std::string(kTraceBlockOpen).size();
+  const size_t end = html.find("</script>", from);
+  if (end == std::string::npos) return "";
+  const QByteArray b64 = QByteArray::fromBase64(QByteArray(html.data() + from, static_cast<int>(end - from)));
+  return inflated(std::string(b64.constData(), static_cast<size_t>(b64.size())));
+}
+
+std::string traceOfRun(const std::string& stem) {
+  std::string trace = readBytes(stem + ".trace.json");
+  if (!trace.empty()) return trace;
+  const std::string compact = readBytes(stem + ".trace.z");
+  if (!compact.empty()) return inflated(compact);
+  return traceOfPage(readBytes(stem + ".html"));
+}
+
+void keepOneTrace(const std::string& stem, bool page_has_it) {
+  std::error_code error;
+  const std::string json = readBytes(stem + ".trace.json");
+  if (json.empty()) {
+    if (page_has_it) fs::remove(stem + ".trace.z", error);  // the page's copy is the referee's: one is enough
+    return;
+  }
+  if (page_has_it) {
+    fs::remove(stem + ".trace.z", error);
+  } else {
+    config::writeFileAtomically(stem + ".trace.z", deflated(json), "the run's trace");
+  }
+  fs::remove(stem + ".trace.json", error);
+}
+
 RunFiles runFilesOf(const nlohmann::json& result) {
   RunFiles run;
   run.report = result;
@@ -145,24 +251,28 @@ RunFiles runFilesOf(const nlohmann::json& result) {
   if (!result.contains("log") || !result["log"].is_string()) return run;
   fs::path stem = result["log"].get<std::string>();
   stem.replace_extension();
-  run.trace_json = readBytes(stem.string() + ".trace.json");
+  run.trace_json = traceOfRun(stem.string());
   run.picture_png = readBytes(stem.string() + ".png");
   return run;
 }
 
 namespace {
 
-// The run's data block, its id `id`: the report as it is, the trace as the referee wrote it, one
-// JSON object, deflated. The page's player (player.js, compiled in: tools/grade/CMakeLists.txt)
-// draws everything from it (the map, run-length encoded; the poses, delta-encoded mm and mrad at
-// period_s; the exercise's state; the events; the breakdown's rows).
+// The run's data blocks: `id`, the report as it is, and `id`-trace, the trace as the referee
+// wrote it (byte for byte when the student's copy needed no change: the grade then keeps no other
+// copy, traceOfPage reads it back), each deflated and base64. The page's player (player.js,
+// compiled in: tools/grade/CMakeLists.txt) draws everything from them (the map, run-length
+// encoded; the poses, delta-encoded mm and mrad at period_s; the exercise's state; the events;
+// the breakdown's rows).
 std::string runDataBlock(const std::string& id, const RunFiles& run) {
   if (run.trace_json.empty()) return "";
-  const std::string payload = "{\"report\": " + run.report.dump() + ", \"trace\": " + run.trace_json + "}";
-  QByteArray packed = qCompress(QByteArray(payload.data(), static_cast<int>(payload.size())), 9);
-  packed.remove(0, 4);  // qCompress's length prefix: the rest is a zlib stream ("deflate" to a browser)
-  return "<script type='application/octet-stream' id='" + escapeHtml(id) + "'>" + packed.toBase64().toStdString() +
-         "</script>\n";
+  auto block = [](const std::string& open, const std::string& bytes) {
+    return open + QByteArray::fromStdString(deflated(bytes)).toBase64().toStdString() + "</script>\n";
+  };
+  return block("<script type='application/octet-stream' id='" + escapeHtml(id) + "'>", run.report.dump()) +
+         block(id == "run" ? std::string(kTraceBlockOpen)
+                           : "<script type='application/octet-stream' id='" + escapeHtml(id + "-trace") + "'>",
+               run.trace_json);
 }
 
 // In report.html's frame, the page tells it how tall it is (report_html.cpp's message listener).

@@ -32,9 +32,9 @@ Paths pathsOf(const std::vector<nlohmann::json>& results) {
   Paths paths;
   for (const auto& r : results) {
     if (!r.contains("log") || !r["log"].is_string()) continue;
-    fs::path trace = r["log"].get<std::string>();
-    trace.replace_extension(".trace.json");
-    const std::string text = readText(trace.string());
+    fs::path stem = r["log"].get<std::string>();
+    stem.replace_extension();
+    const std::string text = traceOfRun(stem.string());  // the trace file, or the page's copy
     if (text.empty()) continue;
     const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
     if (parsed.is_discarded()) continue;
