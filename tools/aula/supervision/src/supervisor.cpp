@@ -247,7 +247,7 @@ class RunSupervisor {
       tellReferee(verdict.tell_referee);
     }
     if (verdict.result) result_ = *verdict.result;
-    if (verdict.machine) machine_ = true;
+    machine_ = machine_ || verdict.machine;
     return verdict.run_over;
   }
 
@@ -263,8 +263,7 @@ class RunSupervisor {
     }
     // Whatever the run left behind (detached, SIGTERM blocked): gone with it.
     const std::vector<pid_t> left = process::descendantsOf(::getpid());
-    for (const pid_t orphan : left) ::kill(orphan, SIGKILL);
-    for (const pid_t orphan : left) ::waitpid(orphan, nullptr, 0);  // ours once orphaned (the subreaper): reaped
+    for (const pid_t orphan : left) ::kill(orphan, SIGKILL), ::waitpid(orphan, nullptr, 0);  // ours (the subreaper): reaped
     if (output_) output_->finish();
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
