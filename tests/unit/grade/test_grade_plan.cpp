@@ -8,6 +8,7 @@
 // run's world, no teacher's folder, and no more than its cap of the student's text.
 #include <aula/config/config.hpp>
 #include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grades.hpp>
 #include <aula/grade/grade_runner.hpp>
 #include <aula/grade/run_page.hpp>
 #include <aula/grade/student_page.hpp>
@@ -364,4 +365,31 @@ TEST(StudentPage, ThePictureIsKeptSmallerPixelForPixel) {
   EXPECT_EQ(aula::grade::smallerPng(smaller), smaller) << "once is enough";
   EXPECT_EQ(aula::grade::smallerPng("not a picture"), "not a picture");
   EXPECT_EQ(aula::grade::smallerPng(png.substr(0, png.size() - 30)), png.substr(0, png.size() - 30)) << "cut short";
+}
+
+// A retry is said in its row, and a run that never completed (the machine's reason on every try)
+// is left out of the marks and named, never a 0 in the median (issue 57).
+TEST(GradePlan, RetriesAreSaidAndARunNeverCompletedIsLeftOutAndNamed) {
+  const auto retried = nlohmann::json::parse(R"JSON({"student": "ada", "mark": 6.0, "seed": 1, "world": "house.world",
+    "machine_reason": false, "retried": 1, "retried_because": ["the machine's reason: aula-sim died (SIGKILL)"]})JSON");
+  const auto never = nlohmann::json::parse(R"JSON({"student": "ada", "mark": 0.0, "seed": 2, "world": "house.world",
+    "machine_reason": true, "failure": "the machine's reason: the grade's wall-clock backstop of 3600 s ran out"})JSON");
+  // A student's failure that says the words is theirs: a 0 in the median, no retry.
+  const auto theirs = nlohmann::json::parse(R"JSON({"student": "bo", "mark": 0.0, "seed": 1, "world": "house.world",
+    "machine_reason": false, "failure": "MyAlgorithm.py:3: RuntimeError: the machine's reason: please"})JSON");
+  const auto grades = aula::grade::gradeStudents({retried, never, theirs});
+  ASSERT_EQ(grades.size(), 2u);
+  const auto& ada = grades[0];
+  EXPECT_EQ(ada.runs, 1);
+  EXPECT_DOUBLE_EQ(ada.median, 6.0);
+  EXPECT_EQ(ada.runs_retried, 1);
+  EXPECT_EQ(ada.retries, "the machine's reason: aula-sim died (SIGKILL)");
+  EXPECT_EQ(ada.runs_incomplete, 1);
+  EXPECT_EQ(ada.incomplete, "house seed 2");
+  const auto& bo = grades[1];
+  EXPECT_EQ(bo.runs, 1);
+  EXPECT_EQ(bo.runs_failed, 1);
+  EXPECT_EQ(bo.runs_incomplete, 0);
+  const std::string csv = aula::grade::gradesCsv(grades);
+  EXPECT_NE(csv.find(",1,1,,the machine's reason: aula-sim died (SIGKILL),house seed 2,"), std::string::npos) << csv;
 }
