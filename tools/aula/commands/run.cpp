@@ -193,10 +193,7 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
   s.headless = headless;
   s.sandbox = args.flag("sandbox");
   s.placement = placementOf(args, headless);
-  const double episode_s = ex.episode_key.empty() ? 0 : run.referee().getDouble(ex.episode_key);
-  s.wall_budget_s = args.given("timeout")                        ? args.real("timeout")
-                    : headless && ex.referee_settings != nullptr ? supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0)
-                                                                 : 0;
+  s.wall_budget_s = wallBudgetOf(ex, run, args, headless);
   s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
   if (s.sandbox) s.confinement = confinementOf(ex, run, graded_file);
   if (isolation == "full") {  // its own network: a datagram to any other port went nowhere, and is flagged
@@ -282,8 +279,9 @@ cli::Command declare() {
       .add(cli::numberOption("duration", config::SettingType::Double, "s", 0, 1e6,
                              "the episode's length in simulated seconds (the referee's Duration or Timeout)", true))
       .add(cli::numberOption("timeout", config::SettingType::Double, "s", 0, 1e7,
-                             "a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); "
-                             "past it the run ends, graded so far, exit 1", true))
+                             "a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s + the "
+                             "algorithm's Component budgets; waiting for a CPU not counted); past it the run ends, graded "
+                             "so far, the machine's reason (exit 75)", true))
       .add(cli::valueOption("lcm-url", "URL", "the run's bus (udpm://GROUP:PORT?ttl=0); port 0: a free one from the OS"))
       .add(cli::valueOption("cpu", "N|auto|any", "the CPU a headless run's processes share (default: auto, the one `aula` starts on)"))
       .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"))

@@ -6,6 +6,7 @@
 #include <aula/desktop/window_layout.hpp>
 #include <aula/desktop/work_area.hpp>
 #include <aula/world/occupancy_map.hpp>
+#include <aula/supervision/rules.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <algorithm>
@@ -241,6 +242,18 @@ config::Config overridesOf(const settings::Exercise& ex, const cli::Arguments& a
   if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
   if (args.given("duration") && !ex.episode_key.empty()) setFrom("duration", ex.episode_key, args.text("duration"));
   return overrides;
+}
+
+double wallBudgetOf(const settings::Exercise& ex, const RunSettings& run, const cli::Arguments& args, bool headless) {
+  if (args.given("timeout")) return args.real("timeout");
+  if (!headless || ex.referee_settings == nullptr) return 0;
+  const double episode_s = ex.episode_key.empty() ? 0 : run.referee().getDouble(ex.episode_key);
+  // Past the episode's, the time the student's code may take by its own budgets: a slow algorithm
+  // within them is waited for (the backstop running out on it would be a retry it bought).
+  const config::Config& c = run.component();
+  const double algorithm_s = c.getDouble("Component.StartBudget") + c.getDouble("Component.RunBudget") +
+                             c.getDouble("Component.RunBlockedLimit");
+  return supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0) + algorithm_s;
 }
 
 }  // namespace aula::commands
