@@ -109,6 +109,14 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   // Where it threw, in the student's file (tests/data/plugins/throws.cpp, line 12), even sandboxed.
   EXPECT_EQ(rows["thrower"]["failures"], "execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12) (x2)");
 
+  // Once every run is done, each build keeps its sources, project and log, not its objects and
+  // plugin (a class that travels); the broken one's log says why it did not compile.
+  for (const char* student : {"good", "lazy", "broken", "thrower"}) {
+    EXPECT_FALSE(fs::exists(out / "build" / student / "build")) << student;
+    EXPECT_TRUE(fs::is_regular_file(out / "build" / student / "src" / "MyAlgorithm.cpp")) << student;
+  }
+  EXPECT_NE(readFile((out / "build" / "broken" / "compile.log").string()).find("error"), std::string::npos);
+
   // Each run's result: the referee's report plus who, what and how long.
   const std::string good1 = readFile((out / "runs" / "good" / "vacuum-seed1.json").string());
   EXPECT_NE(good1.find("\"student\": \"good\""), std::string::npos) << good1;

@@ -236,11 +236,12 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
     if (!r.contains("log") || !r["log"].is_string()) continue;
     fs::path page = r["log"].get<std::string>();
     page.replace_extension(".html");
-    // The picture at zlib's best, once (pixel for pixel the referee's): the page inlines it.
+    // The picture in the palette of its 256 most frequent colours, at zlib's best, once: the
+    // class report shows it, the page links it (or inlines it, when it has no run to play).
     const std::string png = fs::path(page).replace_extension(".png").string();
     if (fs::is_regular_file(png)) {
       const std::string picture = config::readSmallFile(png, 64u << 20, "the run's picture");
-      const std::string smaller = smallerPng(picture);
+      const std::string smaller = palettePng(picture);
       if (smaller.size() < picture.size()) config::writeFileAtomically(png, smaller, "the run's picture");
     }
     const RunFiles referees = runFilesOf(r);

@@ -10,7 +10,6 @@
 #include <aula/grade/run_page.hpp>
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -81,26 +80,6 @@ std::string relativeStem(const nlohmann::json& r) {
   log.replace_extension();
   return "runs/" + log.parent_path().filename().string() + "/" + log.filename().string();
 }
-
-// "%2F" for '/', and so on: a relative link whose names came from the students' folders.
-std::string urlPath(const std::string& path) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : path) {
-    if (std::isalnum(c) || std::string("/-_.~").find(static_cast<char>(c)) != std::string::npos) {
-      out += static_cast<char>(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
-
-}  // namespace
-
-namespace {
 
 // The page's head and its first paragraph: how many students, runs, failures and forgeries.
 void writeHead(std::ostringstream& html, const std::vector<StudentGrade>& grades, const std::vector<nlohmann::json>& results) {

@@ -188,6 +188,7 @@ RunFiles runFilesOf(const nlohmann::json& result) {
   stem.replace_extension();
   run.trace_json = traceOfRun(stem.string());
   run.picture_png = readBytes(stem.string() + ".png");
+  if (!run.picture_png.empty()) run.picture_name = stem.filename().string() + ".png";
   return run;
 }
 
@@ -244,13 +245,18 @@ std::string runPageHtml(const RunFiles& given) {
   } else {
     html << "<div id='player'>Opening the run...</div>\n" << runDataBlock("run", run);
   }
-  if (!run.picture_png.empty()) {
+  if (!run.picture_png.empty() && !run.trace_json.empty() && !run.picture_name.empty()) {
+    // The player draws the run's end: the picture stays the file beside the page, a link (not a
+    // request when the page opens), rather than a third of the page again (issue 58).
+    html << "<p><a href='" << escapeHtml(urlPath(run.picture_name)) << "'>The referee's picture at the end</a> (" << escapeHtml(run.picture_name)
+         << ", beside this page)</p>\n";
+  } else if (!run.picture_png.empty()) {
     html << "<h2>The referee's picture at the end</h2>\n<img class='still' alt='the referee&#39;s picture of the run' src='"
          << dataUri("image/png", run.picture_png) << "'>\n";
   }
-  html << "<script>" << kPlayerScriptJs << "</script>\n";
   if (!run.trace_json.empty()) {
-    html << "<script>\nAulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player')));\n"
+    html << "<script type='application/octet-stream' id='aula-player'>" << packedPlayerScript() << "</script>\n<script>\n" << kPlayerLoaderJs
+         << "aulaLoadPlayer(() => AulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player'))));\n"
          << kTellTheFrame << "</script>\n";
   }
   html << "</body></html>\n";
@@ -269,6 +275,10 @@ void writeRunPage(const std::string& html_path, const std::string& report_path, 
               std::to_string(run.report.value("seed", 0LL));
   if (!trace_path.empty()) run.trace_json = readBytes(trace_path);
   if (!picture_path.empty()) run.picture_png = readBytes(picture_path);
+  // Linked by name when it is beside the page, else inlined.
+  if (!run.picture_png.empty() && fs::absolute(picture_path).parent_path() == fs::absolute(html_path).parent_path()) {
+    run.picture_name = fs::path(picture_path).filename().string();
+  }
   config::writeFileAtomically(html_path, runPageHtml(run), "the run's page");
 }
 

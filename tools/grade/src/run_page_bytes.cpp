@@ -1,12 +1,20 @@
-// A run page's bytes: zlib as a browser's DecompressionStream reads it, and the referee's PNG
-// packed smaller, pixel for pixel (run_page.hpp).
+// A run page's bytes: zlib as a browser's DecompressionStream reads it, the referee's PNG packed
+// smaller, and the player's script deflated (run_page.hpp).
 #include "aula/grade/run_page.hpp"
 
+#include "player_assets.hpp"
+
+#include <QBuffer>
 #include <QByteArray>
+#include <QImage>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace aula::grade {
 
@@ -73,6 +81,52 @@ std::string smallerPng(const std::string& png) {
   const std::string out = kSignature + before + bigEndian(static_cast<uint32_t>(packed.size())) + chunk +
                           bigEndian(crc32Of(chunk)) + after;
   return out.size() < png.size() ? out : png;
+}
+
+std::string palettePng(const std::string& png) {
+  QImage image;
+  if (!image.loadFromData(reinterpret_cast<const uchar*>(png.data()), static_cast<int>(png.size()), "PNG") || image.hasAlphaChannel()) {
+    return png;
+  }
+  image = image.convertToFormat(QImage::Format_RGB32);
+  std::map<QRgb, size_t> counts;
+  for (int y = 0; y < image.height(); ++y) {
+    const auto* row = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+    for (int x = 0; x < image.width(); ++x) ++counts[row[x]];
+  }
+  // The most frequent first, ties by value: the same picture gives the same palette.
+  std::vector<std::pair<size_t, QRgb>> by_count;
+  for (const auto& [colour, n] : counts) by_count.push_back({n, colour});
+  std::sort(by_count.begin(), by_count.end(), [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  QVector<QRgb> table;
+  for (size_t i = 0; i < by_count.size() && i < 256; ++i) table.push_back(by_count[i].second);
+  const QImage indexed = image.convertToFormat(QImage::Format_Indexed8, table, Qt::ThresholdDither | Qt::AvoidDither);
+  QByteArray bytes;
+  QBuffer buffer(&bytes);
+  buffer.open(QIODevice::WriteOnly);
+  if (!indexed.save(&buffer, "PNG")) return png;
+  const std::string out = smallerPng(bytes.toStdString());
+  return out.size() < png.size() ? out : png;
+}
+
+std::string urlPath(const std::string& path) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) || std::string("/-_.~").find(static_cast<char>(c)) != std::string::npos) {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+std::string packedPlayerScript() {
+  static const std::string packed = QByteArray::fromStdString(deflated(kPlayerScriptJs)).toBase64().toStdString();
+  return packed;
 }
 
 }  // namespace aula::grade

@@ -251,4 +251,16 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
   return out;
 }
 
+void dropBuildTrees(const std::string& out_dir) {
+  for (const fs::path& builds : {fs::path(out_dir) / "build", fs::path(out_dir) / "known" / "build"}) {
+    std::error_code error;
+    if (!fs::is_directory(builds, error)) continue;
+    for (const auto& project : fs::directory_iterator(builds, error)) {
+      const fs::path tree = project.path() / "build";
+      // Never through a link: only the grade's own folders are removed.
+      if (!project.is_symlink() && fs::is_directory(fs::symlink_status(tree))) fs::remove_all(tree, error);
+    }
+  }
+}
+
 }  // namespace aula::grade

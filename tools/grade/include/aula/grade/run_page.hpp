@@ -38,6 +38,7 @@ struct RunFiles {
   nlohmann::json report;    // the run's result (the referee's report and who ran it)
   std::string trace_json;   // "" when the run has no trace: the page shows the still picture only
   std::string picture_png;  // the referee's picture, "" when there is none
+  std::string picture_name;  // its file's name beside the page ("vacuum-seed1.png"), "" when not there
 };
 
 // A run's files beside its result: its trace (traceOfRun) and <stem>.png, where <stem> is the
@@ -64,6 +65,15 @@ std::string inflated(const std::string& zlib);
 // one IDAT, its other chunks as they were; `png` itself when that is not smaller or it is not a
 // PNG this reads. The grade writes each run's picture so before its page inlines it.
 std::string smallerPng(const std::string& png);
+// The picture `png` in at most 256 colours, as a palette PNG a third of its size: each pixel the
+// nearest of the picture's 256 most frequent colours (beyond them are a few hundred pixels of
+// anti-aliased edges' blends); `png` itself when that is not smaller or it is not an opaque PNG.
+std::string palettePng(const std::string& png);
+// The player's script (player.js with the exercises' drawings), deflated and base64, as the
+// page's 'aula-player' block holds it for player_loader.js.
+std::string packedPlayerScript();
+// "%2F" for '/', and so on: a relative link whose names came from the students' folders.
+std::string urlPath(const std::string& path);
 
 // The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`), for the
 // student: no absolute path of the teacher's machine in it (withoutPaths).
