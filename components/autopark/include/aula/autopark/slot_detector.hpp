@@ -2,6 +2,9 @@
 // Finds a free parking slot beside the curb from laser scans, with no map given: every laser
 // point to the right of the car goes into a profile along the street (x bins); a bin whose
 // nearest point to the lane is well below the parked cars' side sees the curb, so it is free.
+// Where no beam sees a curb (lasers above it, as on RoboticsAcademy's street), a bin that beams
+// with no echo crossed well below the cars' side is free, and the slot's curb line is the deepest
+// point seen on the end faces of the cars either side of it (their far side).
 // A slot is a run of free bins bounded by parked cars at both ends (not the wall at a street's end).
 // Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
 
@@ -16,7 +19,7 @@ namespace aula::autopark {
 struct Slot {
   double rear_x_m = 0;   // end of the parked car behind the slot (smaller x)
   double front_x_m = 0;  // start of the parked car ahead of it
-  double curb_y_m = 0;   // the curb face seen inside the slot
+  double curb_y_m = 0;   // the curb face seen inside the slot, else the parked cars' far side
   double edge_y_m = 0;   // the parked cars' side nearest the lane
   double lengthM() const { return front_x_m - rear_x_m; }
   double centreXM() const { return (rear_x_m + front_x_m) / 2; }
@@ -31,6 +34,7 @@ class SlotDetector {
   void addScan(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
                const component::LaserData& scan);
   void addPoint(double x_m, double y_m);  // a point of the parking side (world frame)
+  void addFreePoint(double x_m, double y_m);  // a point a beam with no echo passed (world frame)
 
   // The bounded slot nearest to near_x_m, if one has been seen.
   std::optional<Slot> slot(double near_x_m) const;
@@ -41,6 +45,8 @@ class SlotDetector {
   int binOf(double x_m) const;
   double min_length_m_, bin_m_, from_x_m_;
   std::vector<double> nearest_y_;  // per bin: the highest y seen (nearest the lane); NaN = unseen
+  std::vector<double> lowest_y_;   // per bin: the lowest echo's y (a car's end face reaches its far side)
+  std::vector<double> free_y_;     // per bin: the lowest y a beam with no echo passed; NaN = none
 };
 
 }  // namespace aula::autopark
