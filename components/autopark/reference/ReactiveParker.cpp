@@ -137,7 +137,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       return;
     }
     if (back_off_m_ <= 0 && arrivedOffLane(to_go, off_lane)) back_off_m_ = runUpM(off_lane);
-    if (back_off_m_ > 0 && (to_go >= back_off_m_ || rangeAhead(api.laser2.getLaserData(), 0.3) < kBackOffClearM)) {
+    if (back_off_m_ > 0 && (to_go >= back_off_m_ || bodyGapBehind(api, 0.3) < kBackOffClearM)) {
       back_off_m_ = 0;  // far enough behind the start (or something close behind): come again
     }
     c.v_mps = back_off_m_ > 0 ? -kReverseMps : approachSpeed(to_go, kCruiseMps, kReverseMps);
@@ -177,7 +177,7 @@ class ReactiveParker : public AutoparkAlgorithm {
     c.v_mps = -kManoeuvreMps;
     c.w_radps = -kManoeuvreMps / plan_.radius_m;
     // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-    if (yaw <= 0.0 || rangeAhead(api.laser2.getLaserData(), 0.35) < 0.35) mode_ = Mode::Centre;
+    if (yaw <= 0.0 || bodyGapBehind(api, 0.35) < 0.35) mode_ = Mode::Centre;
   }
 
   // One line per phase, so a student can follow the manoeuvre in the terminal.
@@ -238,8 +238,8 @@ class ReactiveParker : public AutoparkAlgorithm {
 
   // CENTRE: forward or back until the front and rear lasers see equal gaps, then say where it is.
   void centre(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
-    const double gap_front = rangeAhead(api.laser1.getLaserData(), 0.15);
-    const double gap_rear = rangeAhead(api.laser2.getLaserData(), 0.15);
+    const double gap_front = bodyGapAhead(api, 0.15);
+    const double gap_rear = bodyGapBehind(api, 0.15);
     if (centred(gap_front, gap_rear, yaw) || ++centre_moves_ > 2000) {  // never oscillate forever
       finish(api, x, y, yaw);
       return;
@@ -247,6 +247,16 @@ class ReactiveParker : public AutoparkAlgorithm {
     const Command c = centringCommand(gap_front, gap_rear, yaw, std::max(plan_.radius_m, api.min_turn_radius_m));
     v = c.v_mps;
     w = c.w_radps;
+  }
+
+  // The body's gap to what is ahead of (behind) it: the front (rear) laser's range within
+  // half_width_rad of straight out, plus how far the laser sits beyond the body's end (0.4 m on
+  // RoboticsAcademy's car: its lasers at +-2.4 m on a 4 m body; negative when inside it).
+  static double bodyGapAhead(const AutoparkApi& api, double half_width_rad) {
+    return rangeAhead(api.laser1.getLaserData(), half_width_rad) + std::abs(api.mount1.x_m) - api.car_length_m / 2;
+  }
+  static double bodyGapBehind(const AutoparkApi& api, double half_width_rad) {
+    return rangeAhead(api.laser2.getLaserData(), half_width_rad) + std::abs(api.mount2.x_m) - api.car_length_m / 2;
   }
 
   // Half the body's extent along the street, and how far its lowest corner is below its centre,
@@ -291,7 +301,7 @@ class ReactiveParker : public AutoparkAlgorithm {
     const double reach = halfExtentX(api, a) + kZigzagEndMarginM;
     const double lowest_y = slot_.curb_y_m + kZigzagCurbMarginM + lowestCornerBelow(api, a);
     const bool at_end = zig_forward_ ? x >= slot_.front_x_m - reach : x <= slot_.rear_x_m + reach;
-    const double ahead = zig_forward_ ? rangeAhead(api.laser1.getLaserData(), 0.35) : rangeAhead(api.laser2.getLaserData(), 0.35);
+    const double ahead = zig_forward_ ? bodyGapAhead(api, 0.35) : bodyGapBehind(api, 0.35);
     if (at_end || y <= std::max(lowest_y, plan_.goal_y_m) || low_enough || ahead < 0.15) {
       ++zig_moves_;
       zig_forward_ = !zig_forward_;
