@@ -18,6 +18,9 @@ constexpr double kCarLevelToleranceM = 0.3;
 constexpr double kLevelM = 0.1;
 // Bins either side of a slot whose echoes may show the end faces of the cars bounding it.
 constexpr int kEndFaceBins = 3;
+// With no curb in sight, the cars' far side lies at least this far below their side line (the
+// width of RoboticsAcademy's parked cars), however little of their end faces has been seen.
+constexpr double kParkedCarWidthM = 2.2;
 }  // namespace
 
 SlotDetector::SlotDetector(double min_length_m, double bin_m, double from_x_m, double to_x_m)
@@ -130,11 +133,7 @@ std::optional<Slot> SlotDetector::slot(double near_x_m) const {
         for (int f = std::max(0, b - kEndFaceBins); f <= std::min(n - 1, e + kEndFaceBins); ++f) {
           if (!std::isnan(lowest_y_[f]) && (f <= b || f >= e)) s.curb_y_m = std::min(s.curb_y_m, lowest_y_[f]);
         }
-        // Not yet seen deep enough to place the car: no slot until the faces are.
-        if (!(s.curb_y_m < edge_y - kFreeDepthM)) {
-          b = std::max(e, b + 1);
-          continue;
-        }
+        s.curb_y_m = std::min(s.curb_y_m, edge_y - kParkedCarWidthM);
       }
       s.edge_y_m = edge_y;
       const double distance = std::abs(s.centreXM() - near_x_m);

@@ -84,23 +84,27 @@ TEST(SlotDetector, TheCurbWhereTheLasersSeeIt) {
   EXPECT_NEAR(slot->curb_y_m, -4.25, 0.05);
 }
 
-TEST(SlotDetector, BeamsWithNoEchoAloneAreNoSlotUntilTheCarsFarSideIsSeen) {
+TEST(SlotDetector, BeamsWithNoEchoFindTheSlotAndItsLineIsTheCarsFarSide) {
   // Cars' side at -1.9 either side of a gap the beams cross with no echo, deep down; no end
-  // face seen yet: no slot (where to park is unknown), then the faces down to -4.1: a slot.
+  // face seen yet: the line is RA's car's width (2.2 m) below the side; end faces seen deeper
+  // move it down.
   SlotDetector detector(4.0);
   for (double x = 0; x < 3; x += 0.05) detector.addPoint(x, -1.9);
   for (double x = 9; x < 12; x += 0.05) detector.addPoint(x, -1.9);
+  EXPECT_FALSE(detector.slot(6).has_value()) << "no beam crossed the gap yet";
   for (double x = 3.02; x < 9; x += 0.05) detector.addFreePoint(x, -6.0);
-  EXPECT_FALSE(detector.slot(6).has_value());
-  for (double y = -1.9; y > -4.1; y -= 0.1) {
-    detector.addPoint(2.99, y);
-    detector.addPoint(9.0, y);
-  }
-  const auto slot = detector.slot(6);
+  auto slot = detector.slot(6);
   ASSERT_TRUE(slot.has_value());
   EXPECT_NEAR(slot->rear_x_m, 3.0, 0.06);
   EXPECT_NEAR(slot->front_x_m, 9.0, 0.06);
-  EXPECT_NEAR(slot->curb_y_m, -4.0, 0.11);
+  EXPECT_NEAR(slot->curb_y_m, -4.1, 1e-9);
+  for (double y = -1.9; y > -4.45; y -= 0.1) {
+    detector.addPoint(2.99, y);
+    detector.addPoint(9.0, y);
+  }
+  slot = detector.slot(6);
+  ASSERT_TRUE(slot.has_value());
+  EXPECT_NEAR(slot->curb_y_m, -4.4, 0.01);
 }
 
 TEST(SlotDetector, TightSlotAndTooShortAGap) {

@@ -3,8 +3,9 @@
 // point to the right of the car goes into a profile along the street (x bins); a bin whose
 // nearest point to the lane is well below the parked cars' side sees the curb, so it is free.
 // Where no beam sees a curb (lasers above it, as on RoboticsAcademy's street), a bin that beams
-// with no echo crossed well below the cars' side is free, and the slot's curb line is the deepest
-// point seen on the end faces of the cars either side of it (their far side).
+// with no echo crossed well below the cars' side is free, and the slot's curb line is the parked
+// cars' far side: the deepest point seen on the end faces of the cars either side of it, and at
+// least RoboticsAcademy's car's width (2.2 m) below their side line.
 // A slot is a run of free bins bounded by parked cars at both ends (not the wall at a street's end).
 // Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
 
