@@ -542,3 +542,19 @@ TEST(PythonShapes, ImportMistakesSayWhatAulaOffers) {
     expectPythonFault(run, message);
   }
 }
+
+// The algorithm's own process has the sandbox's memory limit in every run, a plain `aula run`
+// too (issue 57: a runaway Python program took 9.7 GB before the machine killed it): 3 GB in one
+// bytearray is refused under a 512 MB limit, and the fault says so in the sandbox's words.
+TEST(PythonAlgorithms, APlainRunHasTheSandboxsMemoryLimit) {
+  const fs::path dir = aula::testing::privateDir();
+  std::ofstream(dir / "MyAlgorithm.py") << "class MyAlgorithm:\n"
+                                           "    def __init__(self, seed):\n"
+                                           "        self.block = None\n\n"
+                                           "    def execute(self, api):\n"
+                                           "        self.block = bytearray(3 * 1024 ** 3)\n";
+  const PyRun run = runHeadless("vacuum", (dir / "MyAlgorithm.py").string(),
+                                {"--Vacuum.Referee.Duration=20", "--Component.Sandbox.Memory=512"});
+  EXPECT_NE(run.report.find("the algorithm used more than 512 MB of memory"), std::string::npos) << describe(run);
+  EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
+}

@@ -148,7 +148,7 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
   EXPECT_TRUE(contains(plugin, "model 'bot', plugin 'eyes': unknown driver filename 'camera'")) << plugin;
   EXPECT_TRUE(contains(plugin, "known: bumper, laser, motors, pose3d")) << plugin;
   const std::string mesh = errorOf(kData + "mesh_obstacle.world");
-  EXPECT_TRUE(contains(mesh, "model 'statue', link 'body', collision 'shape': only <box> and <cylinder>")) << mesh;
+  EXPECT_TRUE(contains(mesh, "model 'statue', link 'body', collision 'shape': <uri>statue.dae</uri>: no such mesh file " + kData + "statue.dae")) << mesh;
   const std::string links = errorOf(kData + "two_links.world");
   EXPECT_TRUE(contains(links, "model 'wobbly': a robot (non-static model) must have exactly one <link>")) << links;
   // Each names the file and line of the element at fault, in the world or in the model it includes.
@@ -163,7 +163,8 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
                                  "max_v, max_w, rear_axle_x, watchdog_s, wheelbase"))
       << misspelt;
   const std::string robot_mesh = errorOf(kData + "robot_mesh.world");
-  EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': only <box> and <cylinder>"))
+  EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': a robot's collision must be a "
+                                   "<box> or a <cylinder>"))
       << robot_mesh;
 }
 

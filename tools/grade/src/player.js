@@ -22,7 +22,7 @@ const AulaPlayer = (() => {
   const DRAWINGS = {};
 
   async function inflate(b64) {
-    const bin = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
+    const bin = Uint8Array.from(atob(b64.trim()), c => c.charCodeAt(0));
     const stream = new Blob([bin]).stream().pipeThrough(new DecompressionStream('deflate'));
     return JSON.parse(await new Response(stream).text());
   }
@@ -476,7 +476,9 @@ const AulaPlayer = (() => {
     const block = document.getElementById(id);
     let data;
     try {
-      data = await inflate(block.textContent.trim());
+      // Two blocks: the report, and the trace as the referee wrote it (run_page.cpp's runDataBlock).
+      const [report, trace] = await Promise.all([inflate(block.textContent), inflate(document.getElementById(id + '-trace').textContent)]);
+      data = {report, trace};
     } catch (e) {
       container.textContent = 'The run\'s data could not be read (' + e + ').';
       container.classList.add('missed');

@@ -87,7 +87,7 @@ std::vector<long long> parseSeeds(const std::string& text, const std::string& op
 // A submission compiled (or not) into a plugin, or a student's Python file.
 struct Submission {
   std::string student;  // the folder's name
-  std::string folder;   // absolute
+  std::string folder;   // absolute; a built-in's: its installed sources (references/EXERCISE/NAME), or ""
   std::string language = "C++";  // "C++" (MyAlgorithm.cpp) or "Python" (MyAlgorithm.py alone)
   std::string plugin;   // the built .so, or the copy of MyAlgorithm.py ("" when it did not compile)
   std::string plugin_sha256;
