@@ -84,27 +84,51 @@ TEST(SlotDetector, TheCurbWhereTheLasersSeeIt) {
   EXPECT_NEAR(slot->curb_y_m, -4.25, 0.05);
 }
 
-TEST(SlotDetector, BeamsWithNoEchoFindTheSlotAndItsLineIsTheCarsFarSide) {
-  // Cars' side at -1.9 either side of a gap the beams cross with no echo, deep down; no end
-  // face seen yet: the line is RA's car's width (2.2 m) below the side; end faces seen deeper
-  // move it down.
+TEST(SlotDetector, BeamsWithNoEchoFindTheSlotOnceAnEndFacesBottomIsSeen) {
+  // Cars' side at -1.9 either side of a gap the beams cross with no echo, deep down. Where to
+  // park in it is the cars' far side: no slot while their end faces are seen only in part (out
+  // of range, or hidden), whatever the cars' width might be; then the deepest bottom seen.
   SlotDetector detector(4.0);
   for (double x = 0; x < 3; x += 0.05) detector.addPoint(x, -1.9);
   for (double x = 9; x < 12; x += 0.05) detector.addPoint(x, -1.9);
-  EXPECT_FALSE(detector.slot(6).has_value()) << "no beam crossed the gap yet";
   for (double x = 3.02; x < 9; x += 0.05) detector.addFreePoint(x, -6.0);
+  EXPECT_FALSE(detector.slot(6).has_value()) << "no end face seen";
+  for (double y = -1.9; y > -3.05; y -= 0.1) {
+    detector.addPoint(2.99, y);
+    detector.addPoint(9.0, y);
+  }
+  EXPECT_FALSE(detector.slot(6).has_value()) << "the faces seen down to -3 only";
+  detector.addPassBelowAFace(2.99, -3.58);
+  EXPECT_FALSE(detector.slot(6).has_value()) << "a beam passed 0.58 m below the deepest echo: the bottom is not known";
+  for (double y = -3.0; y > -3.55; y -= 0.1) detector.addPoint(2.99, y);  // down to -3.5: a narrow car behind
   auto slot = detector.slot(6);
   ASSERT_TRUE(slot.has_value());
   EXPECT_NEAR(slot->rear_x_m, 3.0, 0.06);
   EXPECT_NEAR(slot->front_x_m, 9.0, 0.06);
-  EXPECT_NEAR(slot->curb_y_m, -4.1, 1e-9);
-  for (double y = -1.9; y > -4.45; y -= 0.1) {
-    detector.addPoint(2.99, y);
-    detector.addPoint(9.0, y);
-  }
+  EXPECT_NEAR(slot->curb_y_m, -3.5, 1e-9);
+  for (double y = -3.0; y > -4.15; y -= 0.1) detector.addPoint(9.0, y);  // the car ahead reaches deeper
+  detector.addPassBelowAFace(9.0, -4.15);
   slot = detector.slot(6);
   ASSERT_TRUE(slot.has_value());
-  EXPECT_NEAR(slot->curb_y_m, -4.4, 0.01);
+  EXPECT_NEAR(slot->curb_y_m, -4.1, 1e-9);
+}
+
+TEST(SlotDetector, TheLineIsNeverAnEndFaceSeenInPart) {
+  // Driving up to the default slot, the lasers first see the end face of the car ahead of it
+  // down to where it leaves their range: that is no bottom; nor is an echo the next beam down
+  // passed far below. Whenever a slot is reported, its line is the cars' far side (-4.1) within
+  // 0.1 m, and never below it.
+  const Street street("autopark.world");
+  SlotDetector detector(4.8);
+  bool reported = false;
+  for (double x = -7; x <= 8; x += 0.1) {
+    drive(street, detector, x, x, 2.5);
+    if (const auto slot = detector.slot(7)) {
+      reported = true;
+      EXPECT_NEAR(slot->curb_y_m, -4.05, 0.05) << "car at x " << x;
+    }
+  }
+  EXPECT_TRUE(reported);
 }
 
 TEST(SlotDetector, TightSlotAndTooShortAGap) {

@@ -4,8 +4,10 @@
 // nearest point to the lane is well below the parked cars' side sees the curb, so it is free.
 // Where no beam sees a curb (lasers above it, as on RoboticsAcademy's street), a bin that beams
 // with no echo crossed well below the cars' side is free, and the slot's curb line is the parked
-// cars' far side: the deepest point seen on the end faces of the cars either side of it, and at
-// least RoboticsAcademy's car's width (2.2 m) below their side line.
+// cars' far side: the deeper of the bottoms of the end faces of the cars either side of it, each
+// its deepest echo once a beam with no echo passed within 0.1 m below it. A slot is reported only
+// once a bottom is known: a face seen in part (out of range, or hidden behind the car before the
+// slot) would place the car too high, and a guessed car width too low.
 // A slot is a run of free bins bounded by parked cars at both ends (not the wall at a street's end).
 // Assumes the street runs along x with the parking side at -y, as in the Autopark worlds.
 
@@ -36,6 +38,9 @@ class SlotDetector {
                const component::LaserData& scan);
   void addPoint(double x_m, double y_m);  // a point of the parking side (world frame)
   void addFreePoint(double x_m, double y_m);  // a point a beam with no echo passed (world frame)
+  // A point a beam with no echo passed just below an echo at the same x (world frame): the upright
+  // face there (a parked car's end) ends above it.
+  void addPassBelowAFace(double x_m, double y_m);
 
   // The bounded slot nearest to near_x_m, if one has been seen.
   std::optional<Slot> slot(double near_x_m) const;
@@ -44,9 +49,14 @@ class SlotDetector {
 
  private:
   int binOf(double x_m) const;
+  // The line of the slot between occupied bins b and e (the curb, or the cars' far side), if known.
+  std::optional<double> slotLine(int b, int e, double edge_y) const;
+  // The bottom of the end face in the bins around `face`, once it is known within 0.1 m.
+  std::optional<double> faceBottom(int face) const;
   double min_length_m_, bin_m_, from_x_m_;
   std::vector<double> nearest_y_;  // per bin: the highest y seen (nearest the lane); NaN = unseen
   std::vector<double> lowest_y_;   // per bin: the lowest echo's y (a car's end face reaches its far side)
+  std::vector<double> passed_below_y_;  // per bin: the highest y a beam with no echo passed below a face's echo
   std::vector<double> free_y_;     // per bin: the lowest y a beam with no echo passed; NaN = none
 };
 
