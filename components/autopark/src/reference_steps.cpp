@@ -62,7 +62,7 @@ MappedStreet planningExtent(const MappedStreet& mapped, const Slot& slot, double
   MappedStreet e;
   e.min_x_m = std::max(mapped.min_x_m, std::min(x_m, slot.rear_x_m) - 12);
   e.max_x_m = std::min(mapped.max_x_m, std::max(x_m, slot.front_x_m) + 12);
-  e.min_y_m = slot.curb_y_m - 0.5;
+  e.min_y_m = slot.curb_y_m;  // the slot's line: a curb the lasers may not see lies at or below it
   e.max_y_m = std::min(mapped.max_y_m, std::max(y_m, lane_y_m) + car_width_m / 2 + 3.0);
   return e;
 }

@@ -78,7 +78,7 @@ TEST(PlannedSteps, ThePlanningGridNeverReachesBeyondTheMappedStreet) {
   const MappedStreet e = planningExtent(wide, slot, 10.0, 0.0, -0.1, 2.0);
   EXPECT_DOUBLE_EQ(e.min_x_m, -10.0);  // 12 m behind the slot
   EXPECT_DOUBLE_EQ(e.max_x_m, 22.0);   // 12 m beyond the car
-  EXPECT_DOUBLE_EQ(e.min_y_m, -4.75);  // just below the curb
+  EXPECT_DOUBLE_EQ(e.min_y_m, -4.25);  // the slot's line: nothing below it
   EXPECT_DOUBLE_EQ(e.max_y_m, 4.0);    // the car's side plus 3 m
   const MappedStreet narrow{0, 15, -5, 1};
   const MappedStreet n = planningExtent(narrow, slot, 10.0, 0.0, -0.1, 2.0);

@@ -45,7 +45,8 @@ bool inSlot(const Slot& slot, double goal_y_m, double car_length_m, double x_m, 
 // How far the car is past the slot's far end in the direction of the search (+1: +x).
 double pastSlotM(const Slot& slot, int direction, double x_m);
 // The planning grid's extent: the street around the car and the slot, 12 m beyond either, never
-// beyond what the lasers mapped; from just below the curb to a few metres above the lane.
+// beyond what the lasers mapped; from the slot's line (the curb, or the parked cars' far side where
+// the lasers do not see the curb: the plan never takes the body below it) to a few metres above the lane.
 MappedStreet planningExtent(const MappedStreet& mapped, const Slot& slot, double x_m, double y_m, double lane_y_m,
                             double car_width_m);
 // The planner's options for attempt `attempt` (0: the first): after a failure, finer escape moves
