@@ -74,11 +74,16 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagCurbMarginM = 0.1;  // its lowest corner above the curb face
   static constexpr double kZigzagMinTravelM = 0.4;   // the shortest useful move
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
+  // The multi-move park's side from the parked cars' far side, where no curb was seen: each move
+  // keeps the corners clear of that line, so it can end in line with the neighbours (the
+  // referee's ideal pose is on their centre line) where the two arcs need more room.
+  static constexpr double kZigzagFarSideClearanceM = 0.2;
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
   // The longest each phase may take, sim seconds: longer, it is stuck and says so (never a silent
   // stall until the run's time is up). A search drives a long street both ways; a turn is short.
   static constexpr double kSearchLimitS = 240, kTurnLimitS = 60, kManoeuvreLimitS = 150;
+  static constexpr double kArcRearClearM = 0.2;  // the second arc stops this near the slot's rear end
   static constexpr double kBackOffClearM = 1.0;  // backing off for a run-up stops this near something behind
 
   // The present phase's command for this period (and the next phase, when it ends).
@@ -97,7 +102,7 @@ class ReactiveParker : public AutoparkAlgorithm {
         arc1Step(api, y, yaw, c);
         break;
       case Mode::Arc2:
-        arc2Step(api, yaw, c);
+        arc2Step(api, x, y, yaw, c);
         break;
       case Mode::Zigzag:
         zigzag(api, x, y, yaw, c.v_mps, c.w_radps);
@@ -173,11 +178,15 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
 
   // ARC2: reversing, steering the other way until parallel to the curb.
-  void arc2Step(const AutoparkApi& api, double yaw, Command& c) {
+  void arc2Step(const AutoparkApi& api, double x, double y, double yaw, Command& c) {
     c.v_mps = -kManoeuvreMps;
     c.w_radps = -kManoeuvreMps / plan_.radius_m;
-    // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-    if (yaw <= 0.0 || bodyGapBehind(api, 0.35) < 0.35) mode_ = Mode::Centre;
+    // Parallel to the curb, or the car behind is close (by its laser, or by the slot's measured
+    // rear end: the arcs run a little long when they start off straight): straighten up later, forwards.
+    if (yaw <= 0.0 || bodyGapBehind(api, 0.35) < 0.35 ||
+        rearClearanceM(slot_, api.car_length_m, api.car_width_m, x, y, yaw) < kArcRearClearM) {
+      mode_ = Mode::Centre;
+    }
   }
 
   // One line per phase, so a student can follow the manoeuvre in the terminal.
@@ -218,7 +227,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       plan_.feasible = true;
       plan_.radius_m = kArcRadiusM;  // the centring's steering limit
       plan_.start_x_m = slot.centreXM();
-      plan_.goal_y_m = slot.curb_y_m + kCurbClearanceM + api.car_width_m / 2;
+      plan_.goal_y_m = slot.curb_y_m + (slot.curb_seen ? kCurbClearanceM : kZigzagFarSideClearanceM) + api.car_width_m / 2;
       std::snprintf(line, sizeof line, "slot %.1f m: a multi-move park, forward and back within it", slot.lengthM());
       api.status = line;
       mode_ = Mode::Approach;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace aula::autopark {
 
@@ -40,6 +41,18 @@ Command centringCommand(double gap_front_m, double gap_rear_m, double yaw_rad, d
   c.w_radps = std::clamp(-2.0 * yaw_error * (c.v_mps > 0 ? 1 : -1) * std::abs(c.v_mps), -limit, limit);
   if (std::abs(yaw_error) < 0.03) c.w_radps = 0;
   return c;
+}
+
+double rearClearanceM(const Slot& slot, double length_m, double width_m, double x_m, double y_m, double yaw_rad) {
+  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
+  double clearance = std::numeric_limits<double>::infinity();
+  for (const double along : {-length_m / 2, length_m / 2}) {
+    for (const double across : {-width_m / 2, width_m / 2}) {
+      const double cx = x_m + c * along - s * across, cy = y_m + s * along + c * across;
+      if (cy < slot.edge_y_m) clearance = std::min(clearance, cx - slot.rear_x_m);
+    }
+  }
+  return clearance;
 }
 
 bool centred(double gap_front_m, double gap_rear_m, double yaw_rad) {

@@ -130,7 +130,7 @@ std::optional<double> SlotDetector::edgeY() const {
   return mode->second.second;
 }
 
-std::optional<double> SlotDetector::slotLine(int b, int e, double edge_y) const {
+bool SlotDetector::placeLine(Slot& s, int b, int e, double edge_y) const {
   // The curb, where beams see it: the median of the deep echoes inside the slot, away from its
   // ends (an end face's echoes may fall in the slot's first bins), over enough of it to be a curb.
   std::vector<double> curb_y;
@@ -139,7 +139,9 @@ std::optional<double> SlotDetector::slotLine(int b, int e, double edge_y) const 
   }
   if (curb_y.size() * bin_m_ >= kCurbSeenM) {
     std::nth_element(curb_y.begin(), curb_y.begin() + curb_y.size() / 2, curb_y.end());
-    return curb_y[curb_y.size() / 2];
+    s.curb_y_m = curb_y[curb_y.size() / 2];
+    s.curb_seen = true;
+    return true;
   }
   // No curb in sight: the cars' far side, the deeper of the two end faces' bottoms known.
   std::optional<double> line;
@@ -147,7 +149,10 @@ std::optional<double> SlotDetector::slotLine(int b, int e, double edge_y) const 
     const std::optional<double> bottom = faceBottom(face);
     if (bottom && *bottom < edge_y - kFreeDepthM && (!line || *bottom < *line)) line = bottom;
   }
-  return line;  // none known yet: where to park in the slot is not known
+  if (!line) return false;  // none known yet: where to park in the slot is not known
+  s.curb_y_m = *line;
+  s.curb_seen = false;
+  return true;
 }
 
 std::optional<double> SlotDetector::faceBottom(int face) const {
@@ -200,12 +205,10 @@ std::optional<Slot> SlotDetector::slot(double near_x_m) const {
       Slot s;
       s.rear_x_m = from_x_m_ + (b + 1) * bin_m_;
       s.front_x_m = from_x_m_ + e * bin_m_;
-      const std::optional<double> line = slotLine(b, e, edge_y);
-      if (!line) {  // where to park in it is not known yet
+      if (!placeLine(s, b, e, edge_y)) {  // where to park in it is not known yet
         b = std::max(e, b + 1);
         continue;
       }
-      s.curb_y_m = *line;
       s.edge_y_m = edge_y;
       const double distance = std::abs(s.centreXM() - near_x_m);
       if (s.lengthM() >= min_length_m_ && distance < best_distance) {

@@ -118,3 +118,14 @@ TEST(ReactiveSteps, ArrivedOffTheLaneItBacksOffFurtherTheFurtherOffItIs) {
   EXPECT_DOUBLE_EQ(runUpM(-1.0), runUpM(1.0));
   EXPECT_GE(runUpM(0.3), 4.0);
 }
+
+TEST(ReactiveSteps, TheRearClearanceIsTheLowRearCornerToTheSlotsRearEnd) {
+  const Slot slot = slotOf(2.0, 9.0);  // the cars' side at -2.1
+  // Straight, on the slot's line: the rear corners at x 5 - 2 = 3, 1 m from the car behind.
+  EXPECT_NEAR(rearClearanceM(slot, 4.0, 2.0, 5.0, -3.2, 0.0), 1.0, 1e-9);
+  // Turned 0.3 rad in the second arc: only the lower rear corner is below the side line.
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  EXPECT_NEAR(rearClearanceM(slot, 4.0, 2.0, 5.0, -2.3, 0.3), 5.0 - 2.0 * c + 1.0 * s - 2.0, 1e-9);
+  // Still above the cars' side line: nothing behind it to hit.
+  EXPECT_TRUE(std::isinf(rearClearanceM(slot, 4.0, 2.0, 5.0, 1.5, 0.0)));
+}

@@ -71,6 +71,7 @@ TEST(SlotDetector, FindsTheDefaultSlotDrivingPastIt) {
   EXPECT_NEAR(slot->front_x_m, 11.55, 0.15);
   // No beam sees the curb: the line is the parked cars' far side, seen on their end faces.
   EXPECT_NEAR(slot->curb_y_m, -4.1, 0.1);
+  EXPECT_FALSE(slot->curb_seen);
   EXPECT_NEAR(slot->edge_y_m, -1.9, 0.05);
 }
 
@@ -82,6 +83,7 @@ TEST(SlotDetector, TheCurbWhereTheLasersSeeIt) {
   ASSERT_TRUE(slot.has_value());
   EXPECT_NEAR(slot->centreXM(), 7.25, 0.15);
   EXPECT_NEAR(slot->curb_y_m, -4.25, 0.05);
+  EXPECT_TRUE(slot->curb_seen);
 }
 
 TEST(SlotDetector, BeamsWithNoEchoFindTheSlotOnceAnEndFacesBottomIsSeen) {

@@ -34,6 +34,11 @@ struct Command {
   double v_mps = 0, w_radps = 0;
 };
 Command centringCommand(double gap_front_m, double gap_rear_m, double yaw_rad, double radius_m);
+// Reversing into the slot, how far the body's rearmost corner below the parked cars' side line
+// is from the slot's measured rear end (the car behind), at (x, y, yaw); infinity when no corner
+// is that low. The rear laser cannot say it: on RoboticsAcademy's car it sits 0.4 m behind the
+// body, so it sees nothing nearer the body than that.
+double rearClearanceM(const Slot& slot, double length_m, double width_m, double x_m, double y_m, double yaw_rad);
 // Centred: equal gaps within 0.1 m, parallel within 0.03 rad.
 bool centred(double gap_front_m, double gap_rear_m, double yaw_rad);
 // In the slot and parallel to it: the body within the slot's ends (10 cm grace), on its line

@@ -24,6 +24,7 @@ struct Slot {
   double front_x_m = 0;  // start of the parked car ahead of it
   double curb_y_m = 0;   // the curb face seen inside the slot, else the parked cars' far side
   double edge_y_m = 0;   // the parked cars' side nearest the lane
+  bool curb_seen = false;  // curb_y_m is a curb the lasers saw; false: the parked cars' far side
   double lengthM() const { return front_x_m - rear_x_m; }
   double centreXM() const { return (rear_x_m + front_x_m) / 2; }
 };
@@ -49,8 +50,9 @@ class SlotDetector {
 
  private:
   int binOf(double x_m) const;
-  // The line of the slot between occupied bins b and e (the curb, or the cars' far side), if known.
-  std::optional<double> slotLine(int b, int e, double edge_y) const;
+  // The line of the slot between occupied bins b and e (the curb, or the cars' far side) into
+  // s.curb_y_m and s.curb_seen; false while neither is known.
+  bool placeLine(Slot& s, int b, int e, double edge_y) const;
   // The bottom of the end face in the bins around `face`, once it is known within 0.1 m.
   std::optional<double> faceBottom(int face) const;
   double min_length_m_, bin_m_, from_x_m_;
