@@ -114,8 +114,9 @@ TEST(LoadWorld, AutoparkStreet) {
   EXPECT_NEAR(yawOf(car.pose), 0.0, 1e-12);
   for (const auto& p : car.plugins) {
     if (p.type != "laser") continue;
-    // Mounted 0.1 m above the road, below the 0.2 m curb tops.
-    EXPECT_NEAR((car.pose * p.getPose("pose")).translation().z(), 0.1, 1e-9) << p.name;
+    // Mounted 0.5 m above the road as on RoboticsAcademy's car, above the 0.2 m curb tops.
+    EXPECT_NEAR((car.pose * p.getPose("pose")).translation().z(), 0.5, 1e-9) << p.name;
+    EXPECT_DOUBLE_EQ(p.getDouble("max_range", 0), p.name == "laser_right" ? 9.5 : 11.0) << p.name;
     EXPECT_EQ(p.getInt("samples", 0), 180);
   }
   const PluginSpec* right = nullptr;
@@ -125,6 +126,7 @@ TEST(LoadWorld, AutoparkStreet) {
   ASSERT_NE(right, nullptr);
   EXPECT_EQ(right->getString("channel", ""), "CAR_LASER_RIGHT");
   EXPECT_NEAR(yawOf(right->getPose("pose")), -M_PI / 2, 1e-6);
+  EXPECT_TRUE(right->getPose("pose").translation().head<2>().isApprox(Eigen::Vector2d(0.5, -1.25)));
   EXPECT_DOUBLE_EQ(car.findPlugin("motors")->getDouble("wheelbase", 0), 2.6);
   std::vector<double> car_x;
   double curb_face = 0;
