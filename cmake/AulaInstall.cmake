@@ -8,7 +8,9 @@
 #                            *_algorithm.hpp and what they include: AULA_API_HEADERS) and the
 #                            generated LCM types
 #   lib/cmake/Aula/          find_package(Aula): Aula::<exercise>_api and aula_add_algorithm
-#   share/aula/              worlds (with models and generators), configs, student templates
+#   share/aula/              worlds (with models and generators), configs, student templates,
+#                            the built-in algorithms' sources (references/<exercise>/<name>/: what
+#                            `aula grade` compares a class's code with)
 #   share/doc/aula/          the user's documentation (`aula --help` names it: config::docDir),
 #                            the copyright file (Apache-2.0) and the changelogs
 #                            (MyAlgorithm.cpp, MyAlgorithm.py and the Python API's .pyi stubs)
@@ -83,6 +85,13 @@ foreach(_exercise ${AULA_EXERCISES})
     file(REAL_PATH ${_file} _real)
     install(FILES ${_real} DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/templates/${_exercise} RENAME ${_name})
   endforeach()
+endforeach()
+
+# Each built-in algorithm's sources (aula_add_builtin_algorithm's CODE).
+get_property(_builtin_code GLOBAL PROPERTY AULA_BUILTIN_CODE)
+foreach(_builtin ${_builtin_code})
+  get_property(_files GLOBAL PROPERTY AULA_BUILTIN_CODE_${_builtin})
+  install(FILES ${_files} DESTINATION ${CMAKE_INSTALL_DATADIR}/aula/references/${_builtin})
 endforeach()
 
 # The user's documentation, where `aula --help` and the docs' links point (config::docDir), and

@@ -13,7 +13,7 @@ build_packages=(
   build-essential cmake ninja-build pkg-config git ccache dpkg-dev
   libdart-all-dev libdart-collision-bullet-dev libdart-utils-dev libdart-gui-osg-dev
   libdart-external-lodepng-dev libdart-external-imgui-dev
-  libtinyxml2-dev
+  libtinyxml2-dev libassimp-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libompl-dev
   qtbase5-dev libqt5charts5-dev

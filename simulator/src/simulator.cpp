@@ -426,9 +426,12 @@ bool Simulator::waitingForClients() const {
 }
 
 bool Simulator::startIfReady(WallTime now, RunClocks& clocks) {
-  if (started_ || waitingForClients() || paused_) return false;
+  if (started_ || waitingForClients()) return false;
   // Tick 0, once every expected client is listening: sensors at t = 0, then the clock, so
   // each client sees the same first messages whatever the order the processes started in.
+  // Started paused (Simulator.StartPaused), it then holds there: the clients see the world at
+  // 0 s (a window draws it; TeleTaxi plans on it) and the run goes on from it when resumed, as
+  // it would have unpaused.
   started_ = true;
   for (auto& d : drivers_) d->step(physics_->timeUs());
   publishClock();

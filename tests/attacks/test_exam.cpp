@@ -568,14 +568,17 @@ TEST(Exam, AFullOutFolderEndsTheGradeAndKeepsTheFinishedRuns) {
   }
   argv.insert(argv.end(), {"--seeds=1", "--jobs=1", "--record", "--similarity=off", "--Vacuum.Referee.Duration=120",
                            "--calibration-seeds=off"});
-  auto gradeInto = [&](const std::vector<std::string>& before, const fs::path& out, const std::string& log) {
+  auto gradeInto = [&](const std::vector<std::string>& before, const fs::path& out, const std::string& log,
+                       const std::vector<std::string>& options = {}) {
     std::vector<std::string> command = before;
     command.insert(command.end(), argv.begin(), argv.end());
+    command.insert(command.end(), options.begin(), options.end());
     command.push_back("--out=" + out.string());
     aula::process::ChildProcess child(command, log, log);
     return child.wait(300s).value_or(-1);
   };
-  ASSERT_EQ(gradeInto({}, dir / "roomy", (dir / "roomy.log").string()), 0) << readFile((dir / "roomy.log").string());
+  // Its builds kept: the room the full grade needs holds them while it runs.
+  ASSERT_EQ(gradeInto({}, dir / "roomy", (dir / "roomy.log").string(), {"--keep-builds"}), 0) << readFile((dir / "roomy.log").string());
   const auto roomy = gradesOf((dir / "roomy" / "grades.csv").string());
   ASSERT_EQ(roomy.size(), 4u);
   const uint64_t third_log = fs::file_size(dir / "roomy" / "runs" / "cat" / "vacuum-seed1.lcmlog");

@@ -18,7 +18,8 @@ for path in ./usr/bin/aula ./usr/bin/aula-sim ./usr/bin/vacuum-cleaner ./usr/bin
     ./usr/share/aula/templates/teletaxi/MyAlgorithm.cpp ./usr/lib/aula/python/libaula_vacuum_python.so \
     ./usr/lib/aula/python/libaula_teletaxi_python.so ./usr/lib/aula/python/libaula_autopark_python.so \
     ./usr/share/aula/templates/vacuum/MyAlgorithm.py ./usr/share/aula/templates/vacuum/aula_vacuum.pyi \
-    ./usr/share/aula/templates/vacuum/aula_devices.pyi; do
+    ./usr/share/aula/templates/vacuum/aula_devices.pyi ./usr/share/aula/references/vacuum/classic/RoombaReference.cpp \
+    ./usr/share/aula/references/teletaxi/reference/GppReference.cpp; do
   grep -q " $path\$" <<<"$contents" || { echo "missing from $deb: $path"; exit 1; }
 done
 depends="$(dpkg-deb -f "$deb" Depends)"

@@ -146,11 +146,11 @@ TEST(AutoparkRun, AStreetWhoseCurbAndCarsHaveOtherNamesRuns) {
   std::ofstream(world) << street;
   const std::string run = runAutopark("renamed", {"--algorithm=reactive", "--seed=1", "--world=" + world});
   expectParkedWell(run);
-  EXPECT_NEAR(jsonNumber(run, "slot_length_m"), 9.0, 1e-6) << run;
+  EXPECT_NEAR(jsonNumber(run, "slot_length_m"), 8.6, 1e-6) << run;
   // Named by settings instead: the same slot.
   const std::string named = runAutopark("renamed_named", {"--algorithm=reactive", "--seed=1", "--world=" + world,
                                                           "--Autopark.Referee.Curb=kerb_south",
                                                           "--Autopark.Referee.CarPrefix=van_"});
   expectParkedWell(named);
-  EXPECT_NEAR(jsonNumber(named, "slot_length_m"), 9.0, 1e-6) << named;
+  EXPECT_NEAR(jsonNumber(named, "slot_length_m"), 8.6, 1e-6) << named;
 }

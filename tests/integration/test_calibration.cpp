@@ -93,7 +93,7 @@ TEST(Calibration, IsAppliedNamedAndRefusedForAnotherVersionOfTheWorld) {
   const std::string dir = aula::testing::privateDir();
   const std::string world = makeHouse(dir, {"--seed", "5", "--rooms-x", "2", "--rooms-y", "1"});
   const auto calibrated = runToEnd({kAula, "calibrate", "vacuum", "--world=" + world, "--seeds=1", "--jobs=1",
-                                    "--out=" + dir + "/calibration"}, 120s);
+                                    "--out=" + dir + "/calibration"}, kBackstop);
   ASSERT_EQ(calibrated.code.value_or(-1), 0) << calibrated.output;
   const std::string rubric_file = dir + "/house.rubric.cfg";
   const auto config = runToEnd({kAula, "config", "vacuum", "--world=" + world});

@@ -109,6 +109,14 @@ TEST(GradeAClass, FourSubmissionsTwoSeedsTwoJobs) {
   // Where it threw, in the student's file (tests/data/plugins/throws.cpp, line 12), even sandboxed.
   EXPECT_EQ(rows["thrower"]["failures"], "execute() threw std::runtime_error: boom (thrown at MyAlgorithm.cpp:12) (x2)");
 
+  // Once every run is done, each build keeps its sources, project and log, not its objects and
+  // plugin (a class that travels); the broken one's log says why it did not compile.
+  for (const char* student : {"good", "lazy", "broken", "thrower"}) {
+    EXPECT_FALSE(fs::exists(out / "build" / student / "build")) << student;
+    EXPECT_TRUE(fs::is_regular_file(out / "build" / student / "src" / "MyAlgorithm.cpp")) << student;
+  }
+  EXPECT_NE(readFile((out / "build" / "broken" / "compile.log").string()).find("error"), std::string::npos);
+
   // Each run's result: the referee's report plus who, what and how long.
   const std::string good1 = readFile((out / "runs" / "good" / "vacuum-seed1.json").string());
   EXPECT_NE(good1.find("\"student\": \"good\""), std::string::npos) << good1;
@@ -312,16 +320,19 @@ TEST(GradeAClass, SimilarWorkIsFlaggedByCodeAndByBehaviour) {
   auto rows = readGrades((dir / "out" / "grades.csv").string());
   for (const char* student : {"gina", "hugo"}) EXPECT_EQ(rows[student]["runs_failed"], "0") << student << ": it built and ran";
   EXPECT_EQ(pairs["gina~hugo"][2], "no") << "both from the template, each with code of its own\n" << csv;
-  // dani handed in the classic reference's source: flagged with it, by the path its robot drove.
+  // dani handed in the classic reference's source: flagged with it, by the path its robot drove
+  // and by its code (the built-ins' installed sources); the bounce's sources are the same file.
   EXPECT_TRUE(flagged("dani~reference 'classic'")) << csv;
   EXPECT_LE(std::stod(pairs["dani~reference 'classic'"][4]), 0.05) << csv;
+  EXPECT_GE(std::stod(pairs["dani~reference 'classic'"][3]), 0.9) << csv;
+  EXPECT_TRUE(flagged("dani~reference 'bounce'")) << csv;
   EXPECT_TRUE(flagged("eli~known 'spiral'")) << csv;
   EXPECT_GE(std::stod(pairs["eli~known 'spiral'"][3]), 0.6) << "its code, which the teacher gave\n" << csv;
   for (const auto& [pair, fields] : pairs) {
     const bool independent = pair.find("dani") != std::string::npos || pair.find("eli") != std::string::npos ||
                              pair.find("fran") != std::string::npos || pair.find("gina") != std::string::npos ||
                              pair.find("hugo") != std::string::npos;
-    if (independent && pair != "dani~reference 'classic'" && pair != "eli~known 'spiral'") {
+    if (independent && pair != "dani~reference 'classic'" && pair != "dani~reference 'bounce'" && pair != "eli~known 'spiral'") {
       EXPECT_EQ(fields[2], "no") << pair << "\n" << csv;
     }
   }

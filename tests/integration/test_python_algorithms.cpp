@@ -324,6 +324,30 @@ TEST(RoboticsAcademyPrograms, AutoparkStateMachineParks) {
   EXPECT_NE(run.output.find("slot found: "), std::string::npos) << run.output;
 }
 
+// Issue 54: RA's street as RA's programs see it. A gap finder that knows RA's numbers only (the
+// right laser's beams read inf beyond the parked cars, since no beam sees the curb), then a fixed
+// manoeuvre timed on the clock: it parks, and the same run twice gives the same report.
+TEST(RoboticsAcademyPrograms, AutoparkGapFinderOnInfParksOnRasStreet) {
+  const PyRun first = runHeadless("autopark", kPython + "ra_gap_finder/MyAlgorithm.py", {"--seed=1"});
+  expectCleanRun(first);
+  EXPECT_NE(first.report.find("\"parked\": true"), std::string::npos) << describe(first);
+  EXPECT_GE(jsonNumber(first.report, "mark"), 5.0) << first.report;
+  EXPECT_NE(first.output.find("gap: inf from x = "), std::string::npos) << first.output;
+  const PyRun second = runHeadless("autopark", kPython + "ra_gap_finder/MyAlgorithm.py", {"--seed=1"});
+  EXPECT_EQ(first.report, second.report);
+}
+
+// A planner that hard-codes RA's map constants (cell = (y + 250) * 400 / 500 for the column, the
+// row from x) on GUI.getMap's picture, not GUI.worldToGrid: its path lies on the streets, it arrives.
+TEST(RoboticsAcademyPrograms, TeletaxiPlannerOnRasMapConstantsArrives) {
+  const PyRun run = runHeadless("teletaxi", kPython + "ra_constants_teletaxi/MyAlgorithm.py", {"--seed=1"});
+  expectCleanRun(run);
+  EXPECT_NE(run.report.find("\"reached\": true"), std::string::npos) << describe(run);
+  EXPECT_EQ(jsonNumber(run.report, "bumps"), 0.0) << run.report;  // its path kept to the streets
+  EXPECT_NE(run.output.find("(by RA's constants)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("arrived, "), std::string::npos) << run.output;
+}
+
 // The clock is the simulator's and the pacing as documented, in RoboticsAcademy's shape (sleep,
 // a second HAL read, a busy wait on time.time(), datetime) and in Aula's (time.time() is
 // api.time_s(), a sleep inside execute() waits in sim time). Each program raises if not.
@@ -517,4 +541,20 @@ TEST(PythonShapes, ImportMistakesSayWhatAulaOffers) {
     const PyRun run = runHeadless("vacuum", kPython + folder + "/MyAlgorithm.py", kShortVacuum);
     expectPythonFault(run, message);
   }
+}
+
+// The algorithm's own process has the sandbox's memory limit in every run, a plain `aula run`
+// too (issue 57: a runaway Python program took 9.7 GB before the machine killed it): 3 GB in one
+// bytearray is refused under a 512 MB limit, and the fault says so in the sandbox's words.
+TEST(PythonAlgorithms, APlainRunHasTheSandboxsMemoryLimit) {
+  const fs::path dir = aula::testing::privateDir();
+  std::ofstream(dir / "MyAlgorithm.py") << "class MyAlgorithm:\n"
+                                           "    def __init__(self, seed):\n"
+                                           "        self.block = None\n\n"
+                                           "    def execute(self, api):\n"
+                                           "        self.block = bytearray(3 * 1024 ** 3)\n";
+  const PyRun run = runHeadless("vacuum", (dir / "MyAlgorithm.py").string(),
+                                {"--Vacuum.Referee.Duration=20", "--Component.Sandbox.Memory=512"});
+  EXPECT_NE(run.report.find("the algorithm used more than 512 MB of memory"), std::string::npos) << describe(run);
+  EXPECT_NE(run.report.find("\"finished\": false"), std::string::npos) << describe(run);
 }

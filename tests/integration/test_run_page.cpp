@@ -449,8 +449,17 @@ TEST(RunPage, AutoparkNotParked) {
 TEST(RunPage, ClassPageOpensARunLazily) {
   const GradedRun run = makeRun("dave", {"vacuum", "--algorithm=reference", "--Vacuum.Referee.Duration=120"});
   const std::string out_dir = run.dir;
+  const std::string referees = readFile(run.stem + ".trace.json");
   aula::grade::collect(out_dir);
   EXPECT_TRUE(fs::exists(run.stem + ".html")) << "collect writes the run's own page";
+  // One copy of the trace: the page's, the referee's bytes (read back as they were written).
+  EXPECT_FALSE(fs::exists(run.stem + ".trace.json"));
+  EXPECT_FALSE(fs::exists(run.stem + ".trace.z")) << "the page holds the referee's trace as it is: no other copy";
+  EXPECT_EQ(aula::grade::traceOfPage(readFile(run.stem + ".html")), referees);
+  EXPECT_EQ(aula::grade::traceOfRun(run.stem), referees);
+  aula::grade::collect(out_dir);  // again (--collect): the pages are made again from their own copies
+  EXPECT_EQ(aula::grade::traceOfRun(run.stem), referees);
+  EXPECT_FALSE(fs::exists(run.stem + ".trace.z"));
   const std::string report = out_dir + "/report.html";
   {
     const Page page = loadInChromium("file://" + report);
@@ -564,3 +573,26 @@ TEST(RunPage, LayersAndWhatTheProgramPrinted) {
   }
 }
 
+// How big a graded run is (issue 58, docs/grading.md "How big a class is"): a full 900 s run of
+// the vacuum reference (its lasers and belief traced: the largest vacuum trace), graded, leaves
+// its result, report, picture, log and page, and no other copy of its trace; all its files
+// together within 128 KB (117 KB on 2026-12-06): the largest vacuum run; a class's runs average
+// 102 KB, 46 MB for 450 (bench/class_size.sh).
+TEST(RunPage, AGradedFullRunStaysWithinItsBudget) {
+  const GradedRun run = makeRun("erin", {"vacuum", "--algorithm=reference", "--Vacuum.Referee.Duration=900"});
+  ASSERT_NEAR(run.trace["sim_time_s"].get<double>(), 900.0, 1.0) << "a full-length run";
+  aula::grade::collect(run.dir);
+  uintmax_t bytes = 0;
+  std::vector<std::string> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(run.stem).parent_path())) {
+    if (entry.path().filename().string().rfind(fs::path(run.stem).filename().string() + ".", 0) != 0) continue;
+    bytes += entry.file_size();
+    files.push_back(entry.path().filename().string() + " " + std::to_string(entry.file_size()));
+  }
+  std::string listed;
+  for (const std::string& f : files) listed += f + "\n";
+  EXPECT_FALSE(fs::exists(run.stem + ".trace.json")) << listed;
+  EXPECT_FALSE(fs::exists(run.stem + ".trace.z")) << listed;
+  EXPECT_TRUE(fs::exists(run.stem + ".html")) << listed;
+  EXPECT_LE(bytes, 128u * 1024u) << "a run's files within its budget:\n" << listed;
+}

@@ -119,8 +119,8 @@ TEST(RunTrace, VacuumTraceAgreesWithTheReportAndTheRegrade) {
   const Traced g = traceRun("vacuum", "reference", 3);
   EXPECT_EQ(g.report, g.regraded_report);
   EXPECT_EQ(g.trace, g.regraded_trace) << "aula regrade writes the live run's trace, byte for byte";
-  // Its layers are most of it (900 laser scans of every other beam, the belief's maps): about 470 KB.
-  EXPECT_LE(g.trace.size(), 600u * 1024u) << "a 900 s vacuum trace within its budget";
+  // Its layers are most of it (450 laser scans of every other beam, the belief's maps): about 300 KB.
+  EXPECT_LE(g.trace.size(), 400u * 1024u) << "a 900 s vacuum trace within its budget";
   EXPECT_EQ(g.t["sim_time_s"], 900.0);
   EXPECT_EQ(g.t["samples"]["count"], 9001) << "10 Hz from 0 to 900 s, both ends";
   EXPECT_EQ(g.t["state"]["coverage_percent"], g.r["coverage_percent"]);

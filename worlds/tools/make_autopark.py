@@ -2,13 +2,17 @@
 """Writes the Autopark streets: worlds/autopark.world and its slot-size variants.
 
 A road along x from -25 to 35; 0.2 m curbs with faces at y = -4.25 (parking side) and y = +5;
-parked cars (4.5 x 1.8 m) centred at y = -3. The free slot starts at the front bumper of the
-car at x = 0.5 (x = 2.75) and is `slot_m` long; the cars beyond it move with it. The ideal
+parked cars (4.9 x 2.2 m boxes, the outline RoboticsAcademy's `opel` mesh shows the lasers)
+centred at y = -3, at RA's x positions. The free slot starts at the front bumper of the car at
+x = 0.5 (x = 2.95) and is `slot_m` long; the cars beyond it move with it. The curbs are below
+the lasers' plane (0.5 m, the car model's), so no beam sees them, as on RA's curb-less street;
+they stay for the referee's curb distance and to keep the car on the road. The ideal
 parked pose is the slot's centre, y = -3, yaw 0. The car ("car", model taxi_holo_laser) starts
 at (-7, 2.5) facing +x.
 
-  autopark.world                     the original street: a 9 m slot (2.25 car lengths), the
-                                     car turns in place ("diff", like the original)
+  autopark.world                     RA's street: an 8.6 m slot (2.15 car lengths) between
+                                     the cars at x = 0.5 and 14, the car turns in place ("diff",
+                                     like the original)
   autopark_ackermann.world           the same street, car-like kinematics (R = 5 m)
   autopark_ackermann_<k>L.world      slots of k = 1.6, 1.4, 1.3, 1.2 car lengths (4 m), car-like
 
@@ -20,11 +24,11 @@ Usage:
   make_autopark.py --out FILE.world [--slot-length M] [--slot-x M] [--curb-offset M]
                    [--kinematics diff|ackermann] [--start X,Y[,YAW]]
                                 writes one street to FILE.world ("-": standard output):
-    --slot-length M   free slot length, m (default 9 = 2.25 car lengths); must be > 3 m, the
+    --slot-length M   free slot length, m (default 8.6 = 2.15 car lengths); must be > 2.6 m, the
                       widest gap between the other parked cars, since the referee takes the
                       widest gap as the slot
     --slot-x M        x of the slot's start, the front bumper of the car before it (default
-                      2.75); every parked car moves with it, same spacing; the road and its end
+                      2.95); every parked car moves with it, same spacing; the road and its end
                       walls grow (never shrink below x -25..35) to keep all cars and the start
                       on the road
     --curb-offset M   how far the parking-side curb and the parked cars move away from the road
@@ -35,12 +39,12 @@ Usage:
     --reversed        the start faces -x (yaw pi): the parked cars on the car's left, the slot
                       behind it
     --rear-neighbour K, --front-neighbour K
-                      the parked cars either side of the slot: "car" (default, 4.5 x 1.8 m),
-                      "van" (5.5 x 2.0 m) or "small" (3.6 x 1.6 m); each keeps the cars' 0.35 m
+                      the parked cars either side of the slot: "car" (default, 4.9 x 2.2 m),
+                      "van" (5.5 x 2.0 m) or "small" (3.6 x 1.6 m); each keeps the cars' 0.15 m
                       from the curb, the slot stays --slot-length, and the cars beyond move
                       with the neighbour's length
     --free-curb M     a free curb M metres long beyond the last parked car before the east end
-                      wall (default: the road's own end, 3.75 m at least); a car parked there
+                      wall (default: the road's own end, 3.55 m at least); a car parked there
                       is not in the slot
   The names stay those of the shipped streets: parked_car_<i> (static includes), the collision
   curb_parking_side, the car model "car" (the referee finds the curb and the cars from the
@@ -60,19 +64,21 @@ from sdfgen import (WORLDS, Parser, UsageError, box, boxes_overlap, check_range,
                     write_file, write_output)
 
 CAR_LENGTH_M = 4.0
-SLOT_START_X = 2.75  # front bumper of the parked car at x = 0.5
+SLOT_START_X = 2.95  # front bumper of the parked car at x = 0.5
+DEFAULT_SLOT_M = 8.6  # to the rear bumper of the car at x = 14, as on RA's street
 PARKED_BEFORE = [-20.0, -13.5, -7.0, 0.5]
 PARKED_AFTER_OFFSETS = [0.0, 7.5, 15.0]  # the default street: cars at 14, 21.5, 29
-PARKED_HALF_LENGTH = 2.25
-PARKED_HALF_WIDTH = 0.9
+PARKED_HALF_LENGTH = 2.45  # RA's opel mesh: about 4.9 x 2.2 m
+PARKED_HALF_WIDTH = 1.1
 PARKED_Y = -3.0
-# The neighbours a slot can have, (length, width, height) m; each stands 0.35 m off the curb as a car does.
-NEIGHBOURS = {"car": (4.5, 1.8, 1.5), "van": (5.5, 2.0, 2.2), "small": (3.6, 1.6, 1.4)}
+# The neighbours a slot can have, (length, width, height) m; each stands 0.15 m off the curb as a car does.
+NEIGHBOURS = {"car": (4.9, 2.2, 1.5), "van": (5.5, 2.0, 2.2), "small": (3.6, 1.6, 1.4)}
 CURB_FACE_Y = -4.25   # parking-side curb face (its box: 1 m deep, 0.2 m high)
-CURB_CLEARANCE_M = PARKED_Y - PARKED_HALF_WIDTH - CURB_FACE_Y  # 0.35: a parked car's side to the curb face
+CURB_CLEARANCE_M = PARKED_Y - PARKED_HALF_WIDTH - CURB_FACE_Y  # 0.15: a parked car's side to the curb face
 FAR_CURB_FACE_Y = 5.0
+FAR_SIDE_HEIGHT_M = 1.0  # above the lasers: the far side of the road is seen, as the end walls are
 ROAD_WEST, ROAD_EAST = -25.0, 35.0  # the default road; a street never gets shorter
-WIDEST_OTHER_GAP_M = 3.0  # between the parked cars after the slot (7.5 - 4.5)
+WIDEST_OTHER_GAP_M = 2.6  # between the parked cars after the slot (7.5 - 4.9)
 DEFAULT_START = (-7.0, 2.5, 0.0)
 PROG = "make_autopark.py"
 
@@ -134,8 +140,8 @@ def parked_y(kind, curb_offset):
 def road_extent(parked, start, free_curb=None):
     """The road's x range: the default one, grown to keep every car and the start on it; with
     free_curb, the east end that far beyond the last car."""
-    west = min(ROAD_WEST, min(parked) - PARKED_HALF_LENGTH - 2.75)
-    east = max(ROAD_EAST, max(parked) + PARKED_HALF_LENGTH + 3.75)
+    west = min(ROAD_WEST, min(parked) - PARKED_HALF_LENGTH - 2.55)
+    east = max(ROAD_EAST, max(parked) + PARKED_HALF_LENGTH + 3.55)
     if free_curb is not None:
         east = max(parked) + PARKED_HALF_LENGTH + free_curb
     if start is not None:
@@ -143,7 +149,7 @@ def road_extent(parked, start, free_curb=None):
         xs = [p[0] for p in corners(start[0], 0.0, start[2], length, width)]
         west = min(west, min(xs) - 3.0)
         east = max(east, max(xs) + 3.0)
-    return float(math.floor(west)), float(east if free_curb is not None else math.ceil(east))
+    return float(math.floor(west + 1e-9)), float(east if free_curb is not None else math.ceil(east - 1e-9))  # no float dust
 
 
 def parked_model(name, kind, x, y):
@@ -169,9 +175,9 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
     facing = "facing +x" if syaw == 0 else f"with yaw {num(syaw)} rad"
     out = ['<?xml version="1.0"?>',
            f"<!-- {title}: generated by worlds/tools/make_autopark.py, edit that and rerun.",
-           f"     Road along x from {num(west)} to {num(east)}; curbs are 0.2 m high boxes with faces at"
-           f" y = {num(curb_face)} (parking",
-           f"     side) and y = +5; parked cars (4.5 x 1.8 m) centred at y = {num(car_y)} leave a {slot_m:.2f} m slot",
+           f"     Road along x from {num(west)} to {num(east)}; the parking side's curb is a 0.2 m high box, face at"
+           f" y = {num(curb_face)}",
+           f"     (below the lasers), the far side a 1 m wall, face at y = +5; parked cars ({num(2 * PARKED_HALF_LENGTH)} x {num(2 * PARKED_HALF_WIDTH)} m) centred at y = {num(car_y)} leave a {slot_m:.2f} m slot",
            f"     ({slot_m / CAR_LENGTH_M:.2f} car lengths) between x = {slot_x:.2f} and {slot_x + slot_m:.2f};"
            f" ideal parked pose ({ideal_x:.2f}, {num(ideal_y)}), yaw 0.",
            f"     The car starts at ({num(sx)}, {num(sy)}) {facing}; kinematics \"{kinematics}\". -->"]
@@ -187,7 +193,9 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
     # End walls: from the parking-side curb's back (face - 1 m) to the far curb's back (face + 1 m).
     wall_y0, wall_y1 = curb_face - 1.0, FAR_CURB_FACE_Y + 1.0
     out += street_box("curb_parking_side", mid, curb_face - 0.5, 0.1, length, 1.0, 0.2)
-    out += street_box("curb_far_side", mid, FAR_CURB_FACE_Y + 0.5, 0.1, length, 1.0, 0.2)
+    # The far side: a 1 m wall, not a curb, so the lasers (0.5 m up) see where the road ends there
+    # (a car turning round needs to); the parking side's curb stays below them.
+    out += street_box("curb_far_side", mid, FAR_CURB_FACE_Y + 0.5, FAR_SIDE_HEIGHT_M / 2, length, 1.0, FAR_SIDE_HEIGHT_M)
     out += street_box("end_wall_west", west - 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out += street_box("end_wall_east", east + 0.5, (wall_y0 + wall_y1) / 2, 0.5, 1.0, wall_y1 - wall_y0, 1.0)
     out += ['      </link>', '    </model>']
@@ -201,8 +209,8 @@ def world(slot_m, kinematics, title, slot_x=SLOT_START_X, curb_offset=0.0, start
 
 
 def write_shipped():
-    variants = [("autopark.world", 9.0, "diff", "autopark"),
-                ("autopark_ackermann.world", 9.0, "ackermann", "autopark_ackermann")]
+    variants = [("autopark.world", DEFAULT_SLOT_M, "diff", "autopark"),
+                ("autopark_ackermann.world", DEFAULT_SLOT_M, "ackermann", "autopark_ackermann")]
     for k in (1.6, 1.4, 1.3, 1.2):
         variants.append((f"autopark_ackermann_{k}L.world", k * CAR_LENGTH_M, "ackermann", f"autopark_ackermann_{k}L"))
     for filename, slot_m, kinematics, title in variants:
@@ -219,7 +227,7 @@ VALUE_OPTIONS = ("--out", "--slot-length", "--slot-x", "--curb-offset", "--kinem
 def parse_args(argv):
     p = Parser(prog=PROG, description="Writes an Autopark street (see the module docstring).")
     p.add_argument("--out", required=True, help="the world file to write ('-': standard output)")
-    p.add_argument("--slot-length", type=finite, default=9.0)
+    p.add_argument("--slot-length", type=finite, default=DEFAULT_SLOT_M)
     p.add_argument("--slot-x", type=finite, default=SLOT_START_X)
     p.add_argument("--curb-offset", type=finite, default=0.0)
     p.add_argument("--kinematics", choices=("diff", "ackermann"), default="diff")

@@ -74,11 +74,16 @@ class ReactiveParker : public AutoparkAlgorithm {
   static constexpr double kZigzagCurbMarginM = 0.1;  // its lowest corner above the curb face
   static constexpr double kZigzagMinTravelM = 0.4;   // the shortest useful move
   static constexpr double kZigzagDoneM = 0.12;       // this near the slot's line: straighten up
+  // The multi-move park's side from the parked cars' far side, where no curb was seen: each move
+  // keeps the corners clear of that line, so it can end in line with the neighbours (the
+  // referee's ideal pose is on their centre line) where the two arcs need more room.
+  static constexpr double kZigzagFarSideClearanceM = 0.2;
   static constexpr double kZigzagMps = 0.5, kZigzagTurnRadps = 0.6;
   static constexpr int kZigzagMaxMoves = 40;
   // The longest each phase may take, sim seconds: longer, it is stuck and says so (never a silent
   // stall until the run's time is up). A search drives a long street both ways; a turn is short.
   static constexpr double kSearchLimitS = 240, kTurnLimitS = 60, kManoeuvreLimitS = 150;
+  static constexpr double kArcRearClearM = 0.2;  // the second arc stops this near the slot's rear end
   static constexpr double kBackOffClearM = 1.0;  // backing off for a run-up stops this near something behind
 
   // The present phase's command for this period (and the next phase, when it ends).
@@ -97,7 +102,7 @@ class ReactiveParker : public AutoparkAlgorithm {
         arc1Step(api, y, yaw, c);
         break;
       case Mode::Arc2:
-        arc2Step(api, yaw, c);
+        arc2Step(api, x, y, yaw, c);
         break;
       case Mode::Zigzag:
         zigzag(api, x, y, yaw, c.v_mps, c.w_radps);
@@ -137,7 +142,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       return;
     }
     if (back_off_m_ <= 0 && arrivedOffLane(to_go, off_lane)) back_off_m_ = runUpM(off_lane);
-    if (back_off_m_ > 0 && (to_go >= back_off_m_ || rangeAhead(api.laser2.getLaserData(), 0.3) < kBackOffClearM)) {
+    if (back_off_m_ > 0 && (to_go >= back_off_m_ || bodyGapBehind(api, 0.3) < kBackOffClearM)) {
       back_off_m_ = 0;  // far enough behind the start (or something close behind): come again
     }
     c.v_mps = back_off_m_ > 0 ? -kReverseMps : approachSpeed(to_go, kCruiseMps, kReverseMps);
@@ -173,11 +178,15 @@ class ReactiveParker : public AutoparkAlgorithm {
   }
 
   // ARC2: reversing, steering the other way until parallel to the curb.
-  void arc2Step(const AutoparkApi& api, double yaw, Command& c) {
+  void arc2Step(const AutoparkApi& api, double x, double y, double yaw, Command& c) {
     c.v_mps = -kManoeuvreMps;
     c.w_radps = -kManoeuvreMps / plan_.radius_m;
-    // Parallel to the curb, or the car behind is close: straighten up later, forwards.
-    if (yaw <= 0.0 || rangeAhead(api.laser2.getLaserData(), 0.35) < 0.35) mode_ = Mode::Centre;
+    // Parallel to the curb, or the car behind is close (by its laser, or by the slot's measured
+    // rear end: the arcs run a little long when they start off straight): straighten up later, forwards.
+    if (yaw <= 0.0 || bodyGapBehind(api, 0.35) < 0.35 ||
+        rearClearanceM(slot_, api.car_length_m, api.car_width_m, x, y, yaw) < kArcRearClearM) {
+      mode_ = Mode::Centre;
+    }
   }
 
   // One line per phase, so a student can follow the manoeuvre in the terminal.
@@ -218,7 +227,7 @@ class ReactiveParker : public AutoparkAlgorithm {
       plan_.feasible = true;
       plan_.radius_m = kArcRadiusM;  // the centring's steering limit
       plan_.start_x_m = slot.centreXM();
-      plan_.goal_y_m = slot.curb_y_m + kCurbClearanceM + api.car_width_m / 2;
+      plan_.goal_y_m = slot.curb_y_m + (slot.curb_seen ? kCurbClearanceM : kZigzagFarSideClearanceM) + api.car_width_m / 2;
       std::snprintf(line, sizeof line, "slot %.1f m: a multi-move park, forward and back within it", slot.lengthM());
       api.status = line;
       mode_ = Mode::Approach;
@@ -238,8 +247,8 @@ class ReactiveParker : public AutoparkAlgorithm {
 
   // CENTRE: forward or back until the front and rear lasers see equal gaps, then say where it is.
   void centre(AutoparkApi& api, double x, double y, double yaw, double& v, double& w) {
-    const double gap_front = rangeAhead(api.laser1.getLaserData(), 0.15);
-    const double gap_rear = rangeAhead(api.laser2.getLaserData(), 0.15);
+    const double gap_front = bodyGapAhead(api, 0.15);
+    const double gap_rear = bodyGapBehind(api, 0.15);
     if (centred(gap_front, gap_rear, yaw) || ++centre_moves_ > 2000) {  // never oscillate forever
       finish(api, x, y, yaw);
       return;
@@ -247,6 +256,16 @@ class ReactiveParker : public AutoparkAlgorithm {
     const Command c = centringCommand(gap_front, gap_rear, yaw, std::max(plan_.radius_m, api.min_turn_radius_m));
     v = c.v_mps;
     w = c.w_radps;
+  }
+
+  // The body's gap to what is ahead of (behind) it: the front (rear) laser's range within
+  // half_width_rad of straight out, plus how far the laser sits beyond the body's end (0.4 m on
+  // RoboticsAcademy's car: its lasers at +-2.4 m on a 4 m body; negative when inside it).
+  static double bodyGapAhead(const AutoparkApi& api, double half_width_rad) {
+    return rangeAhead(api.laser1.getLaserData(), half_width_rad) + std::abs(api.mount1.x_m) - api.car_length_m / 2;
+  }
+  static double bodyGapBehind(const AutoparkApi& api, double half_width_rad) {
+    return rangeAhead(api.laser2.getLaserData(), half_width_rad) + std::abs(api.mount2.x_m) - api.car_length_m / 2;
   }
 
   // Half the body's extent along the street, and how far its lowest corner is below its centre,
@@ -291,7 +310,7 @@ class ReactiveParker : public AutoparkAlgorithm {
     const double reach = halfExtentX(api, a) + kZigzagEndMarginM;
     const double lowest_y = slot_.curb_y_m + kZigzagCurbMarginM + lowestCornerBelow(api, a);
     const bool at_end = zig_forward_ ? x >= slot_.front_x_m - reach : x <= slot_.rear_x_m + reach;
-    const double ahead = zig_forward_ ? rangeAhead(api.laser1.getLaserData(), 0.35) : rangeAhead(api.laser2.getLaserData(), 0.35);
+    const double ahead = zig_forward_ ? bodyGapAhead(api, 0.35) : bodyGapBehind(api, 0.35);
     if (at_end || y <= std::max(lowest_y, plan_.goal_y_m) || low_enough || ahead < 0.15) {
       ++zig_moves_;
       zig_forward_ = !zig_forward_;

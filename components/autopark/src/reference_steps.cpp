@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace aula::autopark {
 
@@ -42,6 +43,18 @@ Command centringCommand(double gap_front_m, double gap_rear_m, double yaw_rad, d
   return c;
 }
 
+double rearClearanceM(const Slot& slot, double length_m, double width_m, double x_m, double y_m, double yaw_rad) {
+  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
+  double clearance = std::numeric_limits<double>::infinity();
+  for (const double along : {-length_m / 2, length_m / 2}) {
+    for (const double across : {-width_m / 2, width_m / 2}) {
+      const double cx = x_m + c * along - s * across, cy = y_m + s * along + c * across;
+      if (cy < slot.edge_y_m) clearance = std::min(clearance, cx - slot.rear_x_m);
+    }
+  }
+  return clearance;
+}
+
 bool centred(double gap_front_m, double gap_rear_m, double yaw_rad) {
   const double error = (gap_front_m - gap_rear_m) / 2;
   return std::abs(error) < 0.1 && std::abs(geometry::wrapAngle(yaw_rad)) < 0.03;
@@ -62,7 +75,7 @@ MappedStreet planningExtent(const MappedStreet& mapped, const Slot& slot, double
   MappedStreet e;
   e.min_x_m = std::max(mapped.min_x_m, std::min(x_m, slot.rear_x_m) - 12);
   e.max_x_m = std::min(mapped.max_x_m, std::max(x_m, slot.front_x_m) + 12);
-  e.min_y_m = slot.curb_y_m - 0.5;
+  e.min_y_m = slot.curb_y_m;  // the slot's line: a curb the lasers may not see lies at or below it
   e.max_y_m = std::min(mapped.max_y_m, std::max(y_m, lane_y_m) + car_width_m / 2 + 3.0);
   return e;
 }

@@ -78,7 +78,7 @@ TEST(PlannedSteps, ThePlanningGridNeverReachesBeyondTheMappedStreet) {
   const MappedStreet e = planningExtent(wide, slot, 10.0, 0.0, -0.1, 2.0);
   EXPECT_DOUBLE_EQ(e.min_x_m, -10.0);  // 12 m behind the slot
   EXPECT_DOUBLE_EQ(e.max_x_m, 22.0);   // 12 m beyond the car
-  EXPECT_DOUBLE_EQ(e.min_y_m, -4.75);  // just below the curb
+  EXPECT_DOUBLE_EQ(e.min_y_m, -4.25);  // the slot's line: nothing below it
   EXPECT_DOUBLE_EQ(e.max_y_m, 4.0);    // the car's side plus 3 m
   const MappedStreet narrow{0, 15, -5, 1};
   const MappedStreet n = planningExtent(narrow, slot, 10.0, 0.0, -0.1, 2.0);
@@ -117,4 +117,15 @@ TEST(ReactiveSteps, ArrivedOffTheLaneItBacksOffFurtherTheFurtherOffItIs) {
   EXPECT_GT(runUpM(2.6), runUpM(0.5));
   EXPECT_DOUBLE_EQ(runUpM(-1.0), runUpM(1.0));
   EXPECT_GE(runUpM(0.3), 4.0);
+}
+
+TEST(ReactiveSteps, TheRearClearanceIsTheLowRearCornerToTheSlotsRearEnd) {
+  const Slot slot = slotOf(2.0, 9.0);  // the cars' side at -2.1
+  // Straight, on the slot's line: the rear corners at x 5 - 2 = 3, 1 m from the car behind.
+  EXPECT_NEAR(rearClearanceM(slot, 4.0, 2.0, 5.0, -3.2, 0.0), 1.0, 1e-9);
+  // Turned 0.3 rad in the second arc: only the lower rear corner is below the side line.
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  EXPECT_NEAR(rearClearanceM(slot, 4.0, 2.0, 5.0, -2.3, 0.3), 5.0 - 2.0 * c + 1.0 * s - 2.0, 1e-9);
+  // Still above the cars' side line: nothing behind it to hit.
+  EXPECT_TRUE(std::isinf(rearClearanceM(slot, 4.0, 2.0, 5.0, 1.5, 0.0)));
 }

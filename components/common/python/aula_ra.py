@@ -3,7 +3,8 @@
 # GUI.py). Conventions are RoboticsAcademy's:
 # - LaserData.values: ranges in metres, a list, beam 0 on the right; minAngle/maxAngle are
 #   ROS's angles + pi/2, so a 180-degree scan runs from 0 (right) to pi (left); timeStamp in
-#   seconds of sim time. A beam with no echo reads maxRange (RoboticsAcademy's Gazebo gives inf).
+#   seconds of sim time. A beam with no echo reads inf, as RoboticsAcademy's Gazebo gives it
+#   (Aula's own API reads maxRange there): a reading at maxRange is taken as no echo.
 # - Pose3d: .x, .y, .z (m), .yaw, .pitch, .roll (rad), .q ([w, x, y, z]), .h, .timeStamp (s).
 # - BumperData: .state (1 while touching), .bumper: RIGHT_BUMPER = 0, CENTER_BUMPER = 1,
 #   LEFT_BUMPER = 2 (Aula's own API numbers them the other way: 0 left).
@@ -37,8 +38,9 @@ class LaserData:
 
 def laser_data(scan):
     """RoboticsAcademy's LaserData from Aula's (component.LaserData)."""
-    return LaserData([float(r) for r in scan.values_m], scan.minAngle + math.pi / 2, scan.maxAngle + math.pi / 2,
-                     scan.minRange, scan.maxRange, scan.timeStamp / 1e6)
+    max_range = scan.maxRange
+    return LaserData([math.inf if r >= max_range else float(r) for r in scan.values_m], scan.minAngle + math.pi / 2,
+                     scan.maxAngle + math.pi / 2, scan.minRange, max_range, scan.timeStamp / 1e6)
 
 
 class Pose3d:

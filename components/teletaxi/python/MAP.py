@@ -1,10 +1,10 @@
 # RoboticsAcademy 2021-23's MAP for Global Navigation (`from MAP import MAP`): the city map and
-# the world-to-map transform, the same as GUI's (GUI.py: Aula's map is the world's own).
+# the world-to-map transform, the same as GUI's: RoboticsAcademy's 400 x 400 picture (GUI.py).
 import GUI as _GUI
 import aula_ra as _ra
 
 
-# The city map, a numpy uint8 image [row, column]: 0 obstacle, 255 free (`url` is not used).
+# The city map, a 400 x 400 numpy uint8 image [row, column]: 0 obstacle, 255 free (`url` is not used).
 def getMap(url=None):
     return _GUI.getMap(url)
 

@@ -49,9 +49,25 @@ double rayCircle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Circl
   return t >= 0 ? t : kInf;
 }
 
+// Where the ray o + t d meets the segment (the nearer end when it runs along it), +inf on a miss.
+double raySegment(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Segment2& s) {
+  const Eigen::Vector2d e = s.b_m - s.a_m, w = s.a_m - o;
+  const double denom = d.x() * e.y() - d.y() * e.x();
+  if (std::abs(denom) < 1e-15) {  // parallel: a hit only when the ray runs along the segment
+    if (std::abs(w.x() * d.y() - w.y() * d.x()) > 1e-12) return kInf;
+    const double ta = w.dot(d), tb = (s.b_m - o).dot(d);
+    if (std::max(ta, tb) < 0) return kInf;
+    return std::max(0.0, std::min(ta, tb));
+  }
+  const double t = (w.x() * e.y() - w.y() * e.x()) / denom;
+  const double u = (w.x() * d.y() - w.y() * d.x()) / denom;
+  return t >= 0 && u >= 0 && u <= 1 ? t : kInf;
+}
+
 double castBrute(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Obstacles2D& obstacles, double best) {
   for (const auto& r : obstacles.rects) best = std::min(best, rayRect(o, d, r));
   for (const auto& c : obstacles.circles) best = std::min(best, rayCircle(o, d, c));
+  for (const auto& s : obstacles.segments) best = std::min(best, raySegment(o, d, s));
   return best;
 }
 
@@ -65,12 +81,16 @@ void boundsOf(const Circle2& c, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
   lo = c.center_m - Eigen::Vector2d::Constant(c.radius_m);
   hi = c.center_m + Eigen::Vector2d::Constant(c.radius_m);
 }
+void boundsOf(const Segment2& s, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
+  lo = s.a_m.cwiseMin(s.b_m);
+  hi = s.a_m.cwiseMax(s.b_m);
+}
 
 }  // namespace
 
 Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
     : statics_(std::move(statics)), cell_m_(cell_size_m) {
-  const size_t count = statics_.rects.size() + statics_.circles.size();
+  const size_t count = statics_.rects.size() + statics_.circles.size() + statics_.segments.size();
   if (count == 0) return;
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInf), hi = -lo;
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> boxes;
@@ -85,6 +105,11 @@ Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
     boundsOf(c, a, b);
     boxes.emplace_back(a, b);
   }
+  for (const auto& s : statics_.segments) {
+    Eigen::Vector2d a, b;
+    boundsOf(s, a, b);
+    boxes.emplace_back(a, b);
+  }
   for (const auto& [a, b] : boxes) {
     lo = lo.cwiseMin(a);
     hi = hi.cwiseMax(b);
@@ -94,8 +119,7 @@ Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
   rows_ = std::max(1, static_cast<int>(std::ceil((hi.y() - grid_min_.y()) / cell_m_)) + 1);
   cells_.assign(static_cast<size_t>(cols_) * rows_, {});
   for (size_t i = 0; i < boxes.size(); ++i) {
-    const int id = i < statics_.rects.size() ? static_cast<int>(i)
-                                             : -1 - static_cast<int>(i - statics_.rects.size());
+    const int id = static_cast<int>(i);
     const int c0 = std::clamp(static_cast<int>((boxes[i].first.x() - grid_min_.x()) / cell_m_), 0, cols_ - 1);
     const int c1 = std::clamp(static_cast<int>((boxes[i].second.x() - grid_min_.x()) / cell_m_), 0, cols_ - 1);
     const int r0 = std::clamp(static_cast<int>((boxes[i].first.y() - grid_min_.y()) / cell_m_), 0, rows_ - 1);
@@ -141,8 +165,11 @@ double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double
   for (;;) {
     // An object may be tested again in a later cell: cheap, and keeps the caster stateless
     // (const and safe to share).
+    const int rects = static_cast<int>(statics_.rects.size()), circles = static_cast<int>(statics_.circles.size());
     for (const int id : cells_[static_cast<size_t>(cy) * cols_ + cx]) {
-      const double t = id >= 0 ? rayRect(origin, d, statics_.rects[id]) : rayCircle(origin, d, statics_.circles[-1 - id]);
+      const double t = id < rects             ? rayRect(origin, d, statics_.rects[id])
+                       : id < rects + circles ? rayCircle(origin, d, statics_.circles[id - rects])
+                                              : raySegment(origin, d, statics_.segments[id - rects - circles]);
       best = std::min(best, t);
     }
     const double t_cell_exit = std::min(t_x, t_y);

@@ -9,12 +9,17 @@
 #include <dart/dynamics/BoxShape.hpp>
 #include <dart/dynamics/CylinderShape.hpp>
 #include <dart/dynamics/Inertia.hpp>
+#include <dart/dynamics/MeshShape.hpp>
 #include <dart/dynamics/PlanarJoint.hpp>
 #include <dart/dynamics/ShapeNode.hpp>
 #include <dart/dynamics/WeldJoint.hpp>
 
+#include <assimp/scene.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 
 namespace aula::physics {
 namespace {
@@ -42,6 +47,53 @@ constexpr double kFriction = 0.3;
 ShapePtr makeShape(const world::Shape& s) {
   if (s.kind == world::ShapeKind::Cylinder) return std::make_shared<CylinderShape>(s.radius_m, s.length_m);
   return std::make_shared<BoxShape>(s.box_size_m);
+}
+
+// A static mesh's collision triangles are cut into tiles of this size (by each triangle's centre),
+// each one shape of the near set: a robot in a 500 m mesh city meets the triangles of the tiles
+// around it, not the whole city (bench/mesh_city.sh).
+constexpr double kMeshTile_m = 10.0;
+
+// DART's MeshShape of triangles given as corner triples (3 per triangle), in the frame it is
+// placed in. DART reads an assimp scene (Bullet takes its meshes' triangles as they are, without
+// node transforms): one mesh, one default material; the MeshShape frees it (aiReleaseImport
+// deletes a scene it did not import).
+std::shared_ptr<dart::dynamics::MeshShape> meshShapeOf(const std::vector<Eigen::Vector3d>& corners) {
+  auto* mesh = new aiMesh;
+  mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+  mesh->mNumVertices = static_cast<unsigned>(corners.size());
+  mesh->mVertices = new aiVector3D[corners.size()];
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    mesh->mVertices[i] = aiVector3D(static_cast<ai_real>(corners[i].x()), static_cast<ai_real>(corners[i].y()),
+                                    static_cast<ai_real>(corners[i].z()));
+  }
+  mesh->mNumFaces = static_cast<unsigned>(corners.size() / 3);
+  mesh->mFaces = new aiFace[mesh->mNumFaces];
+  for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+    mesh->mFaces[f].mNumIndices = 3;
+    mesh->mFaces[f].mIndices = new unsigned[3]{3 * f, 3 * f + 1, 3 * f + 2};
+  }
+  auto* scene = new aiScene;
+  scene->mNumMeshes = 1;
+  scene->mMeshes = new aiMesh*[1]{mesh};
+  scene->mNumMaterials = 1;
+  scene->mMaterials = new aiMaterial*[1]{new aiMaterial};
+  scene->mRootNode = new aiNode;
+  scene->mRootNode->mNumMeshes = 1;
+  scene->mRootNode->mMeshes = new unsigned[1]{0};
+  return std::make_shared<dart::dynamics::MeshShape>(Eigen::Vector3d::Ones(), scene);
+}
+
+// The heights any robot's body spans (world z): a planar robot touches nothing outside them.
+std::pair<double, double> robotsZBand(const world::WorldSpec& spec) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& r : spec.robots) {
+    const double z = r.pose.translation().z() + r.shape_offset.translation().z();
+    const double half = r.shape.kind == world::ShapeKind::Box ? r.shape.box_size_m.z() / 2 : r.shape.length_m / 2;
+    lo = std::min(lo, z - half);
+    hi = std::max(hi, z + half);
+  }
+  return {lo, hi};
 }
 
 }  // namespace
@@ -74,7 +126,41 @@ PhysicsWorld::PhysicsWorld(const world::WorldSpec& spec, double step_s) {
   // detector sees only the near set, kept in a second immobile skeleton.
   auto statics = dart::dynamics::Skeleton::create("statics");
   auto* ground = statics->createJointAndBodyNodePair<dart::dynamics::WeldJoint>().second;
+  // A mesh's floor would hold every robot in contact (its bumper always pressed), as a ground
+  // plane would: a triangle counts only where it reaches above the robots' bottoms (1 cm up) and
+  // below their tops.
+  const auto [robots_bottom_m, robots_top_m] = robotsZBand(spec);
+  constexpr double kFloorClearance_m = 0.01;
   for (const auto& o : spec.statics) {
+    if (o.shape.kind == world::ShapeKind::Mesh) {
+      const world::TriangleMesh& mesh = *o.shape.mesh;
+      std::map<std::pair<long, long>, std::vector<Eigen::Vector3d>> tiles;
+      for (const auto& t : mesh.triangles) {
+        const Eigen::Vector3d a = o.pose * mesh.vertices_m[t[0]], b = o.pose * mesh.vertices_m[t[1]],
+                              c = o.pose * mesh.vertices_m[t[2]];
+        if (std::max({a.z(), b.z(), c.z()}) <= robots_bottom_m + kFloorClearance_m) continue;
+        if (std::min({a.z(), b.z(), c.z()}) >= robots_top_m) continue;
+        const Eigen::Vector3d centre = (a + b + c) / 3;
+        auto& tile = tiles[{std::lround(std::floor(centre.x() / kMeshTile_m)), std::lround(std::floor(centre.y() / kMeshTile_m))}];
+        tile.insert(tile.end(), {a, b, c});
+      }
+      for (auto& [cell, corners] : tiles) {
+        StaticPrimitive p;
+        p.name = o.name + "@" + std::to_string(cell.first) + "," + std::to_string(cell.second);
+        p.shape = meshShapeOf(corners);
+        p.pose = Eigen::Isometry3d::Identity();
+        p.lo = p.hi = corners.front().head<2>();
+        for (const auto& v : corners) p.lo = p.lo.cwiseMin(v.head<2>()), p.hi = p.hi.cwiseMax(v.head<2>());
+        statics_.push_back(p);
+      }
+      // The whole mesh, floor and all, for a viewer.
+      std::vector<Eigen::Vector3d> corners;
+      corners.reserve(3 * mesh.triangles.size());
+      for (const auto& t : mesh.triangles) corners.insert(corners.end(), {mesh.vertices_m[t[0]], mesh.vertices_m[t[1]], mesh.vertices_m[t[2]]});
+      auto* node = ground->createShapeNodeWith<VisualAspect>(meshShapeOf(corners), o.name);
+      node->setRelativeTransform(o.pose);
+      continue;
+    }
     StaticPrimitive p;
     p.name = o.name;
     p.shape = makeShape(o.shape);

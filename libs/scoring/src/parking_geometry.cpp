@@ -21,9 +21,12 @@ double ParkingScene::idealGapM() const { return (slotLengthM() - car_length_m) /
 
 namespace {
 
-OrientedBox footprintOf(const world::StaticObject& s) {
-  return OrientedBox{{s.pose.translation().x(), s.pose.translation().y(), world::yawOf(s.pose)}, s.shape.box_size_m.x(),
-                     s.shape.box_size_m.y()};
+using world::footprintOf;
+
+// A static the street is made of: a box, or a mesh standing above the ground (an RA car mesh).
+bool streetPart(const world::StaticObject& s) {
+  if (s.shape.kind == world::ShapeKind::Box) return true;
+  return s.shape.kind == world::ShapeKind::Mesh && s.shape.zRange(s.pose).second >= 0.01;
 }
 
 double lowestY(const world::StaticObject& s) {
@@ -40,7 +43,8 @@ double highestY(const world::StaticObject& s) {
 
 // A curb: a box along the street (x), at least three times as long as wide.
 bool alongTheStreet(const world::StaticObject& s) {
-  return std::abs(std::sin(world::yawOf(s.pose))) < 0.05 && s.shape.box_size_m.x() >= 3 * s.shape.box_size_m.y();
+  const OrientedBox f = footprintOf(s);
+  return std::abs(std::sin(f.centre.yaw_rad)) < 0.05 && f.length_m >= 3 * f.width_m;
 }
 
 std::string yText(double y_m) {
@@ -58,7 +62,7 @@ const world::StaticObject* findCurbs(const world::WorldSpec& world, double start
                                      const world::StaticObject*& far_curb) {
   const world::StaticObject* curb = nullptr;
   for (const auto& s : world.statics) {
-    if (s.shape.kind != world::ShapeKind::Box) continue;
+    if (!streetPart(s)) continue;
     if (!curb_name.empty()) {
       if (named(s.name, curb_name)) curb = &s;
     } else if (alongTheStreet(s) && highestY(s) < start_y_m && (curb == nullptr || highestY(s) > highestY(*curb))) {
@@ -91,13 +95,13 @@ ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::s
   }
   scene.curb_name = curb->name;
   scene.curb_y_m = highestY(*curb);
-  scene.street_west_x_m = curb->pose.translation().x() - curb->shape.box_size_m.x() / 2;
-  scene.street_east_x_m = curb->pose.translation().x() + curb->shape.box_size_m.x() / 2;
+  scene.street_west_x_m = footprintOf(*curb).centre.x_m - footprintOf(*curb).length_m / 2;
+  scene.street_east_x_m = footprintOf(*curb).centre.x_m + footprintOf(*curb).length_m / 2;
   if (far_curb != nullptr) scene.far_curb_y_m = lowestY(*far_curb);
   std::vector<OrientedBox> parked;
   for (const auto& s : world.statics) {
-    if (s.shape.kind != world::ShapeKind::Box || &s == curb) continue;
-    const double x = s.pose.translation().x();
+    if (!streetPart(s) || &s == curb) continue;
+    const double x = footprintOf(s).centre.x_m;
     const bool between = !alongTheStreet(s) && lowestY(s) >= scene.curb_y_m - 0.05 && highestY(s) < start_y &&
                          x > scene.street_west_x_m && x < scene.street_east_x_m;
     if (names.car_prefix.empty() ? between : s.name.rfind(names.car_prefix, 0) == 0) parked.push_back(footprintOf(s));

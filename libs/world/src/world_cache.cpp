@@ -1,4 +1,5 @@
 #include "world_cache.hpp"
+#include "world_sdf.hpp"
 
 #include <aula/config/paths.hpp>
 
@@ -7,12 +8,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 
 namespace aula::world {
 namespace {
 
-constexpr const char* kHeader = "aula-world-cache-v3";  // v3: the world's destinations
+constexpr const char* kHeader = "aula-world-cache-v4";  // v4: meshes (read again from their files) and what was skipped
 
 std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 
@@ -84,7 +87,7 @@ Shape readShape(std::istream& in) {
   Shape shape;
   int kind = 0;
   in >> kind >> shape.box_size_m.x() >> shape.box_size_m.y() >> shape.box_size_m.z() >> shape.radius_m >> shape.length_m;
-  shape.kind = kind == 1 ? ShapeKind::Cylinder : ShapeKind::Box;
+  shape.kind = kind == 2 ? ShapeKind::Mesh : kind == 1 ? ShapeKind::Cylinder : ShapeKind::Box;
   return shape;
 }
 
@@ -92,6 +95,9 @@ std::optional<WorldSpec> parseEntry(std::istream& in) {
   std::string line;
   if (!std::getline(in, line) || line != kHeader) return std::nullopt;
   WorldSpec spec;
+  // A mesh's triangles are not kept in the entry (a city is megabytes of them): its file, listed
+  // among the inputs with its SHA-256, is read again, once per mesh.
+  std::map<std::string, std::shared_ptr<const TriangleMesh>> meshes;
   bool ended = false;
   while (std::getline(in, line)) {
     const std::vector<std::string> f = fields(line);
@@ -112,6 +118,19 @@ std::optional<WorldSpec> parseEntry(std::istream& in) {
       object.pose = readPose(pose);
       if (!shape || !pose) return std::nullopt;
       spec.statics.push_back(object);
+    } else if (kind == "mesh" && f.size() == 5 && !spec.statics.empty() && spec.statics.back().shape.kind == ShapeKind::Mesh) {
+      Shape& shape = spec.statics.back().shape;
+      shape.mesh_source.file = f[1];
+      std::istringstream scale(f[2]);
+      scale >> shape.mesh_source.scale.x() >> shape.mesh_source.scale.y() >> shape.mesh_source.scale.z();
+      if (!scale) return std::nullopt;
+      shape.mesh_source.submesh = f[3];
+      shape.mesh_source.center_submesh = f[4] == "1";
+      auto& mesh = meshes[meshKey(shape.mesh_source)];
+      if (mesh == nullptr) mesh = loadMesh(shape.mesh_source);
+      shape.mesh = mesh;
+    } else if (kind == "skipped" && f.size() == 2) {
+      spec.skipped.push_back(f[1]);
     } else if (kind == "robot" && f.size() == 6) {
       RobotSpec robot;
       robot.name = f[1];
@@ -135,6 +154,9 @@ std::optional<WorldSpec> parseEntry(std::istream& in) {
     }
   }
   if (!ended) return std::nullopt;  // a truncated entry
+  for (const auto& object : spec.statics) {
+    if (object.shape.kind == ShapeKind::Mesh && object.shape.mesh == nullptr) return std::nullopt;
+  }
   return spec;
 }
 
@@ -180,7 +202,13 @@ void writeCachedWorld(const std::string& key, const WorldSpec& spec, const std::
   }
   for (const auto& object : spec.statics) {
     out << "static\t" << escape(object.name) << "\t" << numbers(object.shape) << "\t" << numbers(object.pose) << "\n";
+    if (object.shape.kind == ShapeKind::Mesh) {
+      const MeshSource& m = object.shape.mesh_source;
+      out << "mesh\t" << escape(m.file) << "\t" << number(m.scale.x()) << " " << number(m.scale.y()) << " "
+          << number(m.scale.z()) << "\t" << escape(m.submesh) << "\t" << (m.center_submesh ? "1" : "0") << "\n";
+    }
   }
+  for (const auto& line : spec.skipped) out << "skipped\t" << escape(line) << "\n";
   for (const auto& robot : spec.robots) {
     out << "robot\t" << escape(robot.name) << "\t" << number(robot.mass_kg) << "\t" << numbers(robot.shape) << "\t"
         << numbers(robot.pose) << "\t" << numbers(robot.shape_offset) << "\n";

@@ -11,6 +11,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -20,6 +21,16 @@
 #include <sstream>
 
 namespace aula::world {
+
+namespace {
+std::string joined(const std::vector<std::string>& problems) {
+  std::string text;
+  for (const auto& p : problems) text += (text.empty() ? "" : "\n") + p;
+  return text;
+}
+}  // namespace
+
+WorldError::WorldError(const std::vector<std::string>& problems) : std::runtime_error(joined(problems)), problems_(problems) {}
 
 std::string settingValue(const Destination& destination) {
   std::ostringstream value;
@@ -39,10 +50,9 @@ const std::map<std::string, std::set<std::string>>& pluginKeys() {
   return keys;
 }
 
-namespace {
 // Each plugin's type and keys are declared (pluginKeys): a misspelt <max_vel> is named with the
 // key it is closest to, not silently left at its default.
-void checkPluginKeys(const WorldSpec& spec) {
+void checkPluginKeys(const WorldSpec& spec, std::vector<std::string>& problems) {
   for (const auto& robot : spec.robots) {
     for (const auto& plugin : robot.plugins) {
       const std::string where = spec.source_path + ": model '" + robot.name + "', plugin '" + plugin.name + "': ";
@@ -50,7 +60,8 @@ void checkPluginKeys(const WorldSpec& spec) {
       if (declared == pluginKeys().end()) {
         std::string known;
         for (const auto& [type, keys] : pluginKeys()) known += (known.empty() ? "" : ", ") + type;
-        throw WorldError(where + "unknown driver filename '" + plugin.type + "' (known: " + known + ")");
+        problems.push_back(where + "unknown driver filename '" + plugin.type + "' (known: " + known + ")");
+        continue;
       }
       for (const auto& [key, value] : plugin.params) {
         if (declared->second.count(key) != 0) continue;
@@ -60,11 +71,18 @@ void checkPluginKeys(const WorldSpec& spec) {
           keys += (keys.empty() ? "" : ", ") + k;
           if (config::editDistance(key, k) < best_distance) best_distance = config::editDistance(key, k), best = k;
         }
-        throw WorldError(where + "unknown key <" + key + ">" + (best.empty() ? "" : " (did you mean <" + best + ">?)") +
-                         "; a " + plugin.type + " plugin reads " + keys);
+        problems.push_back(where + "unknown key <" + key + ">" + (best.empty() ? "" : " (did you mean <" + best + ">?)") +
+                           "; a " + plugin.type + " plugin reads " + keys);
       }
     }
   }
+}
+
+namespace {
+void checkPluginKeys(const WorldSpec& spec) {
+  std::vector<std::string> problems;
+  checkPluginKeys(spec, problems);
+  if (!problems.empty()) throw WorldError(problems);
 }
 }  // namespace
 
@@ -164,6 +182,44 @@ const RobotSpec* WorldSpec::findRobot(const std::string& robot) const {
   return nullptr;
 }
 
+std::pair<double, double> Shape::zRange(const Eigen::Isometry3d& pose) const {
+  const double z = pose.translation().z();
+  if (kind == ShapeKind::Mesh) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& v : mesh->vertices_m) {
+      const double vz = (pose * v).z();
+      lo = std::min(lo, vz);
+      hi = std::max(hi, vz);
+    }
+    return {lo, hi};
+  }
+  const double half = kind == ShapeKind::Box ? box_size_m.z() / 2 : length_m / 2;
+  return {z - half, z + half};
+}
+
+geometry::OrientedBox footprintOf(const StaticObject& o) {
+  const Eigen::Vector3d c = o.pose.translation();
+  const double yaw = yawOf(o.pose);
+  switch (o.shape.kind) {
+    case ShapeKind::Box:
+      return {{c.x(), c.y(), yaw}, o.shape.box_size_m.x(), o.shape.box_size_m.y()};
+    case ShapeKind::Cylinder:
+      return {{c.x(), c.y(), yaw}, 2 * o.shape.radius_m, 2 * o.shape.radius_m};
+    case ShapeKind::Mesh:
+      break;
+  }
+  // The world vertices in the frame turned by the yaw about the origin: right for a mesh that is
+  // rolled or pitched too (a y-up car turned upright).
+  const double cs = std::cos(yaw), sn = std::sin(yaw);
+  Eigen::AlignedBox2d box;
+  for (const auto& v : o.shape.mesh->vertices_m) {
+    const Eigen::Vector3d d = o.pose * v - c;
+    box.extend(Eigen::Vector2d(cs * d.x() + sn * d.y(), -sn * d.x() + cs * d.y()));
+  }
+  const Eigen::Vector2d m = box.center();
+  return {{c.x() + cs * m.x() - sn * m.y(), c.y() + sn * m.x() + cs * m.y(), yaw}, box.sizes().x(), box.sizes().y()};
+}
+
 double yawOf(const Eigen::Isometry3d& pose) {
   const Eigen::Matrix3d r = pose.linear();
   return std::atan2(r(1, 0), r(0, 0));
@@ -172,11 +228,15 @@ double yawOf(const Eigen::Isometry3d& pose) {
 
 std::vector<std::string> modelSearchPath(const std::string& world_path) {
   std::vector<std::string> folders;
-  if (const char* env = std::getenv("AULA_MODEL_PATH")) {
+  // Aula's own first, then where Gazebo classic, Gazebo (gz-sim) and sdformat look: a teacher's
+  // shell set up for Gazebo finds the same models.
+  for (const char* variable : {"AULA_MODEL_PATH", "GAZEBO_MODEL_PATH", "GZ_SIM_RESOURCE_PATH", "SDF_PATH"}) {
+    const char* env = std::getenv(variable);
+    if (env == nullptr) continue;
     std::stringstream list(env);
     std::string folder;
     while (std::getline(list, folder, ':')) {
-      if (!folder.empty()) folders.push_back(folder);
+      if (!folder.empty() && std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
     }
   }
   const auto slash = world_path.rfind('/');
@@ -199,9 +259,10 @@ WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& mod
     return *cached;
   }
   WorldSpec spec;
-  std::vector<std::string> inputs;
-  parseSdfWorld(path, folders, spec, inputs);
-  checkPluginKeys(spec);
+  std::vector<std::string> inputs, problems;
+  readSdfWorld(path, folders, spec, inputs, problems);
+  checkPluginKeys(spec, problems);  // every problem of the world at once, the reader's and the drivers'
+  if (!problems.empty()) throw WorldError(problems);
   spec.sha256 = worldSha256(path, inputs);
   writeCachedWorld(cache_key, spec, inputs);
   return spec;

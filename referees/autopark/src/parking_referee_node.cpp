@@ -42,12 +42,9 @@ std::string touched(const world::WorldSpec& world, const ParkingScene& scene, do
   double nearest_m = std::numeric_limits<double>::infinity();
   std::string name = "nothing the referee knows of";
   for (const world::StaticObject& object : world.statics) {
-    const Eigen::Vector3d at = object.pose.translation();
-    if (at.z() + object.shape.halfHeight() < 0.01) continue;  // the ground
-    const bool box = object.shape.kind == world::ShapeKind::Box;
-    const double yaw = std::atan2(object.pose.rotation()(1, 0), object.pose.rotation()(0, 0));
-    const geometry::OrientedBox footprint{{at.x(), at.y(), yaw}, box ? object.shape.box_size_m.x() : 2 * object.shape.radius_m,
-                                          box ? object.shape.box_size_m.y() : 2 * object.shape.radius_m};
+    if (object.shape.zRange(object.pose).second < 0.01) continue;  // the ground
+    const geometry::OrientedBox footprint = world::footprintOf(object);
+    const Eigen::Vector2d at(footprint.centre.x_m, footprint.centre.y_m);
     const double d = geometry::distance(car, footprint);
     if (d >= nearest_m) continue;
     nearest_m = d;

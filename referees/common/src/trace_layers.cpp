@@ -82,7 +82,7 @@ void TraceLayers::followEpisode() {
   episode_origin_ = trace_.originUtime();
   for (Laser& laser : lasers_) {
     laser.utimes.clear();
-    laser.ranges_cm.clear();
+    laser.ranges_steps.clear();
     laser.next_us = 0;
   }
   belief_placed_ = false;
@@ -112,10 +112,10 @@ void TraceLayers::onLaser(size_t index, const aula::laser_t& msg) {
   std::vector<int64_t> ranges;
   for (size_t i = 0; i < msg.ranges.size(); i += kBeamStep) {
     const double range_m = std::isfinite(msg.ranges[i]) ? std::min<double>(msg.ranges[i], msg.max_range) : msg.max_range;
-    ranges.push_back(std::llround(range_m * 100.0));
+    ranges.push_back(std::llround(range_m * (1.0 / kRangeStepM)));  // 1 / 0.02 is 50 exactly: no drift at halves
   }
   laser.utimes.push_back(msg.utime);
-  laser.ranges_cm.push_back(std::move(ranges));
+  laser.ranges_steps.push_back(std::move(ranges));
 }
 
 void TraceLayers::keepLine(Line line) {
@@ -205,12 +205,13 @@ void TraceLayers::addTo(Report& trace) const {
     lasers += std::string(i ? ",\n " : "\n ") + "{\"name\": " + jsonString(l.name) + ", \"mount\": [" + formatNumber(l.mount_x_m) +
               ", " + formatNumber(l.mount_y_m) + ", " + formatNumber(l.mount_yaw_rad) + "], \"min_angle_rad\": " +
               formatNumber(l.min_angle_rad) + ", \"increment_rad\": " + formatNumber(l.increment_rad) +
-              ", \"max_range_m\": " + formatNumber(l.max_range_m) + ", \"scans\": [";
+              ", \"max_range_m\": " + formatNumber(l.max_range_m) + ", \"range_step_m\": " + formatNumber(kRangeStepM) +
+              ", \"period_s\": " + formatNumber(kScanPeriodS) + ", \"scans\": [";
     bool first = true;
     for (size_t k = 0; k < l.utimes.size(); ++k) {
       if (!inEpisode(l.utimes[k])) continue;
-      lasers += std::string(first ? "" : ",") + "\n  {\"t_s\": " + t_of(l.utimes[k]) + ", \"cm\": " +
-                deltaArray(l.ranges_cm[k]) + "}";
+      lasers += std::string(first ? "" : ",") + "\n  {\"t_s\": " + t_of(l.utimes[k]) + ", \"ranges\": " +
+                deltaArray(l.ranges_steps[k]) + "}";
       first = false;
     }
     lasers += "]}";

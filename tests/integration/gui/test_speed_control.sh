@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The component window's speed control changes the simulator's pace: the sim seconds per wall
-# second on SIM_CLOCK at 1x real time, then after Ctrl+] (5x).
+# second on SIM_CLOCK at 1x real time, then after Ctrl+] (5x), once Run has let the world go.
 # Usage: test_speed_control.sh BUILD_DIR
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
@@ -18,6 +18,7 @@ pace() { awk -v from="$1" -v to="$2" '/^CLOCK/ && $2 >= from && $2 <= to { if (!
                                       END { printf "%.2f\n", (n > 1 && w > w0) ? (s - s0) / (w - w0) : 0 }' "$work/bus.log"; }
 
 xdotool windowfocus --sync "$wid"
+xdotool key F5  # Run my algorithm: until then the world is held at 0 s
 xdotool key ctrl+bracketright  # "as started" -> 1x real time
 sleep 1
 t0=$(now_wall)

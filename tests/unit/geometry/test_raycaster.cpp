@@ -62,6 +62,10 @@ TEST(Raycaster2D, GridAgreesWithBruteForceOnRandomWorlds) {
   Obstacles2D obs;
   for (int i = 0; i < 150; ++i) obs.rects.push_back(rect(pos(rng), pos(rng), angle(rng), size(rng), size(rng) / 3));
   for (int i = 0; i < 50; ++i) obs.circles.push_back({{pos(rng), pos(rng)}, radius(rng)});
+  for (int i = 0; i < 100; ++i) {  // a mesh's cross-section: segments of any length and direction
+    const Eigen::Vector2d a(pos(rng), pos(rng));
+    obs.segments.push_back({a, a + size(rng) * Eigen::Vector2d(std::cos(angle(rng)), std::sin(angle(rng)))});
+  }
   for (double cell : {0.5, 1.0, 4.0}) {
     const Raycaster2D caster(obs, cell);
     for (int i = 0; i < 3000; ++i) {
@@ -81,4 +85,16 @@ TEST(Raycaster2D, DynamicObstaclesAreSeenToo) {
   robots.circles.push_back({{3, 0}, 0.165});
   EXPECT_NEAR(caster.cast({0, 0}, 0, 20, &robots), 3 - 0.165, 1e-9);
   EXPECT_NEAR(caster.cast({0, 0}, 0, 20), 9.0, 1e-9);
+}
+
+TEST(Raycaster2D, SegmentsAreWallsOfNoThickness) {
+  Obstacles2D obs;
+  obs.segments.push_back({{4, -1}, {4, 1}});   // across the x axis at x = 4
+  obs.segments.push_back({{-3, 0}, {-6, 0}});  // along the -x axis: the ray meets its nearer end
+  const Raycaster2D caster(obs);
+  EXPECT_NEAR(caster.cast({0, 0}, 0.0, 10), 4.0, 1e-12);
+  EXPECT_NEAR(caster.cast({0, 0}, std::atan2(1.0, 4.0), 10), std::hypot(4.0, 1.0), 1e-9);  // its end
+  EXPECT_NEAR(caster.cast({0, 0}, std::atan2(1.1, 4.0), 10), 10.0, 1e-12);                 // past its end
+  EXPECT_NEAR(caster.cast({0, 0}, M_PI, 10), 3.0, 1e-12);
+  EXPECT_NEAR(caster.cast({5, 0}, 0.0, 10), 10.0, 1e-12);  // behind the wall: nothing
 }

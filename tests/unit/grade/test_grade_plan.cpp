@@ -8,7 +8,9 @@
 // run's world, no teacher's folder, and no more than its cap of the student's text.
 #include <aula/config/config.hpp>
 #include <aula/grade/grade_plan.hpp>
+#include <aula/grade/grades.hpp>
 #include <aula/grade/grade_runner.hpp>
+#include <aula/grade/run_page.hpp>
 #include <aula/grade/student_page.hpp>
 #include <aula/grade/submission_build.hpp>
 
@@ -20,6 +22,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -290,4 +294,102 @@ TEST(StudentPage, KeepsNoQuoteOfTheWorldNoTeachersFolderAndCapsTheStudentsText) 
   // A failure of the student's own, short and with no path: shown as it is, with the picture.
   run.report["failure"] = "execute() threw std::runtime_error: boom";
   EXPECT_EQ(forTheStudent(run, withheld).picture_png, "a picture that writes the failure");
+}
+
+// One copy of each trace (issue 58): a trace the student's page needs unchanged is the page's
+// alone, the referee's bytes read back from it; one the page had to change stays beside it, compact.
+TEST(StudentPage, TheGradeKeepsOneCopyOfEachTrace) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("aula-one-trace-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string world = "<?xml version='1.0'?>\n<sdf version='1.6'><world name='held_out'></world></sdf>\n";
+  const std::string plain = "{\"trace\": 1,\n \"events\": [{\"t_s\": 1.5, \"kind\": \"bump\", \"text\": \"a bump\"}],\n"
+                            " \"samples\": {\"x_mm\": [1,2,3]}}\n";
+  const std::string quoting = "{\"trace\": 1,\n \"events\": [{\"t_s\": 1.5, \"kind\": \"fault\", \"text\": \"" +
+                              std::string("<sdf version='1.6'><world name='held_out'>") + "\"}],\n \"samples\": {\"x_mm\": [1]}}\n";
+  for (const std::string& referees : {plain, quoting}) {
+    const std::string stem = (dir / (referees == plain ? "plain" : "quoting")).string();
+    std::ofstream(stem + ".trace.json", std::ios::binary) << referees;
+    aula::grade::RunFiles run;
+    run.report = {{"mark", 1.0}, {"log", stem + ".log"}};
+    run.trace_json = aula::grade::traceOfRun(stem);
+    ASSERT_EQ(run.trace_json, referees);
+    const aula::grade::RunFiles theirs = aula::grade::forTheStudent(run, {world});
+    const bool page_has_it = aula::grade::withoutPaths(theirs.trace_json) == referees;
+    EXPECT_EQ(page_has_it, referees == plain) << "unchanged, the student's copy is the referee's bytes";
+    const std::string html = aula::grade::runPageHtml(theirs);
+    std::ofstream(stem + ".html", std::ios::binary) << html;
+    aula::grade::keepOneTrace(stem, page_has_it);
+    EXPECT_FALSE(fs::exists(stem + ".trace.json"));
+    EXPECT_EQ(fs::exists(stem + ".trace.z"), !page_has_it);
+    EXPECT_EQ(aula::grade::traceOfRun(stem), referees) << "nothing lost: the referee's trace, byte for byte";
+    EXPECT_EQ(aula::grade::traceOfPage(html).find("sdf version"), std::string::npos) << "the page's copy withholds the world";
+  }
+  EXPECT_EQ(aula::grade::inflated(aula::grade::deflated(std::string(300000, 'x'))), std::string(300000, 'x'));
+  EXPECT_EQ(aula::grade::inflated("not a zlib stream"), "");
+  EXPECT_EQ(aula::grade::traceOfRun((dir / "none").string()), "");
+  fs::remove_all(dir);
+}
+
+// The picture the grade keeps and inlines (issue 58): the same filtered rows, deflated at zlib's
+// best in one IDAT, the other chunks as they were; anything else left as it is.
+TEST(StudentPage, ThePictureIsKeptSmallerPixelForPixel) {
+  auto u32 = [](uint32_t v) { return std::string{char(v >> 24), char(v >> 16), char(v >> 8), char(v)}; };
+  auto chunk = [&](const std::string& type, const std::string& data) {  // the CRC is not read back here
+    return u32(static_cast<uint32_t>(data.size())) + type + data + u32(0);
+  };
+  std::string rows;  // 64 rows of 200 grey pixels, filter byte 0
+  for (int y = 0; y < 64; ++y) rows += '\0' + std::string(200, static_cast<char>(y % 7 ? 200 : 30));
+  const std::string packed = aula::grade::deflated(rows);
+  const std::string header = u32(200) + u32(64) + std::string{8, 0, 0, 0, 0};
+  const std::string signature("\x89PNG\r\n\x1a\n", 8);
+  // Three IDATs in a row (as encoders write them), around them IHDR, a text chunk and IEND.
+  const std::string png = signature + chunk("IHDR", header) + chunk("tEXt", std::string("a\0b", 3)) + chunk("IDAT", packed.substr(0, 10)) +
+                          chunk("IDAT", packed.substr(10, 20)) + chunk("IDAT", packed.substr(30)) +
+                          std::string("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  const std::string smaller = aula::grade::smallerPng(png);
+  ASSERT_LT(smaller.size(), png.size());
+  EXPECT_EQ(smaller.substr(0, 8 + 12 + 13), png.substr(0, 8 + 12 + 13)) << "the signature and IHDR as they were";
+  const size_t idat = smaller.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  EXPECT_EQ(smaller.find("IDAT", idat + 1), std::string::npos) << "one IDAT";
+  const auto length = [&](size_t at) {
+    uint32_t v = 0;
+    for (int i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(smaller[at + i]);
+    return v;
+  };
+  EXPECT_EQ(aula::grade::inflated(smaller.substr(idat + 4, length(idat - 4))), rows) << "pixel for pixel";
+  EXPECT_EQ(smaller.substr(smaller.size() - 12), png.substr(png.size() - 12)) << "IEND as it was";
+  EXPECT_NE(smaller.find(std::string("tEXta\0b", 7)), std::string::npos) << "the other chunks kept";
+  EXPECT_EQ(aula::grade::smallerPng(smaller), smaller) << "once is enough";
+  EXPECT_EQ(aula::grade::smallerPng("not a picture"), "not a picture");
+  EXPECT_EQ(aula::grade::smallerPng(png.substr(0, png.size() - 30)), png.substr(0, png.size() - 30)) << "cut short";
+}
+
+// A retry is said in its row, and a run that never completed (the machine's reason on every try)
+// is left out of the marks and named, never a 0 in the median (issue 57).
+TEST(GradePlan, RetriesAreSaidAndARunNeverCompletedIsLeftOutAndNamed) {
+  const auto retried = nlohmann::json::parse(R"JSON({"student": "ada", "mark": 6.0, "seed": 1, "world": "house.world",
+    "machine_reason": false, "retried": 1, "retried_because": ["the machine's reason: aula-sim died (SIGKILL)"]})JSON");
+  const auto never = nlohmann::json::parse(R"JSON({"student": "ada", "mark": 0.0, "seed": 2, "world": "house.world",
+    "machine_reason": true, "failure": "the machine's reason: the grade's wall-clock backstop of 3600 s ran out"})JSON");
+  // A student's failure that says the words is theirs: a 0 in the median, no retry.
+  const auto theirs = nlohmann::json::parse(R"JSON({"student": "bo", "mark": 0.0, "seed": 1, "world": "house.world",
+    "machine_reason": false, "failure": "MyAlgorithm.py:3: RuntimeError: the machine's reason: please"})JSON");
+  const auto grades = aula::grade::gradeStudents({retried, never, theirs});
+  ASSERT_EQ(grades.size(), 2u);
+  const auto& ada = grades[0];
+  EXPECT_EQ(ada.runs, 1);
+  EXPECT_DOUBLE_EQ(ada.median, 6.0);
+  EXPECT_EQ(ada.runs_retried, 1);
+  EXPECT_EQ(ada.retries, "the machine's reason: aula-sim died (SIGKILL)");
+  EXPECT_EQ(ada.runs_incomplete, 1);
+  EXPECT_EQ(ada.incomplete, "house seed 2");
+  const auto& bo = grades[1];
+  EXPECT_EQ(bo.runs, 1);
+  EXPECT_EQ(bo.runs_failed, 1);
+  EXPECT_EQ(bo.runs_incomplete, 0);
+  const std::string csv = aula::grade::gradesCsv(grades);
+  EXPECT_NE(csv.find(",1,1,,the machine's reason: aula-sim died (SIGKILL),house seed 2,"), std::string::npos) << csv;
 }

@@ -78,7 +78,7 @@ TEST(Similarity, ARenamedAndReorderedCopyScoresHighAnOtherProgramLow) {
   const CodeMatch copy = compareCode(original, disguised, {});
   EXPECT_GE(copy.score, 0.6);
   ASSERT_FALSE(copy.ranges.empty());
-  EXPECT_GE(copy.ranges.front().first.first, 1);
+  EXPECT_GE(copy.ranges.front().a_first, 1);
   EXPECT_LT(compareCode(original, other, {}).score, 0.2);
   // What the template gives everyone is no likeness.
   EXPECT_DOUBLE_EQ(compareCode(original, original, original).score, 0.0);
@@ -169,7 +169,7 @@ TEST(Similarity, TheRulesDecideTheFlag) {
   std::filesystem::create_directories(dir);
   const std::string program = std::string(kOriginal) + kOther + kDisguised;
   for (const char* student : {"ana", "ben"}) std::ofstream(dir / (std::string(student) + ".cpp")) << program;
-  const std::vector<Submitted> students = {{"ana", (dir / "ana.cpp").string()}, {"ben", (dir / "ben.cpp").string()}};
+  const std::vector<Submitted> students = {{"ana", {(dir / "ana.cpp").string()}}, {"ben", {(dir / "ben.cpp").string()}}};
   const size_t shared = compareCode(codeFingerprints(program, false), codeFingerprints(program, false), {}).shared;
   ASSERT_GE(shared, SimilarityRules{}.code_min_shared);
   EXPECT_TRUE(compareClass(students, {}, {}).at(0).flagged);

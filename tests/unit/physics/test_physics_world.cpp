@@ -1,3 +1,5 @@
+#include "../support/mesh_files.hpp"
+
 #include <aula/physics/physics_world.hpp>
 
 #include <dart/dynamics/BodyNode.hpp>
@@ -7,6 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
 #include <set>
 
 using aula::physics::PhysicsWorld;
@@ -179,4 +185,36 @@ TEST(PhysicsWorld, IdenticalWorldsStepIdentically) {
     ASSERT_EQ(a.robotState(0).position_m.x(), b.robotState(0).position_m.x());
     ASSERT_EQ(a.robotState(0).yaw_rad, b.robotState(0).yaw_rad);
   }
+}
+
+// Mesh walls (issue 55): an STL written here, read through the world reader, collide in DART as
+// the box walls do; the mesh's floor holds no robot in contact.
+TEST(MeshStatics, ATaxiStopsAtAnStlWallAndItsFloorIsNoContact) {
+  const std::string dir = ::testing::TempDir() + "aula-mesh-physics-" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  setenv("XDG_CACHE_HOME", (dir + "/cache").c_str(), 1);
+  // A wall whose near face is at x = 10 (as wallWorld's box), and a 60 m floor at z = 0.
+  aula::testing::writeStl(dir + "/walls.stl",
+                          aula::testing::boxTriangles({{{10, -20, 0}, {10.2, 20, 2}}}, 30.0));
+  std::ofstream(dir + "/w.world") << "<sdf version='1.6'><world name='w'><model name='walls'><static>true</static>"
+                                     "<link name='l'><collision name='c'><geometry><mesh><uri>walls.stl</uri></mesh>"
+                                     "</geometry></collision></link></model></world></sdf>";
+  WorldSpec w = loadWorld(dir + "/w.world", {dir});
+  w.robots.push_back(taxi("taxi", 0, 0, 0));
+  PhysicsWorld p(w, 0.005);
+  run(p, 0.5);
+  EXPECT_FALSE(p.contact(0).in_contact) << "standing on the mesh's floor";
+  p.commandVelocity(0, 3.0, 0);
+  double max_front = -1e9;
+  bool touched = false;
+  for (int i = 0; i < 2400; ++i) {  // 12 s
+    p.step();
+    max_front = std::max(max_front, p.robotState(0).position_m.x() + 2.0);
+    touched = touched || p.contact(0).in_contact;
+  }
+  EXPECT_TRUE(touched);
+  EXPECT_GT(max_front, 9.9) << "it reached the wall";
+  EXPECT_LT(max_front, 10.05) << "and did not pass through it";
+  EXPECT_NEAR(p.contact(0).bearing_rad, 0.0, 0.2) << "the contact is ahead";
+  std::filesystem::remove_all(dir);
 }

@@ -68,7 +68,9 @@ TEST(ParkingGeometry, SceneFromTheWorlds) {
   EXPECT_NEAR(s.curb_y_m, -4.25, 1e-9);
   EXPECT_NEAR(s.ideal_x_m, 7.25, 1e-9);
   EXPECT_NEAR(s.ideal_y_m, -3, 1e-9);
-  EXPECT_NEAR(s.slotLengthM(), 9.0, 1e-9);
+  EXPECT_NEAR(s.slotLengthM(), 8.6, 1e-9);  // RoboticsAcademy's street: 4.9 m cars at x = 0.5 and 14
+  EXPECT_NEAR(s.rear_car.length_m, 4.9, 1e-9);
+  EXPECT_NEAR(s.rear_car.width_m, 2.2, 1e-9);
   EXPECT_NEAR(s.car_length_m, 4.0, 1e-9);
   // Found from the geometry, not the names: the curbs nearest below and above the car's start,
   // the seven parked cars between the parking-side curb and the car.

@@ -100,8 +100,8 @@ TEST_F(Layers, LasersAreSampledOnSimTimeWithTheirMountsAndDeltaEncodedRanges) {
   trace.start(1'000'000);
   // Every other beam: 1.0, 1.5 and 12 m (beyond the max range, kept at 10 m) of five.
   layers.onLaser(0, scan(1'000'000, {1.0f, 9.0f, 1.5f, 9.0f, 12.0f}));
-  layers.onLaser(0, scan(1'050'000, {2.0f, 2.0f, 2.0f}));   // within the period: not kept
-  layers.onLaser(0, scan(2'000'000, {3.0f, 3.0f, 3.0f}));
+  layers.onLaser(0, scan(2'900'000, {2.0f, 2.0f, 2.0f}));   // within the period (2 s): not kept
+  layers.onLaser(0, scan(3'000'000, {3.0f, 3.0f, 3.0f}));
   layers.onLaser(1, scan(1'500'000, {0.25f}));
   const nlohmann::json lasers = layersOf(layers)["lasers"];
   ASSERT_EQ(lasers.size(), 2u);
@@ -109,10 +109,12 @@ TEST_F(Layers, LasersAreSampledOnSimTimeWithTheirMountsAndDeltaEncodedRanges) {
   EXPECT_EQ(lasers[0]["mount"], nlohmann::json({2.0, 0.0, 0.0}));
   EXPECT_NEAR(lasers[1]["mount"][2].get<double>(), -1.570796, 1e-6);
   ASSERT_EQ(lasers[0]["scans"].size(), 2u) << lasers.dump();
-  EXPECT_EQ(lasers[0]["scans"][0]["cm"], nlohmann::json({100, 50, 850}));
+  EXPECT_DOUBLE_EQ(lasers[0]["range_step_m"].get<double>(), 0.02);
+  EXPECT_EQ(lasers[0]["scans"][0]["ranges"], nlohmann::json({50, 25, 425})) << "1, 1.5 and 10 m in 2 cm steps, delta-encoded";
   EXPECT_DOUBLE_EQ(lasers[0]["increment_rad"].get<double>(), 3.0) << "two beams' angle";
-  EXPECT_DOUBLE_EQ(lasers[0]["scans"][1]["t_s"].get<double>(), 1.0);
-  EXPECT_EQ(lasers[1]["scans"][0]["cm"], nlohmann::json({25}));
+  EXPECT_DOUBLE_EQ(lasers[0]["scans"][1]["t_s"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(lasers[0]["period_s"].get<double>(), 2.0);
+  EXPECT_EQ(lasers[1]["scans"][0]["ranges"], nlohmann::json({13})) << "0.25 m: 12.5 steps, rounded";
 }
 
 TEST_F(Layers, TheBeliefIsPutWhereTheTruthWasWhenItFirstSpokeAndKeepsAMapAPeriodAndTheLatest) {

@@ -25,6 +25,15 @@ inline void expectSameShape(const Shape& a, const Shape& b, const std::string& w
   EXPECT_TRUE(a.box_size_m == b.box_size_m) << what;
   EXPECT_EQ(a.radius_m, b.radius_m) << what;
   EXPECT_EQ(a.length_m, b.length_m) << what;
+  EXPECT_EQ(a.mesh_source.file, b.mesh_source.file) << what;
+  EXPECT_TRUE(a.mesh_source.scale == b.mesh_source.scale) << what;
+  EXPECT_EQ(a.mesh_source.submesh, b.mesh_source.submesh) << what;
+  EXPECT_EQ(a.mesh_source.center_submesh, b.mesh_source.center_submesh) << what;
+  ASSERT_EQ(a.mesh == nullptr, b.mesh == nullptr) << what;
+  if (a.mesh != nullptr) {
+    EXPECT_TRUE(a.mesh->vertices_m == b.mesh->vertices_m) << what;
+    EXPECT_TRUE(a.mesh->triangles == b.mesh->triangles) << what;
+  }
 }
 
 inline void expectSameWorld(const WorldSpec& a, const WorldSpec& b) {

@@ -114,8 +114,9 @@ TEST(LoadWorld, AutoparkStreet) {
   EXPECT_NEAR(yawOf(car.pose), 0.0, 1e-12);
   for (const auto& p : car.plugins) {
     if (p.type != "laser") continue;
-    // Mounted 0.1 m above the road, below the 0.2 m curb tops.
-    EXPECT_NEAR((car.pose * p.getPose("pose")).translation().z(), 0.1, 1e-9) << p.name;
+    // Mounted 0.5 m above the road as on RoboticsAcademy's car, above the 0.2 m curb tops.
+    EXPECT_NEAR((car.pose * p.getPose("pose")).translation().z(), 0.5, 1e-9) << p.name;
+    EXPECT_DOUBLE_EQ(p.getDouble("max_range", 0), p.name == "laser_right" ? 9.5 : 11.0) << p.name;
     EXPECT_EQ(p.getInt("samples", 0), 180);
   }
   const PluginSpec* right = nullptr;
@@ -125,6 +126,7 @@ TEST(LoadWorld, AutoparkStreet) {
   ASSERT_NE(right, nullptr);
   EXPECT_EQ(right->getString("channel", ""), "CAR_LASER_RIGHT");
   EXPECT_NEAR(yawOf(right->getPose("pose")), -M_PI / 2, 1e-6);
+  EXPECT_TRUE(right->getPose("pose").translation().head<2>().isApprox(Eigen::Vector2d(0.5, -1.25)));
   EXPECT_DOUBLE_EQ(car.findPlugin("motors")->getDouble("wheelbase", 0), 2.6);
   std::vector<double> car_x;
   double curb_face = 0;
@@ -146,7 +148,7 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
   EXPECT_TRUE(contains(plugin, "model 'bot', plugin 'eyes': unknown driver filename 'camera'")) << plugin;
   EXPECT_TRUE(contains(plugin, "known: bumper, laser, motors, pose3d")) << plugin;
   const std::string mesh = errorOf(kData + "mesh_obstacle.world");
-  EXPECT_TRUE(contains(mesh, "model 'statue', link 'body', collision 'shape': only <box> and <cylinder>")) << mesh;
+  EXPECT_TRUE(contains(mesh, "model 'statue', link 'body', collision 'shape': <uri>statue.dae</uri>: no such mesh file " + kData + "statue.dae")) << mesh;
   const std::string links = errorOf(kData + "two_links.world");
   EXPECT_TRUE(contains(links, "model 'wobbly': a robot (non-static model) must have exactly one <link>")) << links;
   // Each names the file and line of the element at fault, in the world or in the model it includes.
@@ -161,7 +163,8 @@ TEST(LoadWorld, ErrorsNameTheFileAndWhatIsWrong) {
                                  "max_v, max_w, rear_axle_x, watchdog_s, wheelbase"))
       << misspelt;
   const std::string robot_mesh = errorOf(kData + "robot_mesh.world");
-  EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': only <box> and <cylinder>"))
+  EXPECT_TRUE(contains(robot_mesh, "robot_mesh.world: model 'blobby', collision 'hull': a robot's collision must be a "
+                                   "<box> or a <cylinder>"))
       << robot_mesh;
 }
 

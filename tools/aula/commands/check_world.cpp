@@ -27,6 +27,16 @@ void printWorld(const world::WorldSpec& spec) {
     const Eigen::Vector4d b = world::staticBounds(spec);
     std::cout << "  " << spec.statics.size() << " static primitives, x [" << b[0] << ", " << b[2] << "] y [" << b[1]
               << ", " << b[3] << "] m\n";
+    for (const auto& o : spec.statics) {
+      if (o.shape.kind != world::ShapeKind::Mesh) continue;
+      const auto [z0, z1] = o.shape.zRange(o.pose);
+      std::cout << "  mesh '" << o.name << "': " << o.shape.mesh_source.file << ", " << o.shape.mesh->triangles.size()
+                << " triangles, z [" << z0 << ", " << z1 << "] m\n";
+    }
+  }
+  if (!spec.skipped.empty()) {
+    std::cout << "  read as Gazebo would, but not simulated by Aula (skipped):\n";
+    for (const auto& line : spec.skipped) std::cout << "    " << line << "\n";
   }
   for (const auto& robot : spec.robots) {
     const Eigen::Vector3d p = robot.pose.translation();
@@ -89,7 +99,17 @@ int checkWorldFile(const cli::Arguments& args) {
       throw config::ConfigError("aula check-world: --exercise=" + args.text("exercise") + ": " + settings::exerciseNames(false));
     }
   }
-  const world::WorldSpec spec = world::loadWorld(config::resolveWorldPath(args.positional(0), "aula check-world FILE"));
+  const std::string path = config::resolveWorldPath(args.positional(0), "aula check-world FILE");
+  world::WorldSpec spec;
+  try {
+    spec = world::loadWorld(path);
+  } catch (const world::WorldError& e) {  // every problem of the world, each on its line, in one pass
+    const auto problems = e.problems();
+    std::cerr << "aula check-world: " << path << " cannot be read: " << problems.size() << " problem"
+              << (problems.size() == 1 ? "" : "s") << "\n";
+    for (const auto& problem : problems) std::cerr << "  " << problem << "\n";
+    return 2;
+  }
   printWorld(spec);
   bool asked_ok = !args.given("exercise"), any_ok = false;
   for (const auto& ex : settings::exercises()) {

@@ -34,6 +34,7 @@ int gradeSubmissions(const cli::Arguments& args) {
   options.engine = args.text("engine");
   options.wall_limit_s = args.real("wall-limit");
   options.record = args.flag("record");
+  options.keep_builds = args.flag("keep-builds");
   options.build_sandbox = args.text("build-sandbox") == "on";
   options.similarity = args.text("similarity");
   options.similarity_rules.code_threshold = args.real("similarity-code");
@@ -66,6 +67,9 @@ cli::Command grade() {
       .choice("engine", "local", {"local", "slurm"}, "where the runs go: this machine, or a Slurm array")
       .real("wall-limit", 3600, "s", 1, 1e7, "each run's wall-clock backstop for a starved machine: past it the run is the machine's failure and is run again (the sim-time limit is the referee's)", true)
       .flag("record", false, "keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)")
+      .flag("keep-builds", false,
+            "keep each C++ build's tree (its objects and plugin, about 1 MB a student) in OUT/build once every run is "
+            "done; by default only its sources, project and compile.log stay")
       .choice("build-sandbox", "on", {"on", "off"},
               "compile each C++ submission in a sandbox of its own (docs/grading.md); off only to measure what it "
               "costs (bench/grade_class.sh): a student's build then runs as you")

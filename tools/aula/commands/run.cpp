@@ -16,7 +16,6 @@
 #include <aula/supervision/supervisor.hpp>
 
 #include <cstdlib>
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -44,34 +43,6 @@ bool noDisplay() {
   return (display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0');
 }
 
-// What a run's options stand for in the processes' settings.
-// An option and its key given both (--duration=5 --Vacuum.Referee.Duration=abc) are refused: one
-// would silently win, and the other go unchecked.
-Config overridesOf(const Exercise& ex, const Arguments& args, bool headless) {
-  Config overrides = settingsOf(args);
-  auto setFrom = [&](const char* option, const std::string& key, const std::string& value) {
-    if (overrides.has(key)) {
-      throw ConfigError(args.spelled(option) + " and --" + key + "=" + overrides.getString(key) +
-                        " set the same setting: give only one");
-    }
-    overrides.set(key, value, std::string("command line --") + option);
-  };
-  if (args.given("algorithm")) {
-    // "reference" names each exercise's default reference: its own built-in of that name, else the
-    // one its calibration anchors the scale on (Autopark's "reactive").
-    std::string algorithm = args.text("algorithm");
-    const config::SettingSpec* choices = ex.component_settings->find(ex.section + ".Algorithm");
-    const bool has_reference = choices != nullptr && std::count(choices->choices.begin(), choices->choices.end(), "reference") > 0;
-    if (algorithm == "reference" && !has_reference && ex.calibration) algorithm = ex.calibration->anchor;
-    setFrom("algorithm", ex.section + ".Algorithm", algorithm);
-  }
-  if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
-  if (args.given("world")) setFrom("world", ex.section + ".World", args.text("world"));
-  if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
-  if (args.given("duration") && !ex.episode_key.empty()) setFrom("duration", ex.episode_key, args.text("duration"));
-  return overrides;
-}
-
 // The simulator's command line: lockstep and as fast as possible when headless.
 std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings& run, size_t clients, bool headless,
                                        const std::string& lcm_url) {
@@ -79,6 +50,12 @@ std::vector<std::string> simulatorLine(const Arguments& args, const RunSettings&
   if (args.flag("lockstep") || headless) {
     sim.push_back("--lockstep");
     sim.push_back("--Simulator.Lockstep.WaitForClients=" + std::to_string(clients));
+  }
+  // With windows, in lockstep, the world is held at 0 s until the first Run (or teleoperation):
+  // the episode starts where a headless run of the seed starts, and is that run (the component
+  // resumes the simulator: ExerciseComponent::releaseTheStart).
+  if (!headless && args.flag("lockstep") && clients > 1 && !run.overrides.has("Simulator.StartPaused")) {
+    sim.push_back("--Simulator.StartPaused=true");
   }
   // Headless runs go as fast as possible unless --rtf says otherwise; --rtf counts in every mode.
   if (args.given("rtf")) sim.push_back("--rtf=" + args.text("rtf"));
@@ -216,10 +193,7 @@ supervision::Supervision supervisionOf(const Exercise& ex, const Arguments& args
   s.headless = headless;
   s.sandbox = args.flag("sandbox");
   s.placement = placementOf(args, headless);
-  const double episode_s = ex.episode_key.empty() ? 0 : run.referee().getDouble(ex.episode_key);
-  s.wall_budget_s = args.given("timeout")                        ? args.real("timeout")
-                    : headless && ex.referee_settings != nullptr ? supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0)
-                                                                 : 0;
+  s.wall_budget_s = wallBudgetOf(ex, run, args, headless);
   s.lines = commandLines(ex, args, run, headless, lcm_url, isolation);
   if (s.sandbox) s.confinement = confinementOf(ex, run, graded_file);
   if (isolation == "full") {  // its own network: a datagram to any other port went nowhere, and is flagged
@@ -298,14 +272,16 @@ cli::Command declare() {
       .add(cli::valueOption("record", "FILE.lcmlog", "write the whole run in LCM's log format (`aula regrade` grades it again)"))
       .flag("3d", false, "also show the world in 3D (the simulator's OpenSceneGraph window)")
       .flag("stale", false, "run a plugin even when its sources changed after it was built")
-      .flag("lockstep", false, "with windows: the world waits for the component and the referee at every tick")
+      .flag("lockstep", true, "with windows: the world waits for the component and the referee at every tick and is held at 0 s "
+                              "until Run, so the windowed run is the headless (graded) run of its seed; --lockstep=off: it does not wait")
       .add(cli::numberOption("rtf", config::SettingType::Double, "", 0, 1e6,
                              "real-time factor (0: as fast as possible; default 1 with windows, 0 headless)"))
       .add(cli::numberOption("duration", config::SettingType::Double, "s", 0, 1e6,
                              "the episode's length in simulated seconds (the referee's Duration or Timeout)", true))
       .add(cli::numberOption("timeout", config::SettingType::Double, "s", 0, 1e7,
-                             "a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s); "
-                             "past it the run ends, graded so far, exit 1", true))
+                             "a headless run's wall-clock budget (default: the episode at real time x 1.5 + 60 s + the "
+                             "algorithm's Component budgets; waiting for a CPU not counted); past it the run ends, graded "
+                             "so far, the machine's reason (exit 75)", true))
       .add(cli::valueOption("lcm-url", "URL", "the run's bus (udpm://GROUP:PORT?ttl=0); port 0: a free one from the OS"))
       .add(cli::valueOption("cpu", "N|auto|any", "the CPU a headless run's processes share (default: auto, the one `aula` starts on)"))
       .add(cli::valueOption("config", "FILE.cfg", "the exercise's .cfg file (default: its own in the data folder)"))

@@ -6,8 +6,10 @@
 #include <aula/desktop/window_layout.hpp>
 #include <aula/desktop/work_area.hpp>
 #include <aula/world/occupancy_map.hpp>
+#include <aula/supervision/rules.hpp>
 #include <aula/world/world_spec.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -212,6 +214,46 @@ std::string runBus(const cli::Arguments& args, const RunSettings& run) {
                              (env != nullptr && *env != '\0');
   const std::string url = someone_chose ? lcmbus::resolveUrl(chosen, cfg) : "udpm://239.255.76.67:0?ttl=0";
   return lcmbus::withFreePort(url);
+}
+
+// What a run's options stand for in the processes' settings.
+// An option and its key given both (--duration=5 --Vacuum.Referee.Duration=abc) are refused: one
+// would silently win, and the other go unchecked.
+config::Config overridesOf(const settings::Exercise& ex, const cli::Arguments& args, bool headless) {
+  config::Config overrides = settingsOf(args);
+  auto setFrom = [&](const char* option, const std::string& key, const std::string& value) {
+    if (overrides.has(key)) {
+      throw config::ConfigError(args.spelled(option) + " and --" + key + "=" + overrides.getString(key) +
+                        " set the same setting: give only one");
+    }
+    overrides.set(key, value, std::string("command line --") + option);
+  };
+  if (args.given("algorithm")) {
+    // "reference" names each exercise's default reference: its own built-in of that name, else the
+    // one its calibration anchors the scale on (Autopark's "reactive").
+    std::string algorithm = args.text("algorithm");
+    const config::SettingSpec* choices = ex.component_settings->find(ex.section + ".Algorithm");
+    const bool has_reference = choices != nullptr && std::count(choices->choices.begin(), choices->choices.end(), "reference") > 0;
+    if (algorithm == "reference" && !has_reference && ex.calibration) algorithm = ex.calibration->anchor;
+    setFrom("algorithm", ex.section + ".Algorithm", algorithm);
+  }
+  if (headless && ex.referee_settings != nullptr) overrides.set(ex.section + ".Autostart", "true", "command line --headless");
+  if (args.given("world")) setFrom("world", ex.section + ".World", args.text("world"));
+  if (args.given("seed")) setFrom("seed", "Simulator.Seed", args.text("seed"));
+  if (args.given("duration") && !ex.episode_key.empty()) setFrom("duration", ex.episode_key, args.text("duration"));
+  return overrides;
+}
+
+double wallBudgetOf(const settings::Exercise& ex, const RunSettings& run, const cli::Arguments& args, bool headless) {
+  if (args.given("timeout")) return args.real("timeout");
+  if (!headless || ex.referee_settings == nullptr) return 0;
+  const double episode_s = ex.episode_key.empty() ? 0 : run.referee().getDouble(ex.episode_key);
+  // Past the episode's, the time the student's code may take by its own budgets: a slow algorithm
+  // within them is waited for (the backstop running out on it would be a retry it bought).
+  const config::Config& c = run.component();
+  const double algorithm_s = c.getDouble("Component.StartBudget") + c.getDouble("Component.RunBudget") +
+                             c.getDouble("Component.RunBlockedLimit");
+  return supervision::defaultWallBudget(episode_s, args.given("rtf") ? args.real("rtf") : 0) + algorithm_s;
 }
 
 }  // namespace aula::commands

@@ -53,6 +53,12 @@ std::vector<std::vector<std::string>> windowPlaces(const RunSettings& run, bool 
 
 // The command line's --Section.Key=value settings as a Config with their origins.
 config::Config settingsOf(const cli::Arguments& args);
+// Those, plus what `aula run`'s own options stand for (--algorithm, --world, --seed, --duration;
+// headless: autostart); an option and its key given both are refused.
+config::Config overridesOf(const settings::Exercise& ex, const cli::Arguments& args, bool headless);
+// A headless run's wall-clock backstop (--timeout, else supervision::defaultWallBudget plus what
+// the student's code may take by its Component budgets); 0: none (windows, no referee).
+double wallBudgetOf(const settings::Exercise& ex, const RunSettings& run, const cli::Arguments& args, bool headless);
 
 // The run's bus: --lcm-url, the .cfg's Aula.LcmUrl or LCM_DEFAULT_URL when one of them chooses,
 // else one of its own, so that two runs on one machine never hear each other. Port 0: a free

@@ -212,6 +212,7 @@ int gradeClass(const GradeRequest& asked, const std::string& bin_dir) {
       return reportStopped(stop, manifest);
     }
   }
+  if (!request.keep_builds) dropBuildTrees(request.out_dir);
   const int code = printGrades(collect(request.out_dir, request.similarity ? request.submissions : std::vector<std::string>{},
                                        request.exercise, request.similarity_rules, request.known),
                                request.out_dir);

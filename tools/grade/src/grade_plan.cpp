@@ -1,5 +1,7 @@
 #include "aula/grade/grade_plan.hpp"
 
+#include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/world/world_spec.hpp>
 
@@ -53,6 +55,13 @@ std::vector<Submission> builtInAlgorithms(const std::string& exercise) {
     s.plugin = name;  // aula run --algorithm=NAME
     s.known = true;
     s.dir_name = "reference-" + name;
+    // Its sources, installed for similarity to compare a class with by code (references/ in the
+    // data folder, a copy of what its plugin is built from); "" when this install has none.
+    try {
+      const std::string sources = config::dataPath("references/" + exercise + "/" + name);
+      if (fs::is_directory(sources)) s.folder = sources;
+    } catch (const config::ConfigError&) {  // no data folder (a unit test's program): by behaviour alone
+    }
     builtins.push_back(s);
   }
   return builtins;

@@ -154,6 +154,7 @@ GradeRequest parseRequest(const GradeOptions& options) {
   r.lms_assignment = options.lms_assignment.empty() ? "aula " + r.exercise : options.lms_assignment;
   r.hand_in_limits = options.hand_in_limits;
   r.record = options.record;
+  r.keep_builds = options.keep_builds;
   r.build_sandbox = options.build_sandbox;
   // An export is a class: auto is on for it until its students are counted (gradeClass).
   const bool an_export = std::any_of(r.submissions.begin(), r.submissions.end(), [](const std::string& s) {

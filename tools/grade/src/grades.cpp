@@ -1,6 +1,7 @@
 #include "aula/grade/grades.hpp"
 
 #include "aula/grade/student_page.hpp"
+#include "similarity_sources.hpp"
 
 #include <aula/version.hpp>
 
@@ -11,6 +12,7 @@
 #include <aula/grade/report_html.hpp>
 #include <aula/grade/run_page.hpp>
 #include <aula/grade/similarity.hpp>
+#include <aula/grade/submission_build.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -203,49 +205,6 @@ std::string gradesCsv(const std::vector<StudentGrade>& grades) {
   return csv;
 }
 
-// Similar work in the class (similarity.hpp): similarity.csv, and the section for report.html.
-// A folder's MyAlgorithm.cpp, else its MyAlgorithm.py, else "".
-std::string sourceOf(const std::string& folder) {
-  for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
-    const fs::path source = fs::path(folder) / file;
-    if (fs::is_regular_file(source)) return source.string();
-  }
-  return "";
-}
-
-std::string compareSubmissions(const std::string& out_dir, const std::vector<std::string>& folders, const std::string& exercise,
-                               std::vector<nlohmann::json> results, const SimilarityRules& rules,
-                               const std::vector<std::string>& known_folders) {
-  std::vector<Submitted> students;
-  for (const std::string& folder : folders) {
-    const std::string source = sourceOf(folder);
-    if (!source.empty()) students.push_back({fs::path(folder).filename().string(), source});
-  }
-  // The known algorithms that ran: the built-ins by behaviour (no source here), the teacher's
-  // solutions by their code too.
-  std::map<std::string, std::string> known_sources;
-  for (const std::string& folder : known_folders) known_sources["known '" + fs::path(folder).filename().string() + "'"] = sourceOf(folder);
-  std::set<std::string> known_names;
-  for (const auto& r : readResults(out_dir, "known")) {
-    const std::string name = r.value("student", std::string("?"));
-    if (known_names.insert(name).second) students.push_back({name, known_sources[name], true});
-    results.push_back(r);
-  }
-  // What everyone starts from is not a likeness: the exercise's templates, in both languages.
-  std::vector<Fingerprint> starter;
-  for (const char* file : {"MyAlgorithm.cpp", "MyAlgorithm.py"}) {
-    std::ifstream in(config::dataPath("templates/" + exercise + "/" + file));
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    for (const CodeForm form : {CodeForm::AsWritten, CodeForm::Common}) {
-      const auto prints = codeFingerprints(text, fs::path(file).extension() == ".py", form);
-      starter.insert(starter.end(), prints.begin(), prints.end());
-    }
-  }
-  const auto pairs = compareClass(students, results, starter, rules);
-  config::writeFileAtomically((fs::path(out_dir) / "similarity.csv").string(), similarityCsv(pairs), "similarity");
-  return similarityHtml(pairs, students, rules);
-}
-
 std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<std::string>& submissions,
                                   const std::string& exercise, const SimilarityRules& rules,
                                   const std::vector<std::string>& known) {
@@ -277,8 +236,26 @@ std::vector<StudentGrade> collect(const std::string& out_dir, const std::vector<
     if (!r.contains("log") || !r["log"].is_string()) continue;
     fs::path page = r["log"].get<std::string>();
     page.replace_extension(".html");
-    const RunFiles theirs = forTheStudent(runFilesOf(r), world_texts.ofRun(r["log"].get<std::string>()));
+    // The picture in the palette of its 256 most frequent colours, at zlib's best, once: the
+    // class report shows it, the page links it (or inlines it, when it has no run to play).
+    const std::string png = fs::path(page).replace_extension(".png").string();
+    if (fs::is_regular_file(png)) {
+      const std::string picture = config::readSmallFile(png, 64u << 20, "the run's picture");
+      const std::string smaller = palettePng(picture);
+      if (smaller.size() < picture.size()) config::writeFileAtomically(png, smaller, "the run's picture");
+    }
+    const RunFiles referees = runFilesOf(r);
+    const RunFiles theirs = forTheStudent(referees, world_texts.ofRun(r["log"].get<std::string>()));
     config::writeFileAtomically(page.string(), runPageHtml(theirs), "the run's page");
+    // One copy of the trace: the page's, when it is the referee's byte for byte (run_page.hpp).
+    keepOneTrace(fs::path(page).replace_extension().string(),
+                 !referees.trace_json.empty() && withoutPaths(theirs.trace_json) == referees.trace_json);
+  }
+  // The known algorithms' runs have no page: their traces kept compact for the comparison.
+  if (!submissions.empty()) {
+    for (const auto& r : readResults(out_dir, "known")) {
+      if (r.contains("log") && r["log"].is_string()) keepOneTrace(fs::path(r["log"].get<std::string>()).replace_extension().string(), false);
+    }
   }
   writeLmsFiles(out_dir, grades);  // after the pages: Moodle's feedback zip holds them
   return grades;

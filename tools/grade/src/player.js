@@ -22,7 +22,7 @@ const AulaPlayer = (() => {
   const DRAWINGS = {};
 
   async function inflate(b64) {
-    const bin = Uint8Array.from(atob(b64), c => c.charCodeAt(0));
+    const bin = Uint8Array.from(atob(b64.trim()), c => c.charCodeAt(0));
     const stream = new Blob([bin]).stream().pipeThrough(new DecompressionStream('deflate'));
     return JSON.parse(await new Response(stream).text());
   }
@@ -453,30 +453,17 @@ const AulaPlayer = (() => {
     if (active.key(e)) e.preventDefault();
   });
 
-  // What this browser lacks to play a run ('' when nothing).
-  function lacking() {
-    const missing = [];
-    if (typeof DecompressionStream === 'undefined') missing.push('DecompressionStream (Chrome 80, Firefox 113, Safari 16.4 or newer)');
-    if (typeof Blob === 'undefined' || !Blob.prototype.stream) missing.push('Blob.stream');
-    return missing.join(', ');
-  }
-
   // The run's player, built into `container` the first time it is opened.
   async function openRun(id, container) {
     if (container.dataset.built) return container.player;
     container.dataset.built = 'yes';
     const started = performance.now();
-    const missing = lacking();
-    if (missing) {
-      container.textContent = 'This browser cannot play the run: it lacks ' + missing + '. Open the page in a newer browser; ' +
-                              'the referee\'s picture of the end and the report\'s numbers are on this page.';
-      container.classList.add('missed');
-      throw new Error('the browser lacks ' + missing);
-    }
     const block = document.getElementById(id);
     let data;
     try {
-      data = await inflate(block.textContent.trim());
+      // Two blocks: the report, and the trace as the referee wrote it (run_page.cpp's runDataBlock).
+      const [report, trace] = await Promise.all([inflate(block.textContent), inflate(document.getElementById(id + '-trace').textContent)]);
+      data = {report, trace};
     } catch (e) {
       container.textContent = 'The run\'s data could not be read (' + e + ').';
       container.classList.add('missed');
@@ -511,6 +498,9 @@ const AulaPlayer = (() => {
     go();
   }
   // When the page had loaded, for the bench (docs/performance.md).
-  window.addEventListener('load', () => { document.body.dataset.loadedMs = Math.round(performance.now()); });
+  // The loader runs this script after inflating it, often once the page has loaded.
+  const loaded = () => { document.body.dataset.loadedMs = Math.round(performance.now()); };
+  if (document.readyState === 'complete') loaded();
+  else window.addEventListener('load', loaded);
   return {openRun, followHash, errors};
 })();

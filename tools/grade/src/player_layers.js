@@ -43,7 +43,13 @@
     {
       key: 'laser', label: 'laser rays',
       has: tr => tr.layers && (tr.layers.lasers || []).some(l => l.scans.length > 0),
-      init(p) { for (const l of p.trace.layers.lasers) for (const s of l.scans) s.cm = undelta(s.cm); },
+      // Ranges in steps of range_step_m (a trace from before it: "cm"), delta-encoded along the beams.
+      init(p) {
+        for (const l of p.trace.layers.lasers) {
+          const step_m = l.range_step_m || 0.01;
+          for (const s of l.scans) s.range_m = undelta(s.ranges || s.cm).map(v => v * step_m);
+        }
+      },
       over(p, ctx, t) {
         for (const l of p.trace.layers.lasers) {
           const k = lastAtOrBefore(l.scans, t, s => s.t_s);
@@ -53,8 +59,8 @@
           const mx = x + c * l.mount[0] - s * l.mount[1], my = y + s * l.mount[0] + c * l.mount[1];
           const [u0, v0] = p.px(mx, my);
           ctx.lineWidth = 1;
-          scan.cm.forEach((cm, i) => {
-            const a = yaw + l.mount[2] + l.min_angle_rad + i * l.increment_rad, r = cm / 100;
+          scan.range_m.forEach((r, i) => {
+            const a = yaw + l.mount[2] + l.min_angle_rad + i * l.increment_rad;
             const hit = r < l.max_range_m - 1e-3;
             const [u, v] = p.px(mx + r * Math.cos(a), my + r * Math.sin(a));
             ctx.strokeStyle = hit ? 'rgba(211,47,47,0.28)' : 'rgba(211,47,47,0.08)';
@@ -65,8 +71,8 @@
       },
       note: (p, t) => {
         const times = p.trace.layers.lasers.map(l => { const k = lastAtOrBefore(l.scans, t, s => s.t_s); return k < 0 ? null : l.scans[k].t_s; });
-        const known = times.filter(v => v !== null);
-        return known.length ? 'laser: the scan of ' + fmt(Math.max(...known), 1) + ' s (one a second)' : '';
+        const known = times.filter(v => v !== null), period_s = p.trace.layers.lasers[0].period_s || 1;
+        return known.length ? 'laser: the scan of ' + fmt(Math.max(...known), 1) + ' s (one every ' + fmt(period_s, 0) + ' s)' : '';
       },
     },
     {

@@ -9,7 +9,9 @@
 
 #include <QByteArray>
 
+#include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -137,6 +139,45 @@ std::string noNetworkPolicy() {
          "style-src 'unsafe-inline'; img-src data: 'self'; frame-src 'self'\">";
 }
 
+namespace {
+
+constexpr const char* kTraceBlockOpen = "<script type='application/octet-stream' id='run-trace'>";
+
+}  // namespace
+
+std::string traceOfPage(const std::string& html) {
+  const size_t open = html.find(kTraceBlockOpen);
+  if (open == std::string::npos) return "";
+  const size_t from = open + std::string(kTraceBlockOpen).size();
+  const size_t end = html.find("</script>", from);
+  if (end == std::string::npos) return "";
+  const QByteArray b64 = QByteArray::fromBase64(QByteArray(html.data() + from, static_cast<int>(end - from)));
+  return inflated(std::string(b64.constData(), static_cast<size_t>(b64.size())));
+}
+
+std::string traceOfRun(const std::string& stem) {
+  std::string trace = readBytes(stem + ".trace.json");
+  if (!trace.empty()) return trace;
+  const std::string compact = readBytes(stem + ".trace.z");
+  if (!compact.empty()) return inflated(compact);
+  return traceOfPage(readBytes(stem + ".html"));
+}
+
+void keepOneTrace(const std::string& stem, bool page_has_it) {
+  std::error_code error;
+  const std::string json = readBytes(stem + ".trace.json");
+  if (json.empty()) {
+    if (page_has_it) fs::remove(stem + ".trace.z", error);  // the page's copy is the referee's: one is enough
+    return;
+  }
+  if (page_has_it) {
+    fs::remove(stem + ".trace.z", error);
+  } else {
+    config::writeFileAtomically(stem + ".trace.z", deflated(json), "the run's trace");
+  }
+  fs::remove(stem + ".trace.json", error);
+}
+
 RunFiles runFilesOf(const nlohmann::json& result) {
   RunFiles run;
   run.report = result;
@@ -145,24 +186,29 @@ RunFiles runFilesOf(const nlohmann::json& result) {
   if (!result.contains("log") || !result["log"].is_string()) return run;
   fs::path stem = result["log"].get<std::string>();
   stem.replace_extension();
-  run.trace_json = readBytes(stem.string() + ".trace.json");
+  run.trace_json = traceOfRun(stem.string());
   run.picture_png = readBytes(stem.string() + ".png");
+  if (!run.picture_png.empty()) run.picture_name = stem.filename().string() + ".png";
   return run;
 }
 
 namespace {
 
-// The run's data block, its id `id`: the report as it is, the trace as the referee wrote it, one
-// JSON object, deflated. The page's player (player.js, compiled in: tools/grade/CMakeLists.txt)
-// draws everything from it (the map, run-length encoded; the poses, delta-encoded mm and mrad at
-// period_s; the exercise's state; the events; the breakdown's rows).
+// The run's data blocks: `id`, the report as it is, and `id`-trace, the trace as the referee
+// wrote it (byte for byte when the student's copy needed no change: the grade then keeps no other
+// copy, traceOfPage reads it back), each deflated and base64. The page's player (player.js,
+// compiled in: tools/grade/CMakeLists.txt) draws everything from them (the map, run-length
+// encoded; the poses, delta-encoded mm and mrad at period_s; the exercise's state; the events;
+// the breakdown's rows).
 std::string runDataBlock(const std::string& id, const RunFiles& run) {
   if (run.trace_json.empty()) return "";
-  const std::string payload = "{\"report\": " + run.report.dump() + ", \"trace\": " + run.trace_json + "}";
-  QByteArray packed = qCompress(QByteArray(payload.data(), static_cast<int>(payload.size())), 9);
-  packed.remove(0, 4);  // qCompress's length prefix: the rest is a zlib stream ("deflate" to a browser)
-  return "<script type='application/octet-stream' id='" + escapeHtml(id) + "'>" + packed.toBase64().toStdString() +
-         "</script>\n";
+  auto block = [](const std::string& open, const std::string& bytes) {
+    return open + QByteArray::fromStdString(deflated(bytes)).toBase64().toStdString() + "</script>\n";
+  };
+  return block("<script type='application/octet-stream' id='" + escapeHtml(id) + "'>", run.report.dump()) +
+         block(id == "run" ? std::string(kTraceBlockOpen)
+                           : "<script type='application/octet-stream' id='" + escapeHtml(id + "-trace") + "'>",
+               run.trace_json);
 }
 
 // In report.html's frame, the page tells it how tall it is (report_html.cpp's message listener).
@@ -199,13 +245,18 @@ std::string runPageHtml(const RunFiles& given) {
   } else {
     html << "<div id='player'>Opening the run...</div>\n" << runDataBlock("run", run);
   }
-  if (!run.picture_png.empty()) {
+  if (!run.picture_png.empty() && !run.trace_json.empty() && !run.picture_name.empty()) {
+    // The player draws the run's end: the picture stays the file beside the page, a link (not a
+    // request when the page opens), rather than a third of the page again (issue 58).
+    html << "<p><a href='" << escapeHtml(urlPath(run.picture_name)) << "'>The referee's picture at the end</a> (" << escapeHtml(run.picture_name)
+         << ", beside this page)</p>\n";
+  } else if (!run.picture_png.empty()) {
     html << "<h2>The referee's picture at the end</h2>\n<img class='still' alt='the referee&#39;s picture of the run' src='"
          << dataUri("image/png", run.picture_png) << "'>\n";
   }
-  html << "<script>" << kPlayerScriptJs << "</script>\n";
   if (!run.trace_json.empty()) {
-    html << "<script>\nAulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player')));\n"
+    html << "<script type='application/octet-stream' id='aula-player'>" << packedPlayerScript() << "</script>\n<script>\n" << kPlayerLoaderJs
+         << "aulaLoadPlayer(() => AulaPlayer.followHash(() => AulaPlayer.openRun('run', document.getElementById('player'))));\n"
          << kTellTheFrame << "</script>\n";
   }
   html << "</body></html>\n";
@@ -224,6 +275,10 @@ void writeRunPage(const std::string& html_path, const std::string& report_path, 
               std::to_string(run.report.value("seed", 0LL));
   if (!trace_path.empty()) run.trace_json = readBytes(trace_path);
   if (!picture_path.empty()) run.picture_png = readBytes(picture_path);
+  // Linked by name when it is beside the page, else inlined.
+  if (!run.picture_png.empty() && fs::absolute(picture_path).parent_path() == fs::absolute(html_path).parent_path()) {
+    run.picture_name = fs::path(picture_path).filename().string();
+  }
   config::writeFileAtomically(html_path, runPageHtml(run), "the run's page");
 }
 

@@ -32,9 +32,9 @@ Paths pathsOf(const std::vector<nlohmann::json>& results) {
   Paths paths;
   for (const auto& r : results) {
     if (!r.contains("log") || !r["log"].is_string()) continue;
-    fs::path trace = r["log"].get<std::string>();
-    trace.replace_extension(".trace.json");
-    const std::string text = readText(trace.string());
+    fs::path stem = r["log"].get<std::string>();
+    stem.replace_extension();
+    const std::string text = traceOfRun(stem.string());  // the trace file, or the page's copy
     if (text.empty()) continue;
     const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, false);
     if (parsed.is_discarded()) continue;
@@ -63,14 +63,20 @@ double behaviourDistance(const std::map<std::string, Path>& a, const std::map<st
   return n % 2 == 1 ? distances[n / 2] : 0.5 * (distances[n / 2 - 1] + distances[n / 2]);
 }
 
+// "student/file" of a submission's file `index`.
+std::string fileOf(const Submitted& s, int index) {
+  const std::string name = index >= 0 && static_cast<size_t>(index) < s.sources.size()
+                               ? fs::path(s.sources[static_cast<size_t>(index)]).filename().string()
+                               : "?";
+  return s.student + "/" + name;
+}
+
 std::string evidenceOf(const CodeMatch& code, const Submitted& a, const Submitted& b, const std::vector<std::string>& runs) {
   std::ostringstream out;
-  const std::string a_file = a.student + "/" + fs::path(a.source_path).filename().string();
-  const std::string b_file = b.student + "/" + fs::path(b.source_path).filename().string();
   for (size_t i = 0; i < code.ranges.size() && i < 6; ++i) {
-    const auto& [ra, rb] = code.ranges[i];
-    out << (i ? "; " : "") << a_file << ":" << ra.first << "-" << ra.second << " ~ " << b_file << ":" << rb.first << "-"
-        << rb.second;
+    const MatchedLines& r = code.ranges[i];
+    out << (i ? "; " : "") << fileOf(a, r.a_file) << ":" << r.a_first << "-" << r.a_last << " ~ " << fileOf(b, r.b_file) << ":"
+        << r.b_first << "-" << r.b_last;
   }
   if (!runs.empty()) {
     out << (code.ranges.empty() ? "" : "; ") << "runs compared:";
@@ -79,6 +85,13 @@ std::string evidenceOf(const CodeMatch& code, const Submitted& a, const Submitte
   std::string text = out.str();
   if (!text.empty() && text.back() == ';') text.pop_back();
   return text;
+}
+
+// A submission's language: 'p' all Python, 'c' all C++, 'm' both (compared in the common form).
+char languageOf(const Submitted& s) {
+  size_t python = 0;
+  for (const std::string& source : s.sources) python += fs::path(source).extension() == ".py" ? 1 : 0;
+  return python == 0 ? 'c' : python == s.sources.size() ? 'p' : 'm';
 }
 
 std::string number(double value, int decimals) {
@@ -126,14 +139,15 @@ double pathLength(const Path& path) {
 
 std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students, const std::vector<nlohmann::json>& results,
                                          const std::vector<Fingerprint>& starter, const SimilarityRules& rules) {
-  // Each source as written, and in the common form for a pair across the two languages.
+  // Each submission's files as written, and in the common form for a pair across the two languages.
   std::vector<std::vector<Fingerprint>> prints, common;
-  std::vector<bool> python;
+  std::vector<char> language;
   for (const Submitted& s : students) {
-    python.push_back(fs::path(s.source_path).extension() == ".py");
-    const std::string text = s.source_path.empty() ? "" : readText(s.source_path);
-    prints.push_back(text.empty() ? std::vector<Fingerprint>{} : codeFingerprints(text, python.back()));
-    common.push_back(text.empty() ? std::vector<Fingerprint>{} : codeFingerprints(text, python.back(), CodeForm::Common));
+    language.push_back(languageOf(s));
+    std::vector<SourceText> files;
+    for (const std::string& source : s.sources) files.push_back({readText(source), fs::path(source).extension() == ".py"});
+    prints.push_back(codeFingerprints(files));
+    common.push_back(codeFingerprints(files, CodeForm::Common));
   }
   const Paths paths = pathsOf(results);
   std::vector<PairSimilarity> pairs;
@@ -143,7 +157,8 @@ std::vector<PairSimilarity> compareClass(const std::vector<Submitted>& students,
       PairSimilarity pair;
       pair.a = students[i].student;
       pair.b = students[j].student;
-      pair.across_languages = python[i] != python[j] && !students[i].source_path.empty() && !students[j].source_path.empty();
+      pair.across_languages = (language[i] != language[j] || language[i] == 'm') && !students[i].sources.empty() &&
+                              !students[j].sources.empty();
       const CodeMatch code = pair.across_languages ? compareCode(common[i], common[j], starter) : compareCode(prints[i], prints[j], starter);
       pair.code_score = code.score;
       std::vector<std::string> runs;
@@ -180,7 +195,11 @@ std::string similarityHtml(const std::vector<PairSimilarity>& pairs, const std::
   std::map<std::string, std::string> source;
   std::set<std::string> known;
   for (const Submitted& s : students) {
-    source[s.student] = s.source_path.empty() ? "(a built-in algorithm: compared by its robot's path)" : readText(s.source_path);
+    std::string& text = source[s.student];
+    if (s.sources.empty()) text = "(a built-in algorithm whose sources are not installed: compared by its robot's path)";
+    for (const std::string& file : s.sources) {
+      text += (s.sources.size() > 1 ? "// ===== " + fs::path(file).filename().string() + " =====\n" : "") + readText(file);
+    }
     if (s.known) known.insert(s.student);
   }
   std::ostringstream html;

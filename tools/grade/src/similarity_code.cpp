@@ -1,4 +1,5 @@
 // Code similarity: tokens, winnowed k-gram fingerprints, a pair's score and its matching lines.
+// What is dropped before fingerprinting (dead statements, no-ops) is similarity_dead_code.cpp.
 #include "aula/grade/similarity.hpp"
 
 #include <algorithm>
@@ -90,92 +91,36 @@ std::vector<Token> tokenize(const std::string& source, bool python) {
   return tokens;
 }
 
-namespace {
-
-bool isZero(const Token& t) { return t.text == "N" && t.raw.find_first_not_of("0.") == std::string::npos; }
-bool isOne(const Token& t) { return t.text == "N" && (t.raw == "1" || t.raw == "1.0" || t.raw == "1."); }
-
-// How often each identifier is written in the file.
-std::unordered_map<std::string, int> identifierCounts(const std::vector<Token>& tokens) {
-  std::unordered_map<std::string, int> counts;
-  for (const Token& t : tokens) {
-    if (t.text == "I") ++counts[t.raw];
+std::vector<Fingerprint> codeFingerprints(const std::vector<SourceText>& files, CodeForm form) {
+  std::vector<std::vector<Token>> tokens;
+  std::vector<bool> python;
+  for (const SourceText& file : files) {
+    tokens.push_back(tokenize(file.text, file.python));
+    python.push_back(file.python);
   }
-  return counts;
-}
-
-// C++: how many tokens from `i` (a statement's start) make a statement that changes nothing; 0: none.
-size_t cppNoOp(const std::vector<Token>& t, size_t i, const std::unordered_map<std::string, int>& uses) {
-  auto is = [&](size_t k, const char* text) { return k < t.size() && t[k].text == text; };
-  auto operand = [&](size_t k) { return k < t.size() && (t[k].text == "I" || t[k].text == "N" || t[k].text == "S"); };
-  if (is(i, ";")) return 1;
-  if (operand(i) && is(i + 1, ";")) return 2;                                          // x;
-  if (is(i, "(") && is(i + 1, "void") && is(i + 2, ")") && operand(i + 3) && is(i + 4, ";")) return 5;  // (void)x;
-  if (is(i, "I") && is(i + 1, "=") && is(i + 2, "I") && t[i].raw == t[i + 2].raw && is(i + 3, ";")) return 4;  // x = x;
-  if (is(i, "I") && (is(i + 1, "+") || is(i + 1, "-")) && is(i + 2, "=") && i + 3 < t.size() && isZero(t[i + 3]) && is(i + 4, ";")) return 5;
-  if (is(i, "I") && (is(i + 1, "*") || is(i + 1, "/")) && is(i + 2, "=") && i + 3 < t.size() && isOne(t[i + 3]) && is(i + 4, ";")) return 5;
-  if (is(i, "if") && is(i + 1, "(") && (is(i + 2, "false") || (i + 2 < t.size() && isZero(t[i + 2]))) && is(i + 3, ")")) {
-    size_t k = i + 4, depth = 0;  // the dead branch: a block, or one statement
-    do {
-      if (is(k, "{")) ++depth;
-      if (is(k, "}") && depth > 0) --depth;
-      ++k;
-    } while (k < t.size() && (depth > 0 || (!is(k - 1, "}") && !is(k - 1, ";"))));
-    return is(k, "else") ? 0 : k - i;
+  const std::vector<std::string> unread = unreadNames(tokens, python);
+  // The functions left empty once their dead statements are dropped (`void nop() { int k = 0; }`
+  // is as empty as `{}`): their calls are dropped with the dead statements, in one pass.
+  std::vector<std::vector<Token>> cleaned;
+  std::vector<std::vector<Token>> live_statements;
+  for (size_t f = 0; f < files.size(); ++f) {
+    live_statements.push_back(withoutDeadStatements(tokens[f], python[f], unread));
+    cleaned.push_back(withoutNoOps(live_statements.back(), python[f]));
   }
-  // A variable declared and never written again: `int unused = 0;`.
-  static const std::set<std::string> types = {"int", "double", "float", "bool", "auto", "char", "long", "unsigned", "const"};
-  size_t k = i;
-  while (k < t.size() && types.count(t[k].text) != 0) ++k;
-  if (k > i && is(k, "I") && uses.at(t[k].raw) == 1 && (is(k + 1, "=") || is(k + 1, ";"))) {
-    while (k < t.size() && !is(k, ";") && !is(k, "{") && !is(k, "}")) ++k;
-    return is(k, ";") ? k + 1 - i : 0;
-  }
-  return 0;
-}
-
-// Python: how many tokens from `i` (its line's first) make a line that changes nothing; 0: none.
-size_t pythonNoOp(const std::vector<Token>& t, size_t i, const std::unordered_map<std::string, int>& uses) {
-  size_t end = i;
-  while (end < t.size() && t[end].line == t[i].line) ++end;
-  const size_t n = end - i;
-  auto is = [&](size_t k, const char* text) { return k < end && t[k].text == text; };
-  if (is(i, "pass") && n == 1) return 1;
-  static const std::set<std::string> lone = {"I", "N", "S", "None", "True", "False"};
-  if (n == 1 && lone.count(t[i].text) != 0) return 1;  // a name, a constant or a docstring alone
-  if (n == 3 && is(i, "I") && is(i + 1, "=") && is(i + 2, "I") && t[i].raw == t[i + 2].raw) return 3;
-  if (n == 4 && is(i, "I") && (is(i + 1, "+") || is(i + 1, "-")) && is(i + 2, "=") && isZero(t[i + 3])) return 4;
-  if (n >= 3 && is(i, "I") && is(i + 1, "=") && !is(i + 2, "=") && uses.at(t[i].raw) == 1) return n;  // never used again
-  return 0;
-}
-
-}  // namespace
-
-std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python) {
-  const auto uses = identifierCounts(tokens);
-  std::vector<Token> out;
-  size_t i = 0;
-  while (i < tokens.size()) {
-    size_t skip = 0;
-    if (python) {
-      if (i == 0 || tokens[i - 1].line != tokens[i].line) skip = pythonNoOp(tokens, i, uses);
-    } else if (tokens[i].text == "{" && i + 1 < tokens.size() && tokens[i + 1].text == "}") {
-      skip = 2;  // an empty block
-    } else if (out.empty() || out.back().text == ";" || out.back().text == "{" || out.back().text == "}") {
-      skip = cppNoOp(tokens, i, uses);
+  const std::vector<std::string> empty = emptyFunctions(live_statements, python);
+  std::vector<Fingerprint> prints;
+  for (size_t f = 0; f < files.size(); ++f) {
+    const std::vector<Token> live = empty.empty() ? cleaned[f] : withoutNoOps(withoutDeadStatements(tokens[f], python[f], unread, empty), python[f]);
+    for (Fingerprint print : fingerprints(form == CodeForm::Common ? commonForm(live, python[f]) : live)) {
+      print.file = static_cast<int>(f);
+      prints.push_back(print);
     }
-    if (skip > 0) {
-      i += skip;
-      continue;
-    }
-    out.push_back(tokens[i++]);
   }
-  return out;
+  return prints;
 }
 
 std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python, CodeForm form) {
-  const std::vector<Token> tokens = withoutNoOps(tokenize(source, python), python);
-  return fingerprints(form == CodeForm::Common ? commonForm(tokens, python) : tokens);
+  return codeFingerprints(std::vector<SourceText>{{source, python}}, form);
 }
 
 std::vector<Fingerprint> fingerprints(const std::vector<Token>& tokens, size_t k, size_t window) {
@@ -220,16 +165,15 @@ CodeMatch compareCode(const std::vector<Fingerprint>& a, const std::vector<Finge
     if (it == in_b.end()) continue;
     shared.insert(f.hash);
     auto& ranges = match.ranges;
-    const auto a_lines = std::make_pair(f.first_line, f.last_line);
-    const auto b_lines = std::make_pair(it->second->first_line, it->second->last_line);
+    const Fingerprint& g = *it->second;
     // Runs of matches next to each other in both files become one range.
-    if (!ranges.empty() && a_lines.first <= ranges.back().first.second + 1 && b_lines.first <= ranges.back().second.second + 1 &&
-        b_lines.second >= ranges.back().second.first - 1) {
-      ranges.back().first.second = std::max(ranges.back().first.second, a_lines.second);
-      ranges.back().second.first = std::min(ranges.back().second.first, b_lines.first);
-      ranges.back().second.second = std::max(ranges.back().second.second, b_lines.second);
+    if (!ranges.empty() && ranges.back().a_file == f.file && ranges.back().b_file == g.file &&
+        f.first_line <= ranges.back().a_last + 1 && g.first_line <= ranges.back().b_last + 1 && g.last_line >= ranges.back().b_first - 1) {
+      ranges.back().a_last = std::max(ranges.back().a_last, f.last_line);
+      ranges.back().b_first = std::min(ranges.back().b_first, g.first_line);
+      ranges.back().b_last = std::max(ranges.back().b_last, g.last_line);
     } else {
-      ranges.push_back({a_lines, b_lines});
+      ranges.push_back({f.file, f.first_line, f.last_line, g.file, g.first_line, g.last_line});
     }
   }
   const size_t smaller = std::min(a_own.size(), b_own);

@@ -35,74 +35,7 @@ namespace {
 // reach cmake or the compiler.
 constexpr const char* kProjectInside = "/aula/project";
 
-std::string readAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 }  // namespace
-
-void writeBuildProject(const std::string& project, const std::string& exercise, const std::string& aula_config_dir) {
-  // The teacher's path, in a bracket argument (nothing in it is evaluated); the exercise is one of
-  // Aula's names. Nothing else varies.
-  if (aula_config_dir.find("]==]") != std::string::npos || exercise.find_first_not_of("abcdefghijklmnopqrstuvwxyz") != std::string::npos) {
-    throw ConfigError("aula grade: cannot write a build project for " + aula_config_dir);
-  }
-  std::ostringstream cmake;
-  cmake << "# A submission as a plugin (written by aula grade): every C++ source of the checked copy in src/.\n"
-        << "cmake_minimum_required(VERSION 3.16)\n"
-        << "project(aula_submission CXX)\n"
-        << "find_package(Aula REQUIRED CONFIG PATHS [==[" << aula_config_dir << "]==] NO_DEFAULT_PATH)\n"
-        << "file(GLOB sources LIST_DIRECTORIES false ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp\n"
-        << "     ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cc ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cxx)\n"
-        << "aula_add_algorithm(NAME my_algorithm EXERCISE " << exercise << " SOURCES ${sources})\n";
-  // The same project is left as it is: a resumed grade does not make its plugin look older than
-  // its project (aula run refuses a stale build).
-  const fs::path path = fs::path(project) / "CMakeLists.txt";
-  if (readAll(path) == cmake.str()) return;
-  std::ofstream out(path);
-  out << cmake.str();
-  if (!out.flush()) throw ConfigError("aula grade: cannot write " + path.string());
-}
-
-AulaSdk findAulaSdk(const std::string& aula_prefix) {
-  AulaSdk sdk;
-  for (const fs::path& candidate : {fs::path(aula_prefix) / "lib" / "cmake" / "Aula", fs::path(aula_prefix)}) {
-    if (fs::is_regular_file(candidate / "AulaConfig.cmake")) {
-      sdk.config_dir = fs::absolute(candidate).lexically_normal().string();
-      break;
-    }
-  }
-  if (sdk.config_dir.empty()) {
-    throw ConfigError("aula grade: no Aula package (AulaConfig.cmake) in " + aula_prefix + "/lib/cmake/Aula or " +
-                      aula_prefix + ": is Aula installed whole?");
-  }
-  const fs::path import_prefix = fs::path(sdk.config_dir).parent_path().parent_path().parent_path();
-  std::set<std::string> includes;
-  for (const auto& entry : fs::directory_iterator(sdk.config_dir)) {
-    const std::string name = entry.path().filename().string();
-    const bool package = (name.rfind("Aula", 0) == 0 && entry.path().extension() == ".cmake") || entry.path().extension() == ".in";
-    if (!entry.is_regular_file() || !package) continue;
-    sdk.files.push_back(entry.path().string());
-    // The include folders its targets name ("${_IMPORT_PREFIX}/include" when installed).
-    std::istringstream text(readAll(entry.path()));
-    for (std::string line; std::getline(text, line);) {
-      const auto key = line.find("INTERFACE_INCLUDE_DIRECTORIES \"");
-      if (key == std::string::npos) continue;
-      const auto open = line.find('"', key), close = line.rfind('"');
-      std::stringstream list(line.substr(open + 1, close - open - 1));
-      for (std::string dir; std::getline(list, dir, ';');) {
-        const std::string token = "${_IMPORT_PREFIX}";
-        if (dir.rfind(token, 0) == 0) dir = import_prefix.string() + dir.substr(token.size());
-        if (fs::is_directory(dir)) includes.insert(fs::path(dir).lexically_normal().string());
-      }
-    }
-  }
-  std::sort(sdk.files.begin(), sdk.files.end());
-  sdk.include_dirs.assign(includes.begin(), includes.end());
-  sdk.lib_dir = config::libDir();
-  return sdk;
-}
 
 sandbox::Confinement buildConfinement(const AulaSdk& sdk, const std::string& project) {
   sandbox::Confinement c;
@@ -232,6 +165,58 @@ void finishBuild(Submission& s, const Compiling& c, std::optional<int> code, boo
   }
 }
 
+// Whether `s` is a C++ build to start; when not, it is settled here: refused (its row says why,
+// mark 0), or a Python submission prepared to run. `files`: its checked sources.
+bool needsBuild(Submission& s, const GradeRequest& request, const fs::path& project, SubmissionFiles& files) {
+  // A hand-in is bounded before anything of it is read or copied (hand_in.hpp).
+  const auto refused_hand_in = request.refused_hand_ins.find(s.folder);
+  std::string bounded = refused_hand_in != request.refused_hand_ins.end() ? refused_hand_in->second : "";
+  if (bounded.empty()) bounded = checkHandIn({{s.folder, ""}}, request.hand_in_limits);
+  if (!bounded.empty()) {
+    s.compile_error = bounded;
+    s.language = "";
+    return false;
+  }
+  files = submissionFiles(s.folder);
+  if (!files.refused.empty()) {  // a row, mark 0, with the reason; nothing of it is built
+    s.compile_error = files.refused;
+    s.language = isPythonSubmission(s.folder) ? "Python" : "C++";
+    return false;
+  }
+  if (fs::exists(fs::path(s.folder) / "MyAlgorithm.cpp") && fs::exists(fs::path(s.folder) / "MyAlgorithm.py")) {
+    // Which one the student meant is theirs to say: the grade never picks one silently.
+    s.compile_error = "both MyAlgorithm.cpp and MyAlgorithm.py handed in: which one to grade is the student's to say";
+    s.language = "";
+    return false;
+  }
+  if (isPythonSubmission(s.folder)) {  // nothing to compile
+    preparePython(s, files, project);
+    return false;
+  }
+  if (!fs::is_regular_file(fs::path(s.folder) / "MyAlgorithm.cpp")) {  // nothing to grade: a row, mark 0
+    // Never the teacher's folder: this text goes to the student's page and the LMS.
+    s.compile_error = fs::is_directory(s.folder) && fs::is_empty(s.folder) ? "nothing handed in" : "no MyAlgorithm.py or MyAlgorithm.cpp handed in";
+    s.language = "";
+    return false;
+  }
+  return true;
+}
+
+// Finishes the builds of `running` that have ended, or run past the backstop.
+void reapBuilds(std::vector<Compiling>& running, std::vector<Submission>& out, bool boxed) {
+  for (auto it = running.begin(); it != running.end();) {
+    std::optional<int> code = it->child->poll();
+    const bool overdue = !code && std::chrono::steady_clock::now() - it->started > kBuildWallBackstop;
+    if (!code && !overdue) {
+      ++it;
+      continue;
+    }
+    if (overdue) it->child->stop(std::chrono::milliseconds(500));
+    finishBuild(out[it->index], *it, code, boxed);
+    it = running.erase(it);
+  }
+}
+
 }  // namespace
 
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix) {
@@ -250,37 +235,8 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
       Submission& s = out[next];
       const fs::path project = fs::path(request.out_dir) / "build" / s.student;
       const size_t index = next++;
-      // A hand-in is bounded before anything of it is read or copied (hand_in.hpp).
-      const auto refused_hand_in = request.refused_hand_ins.find(s.folder);
-      std::string bounded = refused_hand_in != request.refused_hand_ins.end() ? refused_hand_in->second : "";
-      if (bounded.empty()) bounded = checkHandIn({{s.folder, ""}}, request.hand_in_limits);
-      if (!bounded.empty()) {
-        s.compile_error = bounded;
-        s.language = "";
-        continue;
-      }
-      const SubmissionFiles files = submissionFiles(s.folder);
-      if (!files.refused.empty()) {  // a row, mark 0, with the reason; nothing of it is built
-        s.compile_error = files.refused;
-        s.language = isPythonSubmission(s.folder) ? "Python" : "C++";
-        continue;
-      }
-      if (fs::exists(fs::path(s.folder) / "MyAlgorithm.cpp") && fs::exists(fs::path(s.folder) / "MyAlgorithm.py")) {
-        // Which one the student meant is theirs to say: the grade never picks one silently.
-        s.compile_error = "both MyAlgorithm.cpp and MyAlgorithm.py handed in: which one to grade is the student's to say";
-        s.language = "";
-        continue;
-      }
-      if (isPythonSubmission(s.folder)) {  // nothing to compile
-        preparePython(s, files, project);
-        continue;
-      }
-      if (!fs::is_regular_file(fs::path(s.folder) / "MyAlgorithm.cpp")) {  // nothing to grade: a row, mark 0
-        // Never the teacher's folder: this text goes to the student's page and the LMS.
-        s.compile_error = fs::is_directory(s.folder) && fs::is_empty(s.folder) ? "nothing handed in" : "no MyAlgorithm.py or MyAlgorithm.cpp handed in";
-        s.language = "";
-        continue;
-      }
+      SubmissionFiles files;
+      if (!needsBuild(s, request, project, files)) continue;
       if (!sdk && request.build_sandbox && sandbox::bubblewrapPath().empty()) {
         throw ConfigError("aula grade: a C++ submission is built in a sandbox, which needs bubblewrap (/usr/bin/bwrap): "
                           "apt install bubblewrap");
@@ -289,20 +245,22 @@ std::vector<Submission> compileSubmissions(const GradeRequest& request, const st
       Compiling c = startBuild(index, s, files, request, *sdk, project);
       if (c.child) running.push_back(std::move(c));
     }
-    for (auto it = running.begin(); it != running.end();) {
-      std::optional<int> code = it->child->poll();
-      const bool overdue = !code && std::chrono::steady_clock::now() - it->started > kBuildWallBackstop;
-      if (!code && !overdue) {
-        ++it;
-        continue;
-      }
-      if (overdue) it->child->stop(std::chrono::milliseconds(500));
-      finishBuild(out[it->index], *it, code, request.build_sandbox);
-      it = running.erase(it);
-    }
+    reapBuilds(running, out, request.build_sandbox);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return out;
+}
+
+void dropBuildTrees(const std::string& out_dir) {
+  for (const fs::path& builds : {fs::path(out_dir) / "build", fs::path(out_dir) / "known" / "build"}) {
+    std::error_code error;
+    if (!fs::is_directory(builds, error)) continue;
+    for (const auto& project : fs::directory_iterator(builds, error)) {
+      const fs::path tree = project.path() / "build";
+      // Never through a link: only the grade's own folders are removed.
+      if (!project.is_symlink() && fs::is_directory(fs::symlink_status(tree))) fs::remove_all(tree, error);
+    }
+  }
 }
 
 }  // namespace aula::grade

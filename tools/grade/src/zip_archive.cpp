@@ -53,6 +53,65 @@ std::string entryParts(const std::string& name, std::vector<std::string>& parts)
 
 std::string mib(uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
+// The current entry of `zip`, read and checked against `limits` before any of it is written.
+struct Entry {
+  std::string name;
+  std::vector<std::string> parts;
+  bool directory = false;
+};
+
+// Reads the current entry into `entry`: "" or why it may not be unpacked.
+std::string checkEntry(unzFile zip, const UnzipLimits& limits, uint64_t bytes, uint64_t& files, Entry& entry) {
+  unz_file_info64 info;
+  char name_buffer[4096];
+  if (unzGetCurrentFileInfo64(zip, &info, name_buffer, sizeof name_buffer, nullptr, 0, nullptr, 0) != UNZ_OK) {
+    return "is damaged (an entry does not read)";
+  }
+  const std::string name(name_buffer, info.size_filename < sizeof name_buffer ? info.size_filename : sizeof name_buffer - 1);
+  entry.name = name;
+  const std::string bad = entryParts(name, entry.parts);
+  if (!bad.empty()) return bad;
+  entry.directory = name.back() == '/' || name.back() == '\\';
+  // The made-by system 3 is Unix: the high half of the external attributes is the file's mode.
+  const uint32_t mode = (info.version >> 8) == 3 ? static_cast<uint32_t>(info.external_fa >> 16) : 0;
+  if (mode != 0 && !S_ISREG(mode) && !S_ISDIR(mode)) {
+    return printableName(name) + (S_ISLNK(mode) ? " is a symbolic link" : " is not a file (a device, a fifo or a socket)");
+  }
+  if ((info.flag & 1) != 0) return printableName(name) + " is encrypted";
+  if (static_cast<int>(entry.parts.size()) - (entry.directory ? 0 : 1) > limits.max_depth) {
+    return printableName(name) + " is more than " + std::to_string(limits.max_depth) + " folders deep";
+  }
+  if (++files > limits.max_files) return "holds more than " + std::to_string(limits.max_files) + " files";
+  if (info.uncompressed_size > limits.max_bytes - std::min(bytes, limits.max_bytes)) {
+    return printableName(name) + " unpacks to more than the " + mib(limits.max_bytes) + " a hand-in may hold";
+  }
+  return "";
+}
+
+// Writes the current entry's data, already opened as `out`, counting what comes out: "" or why not.
+std::string writeEntry(unzFile zip, const std::string& name, int out, const UnzipLimits& limits, uint64_t& bytes,
+                       std::vector<char>& buffer) {
+  std::string why;
+  if (unzOpenCurrentFile(zip) != UNZ_OK) why = printableName(name) + " is damaged (its headers disagree)";
+  while (why.empty()) {
+    const int got = unzReadCurrentFile(zip, buffer.data(), static_cast<unsigned>(buffer.size()));
+    if (got < 0) {
+      why = printableName(name) + " is damaged";
+      break;
+    }
+    if (got == 0) break;
+    bytes += static_cast<uint64_t>(got);
+    // What the entry says of its size is the zip's word: a bomb's is a lie, what comes out is counted.
+    if (bytes > limits.max_bytes) {
+      why = printableName(name) + " unpacks to more than the " + mib(limits.max_bytes) + " a hand-in may hold";
+      break;
+    }
+    if (::write(out, buffer.data(), static_cast<size_t>(got)) != got) why = "cannot write " + printableName(name);
+  }
+  if (unzCloseCurrentFile(zip) == UNZ_CRCERROR && why.empty()) why = printableName(name) + " is damaged (its CRC)";
+  return why;
+}
+
 std::string unzipInto(unzFile zip, const std::string& into, const UnzipLimits& limits, uint64_t& bytes, uint64_t& files) {
   unz_global_info64 global;
   if (unzGetGlobalInfo64(zip, &global) != UNZ_OK) return "not a zip it can read";
@@ -64,59 +123,23 @@ std::string unzipInto(unzFile zip, const std::string& into, const UnzipLimits& l
   std::vector<char> buffer(1 << 16);
   for (int status = unzGoToFirstFile(zip); status != UNZ_END_OF_LIST_OF_FILE; status = unzGoToNextFile(zip)) {
     if (status != UNZ_OK) return "is damaged (its list of entries does not read)";
-    unz_file_info64 info;
-    char name_buffer[4096];
-    if (unzGetCurrentFileInfo64(zip, &info, name_buffer, sizeof name_buffer, nullptr, 0, nullptr, 0) != UNZ_OK) {
-      return "is damaged (an entry does not read)";
-    }
-    const std::string name(name_buffer, info.size_filename < sizeof name_buffer ? info.size_filename : sizeof name_buffer - 1);
-    std::vector<std::string> parts;
-    const std::string bad = entryParts(name, parts);
+    Entry entry;
+    const std::string bad = checkEntry(zip, limits, bytes, files, entry);
     if (!bad.empty()) return bad;
-    const bool directory = name.back() == '/' || name.back() == '\\';
-    // The made-by system 3 is Unix: the high half of the external attributes is the file's mode.
-    const uint32_t mode = (info.version >> 8) == 3 ? static_cast<uint32_t>(info.external_fa >> 16) : 0;
-    if (mode != 0 && !S_ISREG(mode) && !S_ISDIR(mode)) {
-      return printableName(name) + (S_ISLNK(mode) ? " is a symbolic link" : " is not a file (a device, a fifo or a socket)");
-    }
-    if ((info.flag & 1) != 0) return printableName(name) + " is encrypted";
-    if (static_cast<int>(parts.size()) - (directory ? 0 : 1) > limits.max_depth) {
-      return printableName(name) + " is more than " + std::to_string(limits.max_depth) + " folders deep";
-    }
-    if (++files > limits.max_files) return "holds more than " + std::to_string(limits.max_files) + " files";
-    if (info.uncompressed_size > limits.max_bytes - std::min(bytes, limits.max_bytes)) {
-      return printableName(name) + " unpacks to more than the " + mib(limits.max_bytes) + " a hand-in may hold";
-    }
+    const std::string& name = entry.name;
     fs::path path = into;
-    for (size_t i = 0; i + (directory ? 0 : 1) < parts.size(); ++i) {
-      path /= parts[i];
+    for (size_t i = 0; i + (entry.directory ? 0 : 1) < entry.parts.size(); ++i) {
+      path /= entry.parts[i];
       if (::mkdir(path.c_str(), 0755) != 0 && errno != EEXIST) return "cannot make a folder for " + printableName(name);
       struct stat st;
       if (::lstat(path.c_str(), &st) != 0 || !S_ISDIR(st.st_mode)) return printableName(name) + " is inside a file";
     }
-    if (directory) continue;
-    path /= parts.back();
+    if (entry.directory) continue;
+    path /= entry.parts.back();
     if (!written.insert(path.string()).second) return printableName(name) + " is in the zip twice";
     const int out = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (out < 0) return printableName(name) + " cannot be written (" + std::strerror(errno) + ")";
-    std::string why;
-    if (unzOpenCurrentFile(zip) != UNZ_OK) why = printableName(name) + " is damaged (its headers disagree)";
-    while (why.empty()) {
-      const int got = unzReadCurrentFile(zip, buffer.data(), static_cast<unsigned>(buffer.size()));
-      if (got < 0) {
-        why = printableName(name) + " is damaged";
-        break;
-      }
-      if (got == 0) break;
-      bytes += static_cast<uint64_t>(got);
-      // What the entry says of its size is the zip's word: a bomb's is a lie, what comes out is counted.
-      if (bytes > limits.max_bytes) {
-        why = printableName(name) + " unpacks to more than the " + mib(limits.max_bytes) + " a hand-in may hold";
-        break;
-      }
-      if (::write(out, buffer.data(), static_cast<size_t>(got)) != got) why = "cannot write " + printableName(name);
-    }
-    if (unzCloseCurrentFile(zip) == UNZ_CRCERROR && why.empty()) why = printableName(name) + " is damaged (its CRC)";
+    const std::string why = writeEntry(zip, name, out, limits, bytes, buffer);
     ::close(out);
     if (!why.empty()) return why;
   }

@@ -3,15 +3,15 @@
 # unchanged on Aula (tests/integration/test_python_algorithms.cpp): along the lane until the right
 # laser has seen a car, a gap longer than the car and the next car; on past the gap, a pause,
 # then two reversing arcs into it, and centred between the front and rear cars.
-# The street's numbers are the ones on Aula's Autopark page (the car 4 x 2 m, the right laser
-# 0.3 m ahead of the centre on the right side).
+# The street's numbers are RoboticsAcademy's, as on Aula's Autopark page (the car 4 x 2 m, the right laser
+# 0.5 m ahead of the centre, 1.25 m to its right).
 import GUI
 import HAL
 import time
 import math
 
 CAR_LENGTH, CAR_WIDTH = 4.0, 2.0
-RIGHT_LASER_X, RIGHT_LASER_Y = 0.3, -1.0
+RIGHT_LASER_X, RIGHT_LASER_Y = 0.5, -1.25
 RADIUS = 5.0          # m, the reversing arcs
 LANE_Y = 0.0          # m, where to drive while searching
 CAR_NEAR = 2.6        # m, a parked car beside us

@@ -1,6 +1,7 @@
 #include "aula/supervision/rules.hpp"
 
 #include <aula/config/config.hpp>
+#include <aula/config/paths.hpp>
 #include <aula/process/cpu_affinity.hpp>
 #include <aula/process/exit_codes.hpp>
 #include <aula/process/machine_reason.hpp>
@@ -162,6 +163,12 @@ std::string limitPassed(const sandbox::Limits& limits, uint64_t output_bytes, co
     return "the algorithm used more than " + std::to_string(limits.memory_bytes >> 20) + " MB of memory (its processes together)";
   }
   return "";
+}
+
+void writeAbortedReport(const std::string& report_path, const std::string& exercise, const std::string& algorithm,
+                        const std::string& why) {
+  if (report_path.empty()) return;
+  config::writeFileAtomically(report_path, abortedReport(exercise, algorithm, why).dump(2) + "\n", "report");
 }
 
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why) {

@@ -12,6 +12,7 @@
 #include <aula/supervision/capped_output.hpp>
 #include <aula/supervision/escape_watch.hpp>
 #include <aula/supervision/rules.hpp>
+#include <aula/supervision/wall_backstop.hpp>
 
 #include <chrono>
 #include <filesystem>
@@ -29,11 +30,6 @@
 
 namespace aula::supervision {
 namespace {
-
-void writeAbortedReport(const Supervision& run, const std::string& why) {
-  if (run.report_path.empty()) return;
-  config::writeFileAtomically(run.report_path, abortedReport(run.exercise, run.algorithm, why).dump(2) + "\n", "report");
-}
 
 // One supervised run: its children, the private lines to them, and what has happened so far.
 class RunSupervisor {
@@ -143,6 +139,8 @@ class RunSupervisor {
     result_ = 1;
   }
 
+  void abortedReport(const std::string& why) { writeAbortedReport(run_.report_path, run_.exercise, run_.algorithm, why); }
+
   // The referee is told why the run ends and has a few seconds to grade what there is.
   void endRun(const std::string& why) {
     if (run_.has_referee && !told_referee_) tellReferee(why);
@@ -150,32 +148,13 @@ class RunSupervisor {
     result_ = 1;
   }
 
-  // The backstop counts the wall time the run's processes had, not the time they waited for a CPU
-  // that other work held (schedstat, looked at every 500 ms): on a loaded machine a run is waited
-  // for, and a student's endless loop meets its CPU budget (the student's reason) before it. At
-  // most nine tenths of the wall time is so forgiven: a machine that never gives the run a CPU
-  // still ends it, at ten times the budget.
+  // The run's wall-clock backstop (wall_backstop.hpp): the machine's reason.
   void checkWallBudget() {
-    const auto now = std::chrono::steady_clock::now();
-    const double wall_s = std::chrono::duration<double>(now - started_).count();
-    if (run_.wall_budget_s <= 0 || ending_since_ || wall_s <= run_.wall_budget_s) return;
-    if (now - waited_checked_ >= std::chrono::milliseconds(500)) {
-      waited_checked_ = now;
-      std::vector<pid_t> run = process::descendantsOf(::getpid());
-      const double waited_s = process::waitedForCpuS(run);
-      // A process that ended takes its count with it: keep the most seen of each process set.
-      waited_s_ = std::max(waited_s_, waited_s);
-    }
-    const double had_s = wall_s - std::min(waited_s_, 0.9 * wall_s);
-    if (had_s > run_.wall_budget_s) {
-      std::ostringstream what;
-      what << "the run's wall-clock backstop of " << run_.wall_budget_s
-           << " s ran out (--timeout): the machine was too slow or too busy for this run";
-      const std::string why = process::machineReason(what.str());
-      std::cerr << "aula: " << why << "\n";
-      machine_ = true;
-      endRun(why);
-    }
+    if (ending_since_ || !backstop_.ranOut(std::chrono::steady_clock::now())) return;
+    const std::string why = backstop_.reason();
+    std::cerr << "aula: " << why << "\n";
+    machine_ = true;
+    endRun(why);
   }
 
   // A sandboxed component past a limit the launcher counts: its output (stdout and stderr), its
@@ -255,7 +234,7 @@ class RunSupervisor {
     const ExitVerdict verdict = supervision::onExit(event, name);
     if (verdict.discard && control_fd_ >= 0) (void)!write(control_fd_, "discard\n", 8);
     if (!verdict.message.empty()) std::cerr << "aula: " << verdict.message << "\n";
-    if (!verdict.aborted_report.empty()) writeAbortedReport(run_, verdict.aborted_report);
+    if (!verdict.aborted_report.empty()) abortedReport(verdict.aborted_report);
     if (!verdict.tell_referee.empty()) {
       const std::string& said = verdict.algorithm_fault.empty() ? verdict.tell_referee : verdict.algorithm_fault;
       if (verdict.message.empty()) {
@@ -268,7 +247,7 @@ class RunSupervisor {
       tellReferee(verdict.tell_referee);
     }
     if (verdict.result) result_ = *verdict.result;
-    if (verdict.machine) machine_ = true;
+    machine_ = machine_ || verdict.machine;
     return verdict.run_over;
   }
 
@@ -284,14 +263,13 @@ class RunSupervisor {
     }
     // Whatever the run left behind (detached, SIGTERM blocked): gone with it.
     const std::vector<pid_t> left = process::descendantsOf(::getpid());
-    for (const pid_t orphan : left) ::kill(orphan, SIGKILL);
-    for (const pid_t orphan : left) ::waitpid(orphan, nullptr, 0);  // ours once orphaned (the subreaper): reaped
+    for (const pid_t orphan : left) ::kill(orphan, SIGKILL), ::waitpid(orphan, nullptr, 0);  // ours (the subreaper): reaped
     if (output_) output_->finish();
     if (told_referee_ && !referee_exited_) {
       // Told why, the referee did not answer in time (stopped, hung): the report says why, no mark.
       std::cerr << "aula: the referee did not grade in time: the run has no mark\n";
-      writeAbortedReport(run_, machine_ ? abort_reason_ + "; the referee did not answer"
-                                        : process::machineReason(abort_reason_ + "; the referee did not grade in time"));
+      abortedReport(machine_ ? abort_reason_ + "; the referee did not answer"
+                             : process::machineReason(abort_reason_ + "; the referee did not grade in time"));
       machine_ = true;
     }
     // What the launcher saw itself, in its exit code: the only word `aula grade` takes for it.
@@ -299,7 +277,6 @@ class RunSupervisor {
   }
 
   const Supervision& run_;
-  const std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   std::vector<std::unique_ptr<process::ChildProcess>> children_;
   int control_fd_ = -1;  // the referee's control pipe, our end
   std::unique_ptr<process::LinePipe> simulator_status_;
@@ -312,8 +289,7 @@ class RunSupervisor {
   std::string abort_reason_;
   std::optional<std::chrono::steady_clock::time_point> ending_since_;
   std::chrono::steady_clock::time_point processes_checked_;
-  std::chrono::steady_clock::time_point waited_checked_;
-  double waited_s_ = 0;  // the run's processes' wait for a CPU, as last read
+  WallBackstop backstop_{run_.wall_budget_s, std::chrono::steady_clock::now()};
   std::unique_ptr<CappedOutput> output_;
 };
 

@@ -32,6 +32,22 @@ void forEachEcho(double car_x_m, double car_y_m, double car_yaw_rad, const Laser
   }
 }
 
+// Calls miss(x_m, y_m) at points every step_m along each beam of `scan` that had no echo (it
+// read max range, or inf): the path it proves free, from the laser to its max range.
+template <class Miss>
+void forEachMissPoint(double car_x_m, double car_y_m, double car_yaw_rad, const LaserMount& mount,
+                      const component::LaserData& scan, double step_m, Miss miss) {
+  const double c = std::cos(car_yaw_rad), s = std::sin(car_yaw_rad);
+  const double lx = car_x_m + c * mount.x_m - s * mount.y_m;
+  const double ly = car_y_m + s * mount.x_m + c * mount.y_m;
+  for (int i = 0; i < scan.numLaser && i < static_cast<int>(scan.values_m.size()); ++i) {
+    const double r = scan.values_m[i];
+    if (r < scan.maxRange - 0.05) continue;  // an echo (or a reading below min range)
+    const double a = car_yaw_rad + mount.yaw_rad + scan.angle(i);
+    for (double d = step_m; d < scan.maxRange - 0.05; d += step_m) miss(lx + d * std::cos(a), ly + d * std::sin(a));
+  }
+}
+
 struct AutoparkApi {
   component::Pose3d& pose3d;  ///< getX(), getY(), getYaw(): the car's centre in the world frame, metres, radians
   component::Laser& laser1;   ///< front: 180 beams over -90..90 degrees of its mount, metres and mm

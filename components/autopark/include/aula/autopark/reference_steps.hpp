@@ -34,6 +34,11 @@ struct Command {
   double v_mps = 0, w_radps = 0;
 };
 Command centringCommand(double gap_front_m, double gap_rear_m, double yaw_rad, double radius_m);
+// Reversing into the slot, how far the body's rearmost corner below the parked cars' side line
+// is from the slot's measured rear end (the car behind), at (x, y, yaw); infinity when no corner
+// is that low. The rear laser cannot say it: on RoboticsAcademy's car it sits 0.4 m behind the
+// body, so it sees nothing nearer the body than that.
+double rearClearanceM(const Slot& slot, double length_m, double width_m, double x_m, double y_m, double yaw_rad);
 // Centred: equal gaps within 0.1 m, parallel within 0.03 rad.
 bool centred(double gap_front_m, double gap_rear_m, double yaw_rad);
 // In the slot and parallel to it: the body within the slot's ends (10 cm grace), on its line
@@ -45,7 +50,8 @@ bool inSlot(const Slot& slot, double goal_y_m, double car_length_m, double x_m, 
 // How far the car is past the slot's far end in the direction of the search (+1: +x).
 double pastSlotM(const Slot& slot, int direction, double x_m);
 // The planning grid's extent: the street around the car and the slot, 12 m beyond either, never
-// beyond what the lasers mapped; from just below the curb to a few metres above the lane.
+// beyond what the lasers mapped; from the slot's line (the curb, or the parked cars' far side where
+// the lasers do not see the curb: the plan never takes the body below it) to a few metres above the lane.
 MappedStreet planningExtent(const MappedStreet& mapped, const Slot& slot, double x_m, double y_m, double lane_y_m,
                             double car_width_m);
 // The planner's options for attempt `attempt` (0: the first): after a failure, finer escape moves

@@ -33,7 +33,8 @@ struct TwoArcPlan {
 
 // Clearance kept between the swept footprint and the parked cars or the curb.
 constexpr double kSweepMarginM = 0.15;
-// The car's side ends up this far from the curb.
+// The car's side ends up this far from the slot's line (the curb, or the parked cars' far side):
+// in the second arc the rear corner dips below where the side ends, and must clear the line.
 constexpr double kCurbClearanceM = 0.45;
 
 // The plan for `slot`, starting from the lane line `lane_y_m`.

@@ -28,6 +28,9 @@ class ControlLoop {
   bool clockSeen() const { return client_.clockSeen(); }
   int64_t periodUs() const { return period_us_; }
   int64_t seed() const { return client_.lastTick().seed; }  // the run's seed (from SIM_CLOCK)
+  // The simulator holds the world at its start (paused at sim time 0: `aula run` with windows
+  // starts it so, and the first Run or teleoperation resumes it).
+  bool heldAtStart() const { return client_.clockSeen() && client_.paused() && client_.simTimeUs() == 0; }
   std::string simulatorGone() const { return client_.simulatorGone(); }  // LockstepClient's
   void watchedByLauncher() { client_.watchedByLauncher(); }
   // Optional hook after every due tick, running or not (GUI model updates, recorders).

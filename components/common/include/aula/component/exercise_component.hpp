@@ -16,12 +16,14 @@
 #include <aula/component/referee_status.hpp>
 #include <aula/config/config.hpp>
 #include <aula/console_t.hpp>
+#include <aula/sim_control_t.hpp>
 #include <aula/lcm/bus.hpp>
 #include <aula/settings/tables.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -61,6 +63,7 @@ class ExerciseComponent {
 
   // "Run my algorithm" (TeleTaxi's GO!) and its Stop; stopping stops the robot.
   void setRunning(bool running) {
+    if (running) releaseTheStart();
     loop_->setRunning(running);
     if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
     episode_->markChanged();
@@ -68,6 +71,11 @@ class ExerciseComponent {
   bool running() const { return loop_->running(); }
   void teleoperate(double v_mps, double w_radps) {  // ignored while the algorithm runs
     if (running()) return;
+    if ((v_mps != 0 || w_radps != 0) && loop_->heldAtStart()) {
+      std::cerr << program_ << ": teleoperated before Run: this run is not the graded run of its seed "
+                << "(headless, the algorithm starts from the world as it was at 0 s)" << std::endl;
+      releaseTheStart();
+    }
     motors_->sendV(v_mps);
     motors_->sendW(w_radps);
   }
@@ -84,6 +92,15 @@ class ExerciseComponent {
     episode_->restart(start_);
     if (was_running && loaded && may_resume) setRunning(true);
     return loaded;
+  }
+  // With windows the simulator holds the world at 0 s until the first Run (or teleoperation): the
+  // episode starts from the state and random streams a headless run of the seed starts from, so
+  // the windowed run is the graded run (docs/architecture.md, "A windowed run is the graded run").
+  void releaseTheStart() {
+    if (!loop_->heldAtStart()) return;
+    aula::sim_control_t resume{};
+    resume.command = aula::sim_control_t::RESUME;
+    bus_.publish(lcmbus::kControlChannel, &resume);
   }
   // With windows: a hung execute() halts the algorithm instead of ending the process.
   void containHangs() { host_->containHangs(); }
@@ -159,6 +176,7 @@ class ExerciseComponent {
   ExerciseComponent(lcmbus::Bus& bus, const config::Config& cfg, const world::WorldSpec& world,
                     const settings::Exercise& names, const std::optional<auth::Key>& lockstep_key)
       : bus_(bus),
+        program_(names.component),
         algorithm_name_(cfg.getString(names.section + ".Algorithm")),
         console_channel_(cfg.getString(names.section + ".Console.Channel")) {
     const std::string& p = names.section;
@@ -217,6 +235,7 @@ class ExerciseComponent {
   }
 
   lcmbus::Bus& bus_;
+  std::string program_;  // the component's name, for its messages
   std::string algorithm_name_;
   std::string console_channel_;
   StartPose start_;

@@ -1,7 +1,7 @@
 #pragma once
 // Planar ray casting against the world's static primitives, for laser drivers.
 // DART's Bullet raycast costs ~2.5 ms per 180-beam scan and is up to 1.3 cm off; this caster is
-// analytic (exact ray/rectangle and ray/circle intersections) over a uniform-grid spatial index.
+// analytic (exact ray/rectangle, ray/circle and ray/segment intersections) over a uniform-grid spatial index.
 
 #include <aula/geometry/oriented_box.hpp>
 
@@ -16,10 +16,17 @@ struct Circle2 {
   double radius_m = 0.0;
 };
 
+// A wall of no thickness: what a horizontal plane leaves of a mesh's triangle.
+struct Segment2 {
+  Eigen::Vector2d a_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d b_m = Eigen::Vector2d::Zero();
+};
+
 // Obstacles cut by a horizontal plane.
 struct Obstacles2D {
   std::vector<OrientedBox> rects;
   std::vector<Circle2> circles;
+  std::vector<Segment2> segments;  // meshes' cross-sections (a closed outline per solid)
 };
 
 struct ScanRequest {
@@ -53,11 +60,11 @@ class Raycaster2D {
 
  private:
   Obstacles2D statics_;
-  // Uniform grid over the statics' bounding box; each cell lists rect/circle indices.
+  // Uniform grid over the statics' bounding box; each cell lists rect, circle and segment indices.
   double cell_m_ = 1.0;
   Eigen::Vector2d grid_min_ = Eigen::Vector2d::Zero();
   int cols_ = 0, rows_ = 0;
-  std::vector<std::vector<int>> cells_;  // index >= 0: rect, < 0: circle (-1 - i)
+  std::vector<std::vector<int>> cells_;  // rects first, then circles, then segments (one numbering)
 };
 
 }  // namespace aula::geometry

@@ -4,6 +4,8 @@
 // generator, the laser caster and the referees all share one description.
 
 #include <aula/config/no_dangling.hpp>
+#include <aula/geometry/oriented_box.hpp>
+#include <aula/world/mesh.hpp>
 
 #include <Eigen/Geometry>
 
@@ -17,29 +19,43 @@
 namespace aula::world {
 
 // Malformed or unreadable world: the message names the file (and element) and what is wrong.
+// A world read in one pass may have several problems: what() lists them one per line, and
+// problems() gives them one by one.
 class WorldError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  explicit WorldError(const std::vector<std::string>& problems);
+  std::vector<std::string> problems() const { return problems_.empty() ? std::vector<std::string>{what()} : problems_; }
+
+ private:
+  std::vector<std::string> problems_;
 };
 
-enum class ShapeKind { Box, Cylinder };
+enum class ShapeKind { Box, Cylinder, Mesh };
 
 struct Shape {
   ShapeKind kind = ShapeKind::Box;
   Eigen::Vector3d box_size_m = Eigen::Vector3d::Zero();  // Box: full extents along local x, y, z
   double radius_m = 0.0;                                 // Cylinder: axis along local z
   double length_m = 0.0;                                 // Cylinder
+  MeshSource mesh_source;                                // Mesh: what the <mesh> says
+  std::shared_ptr<const TriangleMesh> mesh;              // Mesh: its triangles, in the shape's frame
 
-  // Half-height along the world z axis when the shape is upright.
-  double halfHeight() const { return kind == ShapeKind::Box ? box_size_m.z() / 2 : length_m / 2; }
+  // The heights (world z) the shape spans at `pose` (a tilted box or cylinder: those of its
+  // upright self; a mesh: its vertices').
+  std::pair<double, double> zRange(const Eigen::Isometry3d& pose) const;
 };
 
 // One collision primitive of a static model, already in world coordinates.
 struct StaticObject {
   std::string name;                                // "model::link::collision"
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // world pose of the shape centre
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // world pose of the shape centre (a mesh: its frame)
   Shape shape;
 };
+
+// The rectangle a static object covers seen from above, turned by its yaw: a box's footprint, a
+// cylinder's bounding square, a mesh's bounding rectangle in its own frame (a parked-car mesh).
+geometry::OrientedBox footprintOf(const StaticObject& object);
 
 // A driver declared on a robot with <plugin name="..." filename="TYPE">, Gazebo style.
 // Every child element of <plugin> is kept as text in params (e.g. "channel" -> "ROOMBA_LASER").
@@ -97,22 +113,26 @@ struct WorldSpec {
   std::vector<StaticObject> statics;
   std::vector<RobotSpec> robots;
   std::vector<Destination> destinations;  // in the file's order; names unique
+  // What the files say that Aula does not simulate (lights, sky, GUI, world plugins, visuals...),
+  // one line per kind: "<light> x2 (world.sdf:5, ...): Aula draws no lights". Listed, never silent.
+  std::vector<std::string> skipped;
 
   const RobotSpec* findRobot(const std::string& name) const;
 };
 
-// Where `model://NAME` includes are looked for, in order: the folders of $AULA_MODEL_PATH
-// (colon-separated), the "models" folder beside the world file, <data folder>/worlds/models.
+// Where `model://NAME` includes are looked for, in order: the folders of $AULA_MODEL_PATH, then
+// Gazebo's $GAZEBO_MODEL_PATH, $GZ_SIM_RESOURCE_PATH and $SDF_PATH (each colon-separated), the
+// "models" folder beside the world file, <data folder>/worlds/models.
 std::vector<std::string> modelSearchPath(const std::string& world_path);
 
-// Reads an SDF world with libsdformat. `model://NAME` includes resolve through `model_path`
-// (default: modelSearchPath(path)). Throws WorldError.
-// Static models: every box/cylinder collision becomes a StaticObject (nested models flattened;
-// <plane> collisions, i.e. a Gazebo ground plane, are ignored; any other geometry is an error).
-// Non-static models are robots: one link, one box/cylinder collision, mass > 0, plugins whose
-// filename is a known driver type (pose3d, motors, laser, bumper). Poses are raw SDF poses
-// composed parent * child; `relative_to` is rejected. physics_step_s is set only when the file
-// states <physics><max_step_size>.
+// Reads an SDF world with Aula's reader (world_sdf.cpp). `model://NAME` includes resolve through
+// `model_path` (default: modelSearchPath(path)). Throws WorldError listing every problem found.
+// Static models: every box, cylinder and mesh collision becomes a StaticObject (nested models
+// flattened; <plane> collisions, i.e. a Gazebo ground plane, are skipped; any other geometry is
+// a problem). Non-static models are robots: one link, one box/cylinder collision, mass > 0,
+// plugins whose filename is a known driver type (pose3d, motors, laser, bumper). Poses are raw
+// SDF poses composed parent * child; `relative_to` is rejected. physics_step_s is set only when
+// the file states <physics><max_step_size>. What is not simulated is listed in `skipped`.
 WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path = {});
 
 // What a process that loads the world at `path` reads: the world file and every model file it

@@ -47,6 +47,7 @@ struct GradeRequest {
   std::vector<std::string> known;
   SimilarityRules similarity_rules;  // what flags a pair
   bool record = false;           // keep each run's LCM log (runs/<student>/<world>-seed<k>.lcmlog)
+  bool keep_builds = false;      // keep each build's CMake tree after the runs (dropBuildTrees)
   bool build_sandbox = true;     // each C++ submission built in its sandbox (submission_build.hpp); off: to measure it
   std::vector<std::pair<std::string, std::string>> overrides;  // --Key=value for every run
 };
@@ -66,6 +67,7 @@ struct GradeOptions {
   std::string engine = "local";
   double wall_limit_s = 600;
   bool record = false;
+  bool keep_builds = false;
   bool build_sandbox = true;
   std::string similarity = "auto";       // on, off, or auto: on for a class of 3 or more
   std::string known;                     // --known=DIR, "" for none
@@ -87,7 +89,7 @@ std::vector<long long> parseSeeds(const std::string& text, const std::string& op
 // A submission compiled (or not) into a plugin, or a student's Python file.
 struct Submission {
   std::string student;  // the folder's name
-  std::string folder;   // absolute
+  std::string folder;   // absolute; a built-in's: its installed sources (references/EXERCISE/NAME), or ""
   std::string language = "C++";  // "C++" (MyAlgorithm.cpp) or "Python" (MyAlgorithm.py alone)
   std::string plugin;   // the built .so, or the copy of MyAlgorithm.py ("" when it did not compile)
   std::string plugin_sha256;
@@ -112,6 +114,10 @@ void markKnown(std::vector<Submission>& subs);
 // MyAlgorithm.cpp is not compiled: its .py files are copied there (what runs cannot change
 // under the batch) and the copy of MyAlgorithm.py is what its runs load.
 std::vector<Submission> compileSubmissions(const GradeRequest& request, const std::string& aula_prefix);
+// Once every run is done: each build's CMake tree (OUT/build/<student>/build, OUT/known/build/...:
+// objects and the plugin, about 1 MB a student) removed; the sources it built from, its project
+// and compile.log stay. A resumed grade builds again, as it always does (issue 58: a class's size).
+void dropBuildTrees(const std::string& out_dir);
 
 // One run of the batch.
 struct PlannedRun {

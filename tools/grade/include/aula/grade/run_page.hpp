@@ -6,8 +6,8 @@
 // speed 1x-100x, a time slider, the referee's events on a timeline (a click jumps there) and the
 // mark's breakdown (each rubric term: its measure, points and points missed).
 //
-// The data of a run travels compressed (zlib's deflate, base64) in a <script type="application/
-// octet-stream"> block, decoded when the page opens. report.html shows a run's page in a frame,
+// The data of a run travels compressed (zlib's deflate, base64) in two <script type="application/
+// octet-stream"> blocks (the report; the trace), decoded when the page opens. report.html shows a run's page in a frame,
 // made when the run is opened, so a class page of 450 runs loads as fast as one without players. `page.html#t=SECONDS` opens the player paused at that
 // sim time. The player writes what it shows into its status element's data-* attributes
 // (data-t-s, data-robot-x-mm, data-robot-y-mm, data-robot-yaw-mrad, data-breakdown-sum,
@@ -38,11 +38,42 @@ struct RunFiles {
   nlohmann::json report;    // the run's result (the referee's report and who ran it)
   std::string trace_json;   // "" when the run has no trace: the page shows the still picture only
   std::string picture_png;  // the referee's picture, "" when there is none
+  std::string picture_name;  // its file's name beside the page ("vacuum-seed1.png"), "" when not there
 };
 
-// A run's files beside its result: <stem>.trace.json and <stem>.png, where <stem> is the result's
-// "log" without its extension (runs/<student>/<world>-seed<k>).
+// A run's files beside its result: its trace (traceOfRun) and <stem>.png, where <stem> is the
+// result's "log" without its extension (runs/<student>/<world>-seed<k>).
 RunFiles runFilesOf(const nlohmann::json& result);
+
+// One copy of each trace (docs/grading.md, "How big a class is"): the referee writes
+// <stem>.trace.json; once the run's page embeds it byte for byte, the grade keeps no other copy,
+// and when the student's page had to change it (a text withheld, a path cut) it keeps the
+// referee's as <stem>.trace.z (zlib). traceOfRun reads whichever there is, in that order:
+// <stem>.trace.json, <stem>.trace.z, the page's trace block; "" when none.
+std::string traceOfRun(const std::string& stem);
+// The trace block of a run page's HTML (runPageHtml), inflated: the referee's trace as the page
+// holds it; "" when the page has none.
+std::string traceOfPage(const std::string& html);
+// After <stem>.html is written: <stem>.trace.json removed, kept as <stem>.trace.z unless
+// `page_has_it` (the page holds the referee's trace byte for byte).
+void keepOneTrace(const std::string& stem, bool page_has_it);
+// zlib's deflate of `bytes` (a zlib stream: what the browser's DecompressionStream('deflate')
+// reads), and back ("" when `zlib` is not such a stream).
+std::string deflated(const std::string& bytes);
+std::string inflated(const std::string& zlib);
+// The referee's PNG `png` with its pixels (the same filtered rows) deflated at zlib's level 9 in
+// one IDAT, its other chunks as they were; `png` itself when that is not smaller or it is not a
+// PNG this reads. The grade writes each run's picture so before its page inlines it.
+std::string smallerPng(const std::string& png);
+// The picture `png` in at most 256 colours, as a palette PNG a third of its size: each pixel the
+// nearest of the picture's 256 most frequent colours (beyond them are a few hundred pixels of
+// anti-aliased edges' blends); `png` itself when that is not smaller or it is not an opaque PNG.
+std::string palettePng(const std::string& png);
+// The player's script (player.js with the exercises' drawings), deflated and base64, as the
+// page's 'aula-player' block holds it for player_loader.js.
+std::string packedPlayerScript();
+// "%2F" for '/', and so on: a relative link whose names came from the students' folders.
+std::string urlPath(const std::string& path);
 
 // The per-run page (`runs/<student>/<world>-seed<k>.html`, `aula run --report-html`), for the
 // student: no absolute path of the teacher's machine in it (withoutPaths).

@@ -1,8 +1,9 @@
 #pragma once
 // Similarity between students (`aula grade --similarity`): pairs for a teacher to look at, never a
 // change of mark.
-// - Code: each submission's tokens (C++ or Python; comments and layout dropped, identifiers,
-//   numbers and strings each one class, so renaming changes nothing), fingerprinted by winnowing
+// - Code: each submission's tokens, of all its files at once (C++ or Python; comments and layout
+//   dropped, identifiers, numbers and strings each one class, so renaming changes nothing; the
+//   statements that change nothing and the dead ones dropped), fingerprinted by winnowing
 //   k-grams of tokens (Schleimer, Wilkerson, Aiken 2003: MOSS's algorithm), less the fingerprints of
 //   the exercise's template that everyone starts from. A pair's score is the share of the smaller
 //   submission's fingerprints the other has too; reordered functions keep their fingerprints. The
@@ -33,9 +34,27 @@ std::vector<Token> tokenize(const std::string& source, bool python);
 // name or constant on its line, `x = x`, `x += 0` and a name assigned and never used again.
 std::vector<Token> withoutNoOps(const std::vector<Token>& tokens, bool python);
 
+// Dead code, seen across all of a submission's files (`files`: each file's tokens, `python` each
+// file's language): the names whose value nothing reads. A name is read when it appears in a
+// statement that stores no name (a call, a condition, a return, a loop's head...) or in one that
+// stores a name that is read, other than as an assignment's target; `x = 5; x = x + 1; y = x;`
+// with y never read leaves x and y unread, and `if (c) y = 1;` stores y as `y = 1;` does.
+// Only plain names and `this->`/`self.` members are stores: `api.motors.v = 1` is a read of all.
+std::vector<std::string> unreadNames(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python);
+// The functions whose body is empty, across all of a submission's files (`files` less their dead
+// statements): C++ `void nop() {}`, Python `def nop(): pass` (or a docstring alone, or nothing
+// left) followed by another definition or the end.
+std::vector<std::string> emptyFunctions(const std::vector<std::vector<Token>>& files, const std::vector<bool>& python);
+// The tokens less the dead statements: a store to a name in `unread` (`junk = 5;`, `junk += i;`,
+// `junk++;`, `int junk;`, `if (c) junk = 1;`), an expression statement that calls nothing and stores nothing
+// (`a + b;`, `(void)(x * 2);`, Python `x + 1`, `(a, b)`), and a call alone of one of `empty_functions` (`nop();`).
+std::vector<Token> withoutDeadStatements(const std::vector<Token>& tokens, bool python, const std::vector<std::string>& unread,
+                                         const std::vector<std::string>& empty_functions = {});
+
 struct Fingerprint {
   uint64_t hash = 0;
   int first_line = 0, last_line = 0;  // the lines its k-gram spans
+  int file = 0;                       // which of the submission's files (codeFingerprints' order)
 };
 
 // Winnowing: of every window of `window` consecutive k-gram hashes, the smallest (rightmost on a tie).
@@ -50,13 +69,27 @@ std::vector<Token> commonForm(const std::vector<Token>& tokens, bool python);
 // How a source is fingerprinted: as written (a pair in one language), or in the common form (a
 // pair across the two).
 enum class CodeForm { AsWritten, Common };
-// A source's fingerprints as similarity compares them: tokenize, withoutNoOps, (commonForm,) fingerprints.
+// A source's fingerprints as similarity compares them: tokenize, withoutDeadStatements,
+// withoutNoOps, then the calls of emptyFunctions dropped, (commonForm,) fingerprints.
 std::vector<Fingerprint> codeFingerprints(const std::string& source, bool python, CodeForm form = CodeForm::AsWritten);
+struct SourceText {
+  std::string text;
+  bool python = false;
+};
+// A submission of several files as one: the union of its files' fingerprints (each marked with
+// its file's index), its dead names found across all of them, so code moved into a helper file
+// still matches and a name written in one file and read in another is read.
+std::vector<Fingerprint> codeFingerprints(const std::vector<SourceText>& files, CodeForm form = CodeForm::AsWritten);
 
+// Lines that match in two submissions: a's file a_file, lines a_first-a_last, and b's.
+struct MatchedLines {
+  int a_file = 0, a_first = 0, a_last = 0;
+  int b_file = 0, b_first = 0, b_last = 0;
+};
 struct CodeMatch {
   double score = 0;  // shared fingerprints over the smaller set, 0-1
   size_t shared = 0;  // how many
-  std::vector<std::pair<std::pair<int, int>, std::pair<int, int>>> ranges;  // (a first, last) ~ (b first, last)
+  std::vector<MatchedLines> ranges;
 };
 
 // `starter`: the template's fingerprints, shared by everyone and so not counted (both forms of
@@ -77,7 +110,9 @@ double pathLength(const Path& path);
 
 struct Submitted {
   std::string student;
-  std::string source_path;  // MyAlgorithm.cpp or MyAlgorithm.py; "" for a built-in (compared by behaviour)
+  // Every source of the hand-in (.cpp, .hpp, .py...: submissionFiles), compared as one; none for
+  // a built-in whose sources are not installed (compared by behaviour only).
+  std::vector<std::string> sources;
   // A known algorithm ("reference 'classic'", "known 'NAME'"): compared with every student, never
   // with another known one; a flagged pair reads "STUDENT matches reference 'classic'".
   bool known = false;

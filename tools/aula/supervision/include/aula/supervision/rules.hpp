@@ -89,5 +89,8 @@ std::string limitPassed(const sandbox::Limits& limits, uint64_t output_bytes, co
 
 // The report of a run whose referee cannot write one: no mark, and why.
 nlohmann::ordered_json abortedReport(const std::string& exercise, const std::string& algorithm, const std::string& why);
+// That report, written at `report_path` (atomically; "" for none).
+void writeAbortedReport(const std::string& report_path, const std::string& exercise, const std::string& algorithm,
+                        const std::string& why);
 
 }  // namespace aula::supervision
