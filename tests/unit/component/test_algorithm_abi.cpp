@@ -168,3 +168,23 @@ TEST(AlgorithmAbi, APluginOfItsExercisesOlderVersionIsRefusedWithTheReason) {
         << why;
   }
 }
+
+TEST(AlgorithmAbi, AnAutoparkPluginFromBeforeItsApiChangedIsRefusedWithBothVersions) {
+  // Built before the exercises had versions: the autopark API's version 1. It loads while autopark
+  // is at 1; once autopark's API changed (its version raised), it is refused, naming both.
+  const int now = aula::settings::requireExercise("autopark").abi_version;
+  if (now == 1) {
+    EXPECT_NO_THROW(aula::component::PluginLibrary(AULA_PLUGIN_AUTOPARK_BEFORE, "autopark"));
+    return;
+  }
+  try {
+    aula::component::PluginLibrary plugin(AULA_PLUGIN_AUTOPARK_BEFORE, "autopark");
+    FAIL() << "a plugin of the autopark API's version 1 was loaded by its version " << now;
+  } catch (const aula::component::PluginError& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("ABI mismatch: built for the autopark API version 1, this Aula's autopark API is version " +
+                       std::to_string(now) + "; rebuild it"),
+              std::string::npos)
+        << why;
+  }
+}
