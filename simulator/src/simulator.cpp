@@ -319,6 +319,7 @@ aula::sim_clock_t Simulator::tickAt(int64_t utime_us) const {
   tick.lockstep = options_.lockstep;
   tick.paused = paused_;
   tick.real_time_factor = measured_rtf_;
+  tick.target_real_time_factor = options_.real_time_factor;
   tick.seed = options_.seed;
   tick.world = spec_.name;
   tick.world_sha256 = spec_.sha256;

@@ -7,7 +7,7 @@
 namespace aula::component {
 
 void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
-  if (state.status != last_status_) changed_ = true;
+  if (state.status != last_status_ || state.not_the_seeds_run != last_not_the_seeds_run_) changed_ = true;
   if (!changed_ && utime - last_utime_ < 1'000'000) return;
   aula::episode_t msg;
   msg.utime = utime;
@@ -22,7 +22,9 @@ void EpisodeSender::tick(int64_t utime, const EpisodeState& state) {
   msg.non_finite_commands = host_.nonFiniteCommands();
   msg.generation = generation_;
   msg.status = state.status;
+  msg.not_the_seeds_run = state.not_the_seeds_run;
   last_status_ = state.status;
+  last_not_the_seeds_run_ = state.not_the_seeds_run;
   bus_.publish(channel_, &msg);
   last_utime_ = utime;
   changed_ = false;

@@ -128,7 +128,7 @@ bool TaxiComponent::go(std::string* why) {
     if (why) *why = "choose a destination first";
     return false;
   }
-  setRunning(true);
+  pressRun(true);
   return true;
 }
 

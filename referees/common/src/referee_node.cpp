@@ -81,7 +81,7 @@ void RefereeNode::onBumperMessage(const lcm::ReceiveBuffer*, const std::string& 
 void RefereeNode::onEpisodeMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::episode_t* msg) {
   if (outcome_.truth().contradictsEpisode(channel, *msg)) return;  // counted, not followed
   const bool had_fault = !outcome_.fault().empty();
-  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation, msg->status)) {
+  if (outcome_.onEpisode(msg->algorithm, msg->fault, msg->non_finite_commands, msg->generation, msg->status, msg->not_the_seeds_run)) {
     // Hot reload: the robot is back at its start, and a new episode is graded from scratch.
     episode_from_utime_ = msg->utime;
     end_.reset();
@@ -145,9 +145,16 @@ void RefereeNode::escapeAttempt(const std::string& what) {
   outcome_.truth().escapeAttempt(what);
 }
 
+EpisodeStatus RefereeNode::statusForWindows() const {
+  EpisodeStatus s = status();
+  const std::string& why = outcome_.notTheSeedsRun();
+  if (!why.empty()) s.summary += (s.summary.empty() ? "" : " - ") + std::string("not its seed's graded run: ") + validUtf8(why);
+  return s;
+}
+
 void RefereeNode::announce(int64_t utime) {
   announceEnd();
-  status_->tick(utime, status());
+  status_->tick(utime, statusForWindows());
 }
 
 std::string RefereeNode::peersGone() {
@@ -168,7 +175,7 @@ void RefereeNode::abort(const std::string& reason) {
   }
   outcome_.abort(reason);
   announceEnd();
-  status_->send(simTimeUs(), status());
+  status_->send(simTimeUs(), statusForWindows());
 }
 
 Report RefereeNode::report() const {

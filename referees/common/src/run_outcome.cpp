@@ -5,7 +5,7 @@
 namespace aula::referee {
 
 bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands,
-                           int generation, const std::string& status) {
+                           int generation, const std::string& status, const std::string& not_the_seeds_run) {
   const bool new_episode = generation > generation_;
   if (new_episode) {
     generation_ = generation;
@@ -14,6 +14,8 @@ bool RunOutcome::onEpisode(const std::string& algorithm, const std::string& faul
   }
   algorithm_ = algorithm;
   status_ = status;
+  // The component's reasons only grow (a reload keeps them): the latest says them all.
+  if (!not_the_seeds_run.empty()) not_the_seeds_run_ = not_the_seeds_run;
   if (fault_.empty()) fault_ = fault;
   non_finite_commands_ = non_finite_commands;
   return new_episode;
@@ -43,6 +45,8 @@ void RunOutcome::addTo(Report& report) const {
   if (non_finite_commands_ > 0) report.set("non_finite_commands", static_cast<long long>(non_finite_commands_));
   // Graded is the episode after this many hot reloads of the algorithm.
   if (generation_ > 0) report.set("reloads", static_cast<long long>(generation_));
+  // A windowed run that is not what the headless run of its seed is, and why.
+  if (!not_the_seeds_run_.empty()) report.set("not_the_seeds_run", validUtf8(not_the_seeds_run_));
   truth_.addTo(report);
 }
 
@@ -63,6 +67,7 @@ std::string RunOutcome::summary() const {
   if (!status_.empty()) out += "  the algorithm said: " + validUtf8(status_) + "\n";
   if (!fault_.empty()) out += "  the student's algorithm failed: " + fault_ + "\n";
   if (!aborted_.empty()) out += "  the run was aborted: " + aborted_ + "\n";
+  if (!not_the_seeds_run_.empty()) out += "  not its seed's graded run: " + validUtf8(not_the_seeds_run_) + "\n";
   if (non_finite_commands_ > 0) {
     out += "  " + std::to_string(non_finite_commands_) + " motor commands were not finite numbers (set to 0)\n";
   }

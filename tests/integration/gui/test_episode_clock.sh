@@ -40,7 +40,14 @@ wait $launcher || true
 # (a) Every status before Run: the clock at 0 and nothing cleaned, over seconds of teleoperation.
 awk '/^STATUS VACUUM_REFEREE/ && /started=0/' "$work/bus.log" >"$work/before_run.txt"
 [ "$(wc -l <"$work/before_run.txt")" -ge 3 ] || fail "fewer than 3 statuses before Run"
-grep -v "elapsed=0.000 .*summary=coverage 0.00 %$" "$work/before_run.txt" && fail "the referee's clock or coverage moved before Run"
+grep -vE "elapsed=0.000 .*summary=coverage 0.00 %( - not its seed's graded run: teleoperated before Run)?$" "$work/before_run.txt" \
+  && fail "the referee's clock or coverage moved before Run"
+# Teleoperated before Run, the run is not its seed's graded run: every window's status says so
+# (the referee's), and so does the report.
+grep -q "^STATUS VACUUM_REFEREE.*summary=coverage .* - not its seed's graded run: teleoperated before Run$" "$work/bus.log" \
+  || fail "the referee's status never said the run is not its seed's graded run"
+grep -q '"not_the_seeds_run": "teleoperated before Run"' "$work/r.json" || fail "the report does not say the run is not its seed's graded run"
+grep -q "teleoperated before Run: this run is no longer the graded run of its seed" "$work/run.log" || fail "the component did not say it"
 first_started=$(grep -m1 "^STATUS VACUUM_REFEREE.*started=1" "$work/bus.log") || fail "the referee never started the episode"
 last_waiting_sim=$(tail -n1 "$work/before_run.txt" | sed -n 's/.* sim=\([0-9.]*\) .*/\1/p')
 started_sim=$(echo "$first_started" | sed -n 's/.* sim=\([0-9.]*\) .*/\1/p')

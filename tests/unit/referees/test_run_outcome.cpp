@@ -80,3 +80,22 @@ TEST(RunOutcome, TheAlgorithmsLastWordIsInTheReportAsValidJson) {
   EXPECT_NE(outcome.summary().find("the algorithm said: stalled: 240 s"), std::string::npos) << outcome.summary();
   EXPECT_EQ(aula::referee::validUtf8("caf\xC3\xA9 \xF0\x9F\x93\x81 \xC3"), "caf\xC3\xA9 \xF0\x9F\x93\x81 \xEF\xBF\xBD");
 }
+
+// A windowed run the student teleoperated, stopped or reloaded is not its seed's graded run: the
+// report says why, with every reason the component gave, through a reload (issue 58).
+TEST(RunOutcome, AWindowedRunThatIsNotItsSeedsGradedRunSaysWhy) {
+  RunOutcome outcome;
+  Report plain;
+  outcome.onEpisode("reference", "", 0, 0);
+  outcome.addTo(plain);
+  EXPECT_EQ(plain.toJson().find("not_the_seeds_run"), std::string::npos) << "a run as its seed's says nothing";
+  outcome.onEpisode("reference", "", 0, 0, "", "teleoperated before Run");
+  outcome.onEpisode("reference", "", 0, 1, "", "teleoperated before Run; reloaded during the run");
+  outcome.onEpisode("reference", "", 0, 1, "", "");  // an older message, or one from before: the reasons stay
+  Report report;
+  outcome.addTo(report);
+  EXPECT_NE(report.toJson().find("\"not_the_seeds_run\": \"teleoperated before Run; reloaded during the run\""), std::string::npos)
+      << report.toJson();
+  EXPECT_NE(outcome.summary().find("not its seed's graded run: teleoperated before Run; reloaded during the run"), std::string::npos)
+      << outcome.summary();
+}

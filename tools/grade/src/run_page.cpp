@@ -107,6 +107,8 @@ std::vector<Diagnostic> runDiagnostics(const nlohmann::json& r) {
   if (r.contains("reloads") && r["reloads"].is_number() && r["reloads"].get<double>() > 0) {
     out.push_back({"reloaded", "the algorithm was reloaded " + r["reloads"].dump() + " time(s): the last episode was graded"});
   }
+  const std::string other_run = text("not_the_seeds_run");
+  if (!other_run.empty()) out.push_back({"not the graded run", "this run is not its seed's graded run (a headless run of it): " + other_run});
   if (r.value("finished", true) == false && failure.empty() && fault.empty() && aborted.empty()) {
     out.push_back({"ended early", "the run ended before the end of its episode"});
   }

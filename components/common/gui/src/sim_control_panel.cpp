@@ -5,16 +5,38 @@
 
 #include <QHBoxLayout>
 #include <QShortcut>
+#include <QVBoxLayout>
 
 #include <algorithm>
+#include <cstdio>
 #include <utility>
-#include <QLabel>
 
 namespace aula::component {
 
+namespace {
+
+std::string times(double factor) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3gx", factor);
+  return text;
+}
+
+}  // namespace
+
+std::string paceText(const aula::sim_clock_t& tick) {
+  // Paused (the button says so), not measured yet, as fast as possible: nothing to say.
+  if (tick.paused || !(tick.real_time_factor > 0) || !(tick.target_real_time_factor > 0)) return "";
+  // Within a tenth of the pace asked is keeping it (the measure is over the last second).
+  if (tick.real_time_factor >= 0.9 * tick.target_real_time_factor) return "";
+  return times(tick.real_time_factor) + ", not the " + times(tick.target_real_time_factor) +
+         " asked: the machine cannot keep up" + (tick.lockstep ? " (the run is the same, slower)" : "");
+}
+
 SimControlPanel::SimControlPanel(lcmbus::Bus& bus, QWidget* parent) : QWidget(parent), bus_(bus) {
-  auto* layout = new QHBoxLayout(this);
-  layout->setContentsMargins(0, 0, 0, 0);
+  auto* column = new QVBoxLayout(this);
+  column->setContentsMargins(0, 0, 0, 0);
+  auto* layout = new QHBoxLayout;
+  column->addLayout(layout);
   speed_ = new QComboBox(this);
   speed_->addItem("as started", -1.0);  // the run's --rtf until the student picks one
   speed_->addItem("1x real time", 1.0);
@@ -52,6 +74,25 @@ SimControlPanel::SimControlPanel(lcmbus::Bus& bus, QWidget* parent) : QWidget(pa
     });
   }
   speed_->setToolTip(speed_->toolTip() + " (Ctrl+] faster, Ctrl+[ slower)");
+  // Shown only while the machine cannot keep the pace: the window's layout is the same otherwise.
+  pace_ = new QLabel(this);
+  pace_->setWordWrap(true);
+  pace_->setStyleSheet("color: #b35c00;");
+  pace_->setToolTip("In lockstep the world waits for the algorithm and the referee at every control period: a "
+                    "slower run is the same run, and its report the headless run's of its seed");
+  pace_->hide();
+  column->addWidget(pace_);
+  clock_ = bus_.subscribe(lcmbus::kClockChannel, &SimControlPanel::onClock, this);
+}
+
+SimControlPanel::~SimControlPanel() { bus_.unsubscribe(clock_); }
+
+void SimControlPanel::onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick) {
+  const std::string text = paceText(*tick);
+  // The pump runs in the window's thread; the label changes only when its words do.
+  if (pace_->text().toStdString() == text) return;
+  pace_->setText(QString::fromStdString(text));
+  pace_->setVisible(!text.empty());
 }
 
 void SimControlPanel::send(int8_t command, double real_time_factor) {

@@ -26,6 +26,7 @@ class ControlLoop {
 
   int64_t simTimeUs() const { return client_.simTimeUs(); }
   bool clockSeen() const { return client_.clockSeen(); }
+  bool inLockstep() const { return client_.lockstep(); }  // the simulator waits for this tick's ack
   int64_t periodUs() const { return period_us_; }
   int64_t seed() const { return client_.lastTick().seed; }  // the run's seed (from SIM_CLOCK)
   // The simulator holds the world at its start (paused at sim time 0: `aula run` with windows

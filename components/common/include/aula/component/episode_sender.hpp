@@ -25,6 +25,7 @@ struct EpisodeState {
   int64_t started_utime = -1;                         // -1: not started
   std::optional<std::pair<double, double>> goal_xy_m;  // TeleTaxi's destination
   std::string status;  // what the algorithm says of where it stands (Autopark's api.status), or ""
+  std::string not_the_seeds_run;  // why the run is no longer its seed's graded run, or ""
 };
 
 // Where a robot starts in the world: a new episode puts it back there.
@@ -51,6 +52,7 @@ class EpisodeSender {
   int64_t last_utime_ = -1'000'000'000;
   bool changed_ = true;
   std::string last_status_;  // the status last sent: a new one is a change
+  std::string last_not_the_seeds_run_;
   int generation_ = 0;  // algorithm (re)loads: each is a new episode for the referee
 };
 

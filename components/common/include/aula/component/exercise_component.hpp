@@ -65,20 +65,36 @@ class ExerciseComponent {
   void setRunning(bool running) {
     if (running) releaseTheStart();
     loop_->setRunning(running);
-    if (running && started_utime_ < 0) started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
+    if (running && started_utime_ < 0) {
+      started_utime_ = loop_->simTimeUs();  // the referee's clock starts at Run
+      // Out of lockstep the world did not wait for the algorithm: its timing is the machine's.
+      if (loop_->clockSeen() && !loop_->inLockstep()) noteNotTheSeedsRun("not in lockstep (--lockstep=off)");
+    }
     episode_->markChanged();
   }
   bool running() const { return loop_->running(); }
+  // "Run my algorithm" or Stop pressed in a window (TeleTaxi's GO! and Stop): setRunning, and a
+  // stop, or a run again, inside the episode makes this run another than its seed's graded one.
+  void pressRun(bool on) {
+    if (on != running() && started_utime_ >= 0 && !episodeOver()) noteNotTheSeedsRun(on ? "run again after a stop" : "stopped during the episode");
+    setRunning(on);
+  }
   void teleoperate(double v_mps, double w_radps) {  // ignored while the algorithm runs
     if (running()) return;
-    if ((v_mps != 0 || w_radps != 0) && loop_->heldAtStart()) {
-      std::cerr << program_ << ": teleoperated before Run: this run is not the graded run of its seed "
-                << "(headless, the algorithm starts from the world as it was at 0 s)" << std::endl;
+    if (v_mps != 0 || w_radps != 0) {
+      if (started_utime_ < 0) {
+        noteNotTheSeedsRun("teleoperated before Run");  // headless, the algorithm starts from the world at 0 s
+      } else if (!episodeOver()) {
+        noteNotTheSeedsRun("teleoperated during the episode");
+      }
       releaseTheStart();
     }
     motors_->sendV(v_mps);
     motors_->sendW(w_radps);
   }
+  // Why this run is no longer its seed's graded run (a headless run of the seed), or "" while it
+  // is: the referee's report and every window's status say it (episode_t.not_the_seeds_run).
+  const std::string& notTheSeedsRun() const { return not_the_seeds_run_; }
   // Hot reload: loads the algorithm again (a plugin's new build), puts the robot back at its
   // start and starts a new episode, running again if it ran and the exercise allows it. False
   // when the new build cannot be used (the algorithm's fault says why).
@@ -86,6 +102,8 @@ class ExerciseComponent {
     if (host_->hung()) return false;  // a call is still stuck in it: the fault says so
     const bool was_running = running();
     setRunning(false);
+    // The new episode starts from the start pose at this sim time, not from the world at 0 s.
+    if (started_utime_ >= 0) noteNotTheSeedsRun("reloaded during the run");
     const bool loaded = host_->reload();
     started_utime_ = -1;  // the referee's clock starts again at the next Run
     const bool may_resume = startNewEpisode();
@@ -220,9 +238,19 @@ class ExerciseComponent {
       autostarted_ = true;
       if (prepareAutostart()) setRunning(true);
     }
-    episode_->tick(utime, {running(), started_utime_, episodeGoal(), algorithm_status_});
+    episode_->tick(utime, {running(), started_utime_, episodeGoal(), algorithm_status_, not_the_seeds_run_});
     publishPrinted(utime);
     if (on_tick_) on_tick_(utime);
+  }
+  // The referee has ended the current episode (what comes after it is not graded).
+  bool episodeOver() const {
+    const auto status = referee_status_->latest();
+    return status && status->finished;
+  }
+  void noteNotTheSeedsRun(const std::string& why) {
+    if (not_the_seeds_run_.find(why) != std::string::npos) return;
+    not_the_seeds_run_ += (not_the_seeds_run_.empty() ? "" : "; ") + why;
+    std::cerr << program_ << ": " << why << ": this run is no longer the graded run of its seed" << std::endl;
   }
   // What the algorithm printed during this tick's calls, on the bus (console_t), stamped with
   // the tick's sim time: the run's log keeps it, the referee's trace takes it to the player.
@@ -243,6 +271,7 @@ class ExerciseComponent {
   bool autostarted_ = false;
   static constexpr size_t kStatusBytes = 300;
   std::string algorithm_status_;  // algorithmStatus() after the last execute() that returned
+  std::string not_the_seeds_run_;  // "; "-joined, each reason once
   int64_t started_utime_ = -1;  // the first Run of this episode (-1: not yet)
   std::unique_ptr<Pose3dProxy> pose_;
   std::unique_ptr<MotorsProxy> motors_;

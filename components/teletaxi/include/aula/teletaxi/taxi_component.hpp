@@ -40,7 +40,7 @@ class TaxiComponent : public component::ExerciseComponent<TaxiAlgorithm> {
   // stands): the reason, and the process ends with exit code 2 (aula_app's runComponent).
   std::optional<std::string> refusal() const { return refusal_; }
   bool go(std::string* why = nullptr);  // "GO!": execute() every control period from now on
-  void stop() { setRunning(false); }     // "Stop": algorithm off, taxi stopped
+  void stop() { pressRun(false); }       // "Stop": algorithm off, taxi stopped
 
   Grid& grid() { return *grid_; }
   const component::Pose3dProxy& pose() const { return truePose(); }  // the taxi's API has it too

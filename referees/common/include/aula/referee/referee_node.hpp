@@ -74,6 +74,8 @@ class RefereeNode {
   void setOnFinished(std::function<void()> hook) { on_finished_ = std::move(hook); }
   // What the windows are told (referee_status_t): the time left, and how the episode ended.
   virtual EpisodeStatus status() const = 0;
+  // status() as the windows get it: with why the run is not its seed's graded run, when it is not.
+  EpisodeStatus statusForWindows() const;
   // The current episode's end as the referee's window shows it, kept as it was when the episode
   // ended (graded to its end, or stopped by a fault or an abort: the grading stopped there, the
   // simulator did not): the sim time graded, the final mark (the report's) and how it ended.

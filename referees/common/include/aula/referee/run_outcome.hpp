@@ -23,8 +23,10 @@ class RunOutcome {
  public:
   // True when `generation` starts a new episode: the caller then resets its grading.
   // `status`: what the algorithm last said of where it stands (episode_t.status).
+  // `not_the_seeds_run`: why the run is no longer its seed's graded run (teleoperated, stopped,
+  // reloaded, out of lockstep), or "" (episode_t's).
   bool onEpisode(const std::string& algorithm, const std::string& fault, int64_t non_finite_commands, int generation,
-                 const std::string& status = "");
+                 const std::string& status = "", const std::string& not_the_seeds_run = "");
   void abort(const std::string& reason);  // the first reason wins
   // The algorithm's fault told by the launcher (a crash's line), as if the episode had said it.
   void algorithmFailed(const std::string& fault);
@@ -36,6 +38,7 @@ class RunOutcome {
   const std::string& fault() const { return fault_; }
   const std::string& algorithmStatus() const { return status_; }
   const std::string& aborted() const { return aborted_; }
+  const std::string& notTheSeedsRun() const { return not_the_seeds_run_; }
   int generation() const { return generation_; }
   // The motor commands the component refused so far (not finite numbers, sent as 0).
   int64_t nonFiniteCommands() const { return non_finite_commands_; }
@@ -43,7 +46,7 @@ class RunOutcome {
   TruthGate& truth() { return truth_; }
   const TruthGate& truth() const { return truth_; }
   // The report's fields: algorithm, and when they apply algorithm_status, algorithm_error, aborted,
-  // non_finite_commands, reloads, tampering, truth_gaps; "finished" becomes false when the run
+  // non_finite_commands, reloads, not_the_seeds_run, tampering, truth_gaps; "finished" becomes false when the run
   // ended early.
   void addTo(Report& report) const;
   // The windows' status of an episode of `length_s` sim seconds: finished when graded to its end
@@ -56,7 +59,7 @@ class RunOutcome {
   std::vector<std::string> pictureNotes(const std::string& world_file, long long seed) const;
 
  private:
-  std::string algorithm_ = "unknown", fault_, aborted_, status_;
+  std::string algorithm_ = "unknown", fault_, aborted_, status_, not_the_seeds_run_;
   int64_t non_finite_commands_ = 0;
   int generation_ = 0;
   bool announced_ = false;

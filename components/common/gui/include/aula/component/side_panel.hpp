@@ -22,7 +22,7 @@ namespace aula::component {
 
 class SidePanel : public QWidget {
  public:
-  // `component`: an ExerciseComponent (algorithm(), bus(), reloadAlgorithm(), setRunning()).
+  // `component`: an ExerciseComponent (algorithm(), bus(), reloadAlgorithm(), pressRun()).
   template <class Component>
   SidePanel(Component& component, gui::Teleoperator& teleop, QWidget* parent = nullptr)
       : SidePanel(component.algorithm(), component.bus(),
@@ -30,7 +30,7 @@ class SidePanel : public QWidget {
                     teleop.stop();
                     return component.reloadAlgorithm();
                   },
-                  [&component](bool on) { component.setRunning(on); }, parent) {}
+                  [&component](bool on) { component.pressRun(on); }, parent) {}
 
   // At each refresh of the window: whether the algorithm runs, and the referee's latest word.
   void show(bool running, const std::optional<aula::referee_status_t>& referee);
