@@ -19,6 +19,7 @@
 #include <set>
 #include <stdexcept>
 
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -30,6 +31,10 @@
 namespace aula::component {
 
 namespace {
+
+// Whether this process runs under AddressSanitizer (scripts/sanitize-check.sh): its runtime is
+// loaded. (That build undefines __SANITIZE_ADDRESS__, for Eigen's sake: CMakeLists.txt.)
+bool underAddressSanitizer() { return ::dlsym(RTLD_DEFAULT, "__asan_init") != nullptr; }
 
 constexpr size_t kMaxReplyBytes = size_t{512} << 20;  // a belief's map at its largest, and the rest
 
@@ -356,8 +361,13 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
     return false;
   }
   // Its memory, in every run (a sandbox's limit is on the component already, and may be lower).
+  // Not in an AddressSanitizer build (scripts/sanitize-check.sh): its shadow memory is terabytes
+  // of address space, and under any such limit its first mapping fails.
   rlimit memory{};
-  if (budgets.memory_bytes > 0 && ::getrlimit(RLIMIT_AS, &memory) == 0 &&
+  if (underAddressSanitizer() && budgets.memory_bytes > 0) {
+    std::cerr << start.program << ": under AddressSanitizer the algorithm's process has no address-space limit "
+              << "(Component.Sandbox.Memory): the sanitizer's shadow memory would not fit in it" << std::endl;
+  } else if (budgets.memory_bytes > 0 && ::getrlimit(RLIMIT_AS, &memory) == 0 &&
       (memory.rlim_cur == RLIM_INFINITY || memory.rlim_cur > budgets.memory_bytes)) {
     memory.rlim_cur = budgets.memory_bytes;
     if (memory.rlim_max != RLIM_INFINITY && memory.rlim_max < memory.rlim_cur) memory.rlim_cur = memory.rlim_max;
