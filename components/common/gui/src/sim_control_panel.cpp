@@ -88,11 +88,12 @@ SimControlPanel::SimControlPanel(lcmbus::Bus& bus, QWidget* parent) : QWidget(pa
 SimControlPanel::~SimControlPanel() { bus_.unsubscribe(clock_); }
 
 void SimControlPanel::onClock(const lcm::ReceiveBuffer*, const std::string&, const aula::sim_clock_t* tick) {
-  const std::string text = paceText(*tick);
-  // The pump runs in the window's thread; the label changes only when its words do.
-  if (pace_->text().toStdString() == text) return;
-  pace_->setText(QString::fromStdString(text));
-  pace_->setVisible(!text.empty());
+  std::string text = paceText(*tick);
+  // The pump runs in the window's thread, a tick at a time; the label changes only when its words do.
+  if (text == pace_text_) return;
+  pace_text_ = std::move(text);
+  pace_->setText(QString::fromStdString(pace_text_));
+  pace_->setVisible(!pace_text_.empty());
 }
 
 void SimControlPanel::send(int8_t command, double real_time_factor) {

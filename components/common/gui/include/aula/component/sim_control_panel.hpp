@@ -38,6 +38,7 @@ class SimControlPanel : public QWidget {
   QPushButton* pause_;
   QPushButton* step_;
   QLabel* pace_;
+  std::string pace_text_;  // what pace_ says
   lcm::Subscription* clock_ = nullptr;
   bool paused_ = false;
 };
