@@ -432,3 +432,21 @@ TEST(HandIn, APythonFileThatCannotRunIsRefusedWithItsReason) {
   }
   fs::remove_all(dir);
 }
+
+// The feedback zip goes to the LMS: its entries carry a valid date (1980-01-01, not day 0, which
+// unzip shows as "1980-01-00" and strict readers refuse), and the same grade writes the same bytes.
+TEST(HandIn, AWrittenZipHasAValidDateAndTheSameBytesTwice) {
+  const fs::path dir = scratch();
+  const std::vector<ZipItem> items = {{"Ada Lovelace_12_assignsubmission_file_/vacuum-seed1.html", "<p>10</p>"}};
+  writeZip((dir / "a.zip").string(), items);
+  writeZip((dir / "b.zip").string(), items);
+  const std::string bytes = readAll(dir / "a.zip");
+  ASSERT_GT(bytes.size(), 14u);
+  // The local header's date (offset 12, little-endian): day 1-31 in bits 0-4, month 1-12 in 5-8.
+  const unsigned date = static_cast<unsigned char>(bytes[12]) | (static_cast<unsigned char>(bytes[13]) << 8);
+  EXPECT_GE(date & 31u, 1u);
+  EXPECT_GE((date >> 5) & 15u, 1u);
+  EXPECT_LE((date >> 5) & 15u, 12u);
+  EXPECT_EQ(bytes, readAll(dir / "b.zip"));
+  fs::remove_all(dir);
+}

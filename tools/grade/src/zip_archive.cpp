@@ -174,6 +174,10 @@ void writeZip(const std::string& path, const std::vector<ZipItem>& items) {
   bool ok = true;
   for (const ZipItem& item : items) {
     zip_fileinfo info{};
+    // A fixed, valid date (1980-01-01, DOS time's first day; zeros read as day 0): the same
+    // grade writes the same bytes.
+    info.tmz_date.tm_mday = 1;
+    info.tmz_date.tm_year = 1980;
     info.external_fa = static_cast<uLong>(item.unix_mode) << 16;
     // Made by Unix (3 << 8), so that readers take the high half of external_fa as the mode.
     ok = ok && zipOpenNewFileInZip4_64(zip, item.name.c_str(), &info, nullptr, 0, nullptr, 0, nullptr, Z_DEFLATED,
