@@ -1,6 +1,6 @@
 #include "aula/config/paths.hpp"
 
-#include <aula/config/config.hpp>
+#include <aula/config/config_error.hpp>
 
 #include <cerrno>
 #include <cstdio>

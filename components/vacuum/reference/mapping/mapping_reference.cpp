@@ -247,7 +247,7 @@ void MappingReference::localize(const component::LaserData& scan, double yaw, bo
 // axis the scan does not sharpen) the best fit is anywhere along it: only the sharp axes say
 // where the laser is. Beyond the gate, a fit is a jump: taken only when clearly better than the
 // best fit within the gate, and confirmed (confirmJump); else tracking goes on with that best
-// fit within the gate, and draws nothing. Measured under realistic noise (docs/performance.md):
+// fit within the gate, and draws nothing. Measured under realistic noise (CHANGELOG.md, "Performance history"):
 // a fixed 5 cm gate refused the true correction once the estimate had drifted along a corridor,
 // and the cleaner never corrected again.
 void MappingReference::correct(const component::LaserData& scan, double yaw_s, Point2 predicted, double w_max,

@@ -31,9 +31,6 @@
 
 namespace aula::component {
 
-struct AlgorithmBudgets;
-enum class CallKind;
-
 // What the algorithm's process is told once, at its start.
 struct BoxStart {
   std::string program;   // the component's name ("vacuum-cleaner"), for the same messages
@@ -121,6 +118,10 @@ void writeFrame(int fd, const std::string& bytes);
 // The descriptors the algorithm's process is given.
 constexpr int kBoxSocketFd = process::ChildProcess::passedFd(0);
 constexpr int kBoxLineFd = process::ChildProcess::passedFd(1);
+// The largest frame a reply or a call may be: a belief's map at its largest, and the rest.
+constexpr size_t kMaxReplyBytes = size_t{512} << 20;
+// The start, written by the component and read by the algorithm's process: the same at both ends.
+void ioStart(BoxWire& wire, BoxStart& start, AlgorithmBudgets& budgets);
 // Messages of the protocol, the first byte of a frame.
 enum class BoxMessage : uint8_t { Start = 1, Loaded = 2, Refused = 3, Call = 4, Reply = 5 };
 

@@ -38,6 +38,23 @@ struct RunBudget {
   double blocked_s = 0;
 };
 
+// What the student's calls may use (the Component.*Budget settings): creating the algorithm
+// (loading the file, its imports, the constructor or __init__), each execute(), each call that
+// plans (TeleTaxi's generatePath()), and all of them over the run.
+struct AlgorithmBudgets {
+  CallBudget start{60, 10, "Component.StartBudget"};
+  CallBudget execute{2, 10, "Component.ExecuteBudget"};
+  CallBudget plan{60, 10, "Component.PlanBudget"};
+  RunBudget run{600, 60};
+  // The address space the algorithm's own process may map (RLIMIT_AS, Component.Sandbox.Memory),
+  // in every run, sandboxed or not: a plain `aula run` of a runaway Python program stops there,
+  // not at the machine's memory. 0: no limit of its own.
+  uint64_t memory_bytes = 0;
+};
+
+// Which budget a call has.
+enum class CallKind { Execute, Plan };
+
 // Where a thread is, as the kernel says (/proc/self/task/TID/stat): blocked means sleeping or
 // waiting (S, D), never runnable (R, waiting for a CPU or on one).
 bool threadBlocked(pid_t tid);

@@ -3,19 +3,14 @@
 // Every value remembers where it came from (file:line or the command line), so that an error
 // names the file, the line, the key and what is wrong.
 
+#include <aula/config/config_error.hpp>
+
 #include <map>
-#include <stdexcept>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace aula::config {
-
-// Malformed file, missing key or a value of the wrong type. Processes exit with code 2.
-class ConfigError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class Config {
  public:
