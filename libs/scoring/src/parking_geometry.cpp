@@ -41,6 +41,16 @@ double highestY(const world::StaticObject& s) {
   return y;
 }
 
+// The same rectangle with its length the side nearer the street's x axis: a car mesh whose own
+// axes run across, turned 1.57 rad in the file (RoboticsAcademy's opel), is 4.9 m long along x.
+OrientedBox lengthAlongX(OrientedBox box) {
+  if (std::abs(std::sin(box.centre.yaw_rad)) > std::abs(std::cos(box.centre.yaw_rad))) {
+    std::swap(box.length_m, box.width_m);
+    box.centre.yaw_rad = geometry::wrapAngle(box.centre.yaw_rad - M_PI / 2);
+  }
+  return box;
+}
+
 // How far a street with no curb runs past its first and last parked cars.
 constexpr double kStreetEndM = 10.0;
 
@@ -103,7 +113,7 @@ ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::s
     const bool between = !alongTheStreet(s) && lowestY(s) >= scene.curb_y_m - 0.05 && highestY(s) < start_y &&
                          x > scene.street_west_x_m && x < scene.street_east_x_m;
     if (names.car_prefix.empty() ? between : s.name.rfind(names.car_prefix, 0) == 0) {
-      parked.push_back(footprintOf(s));
+      parked.push_back(lengthAlongX(footprintOf(s)));
       outer_y = std::min(outer_y, lowestY(s));
     }
   }

@@ -8,16 +8,22 @@
 //   <sdf><world name>         exactly one; <physics><max_step_size> (only when stated);
 //                             <aula:destination name="N">X Y</aula:destination>; <population>s
 //                             (expanded into their models as Gazebo does)
-//   <model name>              <static>, <pose>, <link>s, nested <model>s and <include>s, <plugin>s
+//   <model name>              <static>, <pose>, <link>s, nested <model>s and <include>s, <plugin>s;
+//                             not static with no drive (Aula's or Gazebo's): kept still as static geometry
 //   <include>                 <uri> (model://NAME[/FILE] on the model path, or an absolute path /
 //                             file://), and the included model's <name>, <pose>, <static>, <plugin>s;
-//                             a model folder's newest SDF file in its model.config
+//                             a model folder's newest SDF file in its model.config; Gazebo's built-in
+//                             model://ground_plane and model://sun when no folder has them (skipped)
 //   <link name>               <pose>, <inertial><mass> (default 1 kg), <collision>s
 //   <collision name>          <pose>, <geometry> <box><size> | <cylinder><radius><length> |
 //                             <mesh><uri><scale><submesh> (mesh.hpp) | <plane> (a ground plane: skipped)
 //   <plugin name filename>    every child element kept as trimmed text (a driver's keys)
 //   <pose>                    "x y z roll pitch yaw" (radians; degrees="true"), or with
-//                             rotation_format="quat_xyzw" "x y z qx qy qz qw"; `relative_to` is refused
+//                             rotation_format="quat_xyzw" "x y z qx qy qz qw"; `relative_to` naming a
+//                             link, joint or <frame> of the model (SDF 1.7), refused on a model's own pose
+//   a Gazebo drive plugin      the model is Aula's robot of that kind (addGazeboRobot): all its links'
+//                             collisions its shape, its level ray sensors its lasers, an Ackermann
+//                             drive's wheel joints its wheelbase
 // What Gazebo reads and Aula does not simulate (visuals, lights, sky, GUI, sensors, joints, world
 // plugins, engine settings) is skipped and listed, one line per kind (WorldSpec::skipped). An
 // attribute value without quotes, which Gazebo's TinyXML takes, is read as if quoted. Problems do
