@@ -132,6 +132,7 @@ class Reader {
   void addGazeboRobot(const Model& model, WorldSpec& spec);
   void gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body,
                      const std::optional<CarNumbers>& car, RobotSpec& robot);
+  void gazeboLasers(const Model& model, const Eigen::Isometry3d& body, RobotSpec& robot);
   void outlineOf(const XMLElement* link, const Model& model, const char* kind, const std::string& where,
                  std::vector<Eigen::Vector3d>& points);
   CarNumbers ackermannCar(const Model& model, const XMLElement* drive, double& heading, Eigen::Vector3d& rear_axle) const;
@@ -912,6 +913,16 @@ std::string facing(double yaw_rad) {
   return "";
 }
 
+// A driver of a robot that its Gazebo plugins make.
+void addDriver(RobotSpec& robot, const std::string& name, const std::string& type, std::map<std::string, std::string> params) {
+  PluginSpec spec;
+  spec.name = name;
+  spec.type = type;
+  spec.owner = robot.name;
+  spec.params = std::move(params);
+  robot.plugins.push_back(std::move(spec));
+}
+
 std::string decimal(double value) {
   std::ostringstream out;
   out.precision(17);
@@ -931,19 +942,12 @@ std::string decimal(double value) {
 // sensor's name. Its other Gazebo plugins and sensors are listed among what is skipped.
 void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body,
                            const std::optional<CarNumbers>& car, RobotSpec& robot) {
-  const std::string file = model.file;
-  const std::string where = world_path_ + ": model '" + model.name + "'";
   const std::string prefix = upper(model.name);
   for (const auto& [p, plugin_file] : model.plugins) {
     if (p != drive) skip(p, plugin_file, "Gazebo <plugin filename=\"" + attribute(p, "filename") + "\"> of a robot", "its drive plugin makes the robot's drivers");
   }
   auto add = [&](const std::string& name, const std::string& type, std::map<std::string, std::string> params) {
-    PluginSpec spec;
-    spec.name = name;
-    spec.type = type;
-    spec.owner = model.name;
-    spec.params = std::move(params);
-    robot.plugins.push_back(std::move(spec));
+    addDriver(robot, name, type, std::move(params));
   };
   add("pose3d", "pose3d", {{"channel", prefix + "_POSE"}});
   std::map<std::string, std::string> motors = {{"channel", prefix + "_MOTORS"}};
@@ -960,6 +964,14 @@ void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Ei
   }
   add("motors", "motors", motors);
   add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
+  gazeboLasers(model, body, robot);
+}
+
+// The lasers of a robot known by its Gazebo plugins (gazeboDrivers), from its links' level rays.
+void Reader::gazeboLasers(const Model& model, const Eigen::Isometry3d& body, RobotSpec& robot) {
+  const std::string& file = model.file;
+  const std::string where = world_path_ + ": model '" + model.name + "'";
+  const std::string prefix = upper(model.name);
   struct Laser {
     std::string sensor, side;  // its <sensor>'s name, where it faces
     std::map<std::string, std::string> params;
@@ -1016,7 +1028,7 @@ void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Ei
       return other.sensor == laser.side && &other != &laser;
     });
     const bool by_side = !laser.side.empty() && facings[laser.side] == 1 && !taken;
-    add(by_side ? laser.side : laser.sensor, "laser", laser.params);
+    addDriver(robot, by_side ? laser.side : laser.sensor, "laser", laser.params);
   }
 }
 
