@@ -1,6 +1,7 @@
 // The Autopark exercise, headless in lockstep: `aula run autopark` with the reference solutions
 // (about 1 s wall per run). The referee grades from the true geometry and DART contacts.
 #include "test_support.hpp"
+#include "../unit/support/mesh_files.hpp"
 
 #include <aula/process/child_process.hpp>
 
@@ -8,6 +9,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -153,4 +156,58 @@ TEST(AutoparkRun, AStreetWhoseCurbAndCarsHaveOtherNamesRuns) {
                                                           "--Autopark.Referee.CarPrefix=van_"});
   expectParkedWell(named);
   EXPECT_NEAR(jsonNumber(named, "slot_length_m"), 8.6, 1e-6) << named;
+}
+
+// RoboticsAcademy's street as a teacher brings it, with RoboticsInfrastructure's kind of car: seven
+// COLLADA cars turned 1.57 rad, <static>false</static>, no plugin (kept still); no curb; a car of
+// seven links placed with relative_to, built along its own +y, driven by
+// libgazebo_ros_ackermann_drive.so, its three lasers <sensor>s; model://ground_plane and
+// model://sun with no folder. The planner parks it with no contact. Every file is written here.
+TEST(AutoparkRun, PlannerParksAGazeboAckermannCarOnAStreetOfMeshCarsWithNoCurb) {
+  const std::string dir = aula::testing::privateDir();
+  std::filesystem::create_directories(dir + "/models/car_mesh/meshes");
+  std::filesystem::create_directories(dir + "/models/gz_car");
+  aula::testing::writeCollada(dir + "/models/car_mesh/meshes/car.dae",
+                              {aula::testing::boxTriangles({{{-1.1, -2.45, 0}, {1.1, 2.45, 1.6}}})}, {"car"});
+  std::ofstream(dir + "/models/car_mesh/model.config") << "<model><sdf version='1.4'>model.sdf</sdf></model>";
+  std::ofstream(dir + "/models/car_mesh/model.sdf") << "<sdf version='1.4'><model name='car_mesh'><static>true</static></model></sdf>";
+  auto laser = [](const std::string& name, const std::string& pose) {
+    return "<sensor name='" + name + "' type='ray'><pose relative_to='chassis'>" + pose + "</pose><update_rate>20</update_rate>"
+           "<ray><scan><horizontal><samples>180</samples><min_angle>-1.570796</min_angle><max_angle>1.570796</max_angle>"
+           "</horizontal></scan><range><min>0.12</min><max>30</max></range><noise><type>gaussian</type><stddev>0.01</stddev>"
+           "</noise></ray></sensor>";
+  };
+  auto wheel = [](const std::string& name, const std::string& at) {
+    return "<joint name='" + name + "_axle' type='revolute'><pose relative_to='chassis'>" + at + " 0.3 0 0 0</pose>"
+           "<parent>chassis</parent><child>" + name + "</child></joint><link name='" + name + "'><pose relative_to='" + name +
+           "_axle'/><inertial><mass>20</mass></inertial><collision name='c'><pose relative_to='" + name + "_axle'>0 0 0 0 1.5708 0"
+           "</pose><geometry><cylinder><radius>0.3</radius><length>0.2</length></cylinder></geometry></collision></link>";
+  };
+  std::ofstream(dir + "/models/gz_car/model.config") << "<model><sdf version='1.5'>model.sdf</sdf></model>";
+  std::ofstream(dir + "/models/gz_car/model.sdf")
+      << "<sdf version='1.5'><model name='gz_car'><link name='base_link'/><link name='chassis'><inertial><mass>1200</mass>"
+         "</inertial><collision name='body'><pose>0 0.1 0.75 0 0 0</pose><geometry><box><size>1.8 4.4 1.3</size></box></geometry>"
+         "</collision>" + laser("front", "0 2.35 0.5 0 0 1.5708") + laser("back", "0 -2.15 0.5 0 0 -1.5708") +
+             laser("side", "0.95 0.1 0.5 0 0 0") + "</link>" + wheel("fl", "-0.75 1.45") + wheel("fr", "0.75 1.45") +
+             wheel("rl", "-0.75 -1.15") + wheel("rr", "0.75 -1.15") +
+             "<plugin name='drive' filename='libgazebo_ros_ackermann_drive.so'><front_left_joint>fl_axle</front_left_joint>"
+             "<front_right_joint>fr_axle</front_right_joint><rear_left_joint>rl_axle</rear_left_joint>"
+             "<rear_right_joint>rr_axle</rear_right_joint><max_steer>0.5</max_steer><max_speed>20</max_speed></plugin></model></sdf>";
+  std::string cars;
+  int n = 0;
+  for (const double x : {-20.0, -13.5, -7.0, 0.5, 14.0, 21.5, 29.0}) {
+    cars += "<model name='car" + std::to_string(++n) + "'><pose>" + std::to_string(x) +
+            " -3 0 0 0 1.57</pose><static>false</static><link name='l'><collision name='c'><geometry><mesh>"
+            "<uri>model://car_mesh/meshes/car.dae</uri></mesh></geometry></collision></link></model>\n";
+  }
+  const std::string world = dir + "/ra_street.world";
+  std::ofstream(world) << "<?xml version='1.0'?>\n<sdf version='1.4'><world name='default'>\n"
+                          "<include><uri>model://ground_plane</uri></include><include><uri>model://sun</uri></include>\n"
+                          "<include><uri>model://gz_car</uri><pose>-7 2.5 0.02 0 0 -1.5708</pose></include>\n" + cars +
+                              "</world></sdf>\n";
+  setenv("AULA_MODEL_PATH", (dir + "/models").c_str(), 1);
+  const std::string run = runAutopark("gazebo_car", {"--algorithm=planner", "--seed=1", "--world=" + world});
+  unsetenv("AULA_MODEL_PATH");
+  expectParkedWell(run);
+  EXPECT_NEAR(jsonNumber(run, "slot_length_m"), 8.6, 0.05) << run;  // between the meshes, 4.9 m long
 }

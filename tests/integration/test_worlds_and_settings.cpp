@@ -367,12 +367,20 @@ TEST(Worlds, CheckWorldOnAStreetWithoutACurbSaysWhatIsMissing) {
   std::string street = readFile(kWorlds + "autopark.world");
   street = std::regex_replace(street, std::regex("<(collision|visual) name=\"curb_parking_side\">.*\n"), "");
   ASSERT_EQ(street.find("curb_parking_side"), std::string::npos);
+  // With no curb (as RoboticsAcademy's street), the parking line is the parked cars' far side.
   writeFile(dir + "/no_curb.world", street);
-  const Outcome out = runToEnd({kBin + "/aula", "check-world", dir + "/no_curb.world", "--exercise=autopark"}, 20s);
+  const Outcome no_curb = runToEnd({kBin + "/aula", "check-world", dir + "/no_curb.world", "--exercise=autopark"}, 20s);
+  EXPECT_EQ(no_curb.code.value_or(-1), 0) << no_curb.output;
+  EXPECT_NE(no_curb.output.find("autopark: ok"), std::string::npos) << no_curb.output;
+  // With no curb and one parked car, there is no slot.
+  street = std::regex_replace(street, std::regex("<include>\\s*<uri>model://parked_car</uri>\\s*<name>parked_car_[1-6]</name>[^]*?</include>"), "");
+  ASSERT_EQ(street.find("parked_car_1"), std::string::npos);
+  writeFile(dir + "/one_car.world", street);
+  const Outcome out = runToEnd({kBin + "/aula", "check-world", dir + "/one_car.world", "--exercise=autopark"}, 20s);
   EXPECT_EQ(out.code.value_or(-1), 1) << out.output;
   EXPECT_NE(out.output.find("autopark: cannot run; the world needs its street for the referee: " + dir +
-                            "/no_curb.world: no curb on the parking side (a static box along the street, x, below the "
-                            "car's start, y < 2.50 m; or name its collision with Autopark.Referee.Curb)"),
+                            "/one_car.world: needs at least two parked cars (static boxes or meshes between the parking-side "
+                            "curb, if any, and the car's start; or name them with Autopark.Referee.CarPrefix)"),
             std::string::npos)
       << out.output;
   // The shipped street: ok.

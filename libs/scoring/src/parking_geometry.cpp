@@ -41,16 +41,23 @@ double highestY(const world::StaticObject& s) {
   return y;
 }
 
+// The same rectangle with its length the side nearer the street's x axis: a car mesh whose own
+// axes run across, turned 1.57 rad in the file (RoboticsAcademy's opel), is 4.9 m long along x.
+OrientedBox lengthAlongX(OrientedBox box) {
+  if (std::abs(std::sin(box.centre.yaw_rad)) > std::abs(std::cos(box.centre.yaw_rad))) {
+    std::swap(box.length_m, box.width_m);
+    box.centre.yaw_rad = geometry::wrapAngle(box.centre.yaw_rad - M_PI / 2);
+  }
+  return box;
+}
+
+// How far a street with no curb runs past its first and last parked cars.
+constexpr double kStreetEndM = 10.0;
+
 // A curb: a box along the street (x), at least three times as long as wide.
 bool alongTheStreet(const world::StaticObject& s) {
   const OrientedBox f = footprintOf(s);
   return std::abs(std::sin(f.centre.yaw_rad)) < 0.05 && f.length_m >= 3 * f.width_m;
-}
-
-std::string yText(double y_m) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", y_m);
-  return text;
 }
 
 bool named(const std::string& full, const std::string& name) {
@@ -86,30 +93,46 @@ ParkingScene ParkingScene::fromWorld(const world::WorldSpec& world, const std::s
   ParkingScene scene;
   const world::StaticObject* far_curb = nullptr;
   const world::StaticObject* curb = findCurbs(world, start_y, names.curb, far_curb);
-  if (curb == nullptr) {
-    throw world::WorldError(where + (names.curb.empty()
-                                         ? ": no curb on the parking side (a static box along the street, x, below the "
-                                           "car's start, y < " + yText(start_y) + " m; or name its collision "
-                                           "with Autopark.Referee.Curb)"
-                                         : ": no box collision named '" + names.curb + "' (Autopark.Referee.Curb)"));
+  if (curb == nullptr && !names.curb.empty()) {
+    throw world::WorldError(where + ": no box collision named '" + names.curb + "' (Autopark.Referee.Curb)");
   }
-  scene.curb_name = curb->name;
-  scene.curb_y_m = highestY(*curb);
-  scene.street_west_x_m = footprintOf(*curb).centre.x_m - footprintOf(*curb).length_m / 2;
-  scene.street_east_x_m = footprintOf(*curb).centre.x_m + footprintOf(*curb).length_m / 2;
+  if (curb != nullptr) {
+    scene.curb_name = curb->name;
+    scene.curb_y_m = highestY(*curb);
+    scene.street_west_x_m = footprintOf(*curb).centre.x_m - footprintOf(*curb).length_m / 2;
+    scene.street_east_x_m = footprintOf(*curb).centre.x_m + footprintOf(*curb).length_m / 2;
+  } else {
+    scene.curb_y_m = -std::numeric_limits<double>::infinity();  // no curb (RoboticsAcademy's street): set below
+  }
   if (far_curb != nullptr) scene.far_curb_y_m = lowestY(*far_curb);
   std::vector<OrientedBox> parked;
+  double outer_y = std::numeric_limits<double>::infinity();  // the parked cars' far side
   for (const auto& s : world.statics) {
     if (!streetPart(s) || &s == curb) continue;
     const double x = footprintOf(s).centre.x_m;
     const bool between = !alongTheStreet(s) && lowestY(s) >= scene.curb_y_m - 0.05 && highestY(s) < start_y &&
                          x > scene.street_west_x_m && x < scene.street_east_x_m;
-    if (names.car_prefix.empty() ? between : s.name.rfind(names.car_prefix, 0) == 0) parked.push_back(footprintOf(s));
+    if (names.car_prefix.empty() ? between : s.name.rfind(names.car_prefix, 0) == 0) {
+      parked.push_back(lengthAlongX(footprintOf(s)));
+      outer_y = std::min(outer_y, lowestY(s));
+    }
+  }
+  if (curb == nullptr && !parked.empty()) {
+    // With no curb, the parking line is the parked cars' far side (where the thesis's referee put the
+    // curb of RoboticsAcademy's street), and the street is as long as its row of cars.
+    scene.curb_y_m = outer_y;
+    scene.street_west_x_m = std::min_element(parked.begin(), parked.end(), [](const auto& a, const auto& b) {
+                              return a.centre.x_m < b.centre.x_m;
+                            })->centre.x_m - kStreetEndM;
+    scene.street_east_x_m = std::max_element(parked.begin(), parked.end(), [](const auto& a, const auto& b) {
+                              return a.centre.x_m < b.centre.x_m;
+                            })->centre.x_m + kStreetEndM;
   }
   if (parked.size() < 2) {
     throw world::WorldError(where + (names.car_prefix.empty()
-                                         ? ": needs at least two parked cars (static boxes between the parking-side "
-                                           "curb and the car's start; or name them with Autopark.Referee.CarPrefix)"
+                                         ? ": needs at least two parked cars (static boxes or meshes between the "
+                                           "parking-side curb, if any, and the car's start; or name them with "
+                                           "Autopark.Referee.CarPrefix)"
                                          : ": needs at least two static models named " + names.car_prefix +
                                                "* (Autopark.Referee.CarPrefix)"));
   }
@@ -160,7 +183,7 @@ double contactDepthM(const ParkingScene& scene, double x_m, double y_m, double y
   double deepest = 0;
   for (const auto& parked : scene.parked_cars) deepest = std::max(deepest, geometry::penetration(car, parked));
   for (const auto& p : car.corners()) {
-    deepest = std::max({deepest, scene.curb_y_m - p.y(), p.y() - scene.far_curb_y_m});
+    deepest = std::max({deepest, scene.curb_name.empty() ? 0.0 : scene.curb_y_m - p.y(), p.y() - scene.far_curb_y_m});
   }
   return deepest;
 }

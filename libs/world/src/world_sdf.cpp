@@ -8,16 +8,22 @@
 //   <sdf><world name>         exactly one; <physics><max_step_size> (only when stated);
 //                             <aula:destination name="N">X Y</aula:destination>; <population>s
 //                             (expanded into their models as Gazebo does)
-//   <model name>              <static>, <pose>, <link>s, nested <model>s and <include>s, <plugin>s
+//   <model name>              <static>, <pose>, <link>s, nested <model>s and <include>s, <plugin>s;
+//                             not static with no drive (Aula's or Gazebo's): kept still as static geometry
 //   <include>                 <uri> (model://NAME[/FILE] on the model path, or an absolute path /
 //                             file://), and the included model's <name>, <pose>, <static>, <plugin>s;
-//                             a model folder's newest SDF file in its model.config
+//                             a model folder's newest SDF file in its model.config; Gazebo's built-in
+//                             model://ground_plane and model://sun when no folder has them (skipped)
 //   <link name>               <pose>, <inertial><mass> (default 1 kg), <collision>s
 //   <collision name>          <pose>, <geometry> <box><size> | <cylinder><radius><length> |
 //                             <mesh><uri><scale><submesh> (mesh.hpp) | <plane> (a ground plane: skipped)
 //   <plugin name filename>    every child element kept as trimmed text (a driver's keys)
 //   <pose>                    "x y z roll pitch yaw" (radians; degrees="true"), or with
-//                             rotation_format="quat_xyzw" "x y z qx qy qz qw"; `relative_to` is refused
+//                             rotation_format="quat_xyzw" "x y z qx qy qz qw"; `relative_to` naming a
+//                             link, joint or <frame> of the model (SDF 1.7), refused on a model's own pose
+//   a Gazebo drive plugin      the model is Aula's robot of that kind (addGazeboRobot): all its links'
+//                             collisions its shape, its level ray sensors its lasers, an Ackermann
+//                             drive's wheel joints its wheelbase
 // What Gazebo reads and Aula does not simulate (visuals, lights, sky, GUI, sensors, joints, world
 // plugins, engine settings) is skipped and listed, one line per kind (WorldSpec::skipped). An
 // attribute value without quotes, which Gazebo's TinyXML takes, is read as if quoted. Problems do
@@ -61,6 +67,18 @@ std::string attribute(const XMLElement* e, const char* name) {
   return value != nullptr ? value : "";
 }
 
+// The frame a <pose relative_to="..."> child of `e` names ("" when none).
+std::string relativeTo(const XMLElement* e) {
+  const XMLElement* pose = e->FirstChildElement("pose");
+  const char* frame = pose != nullptr ? pose->Attribute("relative_to") : nullptr;
+  return frame != nullptr ? frame : "";
+}
+
+// An Ackermann car's numbers, as its Gazebo plugin gives them (ackermannCar).
+struct CarNumbers {
+  double wheelbase_m = 0, max_steer_rad = 0, rear_axle_x_m = 0, max_speed_mps = 0;
+};
+
 // Every file read, kept open while the world is read: errors name an element's file and line.
 class Reader {
  public:
@@ -93,7 +111,11 @@ class Reader {
   std::vector<double> numbers(const std::string& text, const XMLElement* e, const std::string& file,
                               const std::string& where) const;
   bool boolean(const XMLElement* e, const std::string& file, const std::string& where, bool fallback) const;
-  Eigen::Isometry3d poseOf(const XMLElement* parent, const std::string& file, const std::string& where) const;
+  Eigen::Isometry3d poseOf(const XMLElement* parent, const std::string& file, const std::string& where,
+                           bool frames_known = false) const;
+  Eigen::Isometry3d frameOf(const Model& model, const std::string& name, const std::string& where, int depth = 0) const;
+  Eigen::Isometry3d placed(const XMLElement* e, const Model& model, const std::string& fallback, const std::string& where,
+                           int depth = 0) const;
   std::string nameOf(const XMLElement* e, const std::string& file, const std::string& where) const;
   Shape shapeOf(const XMLElement* collision, const std::string& file, const std::string& where, bool* is_plane);
   Shape meshOf(const XMLElement* mesh, const std::string& file, const std::string& where);
@@ -104,10 +126,16 @@ class Reader {
   std::vector<PluginSpec> pluginsOf(const Model& model, const std::string& where) const;
   void addStatics(const Model& model, const Eigen::Isometry3d& model_pose, const std::string& prefix, WorldSpec& spec);
   void addModel(const Model& model, WorldSpec& spec);
+  static bool keptStill(const Model& model);
   void addRobot(const Model& model, WorldSpec& spec);
   void addRobotOrThrow(const Model& model, WorldSpec& spec);
   void addGazeboRobot(const Model& model, WorldSpec& spec);
-  void gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body_pose, RobotSpec& robot);
+  void gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body,
+                     const std::optional<CarNumbers>& car, RobotSpec& robot);
+  void gazeboLasers(const Model& model, const Eigen::Isometry3d& body, RobotSpec& robot);
+  void outlineOf(const XMLElement* link, const Model& model, const char* kind, const std::string& where,
+                 std::vector<Eigen::Vector3d>& points);
+  CarNumbers ackermannCar(const Model& model, const XMLElement* drive, double& heading, Eigen::Vector3d& rear_axle) const;
   void readDestinations(const XMLElement* world, WorldSpec& spec) const;
 
   std::string world_path_;
@@ -126,13 +154,29 @@ class Reader {
 };
 
 // Gazebo's drive plugins Aula knows a robot by, and the kind of Aula robot each makes: a
-// planar-move robot is holonomic (moves sideways too), a differential or skid-steer drive is not.
-const std::map<std::string, bool>& gazeboDrives() {
-  static const std::map<std::string, bool> holonomic = {
-      {"libgazebo_ros_planar_move.so", true}, {"libgazebo_ros_diff_drive.so", false},
-      {"libgazebo_ros_skid_steer_drive.so", false}, {"libgazebo_ros_tricycle_drive.so", false},
-      {"gz-sim-diff-drive-system", false}, {"ignition-gazebo-diff-drive-system", false}};
-  return holonomic;
+// planar-move robot is holonomic (moves sideways too), a differential or skid-steer drive is not,
+// an Ackermann drive is a car (it turns about its rear axle, no tighter than its steering allows).
+enum class Drive { Diff, Holonomic, Ackermann };
+const std::map<std::string, Drive>& gazeboDrives() {
+  static const std::map<std::string, Drive> kinds = {
+      {"libgazebo_ros_planar_move.so", Drive::Holonomic}, {"libgazebo_ros_diff_drive.so", Drive::Diff},
+      {"libgazebo_ros_skid_steer_drive.so", Drive::Diff}, {"libgazebo_ros_tricycle_drive.so", Drive::Diff},
+      {"gz-sim-diff-drive-system", Drive::Diff}, {"ignition-gazebo-diff-drive-system", Drive::Diff},
+      {"libgazebo_ros_ackermann_drive.so", Drive::Ackermann}};
+  return kinds;
+}
+
+bool hasGazeboDrive(const std::vector<std::pair<const XMLElement*, std::string>>& plugins) {
+  return std::any_of(plugins.begin(), plugins.end(), [](const auto& p) {
+    const char* filename = p.first->Attribute("filename");
+    return filename != nullptr && gazeboDrives().count(filename) != 0;
+  });
+}
+
+// A plugin file of Gazebo's or ROS's (libNAME.so, gz-sim-..., ignition-gazebo-...), not a driver of Aula's.
+bool gazeboLibrary(const std::string& filename) {
+  const bool so = filename.size() > 6 && filename.rfind("lib", 0) == 0 && filename.compare(filename.size() - 3, 3, ".so") == 0;
+  return so || filename.rfind("gz-", 0) == 0 || filename.rfind("ignition-", 0) == 0;
 }
 
 // What Aula does not simulate, by element: said once per kind, with the reason.
@@ -361,13 +405,15 @@ Eigen::Isometry3d fromRpy(double x, double y, double z, double roll, double pitc
                   std::cos(phi) * std::cos(the) * std::sin(psi) - std::sin(phi) * std::sin(the) * std::cos(psi));
 }
 
-// The <pose> child of `parent` (identity when there is none).
-Eigen::Isometry3d Reader::poseOf(const XMLElement* parent, const std::string& file, const std::string& where) const {
+// The <pose> child of `parent` (identity when there is none). `relative_to` is read where a model's
+// frames are known (placed()); elsewhere it is refused.
+Eigen::Isometry3d Reader::poseOf(const XMLElement* parent, const std::string& file, const std::string& where,
+                                 bool frames_known) const {
   const XMLElement* e = parent->FirstChildElement("pose");
   if (e == nullptr) return Eigen::Isometry3d::Identity();
   const std::string relative_to = attribute(e, "relative_to");
-  if (!relative_to.empty()) {
-    fail(where, "<pose relative_to=\"" + relative_to + "\"> is not supported; give poses relative to the parent element", e, file);
+  if (!relative_to.empty() && !frames_known) {
+    fail(where, "<pose relative_to=\"" + relative_to + "\"> is only read inside a model (naming its link, joint or frame)", e, file);
   }
   const std::vector<double> v = numbers(textOf(e), e, file, where);
   const std::string format = attribute(e, "rotation_format");
@@ -386,6 +432,35 @@ Eigen::Isometry3d Reader::poseOf(const XMLElement* parent, const std::string& fi
   }
   const double k = in_degrees ? M_PI / 180.0 : 1.0;
   return fromRpy(v[0], v[1], v[2], v[3] * k, v[4] * k, v[5] * k);
+}
+
+// The pose in `model`'s frame of its frame `name` (a <link>, <joint> or <frame>), as SDF 1.7 reads
+// relative_to: a link is placed in the model's frame, a joint in its child link's, a frame in what
+// it is attached to, unless their own relative_to names another (RoboticsInfrastructure's Ackermann
+// cars place every wheel so).
+Eigen::Isometry3d Reader::frameOf(const Model& model, const std::string& name, const std::string& where, int depth) const {
+  if (name.empty() || name == "__model__") return Eigen::Isometry3d::Identity();
+  if (depth > 32) fail(where, "relative_to='" + name + "': the frames name each other in a cycle", model.element, model.file);
+  for (const char* kind : {"link", "joint", "frame"}) {
+    for (const XMLElement* e = model.element->FirstChildElement(kind); e != nullptr; e = e->NextSiblingElement(kind)) {
+      if (attribute(e, "name") != name) continue;
+      const std::string fallback = std::string(kind) == "joint"   ? textOf(e->FirstChildElement("child"))
+                                   : std::string(kind) == "frame" ? attribute(e, "attached_to")
+                                                                  : std::string();
+      return placed(e, model, fallback, where, depth + 1);
+    }
+  }
+  fail(where, "relative_to='" + name + "' names no <link>, <joint> or <frame> of model '" + model.name + "'", model.element,
+       model.file);
+}
+
+// The <pose> of `e` (a link, joint, frame, collision or sensor of `model`) in the model's frame:
+// relative to the frame its relative_to names, else to the frame `fallback` names (its link).
+Eigen::Isometry3d Reader::placed(const XMLElement* e, const Model& model, const std::string& fallback, const std::string& where,
+                                 int depth) const {
+  const XMLElement* pose = e->FirstChildElement("pose");
+  const std::string relative_to = pose != nullptr ? attribute(pose, "relative_to") : "";
+  return frameOf(model, relative_to.empty() ? fallback : relative_to, where, depth) * poseOf(e, model.file, where, true);
 }
 
 std::string Reader::nameOf(const XMLElement* e, const std::string& file, const std::string& where) const {
@@ -482,9 +557,7 @@ Reader::Model Reader::modelOf(const XMLElement* element, const std::string& file
   }
   skipUnread(element, file, {"static", "pose", "link", "model", "include", "plugin"});
   // A robot known by its Gazebo drive plugin has its sensors read (gazeboRobot); others' are skipped here.
-  const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
-    return gazeboDrives().count(attribute(p.first, "filename")) != 0;
-  });
+  const bool gazebo_drive = hasGazeboDrive(model.plugins);
   for (const XMLElement* link = element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
     if (gazebo_drive) {
       skipUnread(link, file, {"pose", "inertial", "collision", "sensor"});
@@ -522,7 +595,23 @@ std::vector<int> versionOf(const XMLElement* sdf) {
 std::optional<Reader::Model> Reader::included(const XMLElement* include, const std::string& file) {
   const std::string uri = textOf(include->FirstChildElement("uri"));
   skipUnread(include, file, {"uri", "name", "pose", "static", "plugin"});
-  std::string target = resolve(uri, include, file);
+  std::string target;
+  try {
+    target = resolve(uri, include, file);
+  } catch (const WorldError&) {
+    // Gazebo ships these two with itself, so worlds include them with no model folder of theirs.
+    std::string name = uri;
+    while (!name.empty() && name.back() == '/') name.pop_back();
+    if (name == "model://ground_plane") {
+      skip(include, file, "Gazebo's built-in model://ground_plane", "the floor: Aula's robots stay on it by their planar joint");
+      return std::nullopt;
+    }
+    if (name == "model://sun") {
+      skip(include, file, "Gazebo's built-in model://sun", whySkipped("light"));
+      return std::nullopt;
+    }
+    throw;
+  }
   std::error_code error;
   if (fs::is_directory(target, error)) {
     const std::string folder = target;
@@ -779,7 +868,8 @@ void Reader::addStatics(const Model& model, const Eigen::Isometry3d& model_pose,
     const std::string link_name = nameOf(link, file, where);
     if (!links.insert(link_name).second) fail(where, "two links named '" + link_name + "'", link, file);
     const std::string in_link = where + ", link '" + link_name + "'";
-    const Eigen::Isometry3d link_pose = model_pose * poseOf(link, file, in_link);
+    const Eigen::Isometry3d link_pose = model_pose * placed(link, model, "", in_link);
+
     std::set<std::string> collisions;
     for (const XMLElement* c = link->FirstChildElement("collision"); c != nullptr; c = c->NextSiblingElement("collision")) {
       const std::string collision_name = nameOf(c, file, in_link);
@@ -793,7 +883,10 @@ void Reader::addStatics(const Model& model, const Eigen::Isometry3d& model_pose,
           skip(c, file, "<plane> collision", whySkipped("plane"));
           return;
         }
-        o.pose = link_pose * poseOf(c, file, where + ", collision '" + collision_name + "'");
+        // Composed parent * child as libsdformat did (the same bits); a relative_to from the model's frame.
+        const std::string in_collision = where + ", collision '" + collision_name + "'";
+        o.pose = relativeTo(c).empty() ? link_pose * poseOf(c, file, in_collision)
+                                       : model_pose * placed(c, model, link_name, in_collision);
         spec.statics.push_back(o);
       });
     }
@@ -809,6 +902,27 @@ std::string upper(std::string text) {
   return text;
 }
 
+// Where a laser of `yaw_rad` (in the body's frame) faces, as Aula's worlds name their lasers, or ""
+// when it faces between (more than 45 degrees from each).
+std::string facing(double yaw_rad) {
+  const double a = std::remainder(yaw_rad, 2 * M_PI);
+  if (std::abs(a) < M_PI / 4) return "laser_front";
+  if (std::abs(a) > 3 * M_PI / 4) return "laser_rear";
+  if (std::abs(a + M_PI / 2) < M_PI / 4) return "laser_right";
+  if (std::abs(a - M_PI / 2) < M_PI / 4) return "laser_left";
+  return "";
+}
+
+// A driver of a robot that its Gazebo plugins make.
+void addDriver(RobotSpec& robot, const std::string& name, const std::string& type, std::map<std::string, std::string> params) {
+  PluginSpec spec;
+  spec.name = name;
+  spec.type = type;
+  spec.owner = robot.name;
+  spec.params = std::move(params);
+  robot.plugins.push_back(std::move(spec));
+}
+
 std::string decimal(double value) {
   std::ostringstream out;
   out.precision(17);
@@ -817,110 +931,127 @@ std::string decimal(double value) {
 }
 }  // namespace
 
-// A robot known by its Gazebo plugins (RoboticsAcademy's taxi_holo_ROS, with
-// libgazebo_ros_planar_move.so): Aula's robot of that kind, its drivers made from what the model
-// says. pose3d, motors (holonomic for a planar move) and bumper (every Aula robot senses contact),
-// on channels NAME_POSE, NAME_MOTORS, NAME_BUMPER; a laser per level <sensor type="ray"> of the
-// link (NAME_LASER_SENSOR; pose, samples, angles, range, rate from the sensor). Its other Gazebo
-// plugins and sensors are listed among what is skipped. False when it has no drive plugin Aula
-// knows (then its <plugin>s are Aula's drivers).
-void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body_pose, RobotSpec& robot) {
-  const std::string file = model.file;
-  const std::string where = world_path_ + ": model '" + model.name + "'";
+// A robot known by its Gazebo plugins (RoboticsAcademy's taxi_holo_ROS with
+// libgazebo_ros_planar_move.so, RoboticsInfrastructure's Prius with libgazebo_ros_ackermann_drive.so):
+// Aula's robot of that kind, its drivers made from what the model says. pose3d, motors (holonomic
+// for a planar move; a car of `car`'s numbers for an Ackermann drive) and bumper (every Aula robot
+// senses contact), on channels NAME_POSE, NAME_MOTORS, NAME_BUMPER; a laser per level <sensor
+// type="ray"> of its links (channel NAME_LASER_SENSOR; pose in the body's frame, samples, angles,
+// range, noise, rate from the sensor), named by where it faces (laser_front, laser_rear,
+// laser_right, laser_left, as Aula's worlds name them) when it alone faces that way, else by the
+// sensor's name. Its other Gazebo plugins and sensors are listed among what is skipped.
+void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Eigen::Isometry3d& body,
+                           const std::optional<CarNumbers>& car, RobotSpec& robot) {
   const std::string prefix = upper(model.name);
   for (const auto& [p, plugin_file] : model.plugins) {
     if (p != drive) skip(p, plugin_file, "Gazebo <plugin filename=\"" + attribute(p, "filename") + "\"> of a robot", "its drive plugin makes the robot's drivers");
   }
   auto add = [&](const std::string& name, const std::string& type, std::map<std::string, std::string> params) {
-    PluginSpec spec;
-    spec.name = name;
-    spec.type = type;
-    spec.owner = model.name;
-    spec.params = std::move(params);
-    robot.plugins.push_back(std::move(spec));
+    addDriver(robot, name, type, std::move(params));
   };
   add("pose3d", "pose3d", {{"channel", prefix + "_POSE"}});
-  add("motors", "motors", {{"channel", prefix + "_MOTORS"}, {"holonomic", gazeboDrives().at(attribute(drive, "filename")) ? "true" : "false"}});
-  add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
-  for (const XMLElement* link = model.element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
-  // A sensor on a mount (a laser link on a fixed joint) is placed in the body's frame.
-  const Eigen::Isometry3d link_in_body = body_pose.inverse() * poseOf(link, file, where);
-  for (const XMLElement* sensor = link->FirstChildElement("sensor"); sensor != nullptr; sensor = sensor->NextSiblingElement("sensor")) {
-    const std::string type = attribute(sensor, "type");
-    const std::string name = nameOf(sensor, file, where);
-    const XMLElement* ray = sensor->FirstChildElement("ray");
-    if (ray == nullptr) ray = sensor->FirstChildElement("lidar");
-    if ((type != "ray" && type != "gpu_ray" && type != "lidar" && type != "gpu_lidar") || ray == nullptr) {
-      if (type != "contact") skip(sensor, file, "<sensor type=\"" + type + "\"> of a robot", whySkipped("sensor"));
-      continue;  // a contact sensor: the bumper above
-    }
-    const std::string in_sensor = where + ", sensor '" + name + "'";
-    const Eigen::Isometry3d pose = link_in_body * poseOf(sensor, file, in_sensor);
-    const Eigen::Vector3d z_axis = pose.linear().col(2);
-    if (z_axis.z() < std::cos(0.1)) {  // a cliff sensor looks down: not a planar laser
-      skip(sensor, file, "a robot's <sensor type=\"ray\"> not level", "Aula's lasers scan the plane");
-      continue;
-    }
-    const XMLElement* scan = ray->FirstChildElement("scan");
-    const XMLElement* horizontal = scan != nullptr ? scan->FirstChildElement("horizontal") : nullptr;
-    const XMLElement* range = ray->FirstChildElement("range");
-    auto value = [&](const XMLElement* parent, const char* key, double fallback) {
-      return number(parent != nullptr ? parent->FirstChildElement(key) : nullptr, file, in_sensor, fallback);
-    };
-    if (value(horizontal, "samples", 640) < 2) {  // roombaROS's wall_sensor: an IR range finder, not the laser
-      skip(sensor, file, "a robot's one-beam <sensor type=\"ray\">", "Aula's lasers scan (an infrared range finder is not one)");
-      continue;
-    }
-    const Eigen::Vector3d at = pose.translation();
-    add(name, "laser",
-        {{"channel", prefix + "_LASER_" + upper(name)},
-         {"pose", decimal(at.x()) + " " + decimal(at.y()) + " " + decimal(at.z()) + " 0 0 " + decimal(yawOf(pose))},
-         {"samples", std::to_string(static_cast<int>(value(horizontal, "samples", 640)))},
-         {"min_angle", decimal(value(horizontal, "min_angle", 0))},
-         {"max_angle", decimal(value(horizontal, "max_angle", 0))},
-         {"min_range", decimal(value(range, "min", 0))},
-         {"max_range", decimal(value(range, "max", 10))},
-         {"rate_hz", decimal(number(sensor->FirstChildElement("update_rate"), file, in_sensor, 10))}});
+  std::map<std::string, std::string> motors = {{"channel", prefix + "_MOTORS"}};
+  if (car) {
+    // The plugin caps the speed and the steering angle; the yaw rate follows from them.
+    motors["kinematics"] = "ackermann";
+    motors["wheelbase"] = decimal(car->wheelbase_m);
+    motors["max_steer_rad"] = decimal(car->max_steer_rad);
+    motors["rear_axle_x"] = decimal(car->rear_axle_x_m);
+    motors["max_v"] = decimal(car->max_speed_mps);
+    motors["max_w"] = decimal(car->max_speed_mps * std::tan(car->max_steer_rad) / car->wheelbase_m);
+  } else {
+    motors["holonomic"] = gazeboDrives().at(attribute(drive, "filename")) == Drive::Holonomic ? "true" : "false";
   }
+  add("motors", "motors", motors);
+  add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
+  gazeboLasers(model, body, robot);
+}
+
+// The lasers of a robot known by its Gazebo plugins (gazeboDrivers), from its links' level rays.
+void Reader::gazeboLasers(const Model& model, const Eigen::Isometry3d& body, RobotSpec& robot) {
+  const std::string& file = model.file;
+  const std::string where = world_path_ + ": model '" + model.name + "'";
+  const std::string prefix = upper(model.name);
+  struct Laser {
+    std::string sensor, side;  // its <sensor>'s name, where it faces
+    std::map<std::string, std::string> params;
+  };
+  std::vector<Laser> lasers;
+  std::map<std::string, int> facings;
+  for (const XMLElement* link = model.element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
+    const std::string link_name = attribute(link, "name");
+    for (const XMLElement* sensor = link->FirstChildElement("sensor"); sensor != nullptr; sensor = sensor->NextSiblingElement("sensor")) {
+      const std::string type = attribute(sensor, "type");
+      const std::string name = nameOf(sensor, file, where);
+      const XMLElement* ray = sensor->FirstChildElement("ray");
+      if (ray == nullptr) ray = sensor->FirstChildElement("lidar");
+      if ((type != "ray" && type != "gpu_ray" && type != "lidar" && type != "gpu_lidar") || ray == nullptr) {
+        if (type != "contact") skip(sensor, file, "<sensor type=\"" + type + "\"> of a robot", whySkipped("sensor"));
+        continue;  // a contact sensor: the bumper above
+      }
+      const std::string in_sensor = where + ", sensor '" + name + "'";
+      // A sensor on a mount (a laser link on a fixed joint) is placed in the body's frame.
+      const Eigen::Isometry3d pose = body.inverse() * placed(sensor, model, link_name, in_sensor);
+      const Eigen::Vector3d z_axis = pose.linear().col(2);
+      if (z_axis.z() < std::cos(0.1)) {  // a cliff sensor looks down: not a planar laser
+        skip(sensor, file, "a robot's <sensor type=\"ray\"> not level", "Aula's lasers scan the plane");
+        continue;
+      }
+      const XMLElement* scan = ray->FirstChildElement("scan");
+      const XMLElement* horizontal = scan != nullptr ? scan->FirstChildElement("horizontal") : nullptr;
+      const XMLElement* range = ray->FirstChildElement("range");
+      const XMLElement* noise = ray->FirstChildElement("noise");
+      auto value = [&](const XMLElement* parent, const char* key, double fallback) {
+        return number(parent != nullptr ? parent->FirstChildElement(key) : nullptr, file, in_sensor, fallback);
+      };
+      if (value(horizontal, "samples", 640) < 2) {  // roombaROS's wall_sensor: an IR range finder, not the laser
+        skip(sensor, file, "a robot's one-beam <sensor type=\"ray\">", "Aula's lasers scan (an infrared range finder is not one)");
+        continue;
+      }
+      const Eigen::Vector3d at = pose.translation();
+      lasers.push_back({name, facing(yawOf(pose)),
+                        {{"channel", prefix + "_LASER_" + upper(name)},
+                         {"pose", decimal(at.x()) + " " + decimal(at.y()) + " " + decimal(at.z()) + " 0 0 " + decimal(yawOf(pose))},
+                         {"samples", std::to_string(static_cast<int>(value(horizontal, "samples", 640)))},
+                         {"min_angle", decimal(value(horizontal, "min_angle", 0))},
+                         {"max_angle", decimal(value(horizontal, "max_angle", 0))},
+                         {"min_range", decimal(value(range, "min", 0))},
+                         {"max_range", decimal(value(range, "max", 10))},
+                         {"noise_stddev", decimal(value(noise, "stddev", 0))},
+                         {"rate_hz", decimal(number(sensor->FirstChildElement("update_rate"), file, in_sensor, 10))}}});
+      ++facings[lasers.back().side];
+    }
+  }
+  for (const Laser& laser : lasers) {
+    // A side's name is the laser's when it alone faces that way and no other sensor bears that name.
+    const bool taken = std::any_of(lasers.begin(), lasers.end(), [&](const Laser& other) {
+      return other.sensor == laser.side && &other != &laser;
+    });
+    const bool by_side = !laser.side.empty() && facings[laser.side] == 1 && !taken;
+    addDriver(robot, by_side ? laser.side : laser.sensor, "laser", laser.params);
   }
 }
 
-// A robot known by its Gazebo drive plugin, of one or more links: its first link is the body
-// (wheels and sensor mounts are part of it: listed as skipped), its collisions together its shape,
-// a cylinder when they are round seen from above (a roomba), else the box around them, in the
-// body's frame; its mass the links' together.
-void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
-  const std::string where = world_path_ + ": model '" + model.name + "'";
+// The outline of a link's <collision>s (`kind` "collision") or <visual>s, in the model's frame,
+// added to `points`: boxes' corners, cylinders' and spheres' rims, meshes' vertices.
+void Reader::outlineOf(const XMLElement* link, const Model& model, const char* kind, const std::string& where,
+                       std::vector<Eigen::Vector3d>& points) {
   const std::string& file = model.file;
-  const XMLElement* drive = nullptr;
-  for (const auto& [p, plugin_file] : model.plugins) {
-    if (gazeboDrives().count(attribute(p, "filename")) != 0) drive = p;
-  }
-  const XMLElement* body = model.element->FirstChildElement("link");
-  if (body == nullptr) fail(where, "a robot needs a <link>", model.element, file);
-  const Eigen::Isometry3d body_pose = poseOf(body, file, where);
-  RobotSpec robot;
-  robot.name = model.name;
-  robot.pose = model.pose * body_pose;
-  robot.mass_kg = 0;
-  for (const XMLElement* link = body; link != nullptr; link = link->NextSiblingElement("link")) {
-    const XMLElement* inertial = link->FirstChildElement("inertial");
-    robot.mass_kg += number(inertial != nullptr ? inertial->FirstChildElement("mass") : nullptr, file, where, link == body ? 1.0 : 0.0);
-    if (link != body) skip(link, file, "a robot's <link> besides its body", "Aula's robot is one rigid body (its wheels and mounts are part of it)");
-  }
-  if (!(robot.mass_kg > 0)) fail(where, "the links need an <inertial><mass> > 0", body, file);
-  std::vector<Eigen::Vector3d> points;  // the body's collisions, in its frame
-  for (const XMLElement* c = body->FirstChildElement("collision"); c != nullptr; c = c->NextSiblingElement("collision")) {
-    const std::string in_collision = where + ", collision '" + nameOf(c, file, where) + "'";
+  const std::string link_name = attribute(link, "name");
+  for (const XMLElement* c = link->FirstChildElement(kind); c != nullptr; c = c->NextSiblingElement(kind)) {
+    const std::string in_collision = where + ", " + kind + " '" + nameOf(c, file, where) + "'";
+    const Eigen::Isometry3d pose = placed(c, model, link_name, in_collision);
     const XMLElement* geometry = c->FirstChildElement("geometry");
+    auto rim = [&](double r, double z) {
+      for (int k = 0; k < 32; ++k) {
+        const double a = 2 * M_PI * k / 32;
+        points.push_back(pose * Eigen::Vector3d(r * std::cos(a), r * std::sin(a), z));
+      }
+    };
     if (const XMLElement* sphere = geometry != nullptr ? geometry->FirstChildElement("sphere") : nullptr) {
       // A caster ball: part of the body's outline (a sphere is no static geometry of Aula's).
       const double r = number(sphere->FirstChildElement("radius"), file, in_collision, 1.0);
-      const Eigen::Isometry3d pose = poseOf(c, file, in_collision);
-      for (int k = 0; k < 32; ++k) {
-        const double a = 2 * M_PI * k / 32;
-        points.push_back(pose * Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
-      }
+      rim(r, 0);
       points.push_back(pose * Eigen::Vector3d(0, 0, r));
       points.push_back(pose * Eigen::Vector3d(0, 0, -r));
       continue;
@@ -928,9 +1059,8 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
     bool is_plane = false;
     const Shape shape = shapeOf(c, file, in_collision, &is_plane);
     if (is_plane) continue;
-    const Eigen::Isometry3d pose = poseOf(c, file, in_collision);
     if (shape.kind == ShapeKind::Mesh) {
-      skip(c, file, "a robot's <mesh> collision", "Aula's robot is the box or cylinder around it");
+      skip(c, file, std::string("a robot's <mesh> ") + kind, "Aula's robot is the box or cylinder around it");
       for (const auto& v : shape.mesh->vertices_m) points.push_back(pose * v);
     } else if (shape.kind == ShapeKind::Box) {
       for (int i = 0; i < 8; ++i) {
@@ -938,15 +1068,99 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
                                                 (i & 4 ? 0.5 : -0.5) * shape.box_size_m.z()));
       }
     } else {
-      for (int k = 0; k < 32; ++k) {
-        const double a = 2 * M_PI * k / 32;
-        for (const double h : {-0.5, 0.5}) {
-          points.push_back(pose * Eigen::Vector3d(shape.radius_m * std::cos(a), shape.radius_m * std::sin(a), h * shape.length_m));
-        }
-      }
+      rim(shape.radius_m, -0.5 * shape.length_m);
+      rim(shape.radius_m, 0.5 * shape.length_m);
     }
   }
-  if (points.empty()) fail(where, "the robot's body link has no <collision> (its shape)", body, file);
+}
+
+// An Ackermann drive's car, in the model's frame: its axles from the wheel joints the plugin names
+// (front_left_joint ..., with the plugin's defaults), its steering and speed caps (max_steer 0.6
+// rad, max_speed 20 m/s by default, as the plugin has them). Sets `heading` (the model-frame yaw
+// from the rear axle's centre to the front's) and `rear_axle` (the rear axle's centre).
+CarNumbers Reader::ackermannCar(const Model& model, const XMLElement* drive, double& heading, Eigen::Vector3d& rear_axle) const {
+  const std::string where = world_path_ + ": model '" + model.name + "', plugin '" + attribute(drive, "name") + "'";
+  auto joint = [&](const char* key) -> Eigen::Vector3d {
+    const XMLElement* e = drive->FirstChildElement(key);
+    const std::string name = e != nullptr ? textOf(e) : key;
+    const bool found = [&] {
+      for (const XMLElement* j = model.element->FirstChildElement("joint"); j != nullptr; j = j->NextSiblingElement("joint")) {
+        if (attribute(j, "name") == name) return true;
+      }
+      return false;
+    }();
+    if (!found) fail(where, "<" + std::string(key) + ">" + name + ": the model has no <joint> of that name", e != nullptr ? e : drive, model.file);
+    return frameOf(model, name, where).translation();
+  };
+  const Eigen::Vector3d front = (joint("front_left_joint") + joint("front_right_joint")) / 2;
+  rear_axle = (joint("rear_left_joint") + joint("rear_right_joint")) / 2;
+  CarNumbers car;
+  car.wheelbase_m = std::hypot(front.x() - rear_axle.x(), front.y() - rear_axle.y());
+  if (!(car.wheelbase_m > 0.01)) fail(where, "the front and rear wheel joints stand at the same place: no wheelbase", drive, model.file);
+  heading = std::atan2(front.y() - rear_axle.y(), front.x() - rear_axle.x());
+  car.max_steer_rad = number(drive->FirstChildElement("max_steer"), model.file, where, 0.6);
+  car.max_speed_mps = number(drive->FirstChildElement("max_speed"), model.file, where, 20.0);
+  if (!(car.max_steer_rad > 0 && car.max_steer_rad < 1.5) || !(car.max_speed_mps > 0)) {
+    fail(where, "needs 0 < <max_steer> < 1.5 rad and <max_speed> > 0", drive, model.file);
+  }
+  return car;
+}
+
+// A robot known by its Gazebo drive plugin, of one or more links: the model is one rigid body (its
+// wheels, steering and sensor mounts are part of it: listed as skipped), its links' collisions
+// together its shape (their <visual>s when it has no collision at all, as RoboticsAcademy's
+// taxi_holo_laser_ROS: said), a cylinder when they are round seen from above (a roomba), else the
+// box around them; its mass the links' together. Its body frame is its first link's; an Ackermann
+// car's is at the centre of its footprint, x from the rear axle to the front (as Aula's cars).
+void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
+  const std::string where = world_path_ + ": model '" + model.name + "'";
+  const std::string& file = model.file;
+  const XMLElement* drive = nullptr;
+  for (const auto& [p, plugin_file] : model.plugins) {
+    if (gazeboDrives().count(attribute(p, "filename")) != 0) drive = p;
+  }
+  const XMLElement* first = model.element->FirstChildElement("link");
+  if (first == nullptr) fail(where, "a robot needs a <link>", model.element, file);
+  RobotSpec robot;
+  robot.name = model.name;
+  robot.mass_kg = 0;
+  std::vector<Eigen::Vector3d> points;  // the links' collisions, in the model's frame
+  for (const XMLElement* link = first; link != nullptr; link = link->NextSiblingElement("link")) {
+    const XMLElement* inertial = link->FirstChildElement("inertial");
+    robot.mass_kg += number(inertial != nullptr ? inertial->FirstChildElement("mass") : nullptr, file, where, link == first ? 1.0 : 0.0);
+    if (link != first) skip(link, file, "a robot's <link> besides its body", "Aula's robot is one rigid body (its wheels and mounts are part of it, inside the outline of its links' collisions)");
+    outlineOf(link, model, "collision", where + ", link '" + nameOf(link, file, where) + "'", points);
+  }
+  if (!(robot.mass_kg > 0)) fail(where, "the links need an <inertial><mass> > 0", first, file);
+  if (points.empty()) {
+    for (const XMLElement* link = first; link != nullptr; link = link->NextSiblingElement("link")) {
+      outlineOf(link, model, "visual", where + ", link '" + attribute(link, "name") + "'", points);
+    }
+    if (points.empty()) fail(where, "the robot's links have no <collision> (nor a <visual>) to give its shape", first, file);
+    skip(model.element, file, "a robot with no <collision>",
+         "its shape is the box around its <visual>s (in Gazebo it would touch nothing; in Aula it touches what it meets)");
+  }
+  std::optional<CarNumbers> car;
+  Eigen::Isometry3d body = placed(first, model, "", where);
+  if (gazeboDrives().at(attribute(drive, "filename")) == Drive::Ackermann) {
+    double heading = 0;
+    Eigen::Vector3d rear_axle;
+    car = ackermannCar(model, drive, heading, rear_axle);
+    const Eigen::Isometry3d turned(Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()));
+    Eigen::AlignedBox3d footprint;
+    for (const auto& p : points) footprint.extend(turned.inverse() * p);
+    const Eigen::Vector3d centre = footprint.center();
+    body = turned * Eigen::Translation3d(centre.x(), centre.y(), 0);
+    car->rear_axle_x_m = (body.inverse() * rear_axle).x();
+    if (std::abs(car->rear_axle_x_m) > car->wheelbase_m) {
+      fail(where, "the rear axle lies outside the car's outline (its collisions): check the wheel joints' poses", drive, file);
+    }
+    skip(drive, file, "Ackermann drive <plugin filename=\"" + attribute(drive, "filename") + "\">",
+         "Aula's car turns about its rear axle's centre, no tighter than max_steer allows; wheelbase between the wheel joints; "
+         "its shape the box around its links' collisions, centred on it");
+  }
+  robot.pose = model.pose * body;
+  for (auto& p : points) p = body.inverse() * p;
   Eigen::AlignedBox3d bounds;
   for (const auto& p : points) bounds.extend(p);
   const Eigen::Vector3d centre = bounds.center(), size = bounds.sizes();
@@ -954,7 +1168,7 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
   for (const auto& p : points) reach = std::max(reach, std::hypot(p.x() - centre.x(), p.y() - centre.y()));
   const double half = std::max(size.x(), size.y()) / 2;
   robot.shape_offset = Eigen::Isometry3d(Eigen::Translation3d(centre));
-  if (std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.02 * half) {  // round: no corner sticks out
+  if (!car && std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.02 * half) {  // round: no corner sticks out
     robot.shape.kind = ShapeKind::Cylinder;
     robot.shape.radius_m = half;
     robot.shape.length_m = size.z();
@@ -962,13 +1176,24 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
     robot.shape.box_size_m = size;
   }
   if (!(robot.shape.kind == ShapeKind::Cylinder ? robot.shape.length_m > 0 : size.minCoeff() > 0)) {
-    fail(where, "the robot's collisions have no volume", body, file);
+    fail(where, "the robot's collisions have no volume", first, file);
   }
-  gazeboDrivers(model, drive, body_pose, robot);
+  gazeboDrivers(model, drive, body, car, robot);
   const bool duplicate = std::any_of(spec.robots.begin(), spec.robots.end(),
                                      [&](const RobotSpec& other) { return other.name == robot.name; });
   if (duplicate) fail(where, "duplicate robot name", model.element, file);
   spec.robots.push_back(std::move(robot));
+}
+
+// A non-static model that nothing drives: it has links, and no plugin but Gazebo's own that drive
+// nothing (an Aula driver or a Gazebo drive makes a robot; any other filename is a driver's typo,
+// said as such when it is read as a robot).
+bool Reader::keptStill(const Model& model) {
+  if (model.element->FirstChildElement("link") == nullptr || hasGazeboDrive(model.plugins)) return false;
+  return std::all_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
+    const std::string filename = attribute(p.first, "filename");
+    return pluginKeys().count(filename) == 0 && gazeboLibrary(filename);
+  });
 }
 
 // A world's model: static geometry, a robot, or a container (no link, no plugin, only nested
@@ -991,6 +1216,18 @@ void Reader::addModel(const Model& model, WorldSpec& spec) {
     }
     return;
   }
+  if (keptStill(model)) {
+    // RoboticsAcademy's parked cars: <static>false</static>, no plugin; Gazebo would let them be pushed.
+    skip(model.element, model.file, "a model not static in the file, with no drive",
+         "Aula keeps it still, as static geometry (Aula has no movable obstacles)");
+    Model still = model;
+    for (const auto& [p, plugin_file] : model.plugins) {
+      skip(p, plugin_file, "Gazebo <plugin filename=\"" + attribute(p, "filename") + "\"> of a model kept still", "it drives nothing Aula moves");
+    }
+    still.plugins.clear();
+    addStatics(still, still.pose, "", spec);
+    return;
+  }
   addRobot(model, spec);
 }
 
@@ -1001,9 +1238,7 @@ void Reader::addRobot(const Model& model, WorldSpec& spec) {
   } catch (const WorldError& e) {
     // A robot refused for its body: its drivers' problems are said in the same pass, after it.
     for (const auto& p : e.problems()) problems_.push_back(p);
-    const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
-      return gazeboDrives().count(attribute(p.first, "filename")) != 0;
-    });
+    const bool gazebo_drive = hasGazeboDrive(model.plugins);
     if (gazebo_drive) return;  // its drivers are made from its Gazebo plugins, not read from them
     WorldSpec alone;
     alone.source_path = world_path_;
@@ -1023,9 +1258,7 @@ void Reader::addRobotOrThrow(const Model& model, WorldSpec& spec) {
   if (!model.children.empty()) {
     fail(where, "a robot (non-static model) cannot nest models", e, file);
   }
-  const bool gazebo_drive = std::any_of(model.plugins.begin(), model.plugins.end(), [](const auto& p) {
-    return gazeboDrives().count(attribute(p.first, "filename")) != 0;
-  });
+  const bool gazebo_drive = hasGazeboDrive(model.plugins);
   if (gazebo_drive) {
     addGazeboRobot(model, spec);
     return;

@@ -218,3 +218,34 @@ TEST(MeshStatics, ATaxiStopsAtAnStlWallAndItsFloorIsNoContact) {
   EXPECT_NEAR(p.contact(0).bearing_rad, 0.0, 0.2) << "the contact is ahead";
   std::filesystem::remove_all(dir);
 }
+
+// RoboticsAcademy's parked cars (issue 55): a COLLADA car whose own axes run across, turned 1.57
+// rad, <static>false</static> with no plugin, is kept still by the world reader; DART stops a taxi
+// at its back, 2.45 m behind its centre, and the car does not move.
+TEST(MeshStatics, ATaxiStopsAtAParkedMeshCarTheFileLeftNonStatic) {
+  const std::string dir = ::testing::TempDir() + "aula-mesh-car-" + std::to_string(::getpid());
+  std::filesystem::create_directories(dir);
+  setenv("XDG_CACHE_HOME", (dir + "/cache").c_str(), 1);
+  aula::testing::writeCollada(dir + "/car.dae", {aula::testing::boxTriangles({{{-1.1, -2.45, 0}, {1.1, 2.45, 1.6}}})}, {"car"});
+  std::ofstream(dir + "/w.world") << "<sdf version='1.4'><world name='w'><model name='car4'><pose>10 0 0 0 0 1.57</pose>"
+                                     "<static>false</static><link name='l'><collision name='c'><geometry><mesh><uri>car.dae</uri>"
+                                     "</mesh></geometry></collision></link></model></world></sdf>";
+  WorldSpec w = loadWorld(dir + "/w.world", {dir});
+  ASSERT_EQ(w.statics.size(), 1u);
+  ASSERT_TRUE(w.robots.empty());
+  w.robots.push_back(taxi("taxi", 0, 0, 0));
+  PhysicsWorld p(w, 0.005);
+  p.commandVelocity(0, 3.0, 0);
+  double max_front = -1e9;
+  bool touched = false;
+  for (int i = 0; i < 1600; ++i) {  // 8 s
+    p.step();
+    max_front = std::max(max_front, p.robotState(0).position_m.x() + 2.0);
+    touched = touched || p.contact(0).in_contact;
+  }
+  EXPECT_TRUE(touched);
+  EXPECT_GT(max_front, 10 - 2.45 - 0.1) << "it reached the car's back";
+  EXPECT_LT(max_front, 10 - 2.45 + 0.05) << "and did not pass into it";
+  EXPECT_NEAR(p.contact(0).bearing_rad, 0.0, 0.2) << "the contact is ahead";
+  std::filesystem::remove_all(dir);
+}

@@ -229,3 +229,33 @@ TEST(ParkingScores, TheBreakdownsTotalIsTheMark) {
   EXPECT_DOUBLE_EQ(rows[2].points, 0.0);
   EXPECT_DOUBLE_EQ(rows[4].factor, 1.0);
 }
+
+TEST(ParkingGeometry, AStreetWithNoCurbAndCarsTurnedAcrossTheirOwnAxes) {
+  // RoboticsAcademy's street: cars whose own axes run across (2.2 m along their x, 4.9 m along
+  // their y), turned 1.57 rad, at y = -3 and x = 0.5, 14 and 21.5; no curb.
+  aula::world::WorldSpec w;
+  w.name = "ra";
+  for (const double x : {0.5, 14.0, 21.5}) {
+    aula::world::StaticObject car;
+    car.name = "car::l::c";
+    car.shape.box_size_m = Eigen::Vector3d(2.2, 4.9, 1.6);
+    car.pose = Eigen::Translation3d(x, -3, 0.8) * Eigen::AngleAxisd(1.57, Eigen::Vector3d::UnitZ());
+    w.statics.push_back(car);
+  }
+  aula::world::RobotSpec taxi;
+  taxi.name = "taxi";
+  taxi.shape.box_size_m = Eigen::Vector3d(4, 2, 1.2);
+  taxi.pose = Eigen::Isometry3d(Eigen::Translation3d(-7, 2.5, 0));
+  w.robots.push_back(taxi);
+  const ParkingScene s = ParkingScene::fromWorld(w, "taxi");
+  EXPECT_NEAR(s.slotLengthM(), 13.5 - 4.9, 1e-2) << "the cars' length runs along the street";
+  EXPECT_NEAR(s.rear_car.length_m, 4.9, 1e-9);
+  EXPECT_NEAR(s.ideal_x_m, 7.25, 1e-9);
+  EXPECT_NEAR(s.curb_y_m, -3 - 1.1, 1e-2) << "the parking line: the parked cars' far side";
+  EXPECT_TRUE(s.curb_name.empty());
+  EXPECT_NEAR(s.street_west_x_m, 0.5 - 10, 1e-9);
+  EXPECT_NEAR(s.street_east_x_m, 21.5 + 10, 1e-9);
+  // No curb to touch: a car over the parking line is in no contact, one in a parked car is.
+  EXPECT_EQ(contactDepthM(s, 7.25, -4.0, 0), 0.0);
+  EXPECT_GT(contactDepthM(s, 3.0, -3, 0), 0.0);
+}

@@ -5,6 +5,7 @@
 #include "expect_same_world.hpp"
 
 #include <aula/geometry/raycaster2d.hpp>
+#include <aula/world/car_kinematics.hpp>
 #include <aula/world/obstacle_slice.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
@@ -288,7 +289,7 @@ TEST_F(GazeboWorlds, EveryProblemOfAWorldIsListedAtOnceWithItsLine) {
       "<model name='bot'><link name='l'><collision name='c'><geometry><box><size>1 1 1</size></box></geometry>"
       "</collision></link><plugin name='drive' filename='motors'><max_vel>1</max_vel></plugin></model>\n"  // line 8
       "<model name='taxi'><link name='l'><collision name='c'><geometry><mesh><uri>gone.dae</uri></mesh></geometry>"
-      "</collision></link><plugin name='move' filename='libgazebo_ros_ackermann_drive.so'/></model>\n"          // line 9
+      "</collision></link><plugin name='move' filename='ackermann'/></model>\n"                                 // line 9
       "<model name='ok'><static>true</static><link name='l'><collision name='c'><geometry><box><size>1 1 1</size></box>"
       "</geometry></collision></link></model>\n");
   ASSERT_EQ(problems.size(), 7u);
@@ -303,7 +304,7 @@ TEST_F(GazeboWorlds, EveryProblemOfAWorldIsListedAtOnceWithItsLine) {
   // A robot refused for its body still has its drivers checked.
   EXPECT_TRUE(contains(problems[4], "model 'taxi', collision 'c': a robot's collision must be a <box> or a <cylinder>")) << problems[4];
   EXPECT_TRUE(contains(problems[4], "w.world:9)")) << problems[4];
-  EXPECT_TRUE(contains(problems[5], "model 'taxi', plugin 'move': unknown driver filename 'libgazebo_ros_ackermann_drive.so'")) << problems[5];
+  EXPECT_TRUE(contains(problems[5], "model 'taxi', plugin 'move': unknown driver filename 'ackermann'")) << problems[5];
   EXPECT_TRUE(contains(problems[6], "unknown key <max_vel> (did you mean <max_v>?)")) << problems[6];
 }
 
@@ -347,7 +348,7 @@ TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
   EXPECT_EQ(channelOf(taxi, "motors"), "TAXI_HOLO_MOTORS");
   EXPECT_EQ(channelOf(taxi, "bumper"), "TAXI_HOLO_BUMPER");
   EXPECT_TRUE(taxi.findPlugin("motors")->getBool("holonomic", false));
-  const PluginSpec* laser = taxi.findPluginNamed("front");
+  const PluginSpec* laser = taxi.findPluginNamed("laser_front");  // named by where it faces, as Aula's worlds name them
   ASSERT_NE(laser, nullptr);
   EXPECT_EQ(laser->type, "laser");
   EXPECT_EQ(laser->getInt("samples", 0), 180);
@@ -359,13 +360,18 @@ TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
   for (const auto& line : w.skipped) skipped += line + "\n";
   EXPECT_TRUE(contains(skipped, "a robot's <sensor type=\"ray\"> not level (")) << skipped;
   EXPECT_TRUE(contains(skipped, "a robot's <mesh> collision (")) << skipped;
-  // A robot with no drive plugin Aula knows keeps the rule: its plugins are Aula's drivers.
+  // A model with a Gazebo plugin that drives nothing Aula knows is no robot: it is kept still, and said.
   write("models/taxi/model.sdf", "<sdf version='1.5'><model name='taxi_holo'><link name='l'><collision name='c'><geometry>"
                                  "<box><size>1 1 1</size></box></geometry></collision></link>"
-                                 "<plugin name='drive' filename='libgazebo_ros_ackermann_drive.so'/></model></sdf>");
-  const auto problems = problemsOf("<include><uri>model://taxi</uri></include>\n");
-  ASSERT_EQ(problems.size(), 1u);
-  EXPECT_TRUE(contains(problems[0], "unknown driver filename 'libgazebo_ros_ackermann_drive.so'")) << problems[0];
+                                 "<plugin name='drive' filename='libgazebo_ros_hovercraft.so'/></model></sdf>");
+  const WorldSpec still = load("<include><uri>model://taxi</uri></include>\n");
+  EXPECT_TRUE(still.robots.empty());
+  ASSERT_EQ(still.statics.size(), 1u);
+  skipped.clear();
+  for (const auto& line : still.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "a model not static in the file, with no drive (" + dir_ + "/models/taxi/model.sdf:1): Aula keeps it still"))
+      << skipped;
+  EXPECT_TRUE(contains(skipped, "Gazebo <plugin filename=\"libgazebo_ros_hovercraft.so\"> of a model kept still (")) << skipped;
 }
 
 TEST_F(GazeboWorlds, ARoombaOfSeveralLinksIsAulasRoundRobot) {
@@ -396,11 +402,11 @@ TEST_F(GazeboWorlds, ARoombaOfSeveralLinksIsAulasRoundRobot) {
   const RobotSpec& roomba = requireRobot(w, "roomba");
   EXPECT_EQ(roomba.shape.kind, ShapeKind::Cylinder);
   EXPECT_NEAR(roomba.shape.radius_m, 0.165, 1e-9);
-  EXPECT_NEAR(roomba.shape.length_m, 0.061, 1e-9);  // the caster ball reaches 1 mm below the body
+  EXPECT_NEAR(roomba.shape.length_m, 0.08, 1e-6);  // the wheels reach 2 cm below the body's link, the body 6 cm above
   EXPECT_TRUE(roomba.pose.translation().isApprox(Eigen::Vector3d(-1, 1.5, 0.02)));
   EXPECT_NEAR(roomba.mass_kg, 2.2, 1e-12);
   EXPECT_EQ(channelOf(roomba, "bumper"), "ROOMBA_BUMPER");
-  const PluginSpec* laser = roomba.findPluginNamed("laser");
+  const PluginSpec* laser = roomba.findPluginNamed("laser_front");
   ASSERT_NE(laser, nullptr);
   EXPECT_TRUE(laser->getPose("pose").translation().isApprox(Eigen::Vector3d(0.1, 0, 0.1))) << "in the body's frame";
   EXPECT_EQ(laser->getInt("samples", 0), 360);
@@ -411,4 +417,191 @@ TEST_F(GazeboWorlds, ARoombaOfSeveralLinksIsAulasRoundRobot) {
   EXPECT_TRUE(contains(skipped, "<joint> in <model> (")) << skipped;
   EXPECT_TRUE(contains(skipped, "a robot's one-beam <sensor type=\"ray\"> (")) << skipped;
   EXPECT_EQ(roomba.findPluginNamed("wall"), nullptr) << "an infrared range finder is not the laser";
+}
+
+namespace {
+// As RoboticsInfrastructure's prius_ackermann_3laser, in small: forward along the model's +y, an
+// empty first link, a chassis box, four wheel links and two steering links placed through
+// relative_to frames, a steering wheel, three lasers on the chassis, libgazebo_ros_ackermann_drive.so.
+std::string ackermannCar(const std::string& front_left_joint = "fl_axle") {
+  auto wheel = [](const std::string& link, const std::string& joint, const std::string& parent, const std::string& at) {
+    return "<joint name='" + joint + "' type='revolute'><pose relative_to='" + parent + "'>" + at + "</pose><parent>" + parent +
+           "</parent><child>" + link + "</child><axis><xyz>-1 0 0</xyz></axis></joint>"
+           "<link name='" + link + "'><pose relative_to='" + joint + "'>0 0 0 0 0 0</pose><inertial><mass>24.5</mass></inertial>"
+           "<collision name='c'><pose relative_to='" + joint + "'>0 0 0 0 1.5708 0</pose><geometry><cylinder><radius>0.33</radius>"
+           "<length>0.22</length></cylinder></geometry></collision><visual name='v'/></link>";
+  };
+  auto steer = [](const std::string& link, const std::string& joint, const std::string& at) {
+    return "<joint name='" + joint + "' type='revolute'><pose relative_to='chassis_link'>" + at + "</pose><parent>chassis_link"
+           "</parent><child>" + link + "</child></joint><link name='" + link + "'><pose relative_to='" + joint +
+           "'>0 0 0 0 0 0</pose><inertial><mass>1</mass></inertial></link>";
+  };
+  auto laser = [](const std::string& name, const std::string& frame, const std::string& pose, double max_m) {
+    return "<sensor name='" + name + "' type='ray'><pose relative_to='" + frame + "'>" + pose + "</pose><update_rate>40</update_rate>"
+           "<ray><scan><horizontal><samples>180</samples><resolution>1</resolution><min_angle>-1.570796</min_angle>"
+           "<max_angle>1.570796</max_angle></horizontal></scan><range><min>0.12</min><max>" + std::to_string(max_m) +
+           "</max></range><noise><type>gaussian</type><mean>0</mean><stddev>0.01</stddev></noise></ray>"
+           "<plugin name='" + name + "_ros' filename='libgazebo_ros_ray_sensor.so'/></sensor>";
+  };
+  return "<sdf version='1.5'><model name='prius'><pose>0 0 0 0 0 0</pose><link name='base_link'/>"
+         "<joint name='chassis_joint' type='fixed'><parent>base_link</parent><child>chassis_link</child></joint>"
+         "<link name='chassis_link'><inertial><mass>1580</mass></inertial>"
+         "<collision name='body'><pose>0 0.2 0.9 0 0 0</pose><geometry><box><size>1.8 4.6 1.2</size></box></geometry></collision>" +
+         laser("front_hokuyo", "chassis_link", "0 2.45 0.5 0 0 1.5708", 30) +
+         laser("back_hokuyo", "base_link", "0 -2.2 0.5 0 0 -1.5708", 30) +
+         laser("side_hokuyo", "base_link", "1.0 0 0.5 0 0 0", 20) + "</link>" +
+         wheel("bl", "bl_axle", "chassis_link", "-0.775 -1.35 0.33 0 0 0") +
+         wheel("br", "br_axle", "chassis_link", "0.775 -1.35 0.33 0 0 0") +
+         steer("l_steer_1", "l_steer", "-0.8 1.55 0.33 0 0 0") + wheel("fl", "fl_axle", "l_steer_1", "-0.05 0 0 0 0 0") +
+         steer("r_steer_1", "r_steer", "0.8 1.55 0.33 0 0 0") + wheel("fr", "fr_axle", "r_steer_1", "0.05 0 0 0 0 0") +
+         "<link name='steering_wheel'><pose relative_to='chassis_link'>0 0.6 1.0 0 0 0</pose></link>"
+         "<plugin name='ackermann_drive' filename='libgazebo_ros_ackermann_drive.so'><update_rate>100</update_rate>"
+         "<front_left_joint>" + front_left_joint + "</front_left_joint><front_right_joint>fr_axle</front_right_joint>"
+         "<rear_left_joint>bl_axle</rear_left_joint><rear_right_joint>br_axle</rear_right_joint>"
+         "<left_steering_joint>l_steer</left_steering_joint><right_steering_joint>r_steer</right_steering_joint>"
+         "<max_steer>0.52</max_steer><max_speed>50</max_speed></plugin></model></sdf>";
+}
+}  // namespace
+
+TEST_F(GazeboWorlds, AnAckermannCarOfNineLinksIsAulasCar) {
+  write("models/prius/model.config", "<model><sdf version='1.5'>model.sdf</sdf></model>");
+  write("models/prius/model.sdf", ackermannCar());
+  // Turned -90 degrees in the world, as the Prius street turns it, so that it drives along +x.
+  const WorldSpec w = load("<include><uri>model://prius</uri><pose>-7 2.5 0.02 0 0 -1.5707963267948966</pose></include>\n");
+  const RobotSpec& car = requireRobot(w, "prius");
+  // Its body frame: the footprint's centre (the chassis 0.2 m ahead of the model's origin), x forward.
+  EXPECT_NEAR(car.pose.translation().x(), -6.8, 1e-9);
+  EXPECT_NEAR(car.pose.translation().y(), 2.5, 1e-9);
+  EXPECT_NEAR(yawOf(car.pose), 0.0, 1e-9);
+  // The box around every link's collisions: the chassis, and the wheels 6 cm past its sides.
+  EXPECT_EQ(car.shape.kind, ShapeKind::Box);
+  EXPECT_TRUE(car.shape.box_size_m.isApprox(Eigen::Vector3d(4.6, 1.92, 1.5), 1e-4)) << car.shape.box_size_m.transpose();
+  EXPECT_TRUE(car.shape_offset.translation().isApprox(Eigen::Vector3d(0, 0, 0.75), 1e-4)) << car.shape_offset.translation().transpose();
+  EXPECT_NEAR(car.mass_kg, 1 + 1580 + 4 * 24.5 + 2, 1e-9);  // the empty first link weighs SDF's default 1 kg
+  // Its motors: a car, wheelbase between the wheel joints, turning about the rear axle's centre.
+  const PluginSpec* motors = car.findPlugin("motors");
+  ASSERT_NE(motors, nullptr);
+  const CarKinematics k = readCarKinematics(*motors);
+  EXPECT_TRUE(k.ackermann);
+  EXPECT_NEAR(k.wheelbase_m, 2.9, 1e-9);
+  EXPECT_NEAR(k.max_steer_rad, 0.52, 1e-12);
+  EXPECT_NEAR(k.rear_axle_x_m, -1.55, 1e-9);
+  EXPECT_NEAR(k.min_turn_radius_m, 2.9 / std::tan(0.52), 1e-9);
+  EXPECT_DOUBLE_EQ(motors->getDouble("max_v", 0), 50.0);
+  // Its lasers from its sensors, in the body's frame, named by where they face.
+  struct Expected {
+    std::string name;
+    Eigen::Vector3d at;
+    double yaw_rad, max_m;
+  };
+  for (const Expected& e : {Expected{"laser_front", {2.25, 0, 0.5}, 0.0, 30}, Expected{"laser_rear", {-2.4, 0, 0.5}, M_PI, 30},
+                            Expected{"laser_right", {-0.2, -1.0, 0.5}, -M_PI / 2, 20}}) {
+    const PluginSpec* laser = car.findPluginNamed(e.name);
+    ASSERT_NE(laser, nullptr) << e.name;
+    const Eigen::Isometry3d pose = laser->getPose("pose");
+    EXPECT_TRUE(pose.translation().isApprox(e.at, 1e-4)) << e.name << ": " << pose.translation().transpose();
+    EXPECT_NEAR(std::remainder(yawOf(pose) - e.yaw_rad, 2 * M_PI), 0.0, 1e-4) << e.name;
+    EXPECT_EQ(laser->getInt("samples", 0), 180);
+    EXPECT_DOUBLE_EQ(laser->getDouble("min_angle", 0), -1.570796);
+    EXPECT_DOUBLE_EQ(laser->getDouble("min_range", 0), 0.12);
+    EXPECT_DOUBLE_EQ(laser->getDouble("max_range", 0), e.max_m);
+    EXPECT_DOUBLE_EQ(laser->getDouble("noise_stddev", 0), 0.01);
+    EXPECT_DOUBLE_EQ(laser->getDouble("rate_hz", 0), 40.0);
+  }
+  EXPECT_EQ(channelOf(car, "laser", "laser_front"), "PRIUS_LASER_FRONT_HOKUYO");
+  EXPECT_EQ(channelOf(car, "bumper"), "PRIUS_BUMPER");
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "Ackermann drive <plugin filename=\"libgazebo_ros_ackermann_drive.so\"> (")) << skipped;
+  EXPECT_TRUE(contains(skipped, "a robot's <link> besides its body x8 (")) << skipped;
+  // A wheel joint the plugin names and the model lacks: said, with the plugin's line.
+  write("models/prius/model.sdf", ackermannCar("front_left"));
+  const auto problems = problemsOf("<include><uri>model://prius</uri></include>\n");
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_TRUE(contains(problems[0], "plugin 'ackermann_drive': <front_left_joint>front_left: the model has no <joint> of that name"))
+      << problems[0];
+}
+
+TEST_F(GazeboWorlds, ParkedCarsNotStaticWithNoDriveAreKeptStillAsTheirMeshes) {
+  // As RoboticsAcademy's autoparking street: a car mesh whose own axes run across (2.2 m along x,
+  // 4.9 m along y), turned 1.57 rad in the file, <static>false</static>, no plugin.
+  fs::create_directories(dir_ + "/models/opel/meshes");
+  aula::testing::writeCollada(dir_ + "/models/opel/meshes/car.dae",
+                              {aula::testing::boxTriangles({{{-1.1, -2.45, 0}, {1.1, 2.45, 1.7}}})}, {"car"});
+  write("models/opel/model.config", "<model><sdf version='1.5'>model.sdf</sdf></model>");
+  auto parked = [](const std::string& name, double x) {
+    return "<model name='" + name + "'><pose>" + std::to_string(x) + " -3 0 0 0 1.57</pose><static>false</static>"
+           "<link name='car1'><gravity>false</gravity><collision name='collision'><geometry><mesh>"
+           "<uri>model://opel/meshes/car.dae</uri></mesh></geometry></collision></link></model>\n";
+  };
+  const WorldSpec w = load(parked("car4", 0.5) + parked("car5", 14));
+  EXPECT_TRUE(w.robots.empty());
+  ASSERT_EQ(w.statics.size(), 2u);
+  const aula::geometry::OrientedBox f = footprintOf(w.statics[0]);
+  EXPECT_NEAR(f.centre.x_m, 0.5, 1e-9);
+  EXPECT_NEAR(std::abs(std::sin(f.centre.yaw_rad)), 1.0, 1e-3) << "its length runs along the street";
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "a model not static in the file, with no drive x2 (first at " + dir_ +
+                                    "/w.world:4): Aula keeps it still, as static geometry"))
+      << skipped;
+  // The lasers see the cars' mesh: a right laser at y = 2.5 looking down the street's width meets
+  // the car4's side 2.5 + 3 - 1.1 = 4.4 m away; the slot between them is free to y = -inf.
+  const aula::geometry::Raycaster2D caster(sliceAtHeight(w, 0.5));
+  EXPECT_NEAR(caster.cast({0.5, 2.5}, -M_PI / 2, 11), 2.5 + 3 - 1.1, 1e-2);
+  EXPECT_NEAR(caster.cast({7.25, 2.5}, -M_PI / 2, 11), 11.0, 1e-9);
+  EXPECT_NEAR(caster.cast({-5, -3}, 0, 11), 5.5 - 2.45, 1e-2) << "along the row: the car's back, 2.45 m behind its centre";
+  // The map: the cars are solid, the slot free.
+  const OccupancyMap map = occupancyMapOf(w, {0.1, 0.01, 2.0});
+  EXPECT_TRUE(pointProblem(map, 14, -3).has_value());
+  EXPECT_FALSE(pointProblem(map, 7.25, -3).has_value());
+}
+
+TEST_F(GazeboWorlds, GazebosOwnGroundPlaneAndSunNeedNoModelFolder) {
+  const WorldSpec w = load("<include><uri>model://ground_plane</uri></include>\n<include><uri>model://sun</uri></include>\n"
+                           "<model name='m'><static>true</static><link name='l'><collision name='c'><geometry><box>"
+                           "<size>1 1 1</size></box></geometry></collision></link></model>\n");
+  EXPECT_EQ(w.statics.size(), 1u) << "the ground is no obstacle";
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "Gazebo's built-in model://ground_plane (" + dir_ + "/w.world:4): the floor")) << skipped;
+  EXPECT_TRUE(contains(skipped, "Gazebo's built-in model://sun (" + dir_ + "/w.world:5): Aula simulates no lighting")) << skipped;
+  // A folder of that name on the model path is read instead, as Gazebo reads the first it finds.
+  write("models/ground_plane/model.config", "<model><sdf version='1.6'>model.sdf</sdf></model>");
+  write("models/ground_plane/model.sdf", "<sdf version='1.6'><model name='ground_plane'><static>true</static><link name='l'>"
+                                         "<collision name='c'><geometry><box><size>2 2 0.1</size></box></geometry></collision>"
+                                         "</link></model></sdf>");
+  EXPECT_EQ(load("<include><uri>model://ground_plane</uri></include>\n").statics.size(), 1u);
+  // Any other model missing is still a problem.
+  EXPECT_EQ(problemsOf("<include><uri>model://ground</uri></include>\n").size(), 1u);
+}
+
+TEST_F(GazeboWorlds, ARobotWithNoCollisionIsTheBoxAroundItsVisuals) {
+  // As RoboticsAcademy's taxi_holo_laser_ROS: a visual mesh, no collision, three laser links
+  // (laser_f, laser_r, laser_b), libgazebo_ros_planar_move.so.
+  fs::create_directories(dir_ + "/models/taxi/meshes");
+  aula::testing::writeCollada(dir_ + "/models/taxi/meshes/taxi.dae", {aula::testing::boxTriangles({{{-2.3, -1, 0}, {2.3, 1, 1.5}}})},
+                              {"body"});
+  auto laser_link = [](const std::string& link, const std::string& sensor, const std::string& pose) {
+    return "<link name='" + link + "'><sensor name='" + sensor + "' type='ray'><pose>" + pose + "</pose><ray><scan><horizontal>"
+           "<samples>180</samples><min_angle>-1.57</min_angle><max_angle>1.57</max_angle></horizontal></scan>"
+           "<range><min>0.08</min><max>11</max></range></ray></sensor></link>";
+  };
+  write("models/taxi/model.config", "<model><sdf>model.sdf</sdf></model>");
+  write("models/taxi/model.sdf",
+        "<sdf version='1.5'><model name='taxi_holo'><link name='taxi_holo_laser'><inertial><mass>750</mass></inertial>"
+        "<visual name='visual'><geometry><mesh><uri>model://taxi/meshes/taxi.dae</uri></mesh></geometry></visual></link>" +
+            laser_link("laser_front", "laser_f", "2.4 0 0.5 0 0 0") + laser_link("laser_right", "laser_r", "0.5 -1.25 0.5 0 0 -1.5708") +
+            laser_link("laser_back", "laser_b", "-2.4 0 0.5 0 0 3.1416") +
+            "<plugin name='object_controller' filename='libgazebo_ros_planar_move.so'/></model></sdf>");
+  const WorldSpec w = load("<include><uri>model://taxi</uri><pose>-7 2.5 0.02 0 0 0</pose></include>\n");
+  const RobotSpec& taxi = requireRobot(w, "taxi_holo");
+  EXPECT_TRUE(taxi.shape.box_size_m.isApprox(Eigen::Vector3d(4.6, 2, 1.5), 1e-6)) << taxi.shape.box_size_m.transpose();
+  EXPECT_DOUBLE_EQ(taxi.mass_kg, 750);
+  for (const char* name : {"laser_front", "laser_rear", "laser_right"}) EXPECT_NE(taxi.findPluginNamed(name), nullptr) << name;
+  EXPECT_EQ(channelOf(taxi, "laser", "laser_rear"), "TAXI_HOLO_LASER_LASER_B");
+  std::string skipped;
+  for (const auto& line : w.skipped) skipped += line + "\n";
+  EXPECT_TRUE(contains(skipped, "a robot with no <collision> (" + dir_ + "/models/taxi/model.sdf:1): its shape is the box around its <visual>s"))
+      << skipped;
 }

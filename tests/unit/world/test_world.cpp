@@ -214,7 +214,7 @@ TEST(LoadWorld, ATypoInTheSdfIsNamedWithItsFileAndLine) {
       {"<model name=\"m\"><static>true</static>\n<pose>1 2 3 0 0</pose>" + box + "</model>", "model 'm': <pose> needs 6 numbers, x y z roll pitch yaw (" + dir + "/typo.world:5)"},
       {"<model name=\"m\"><static>true</static>\n<pose>1 2 3 0 0 0.5x</pose>" + box + "</model>", "is not a list of numbers (" + dir + "/typo.world:5)"},
       {"<model name=\"m\"><static>true</static>\n\n<pose relative_to=\"f\">1 2 3 0 0 0</pose>" + box + "</model>",
-       "model 'm': <pose relative_to=\"f\"> is not supported; give poses relative to the parent element (" + dir + "/typo.world:6)"},
+       "model 'm': <pose relative_to=\"f\"> is only read inside a model (naming its link, joint or frame) (" + dir + "/typo.world:6)"},
       {"<model name=\"m\"><static>true</static>" + box + "</model>\n<model name=\"m\"><static>true</static>" + box + "</model>",
        "two models named 'm' (" + dir + "/typo.world:5)"},
       {"<model><static>true</static>" + box + "</model>", "<model> needs a name attribute (" + dir + "/typo.world:4)"},

@@ -199,7 +199,8 @@ TEST(SdfReaderOracle, TheKindsOfWorldTheTestsWrite) {
       head + "<model name='m'><static>true</static><link name='l'><collision name='c'><geometry><box><size>1 -1 1</size></box>"
              "</geometry></collision></link></model></world></sdf>",
       head + "<model name='m'><link name='l'><collision name='c'><geometry><box/></geometry></collision>"
-             "<collision name='d'><geometry><box/></geometry></collision></link></model></world></sdf>",
+             "<collision name='d'><geometry><box/></geometry></collision></link>"
+             "<plugin name='pose' filename='pose3d'><channel>M_POSE</channel></plugin></model></world></sdf>",
       head + "<include><uri>model://nothing_here</uri></include></world></sdf>",
       head + "<model name='m'><static>true</static><link name='l'><collision name='c'><geometry><cylinder><radius>abc</radius>"
              "</cylinder></geometry></collision></link></model></world></sdf>",

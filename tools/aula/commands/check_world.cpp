@@ -7,15 +7,27 @@
 #include <aula/image/png.hpp>
 #include <aula/scoring/parking_geometry.hpp>
 #include <aula/settings/tables.hpp>
+#include <aula/world/car_kinematics.hpp>
 #include <aula/world/occupancy_map.hpp>
 #include <aula/world/world_spec.hpp>
 
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 
 namespace aula::commands {
 namespace {
 using config::Config;
+
+std::string shapeText(const world::Shape& shape) {
+  std::ostringstream text;
+  if (shape.kind == world::ShapeKind::Cylinder) {
+    text << "cylinder, radius " << shape.radius_m << " m, " << shape.length_m << " m high";
+  } else {
+    text << "box " << shape.box_size_m.x() << " x " << shape.box_size_m.y() << " x " << shape.box_size_m.z() << " m";
+  }
+  return text.str();
+}
 
 void printWorld(const world::WorldSpec& spec) {
   std::cout << "world '" << spec.name << "': " << spec.source_path << "\n  sha256 " << spec.sha256 << "\n";
@@ -42,8 +54,16 @@ void printWorld(const world::WorldSpec& spec) {
     const Eigen::Vector3d p = robot.pose.translation();
     std::cout << "robot '" << robot.name << "' at (" << p.x() << ", " << p.y() << "), yaw " << world::yawOf(robot.pose)
               << " rad, " << robot.mass_kg << " kg\n";
+    const Eigen::Vector3d c = robot.shape_offset.translation();
+    std::cout << "  shape: " << shapeText(robot.shape) << ", centre (" << c.x() << ", " << c.y() << ", " << c.z() << ") in its frame\n";
     for (const auto& plugin : robot.plugins) {
-      std::cout << "  " << plugin.type << " '" << plugin.name << "' on " << plugin.getString("channel", "(no channel)") << "\n";
+      std::cout << "  " << plugin.type << " '" << plugin.name << "' on " << plugin.getString("channel", "(no channel)");
+      if (plugin.type == "motors" && plugin.getString("kinematics", "diff") == "ackermann") {
+        const world::CarKinematics car = world::readCarKinematics(plugin);
+        std::cout << ": a car, wheelbase " << car.wheelbase_m << " m, max steer " << car.max_steer_rad << " rad (turning radius "
+                  << car.min_turn_radius_m << " m), rear axle at x " << car.rear_axle_x_m << " m";
+      }
+      std::cout << "\n";
     }
   }
 }

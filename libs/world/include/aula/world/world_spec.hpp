@@ -129,10 +129,12 @@ std::vector<std::string> modelSearchPath(const std::string& world_path);
 // `model_path` (default: modelSearchPath(path)). Throws WorldError listing every problem found.
 // Static models: every box, cylinder and mesh collision becomes a StaticObject (nested models
 // flattened; <plane> collisions, i.e. a Gazebo ground plane, are skipped; any other geometry is
-// a problem). Non-static models are robots: one link, one box/cylinder collision, mass > 0,
-// plugins whose filename is a known driver type (pose3d, motors, laser, bumper). Poses are raw
-// SDF poses composed parent * child; `relative_to` is rejected. physics_step_s is set only when
-// the file states <physics><max_step_size>. What is not simulated is listed in `skipped`.
+// a problem). Non-static models with Aula's drivers are robots: one link, one box/cylinder
+// collision, mass > 0, plugins whose filename is a known driver type (pose3d, motors, laser,
+// bumper); with a Gazebo drive plugin (planar move, diff drive, Ackermann...), Aula's robot of that
+// kind (world_sdf.cpp); with neither, static geometry kept still. Poses are raw SDF poses composed
+// parent * child; `relative_to` is read inside a model only. physics_step_s is set only when the
+// file states <physics><max_step_size>. What is not simulated is listed in `skipped`.
 WorldSpec loadWorld(const std::string& path, const std::vector<std::string>& model_path = {});
 
 // What a process that loads the world at `path` reads: the world file and every model file it
