@@ -412,3 +412,25 @@ TEST_F(GazeboWorlds, ARoombaOfSeveralLinksIsAulasRoundRobot) {
   EXPECT_TRUE(contains(skipped, "a robot's one-beam <sensor type=\"ray\"> (")) << skipped;
   EXPECT_EQ(roomba.findPluginNamed("wall"), nullptr) << "an infrared range finder is not the laser";
 }
+
+TEST_F(GazeboWorlds, ARoundBodyWithBumpersBulgingPastItIsACylinderAroundThem) {
+  // As roombaROS's bumper arcs: they bulge past the 0.165 m body at its sides, the box around
+  // them a centimetre wider across than along, and reach 1.04 times its half width. A box there
+  // could not turn on the spot beside a wall; the cylinder holds every point.
+  const std::string bumper = "<geometry><box><size>0.1 0.01 0.04</size></box></geometry>";
+  write("w.world",
+        "<sdf version='1.6'><world name='w'><model name='roomba'><link name='base'><inertial><mass>2</mass></inertial>"
+        "<collision name='body'><geometry><cylinder><radius>0.165</radius><length>0.06</length></cylinder></geometry></collision>"
+        "<collision name='left'><pose>0 0.168 0 0 0 0</pose>" + bumper + "</collision>"
+        "<collision name='right'><pose>0 -0.168 0 0 0 0</pose>" + bumper + "</collision></link>"
+        "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
+  const RobotSpec& roomba = requireRobot(loadWorld(dir_ + "/w.world", {dir_ + "/models"}), "roomba");
+  ASSERT_EQ(roomba.shape.kind, ShapeKind::Cylinder);
+  EXPECT_NEAR(roomba.shape.radius_m, std::hypot(0.05, 0.173), 1e-9) << "to the bumpers' outer corners";
+  // A box stays a box: its corners reach 1.41 times its half width.
+  write("w.world",
+        "<sdf version='1.6'><world name='w'><model name='cube'><link name='base'><inertial><mass>2</mass></inertial>"
+        "<collision name='body'><geometry><box><size>0.33 0.33 0.06</size></box></geometry></collision></link>"
+        "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
+  EXPECT_EQ(requireRobot(loadWorld(dir_ + "/w.world", {dir_ + "/models"}), "cube").shape.kind, ShapeKind::Box);
+}
