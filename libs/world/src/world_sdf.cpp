@@ -840,7 +840,12 @@ void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Ei
     robot.plugins.push_back(std::move(spec));
   };
   add("pose3d", "pose3d", {{"channel", prefix + "_POSE"}});
-  add("motors", "motors", {{"channel", prefix + "_MOTORS"}, {"holonomic", gazeboDrives().at(attribute(drive, "filename")) ? "true" : "false"}});
+  // Gazebo's drive plugins move the robot as commanded, with no speed limit of their own: the
+  // exercise's MaxV and MaxW (its motors proxy) are the limits. The driver's default (1 m/s,
+  // 1 rad/s) held RoboticsAcademy's taxi to 1 m/s in its city (mark 8.77) and its roomba's turns to 1 rad/s.
+  constexpr const char* kNoLimit = "1000";
+  add("motors", "motors", {{"channel", prefix + "_MOTORS"}, {"holonomic", gazeboDrives().at(attribute(drive, "filename")) ? "true" : "false"},
+                           {"max_v", kNoLimit}, {"max_w", kNoLimit}});
   add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
   for (const XMLElement* link = model.element->FirstChildElement("link"); link != nullptr; link = link->NextSiblingElement("link")) {
   // A sensor on a mount (a laser link on a fixed joint) is placed in the body's frame.

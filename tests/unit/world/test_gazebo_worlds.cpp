@@ -347,6 +347,10 @@ TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
   EXPECT_EQ(channelOf(taxi, "motors"), "TAXI_HOLO_MOTORS");
   EXPECT_EQ(channelOf(taxi, "bumper"), "TAXI_HOLO_BUMPER");
   EXPECT_TRUE(taxi.findPlugin("motors")->getBool("holonomic", false));
+  // Gazebo's planar move has no speed limit of its own: the exercise's MaxV and MaxW are the
+  // limits (TeleTaxi.MaxV may be up to 50 m/s, any exercise's MaxW up to 10 rad/s).
+  EXPECT_GE(taxi.findPlugin("motors")->getDouble("max_v", 0), 50.0);
+  EXPECT_GE(taxi.findPlugin("motors")->getDouble("max_w", 0), 10.0);
   const PluginSpec* laser = taxi.findPluginNamed("front");
   ASSERT_NE(laser, nullptr);
   EXPECT_EQ(laser->type, "laser");
