@@ -960,9 +960,9 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
   const double half = std::max(size.x(), size.y()) / 2;
   robot.shape_offset = Eigen::Isometry3d(Eigen::Translation3d(centre));
   // Round: no corner sticks out (a box's reaches 1.41 times its half width). RoboticsInfrastructure's
-  // roombaROS reaches 1.022 times: its bumpers' arcs bulge 4 mm past its body on a bounding box
-  // off-centre by 1 mm, and at 1.02 it was a 0.33 x 0.34 m box, which could not turn on the spot
-  // beside a wall or a sofa 5 cm off (30 s of bumps at a time in its house).
+  // roombaROS reaches 1.022 times: its bumpers' arcs reach 0.175 m, 1 cm past its 0.165 m body,
+  // and at 1.02 it was a 0.332 x 0.343 m box, which could not turn on the spot beside a wall or a
+  // sofa 5 cm off (30 s of bumps at a time in its house).
   if (std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.1 * half) {
     robot.shape.kind = ShapeKind::Cylinder;
     robot.shape.radius_m = std::max(half, reach);  // around every point
