@@ -1,6 +1,7 @@
 // The whole TeleTaxi exercise, headless in lockstep: `aula run teletaxi` starts the simulator,
 // the component with the reference solution and the referee as real processes.
 #include "test_support.hpp"
+#include "../unit/support/mesh_files.hpp"
 
 #include <aula/process/child_process.hpp>
 
@@ -124,4 +125,37 @@ TEST(TeleTaxiRun, ATaxiThatNeverDrivesGetsNoDistanceMarkUnlessTheOriginalRubric)
   const std::string original = runTaxi("0,-3", "still_original", "student", {"--TeleTaxi.Referee.Rubric=original"});
   EXPECT_EQ(aula::testing::jsonNumber(original, "mark"), 7.5) << original;
   EXPECT_NE(original.find("\"preset\": \"original\""), std::string::npos) << original;
+}
+
+// RoboticsAcademy's city in small, as its files come: one COLLADA mesh (four blocks in Blender's
+// [-1, 1] under a node matrix scaling x and y by 250, 3 m high, a ground; streets 20 m wide along
+// both axes and round the blocks) and a taxi known by Gazebo's planar-move plugin, which has no
+// speed limit of its own: the taxi drives at the exercise's speed (the motors' default held it to
+// 1 m/s, and RoboticsAcademy's city took 200-460 s a trip).
+TEST(TeleTaxiRun, TheReferenceDrivesAGazeboTaxiThroughAColladaCityAtTheExercisesSpeed) {
+  const std::string dir = aula::testing::privateDir();
+  const double k = 1.0 / 250;  // the file's units: world metres / 250 in x and y
+  std::vector<aula::testing::MeshBox> blocks;
+  for (const double sx : {-1.0, 1.0}) {
+    for (const double sy : {-1.0, 1.0}) {
+      blocks.push_back({{std::min(10 * sx, 110 * sx) * k, std::min(10 * sy, 110 * sy) * k, 0},
+                        {std::max(10 * sx, 110 * sx) * k, std::max(10 * sy, 110 * sy) * k, 3}});
+    }
+  }
+  aula::testing::writeCollada(dir + "/city.dae", {aula::testing::boxTriangles(blocks, 1.0)}, {"city"},
+                              "250 0 0 0 0 250 0 0 0 0 1 0 0 0 0 1");
+  std::ofstream(dir + "/city.world")
+      << "<sdf version='1.6'><world name='city'>"
+         "<model name='city'><static>true</static><link name='l'><collision name='c'><geometry><mesh><uri>city.dae</uri>"
+         "</mesh></geometry></collision></link></model>"
+         "<model name='taxi_holo'><pose>0 0 0 0 0 -1.5529944</pose><link name='chassis'><inertial><mass>750</mass></inertial>"
+         "<collision name='body'><pose>0 0 0.75 0 0 0</pose><geometry><box><size>4 2 1.5</size></box></geometry></collision>"
+         "</link><plugin name='object_controller' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>\n";
+  // North along the street on x = 0 past the blocks, then east: about 180 m.
+  const std::string json = runTaxi("60,120", "collada_city", "reference", {"--world=" + dir + "/city.world"});
+  EXPECT_NE(json.find("\"reached\": true"), std::string::npos) << json;
+  EXPECT_EQ(aula::testing::jsonNumber(json, "bumps"), 0.0) << json;
+  EXPECT_GE(aula::testing::jsonNumber(json, "path_length_m"), 170.0) << "round the block, not through it\n" << json;
+  EXPECT_GE(aula::testing::jsonNumber(json, "average_speed_mps"), 5.0) << json;
+  EXPECT_GE(aula::testing::jsonNumber(json, "mark"), 9.0) << json;
 }

@@ -15,7 +15,7 @@
 namespace aula::world {
 namespace {
 
-constexpr const char* kHeader = "aula-world-cache-v4";  // v4: meshes (read again from their files) and what was skipped
+constexpr const char* kHeader = "aula-world-cache-v5";  // v4: meshes (read again from their files) and what was skipped; v5: a robot round within 1.1 of its half width, a Gazebo drive with no speed limit of its own, Ackermann cars and still models read from their plugins
 
 std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 

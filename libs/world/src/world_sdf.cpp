@@ -961,6 +961,12 @@ void Reader::gazeboDrivers(const Model& model, const XMLElement* drive, const Ei
     motors["max_w"] = decimal(car->max_speed_mps * std::tan(car->max_steer_rad) / car->wheelbase_m);
   } else {
     motors["holonomic"] = gazeboDrives().at(attribute(drive, "filename")) == Drive::Holonomic ? "true" : "false";
+    // Gazebo's drive plugins move the robot as commanded, with no speed limit of their own: the
+    // exercise's MaxV and MaxW (its motors proxy) are the limits. The driver's default (1 m/s,
+    // 1 rad/s) held RoboticsAcademy's taxi to 1 m/s in its city (mark 8.77) and its roomba's turns to 1 rad/s.
+    constexpr const char* kNoLimit = "1000";
+    motors["max_v"] = kNoLimit;
+    motors["max_w"] = kNoLimit;
   }
   add("motors", "motors", motors);
   add("bumper", "bumper", {{"channel", prefix + "_BUMPER"}});
@@ -1168,9 +1174,13 @@ void Reader::addGazeboRobot(const Model& model, WorldSpec& spec) {
   for (const auto& p : points) reach = std::max(reach, std::hypot(p.x() - centre.x(), p.y() - centre.y()));
   const double half = std::max(size.x(), size.y()) / 2;
   robot.shape_offset = Eigen::Isometry3d(Eigen::Translation3d(centre));
-  if (!car && std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.02 * half) {  // round: no corner sticks out
+  // Round: no corner sticks out (a box's reaches 1.41 times its half width). RoboticsInfrastructure's
+  // roombaROS reaches 1.022 times: its bumpers' arcs reach 0.175 m, 1 cm past its 0.165 m body,
+  // and at 1.02 it was a 0.332 x 0.343 m box, which could not turn on the spot beside a wall or a
+  // sofa 5 cm off (30 s of bumps at a time in its house).
+  if (!car && std::abs(size.x() - size.y()) < 0.05 * 2 * half && reach <= 1.1 * half) {
     robot.shape.kind = ShapeKind::Cylinder;
-    robot.shape.radius_m = half;
+    robot.shape.radius_m = std::max(half, reach);  // around every point
     robot.shape.length_m = size.z();
   } else {
     robot.shape.box_size_m = size;

@@ -348,6 +348,10 @@ TEST_F(GazeboWorlds, ARobotKnownByItsGazeboPluginsIsAulasRobotOfThatKind) {
   EXPECT_EQ(channelOf(taxi, "motors"), "TAXI_HOLO_MOTORS");
   EXPECT_EQ(channelOf(taxi, "bumper"), "TAXI_HOLO_BUMPER");
   EXPECT_TRUE(taxi.findPlugin("motors")->getBool("holonomic", false));
+  // Gazebo's planar move has no speed limit of its own: the exercise's MaxV and MaxW are the
+  // limits (TeleTaxi.MaxV may be up to 50 m/s, any exercise's MaxW up to 10 rad/s).
+  EXPECT_GE(taxi.findPlugin("motors")->getDouble("max_v", 0), 50.0);
+  EXPECT_GE(taxi.findPlugin("motors")->getDouble("max_w", 0), 10.0);
   const PluginSpec* laser = taxi.findPluginNamed("laser_front");  // named by where it faces, as Aula's worlds name them
   ASSERT_NE(laser, nullptr);
   EXPECT_EQ(laser->type, "laser");
@@ -604,4 +608,26 @@ TEST_F(GazeboWorlds, ARobotWithNoCollisionIsTheBoxAroundItsVisuals) {
   for (const auto& line : w.skipped) skipped += line + "\n";
   EXPECT_TRUE(contains(skipped, "a robot with no <collision> (" + dir_ + "/models/taxi/model.sdf:1): its shape is the box around its <visual>s"))
       << skipped;
+}
+
+TEST_F(GazeboWorlds, ARoundBodyWithBumpersBulgingPastItIsACylinderAroundThem) {
+  // As roombaROS's bumper arcs: they bulge past the 0.165 m body at its sides, the box around
+  // them a centimetre wider across than along, and reach 1.04 times its half width. A box there
+  // could not turn on the spot beside a wall; the cylinder holds every point.
+  const std::string bumper = "<geometry><box><size>0.1 0.01 0.04</size></box></geometry>";
+  write("w.world",
+        "<sdf version='1.6'><world name='w'><model name='roomba'><link name='base'><inertial><mass>2</mass></inertial>"
+        "<collision name='body'><geometry><cylinder><radius>0.165</radius><length>0.06</length></cylinder></geometry></collision>"
+        "<collision name='left'><pose>0 0.168 0 0 0 0</pose>" + bumper + "</collision>"
+        "<collision name='right'><pose>0 -0.168 0 0 0 0</pose>" + bumper + "</collision></link>"
+        "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
+  const RobotSpec& roomba = requireRobot(loadWorld(dir_ + "/w.world", {dir_ + "/models"}), "roomba");
+  ASSERT_EQ(roomba.shape.kind, ShapeKind::Cylinder);
+  EXPECT_NEAR(roomba.shape.radius_m, std::hypot(0.05, 0.173), 1e-9) << "to the bumpers' outer corners";
+  // A box stays a box: its corners reach 1.41 times its half width.
+  write("w.world",
+        "<sdf version='1.6'><world name='w'><model name='cube'><link name='base'><inertial><mass>2</mass></inertial>"
+        "<collision name='body'><geometry><box><size>0.33 0.33 0.06</size></box></geometry></collision></link>"
+        "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
+  EXPECT_EQ(requireRobot(loadWorld(dir_ + "/w.world", {dir_ + "/models"}), "cube").shape.kind, ShapeKind::Box);
 }
