@@ -1,0 +1,60 @@
+"""bench/peers/run.sh's table: each side's median wall and CPU over the pairs, the ratios, the
+coverage each reached, and what the MuJoCo model approximates.
+  summary.py RUNS BUILD SEED LOAD_BEFORE LOAD_AFTER
+RUNS: one line a run, `aula|mujoco WALL_S USER_S SYS_S JSON` (Aula's --report, or mujoco_vacuum.py's line)."""
+import json
+import statistics
+import sys
+
+
+def read_runs(path):
+    runs = {"aula": [], "mujoco": []}
+    with open(path) as lines:
+        for line in lines:
+            side, wall_s, user_s, sys_s, report = line.split(" ", 4)
+            runs[side].append({"wall_s": float(wall_s), "cpu_s": float(user_s) + float(sys_s), **json.loads(report)})
+    return runs
+
+
+def median(runs, key):
+    return statistics.median(r[key] for r in runs)
+
+
+def spread(runs, key):
+    values = sorted(r[key] for r in runs)
+    return f"{median(runs, key):6.2f} s ({values[0]:.2f}-{values[-1]:.2f})"
+
+
+def coverages(runs):
+    values = sorted({f"{r['coverage_percent']:.6f}" for r in runs})
+    return ", ".join(values) + " %"
+
+
+def main(argv):
+    if len(argv) != 6:
+        sys.exit(__doc__.split("\n")[1].strip())
+    runs = read_runs(argv[1])
+    aula, mujoco = runs["aula"], runs["mujoco"]
+    version = mujoco[0]["mujoco"]
+    print(f"The peers' job: {aula[0]['sim_time_s']:.0f} s of the vacuum house, bounce, seed {argv[3]}; "
+          f"{len(aula)} pairs alternated (Aula, MuJoCo); load average {argv[4]} before, {argv[5]} after")
+    print(f"{'':34} {'wall median (min-max)':>24} {'CPU median (min-max)':>24}  coverage")
+    print(f"{'Aula (' + argv[2] + ')':34.34} {spread(aula, 'wall_s'):>24} {spread(aula, 'cpu_s'):>24}  {coverages(aula)}")
+    print(f"{'MuJoCo ' + version + ' (Python), whole':34} {spread(mujoco, 'wall_s'):>24} {spread(mujoco, 'cpu_s'):>24}"
+          f"  {coverages(mujoco)}")
+    print(f"{'MuJoCo ' + version + ', stepping only':34} {spread(mujoco, 'step_wall_s'):>24} {spread(mujoco, 'step_cpu_s'):>24}")
+    wall, cpu = median(aula, "wall_s") / median(mujoco, "wall_s"), median(aula, "cpu_s") / median(mujoco, "cpu_s")
+    print(f"Aula / MuJoCo whole: wall {wall:.2f}x, CPU {cpu:.2f}x "
+          f"({'Aula ahead' if wall < 1 else 'MuJoCo ahead'} on wall time, median of the pairs)")
+    print(f"Bumps: Aula {median(aula, 'bumps'):.0f}, MuJoCo {median(mujoco, 'bumps'):.0f} (contact starts); "
+          f"floor {aula[0]['floor_area_m2']} m2 (Aula), {mujoco[0]['floor_area_m2']} m2 (MuJoCo)")
+    print("What differs: MuJoCo's soft contacts (default solref/solimp) against DART's hard contacts (Bullet's "
+          "detector); a velocity actuator against DART's servo constraint, with the same force limits; the laser by "
+          "mj_multiRay on MuJoCo's geoms against Aula's 2D ray caster; one Python process with no bus against "
+          "Aula's simulator, component and referee in signed lockstep; the coverage counted once at the end "
+          "against the referee's count at every pose. A bounce run is chaotic: the two coverages differ as two "
+          "seeds do.")
+
+
+if __name__ == "__main__":
+    main(sys.argv)
