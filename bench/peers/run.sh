@@ -5,7 +5,8 @@
 # Aula, MuJoCo, Aula, MuJoCo..., each whole process timed by /usr/bin/time (wall; CPU = user +
 # system with the processes it waited for); prints the medians, their ratio and each one's coverage.
 # MuJoCo comes from PyPI into a bench virtual environment outside the source tree, created on the
-# first call: it is never a dependency of Aula.
+# first call: it is never a dependency of Aula. The model's laser and coverage count can be checked
+# against a run Aula recorded: "$venv/bin/python" bench/peers/compare_with_aula.py SETTINGS RUN.lcmlog.
 #   bench/peers/run.sh BUILD [N] [SEED]     e.g. bench/peers/run.sh build 5
 set -euo pipefail
 if [ $# -lt 1 ] || [ ! -x "$1/bin/aula" ]; then
@@ -17,12 +18,13 @@ pairs="${2:-5}"
 seed="${3:-1}"
 here="$(cd "$(dirname "$0")" && pwd)"
 mujoco_version=4.0.1
+lcm_version=1.5.3  # for compare_with_aula.py, which reads Aula's recorded runs
 venv="${XDG_CACHE_HOME:-$HOME/.cache}/aula-bench-peers/venv"
 
-if ! "$venv/bin/python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$mujoco_version')" 2>/dev/null; then
-  echo "peers: installing mujoco==$mujoco_version into $venv" >&2
+if ! "$venv/bin/python" -c "import lcm, mujoco, sys; sys.exit(mujoco.__version__ != '$mujoco_version')" 2>/dev/null; then
+  echo "peers: installing mujoco==$mujoco_version and lcm==$lcm_version into $venv" >&2
   python3 -m venv "$venv"
-  "$venv/bin/pip" install --quiet "mujoco==$mujoco_version"
+  "$venv/bin/pip" install --quiet "mujoco==$mujoco_version" "lcm==$lcm_version"
 fi
 
 work="$(mktemp -d)"

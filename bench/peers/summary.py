@@ -43,17 +43,17 @@ def main(argv):
     print(f"{'MuJoCo ' + version + ' (Python), whole':34} {spread(mujoco, 'wall_s'):>24} {spread(mujoco, 'cpu_s'):>24}"
           f"  {coverages(mujoco)}")
     print(f"{'MuJoCo ' + version + ', stepping only':34} {spread(mujoco, 'step_wall_s'):>24} {spread(mujoco, 'step_cpu_s'):>24}")
+    print(f"{'MuJoCo ' + version + ', its laser scans':34} {'':>24} {spread(mujoco, 'laser_cpu_s'):>24}")
     wall, cpu = median(aula, "wall_s") / median(mujoco, "wall_s"), median(aula, "cpu_s") / median(mujoco, "cpu_s")
     print(f"Aula / MuJoCo whole: wall {wall:.2f}x, CPU {cpu:.2f}x "
           f"({'Aula ahead' if wall < 1 else 'MuJoCo ahead'} on wall time, median of the pairs)")
     print(f"Bumps: Aula {median(aula, 'bumps'):.0f}, MuJoCo {median(mujoco, 'bumps'):.0f} (contact starts); "
           f"floor {aula[0]['floor_area_m2']} m2 (Aula), {mujoco[0]['floor_area_m2']} m2 (MuJoCo)")
-    print("What differs: MuJoCo's soft contacts (default solref/solimp) against DART's hard contacts (Bullet's "
-          "detector); a velocity actuator against DART's servo constraint, with the same force limits; the laser by "
-          "mj_multiRay on MuJoCo's geoms against Aula's 2D ray caster; one Python process with no bus against "
-          "Aula's simulator, component and referee in signed lockstep; the coverage counted once at the end "
-          "against the referee's count at every pose. A bounce run is chaotic: the two coverages differ as two "
-          "seeds do.")
+    print("What differs (docs/performance.md, \"Peers\"): MuJoCo's soft contacts against DART's hard ones (Bullet's\n"
+          "detector), its bumper reading contacts within 1 mm; a velocity actuator against DART's servo constraint,\n"
+          "with the same force limits; the laser by mj_multiRay (the same ranges as Aula's: compare_with_aula.py);\n"
+          "one Python process against Aula's simulator, component and referee in signed lockstep; the coverage\n"
+          "counted once at the end. A bounce run is chaotic: the two coverages differ as two seeds do.")
 
 
 if __name__ == "__main__":
