@@ -12,7 +12,8 @@ def read_runs(path):
     with open(path) as lines:
         for line in lines:
             side, wall_s, user_s, sys_s, report = line.split(" ", 4)
-            runs[side].append({"wall_s": float(wall_s), "cpu_s": float(user_s) + float(sys_s), **json.loads(report)})
+            runs[side].append({"wall_s": float(wall_s), "cpu_s": float(user_s) + float(sys_s), "user_s": float(user_s),
+                               "sys_s": float(sys_s), **json.loads(report)})
     return runs
 
 
@@ -44,6 +45,8 @@ def main(argv):
           f"  {coverages(mujoco)}")
     print(f"{'MuJoCo ' + version + ', stepping only':34} {spread(mujoco, 'step_wall_s'):>24} {spread(mujoco, 'step_cpu_s'):>24}")
     print(f"{'MuJoCo ' + version + ', its laser scans':34} {'':>24} {spread(mujoco, 'laser_cpu_s'):>24}")
+    print(f"CPU medians, user + system: Aula {median(aula, 'user_s'):.2f} + {median(aula, 'sys_s'):.2f} s, "
+          f"MuJoCo {median(mujoco, 'user_s'):.2f} + {median(mujoco, 'sys_s'):.2f} s")
     wall, cpu = median(aula, "wall_s") / median(mujoco, "wall_s"), median(aula, "cpu_s") / median(mujoco, "cpu_s")
     print(f"Aula / MuJoCo whole: wall {wall:.2f}x, CPU {cpu:.2f}x "
           f"({'Aula ahead' if wall < 1 else 'MuJoCo ahead'} on wall time, median of the pairs)")
