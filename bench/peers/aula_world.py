@@ -126,6 +126,7 @@ def read_world(path):
         included = ET.parse(model_file(include.findtext("uri").strip(), path)).getroot().find("model")
         if include.findtext("name"):
             included.set("name", include.findtext("name").strip())
+        # The include's <pose> stands for the model's own (read_model applies the model's pose after this one).
         read_model(included, child_pose(include) @ np.linalg.inv(child_pose(included)), path, statics, robots)
     if len(robots) != 1:
         raise SystemExit(f"{path}: {len(robots)} robots; this model of the vacuum job needs exactly one")
