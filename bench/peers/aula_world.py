@@ -4,10 +4,17 @@ and cylinders, and the roomba it includes from worlds/models) and the effective 
 import math
 import os
 import re
+import sys
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
 import numpy as np
+
+
+def fail(message):
+    """A usage or input error: said on stderr, exit code 2 (as Aula's programs do)."""
+    print(message, file=sys.stderr)
+    sys.exit(2)
 
 
 @dataclass
@@ -43,7 +50,7 @@ class Robot:
         try:
             return float(self.plugins[name][key])
         except KeyError:
-            raise SystemExit(f"{self.name}: plugin '{name}' has no <{key}>") from None
+            fail(f"{self.name}: plugin '{name}' has no <{key}>")
 
 
 @dataclass
@@ -79,7 +86,7 @@ def read_geometry(collision, pose, where):
     if cylinder is not None:
         return Primitive(name, "cylinder", pose, radius_m=float(cylinder.findtext("radius")),
                          length_m=float(cylinder.findtext("length")))
-    raise SystemExit(f"{where}: collision '{name}': only boxes and cylinders are modelled in MuJoCo here")
+    fail(f"{where}: collision '{name}': only boxes and cylinders are modelled in MuJoCo here")
 
 
 def model_file(uri, world_path):
@@ -87,7 +94,7 @@ def model_file(uri, world_path):
     name = uri[len("model://"):]
     path = os.path.join(os.path.dirname(world_path), "models", name, "model.sdf")
     if not os.path.exists(path):
-        raise SystemExit(f"{world_path}: {uri}: no {path}")
+        fail(f"{world_path}: {uri}: no {path}")
     return path
 
 
@@ -117,19 +124,28 @@ def read_model(model, pose, path, statics, robots):
             statics.append(read_geometry(collision, link_pose @ child_pose(collision), path))
 
 
+def parse_xml(path):
+    try:
+        return ET.parse(path).getroot()
+    except (ET.ParseError, OSError) as error:
+        fail(f"{path}: {error}")
+
+
 def read_world(path):
-    world = ET.parse(path).getroot().find("world")
+    world = parse_xml(path).find("world")
+    if world is None:
+        fail(f"{path}: no <world>")
     statics, robots = [], []
     for model in world.findall("model"):
         read_model(model, np.eye(4), path, statics, robots)
     for include in world.findall("include"):
-        included = ET.parse(model_file(include.findtext("uri").strip(), path)).getroot().find("model")
+        included = parse_xml(model_file(include.findtext("uri").strip(), path)).find("model")
         if include.findtext("name"):
             included.set("name", include.findtext("name").strip())
         # The include's <pose> stands for the model's own (read_model applies the model's pose after this one).
         read_model(included, child_pose(include) @ np.linalg.inv(child_pose(included)), path, statics, robots)
     if len(robots) != 1:
-        raise SystemExit(f"{path}: {len(robots)} robots; this model of the vacuum job needs exactly one")
+        fail(f"{path}: {len(robots)} robots; this model of the vacuum job needs exactly one")
     return World(path, statics, robots[0])
 
 
@@ -144,13 +160,13 @@ def read_settings(path):
             elif line.startswith("world: "):
                 world = line[len("world: "):].strip()
     if world is None:
-        raise SystemExit(f"{path}: no 'world:' line (is it the output of `aula config vacuum`?)")
+        fail(f"{path}: no 'world:' line (is it the output of `aula config vacuum`?)")
     return values, world
 
 
 def setting(values, key):
     """A number (or a list of numbers) of the settings, its unit dropped."""
     if key not in values:
-        raise SystemExit(f"settings: no {key}")
+        fail(f"settings: no {key} (is it the output of `aula config vacuum`?)")
     numbers = [float(v.split()[0]) for v in values[key].split(",")]
     return numbers[0] if len(numbers) == 1 else numbers

@@ -13,7 +13,7 @@ import lcm
 import mujoco
 import numpy as np
 
-from aula_world import read_settings, read_world, setting
+from aula_world import fail, read_settings, read_world, setting
 from coverage import coverage
 from mujoco_vacuum import Laser, mjcf
 
@@ -50,7 +50,7 @@ def compare_scans(world, poses, scans):
 
 def main(argv):
     if len(argv) != 3:
-        sys.exit(__doc__.split("\n\n")[1])
+        fail("usage: " + __doc__.split("\n\n")[1].strip())
     values, world_path = read_settings(argv[1])
     world = read_world(world_path)
     poses, scans = recorded(argv[2], world)

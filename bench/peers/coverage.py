@@ -9,6 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from aula_world import fail
+
 
 @dataclass
 class Grid:
@@ -90,7 +92,7 @@ def reachable_floor(free, start_row, start_col):
     floor = np.zeros_like(free)
     start = next(((a, b) for a, b in runs[start_row] if a <= start_col <= b), None)
     if start is None:
-        raise SystemExit("coverage: the robot's start is not on the floor")
+        fail("coverage: the robot's start is not on the floor")
     queue, seen = deque([(start_row, start)]), {(start_row, start)}
     while queue:
         row, (a, b) = queue.popleft()

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from aula_world import read_settings, read_world, setting
+from aula_world import fail, read_settings, read_world, setting
 from bounce import Bounce
 from coverage import coverage
 
@@ -187,7 +187,7 @@ def clocks():
 
 def main(argv):
     if len(argv) not in (2, 3):
-        sys.exit(__doc__.split("\n\n")[1])
+        fail("usage: " + __doc__.split("\n\n")[1].strip())
     start = clocks()
     values, world_path = read_settings(argv[1])
     world = read_world(world_path)

@@ -33,7 +33,8 @@ def coverages(runs):
 
 def main(argv):
     if len(argv) != 6:
-        sys.exit(__doc__.split("\n")[1].strip())
+        print("usage: " + __doc__.split("\n")[2].strip(), file=sys.stderr)
+        sys.exit(2)
     runs = read_runs(argv[1])
     aula, mujoco = runs["aula"], runs["mujoco"]
     version = mujoco[0]["mujoco"]
