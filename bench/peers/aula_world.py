@@ -63,7 +63,9 @@ class World:
 def pose_matrix(text):
     """An SDF <pose> (x y z roll pitch yaw) as a 4x4 transform."""
     x, y, z, roll, pitch, yaw = (float(v) for v in (text or "0 0 0 0 0 0").split())
-    cr, sr, cp, sp, cy, sy = math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw), math.sin(yaw)
+    cr, sr = math.cos(roll), math.sin(roll)
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
     m = np.eye(4)
     m[:3, :3] = [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
                  [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],

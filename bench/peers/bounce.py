@@ -77,8 +77,8 @@ class Bounce:
         elif self.phase == 2:
             v_mps = 0.0
             error_rad = wrap_angle(self.target_rad - yaw_rad)
-            w_radps = math.copysign(min(self.TURN_MAX_RADPS, self.TURN_MIN_RADPS + self.TURN_GAIN_PER_S * abs(error_rad)),
-                                    error_rad)
+            speed_radps = min(self.TURN_MAX_RADPS, self.TURN_MIN_RADPS + self.TURN_GAIN_PER_S * abs(error_rad))
+            w_radps = math.copysign(speed_radps, error_rad)
             if abs(error_rad) < self.TURN_TOLERANCE_RAD or self.t_s - self.phase_start_s > self.TURN_TIMEOUT_S:
                 self.phase = 0
         return v_mps, w_radps

@@ -61,7 +61,8 @@ def main(argv):
     covered, floor_m2 = coverage(world.statics, world.robot.start_pose[:2, 3], graded,
                                  setting(values, "Vacuum.Map.Resolution"), setting(values, "Vacuum.Map.ZBand"),
                                  setting(values, "Vacuum.Referee.RobotRadius"))
-    print(f"coverage of the {len(graded)} recorded poses: {covered:.6f} % of {floor_m2:.4f} m2 (the report's coverage_percent)")
+    print(f"coverage of the {len(graded)} recorded poses: {covered:.6f} % of {floor_m2:.4f} m2 "
+          "(the report's coverage_percent)")
 
 
 if __name__ == "__main__":

@@ -118,7 +118,8 @@ def cleaned_cells(poses_m, grid, radius_m, chunk=1024):
         cols = np.floor(cx - r_px).astype(int)[:, None, None] + span[None, None, :]
         rows = np.floor(cy - r_px).astype(int)[:, None, None] + span[None, :, None]
         dx, dy = cols + 0.5 - cx[:, None, None], rows + 0.5 - cy[:, None, None]
-        hit = (dx * dx + dy * dy <= r_px * r_px) & (cols >= 0) & (cols < grid.width_px) & (rows >= 0) & (rows < grid.height_px)
+        on_grid = (cols >= 0) & (cols < grid.width_px) & (rows >= 0) & (rows < grid.height_px)
+        hit = (dx * dx + dy * dy <= r_px * r_px) & on_grid
         cleaned[np.broadcast_to(rows, hit.shape)[hit], np.broadcast_to(cols, hit.shape)[hit]] = True
     return cleaned
 

@@ -77,7 +77,8 @@ def robot_body(robot):
       <joint name="x" type="slide" axis="1 0 0"/><joint name="y" type="slide" axis="0 1 0"/>
       <joint name="yaw" type="hinge" axis="0 0 1"/>
       <inertial pos="{fmt(b.pose[:3, 3])}" mass="{robot.mass_kg!r}" diaginertia="{ixx!r} {ixx!r} {izz!r}"/>
-      <geom name="robot" margin="{BUMPER_MARGIN_M}" gap="{BUMPER_MARGIN_M}" type="cylinder" size="{b.radius_m!r} {b.length_m / 2!r}" pos="{fmt(b.pose[:3, 3])}"/>
+      <geom name="robot" type="cylinder" size="{b.radius_m!r} {b.length_m / 2!r}" pos="{fmt(b.pose[:3, 3])}"
+            margin="{BUMPER_MARGIN_M}" gap="{BUMPER_MARGIN_M}"/>
     </body>''', izz
 
 
@@ -85,7 +86,8 @@ def servos(robot, izz, step_s):
     force_n = robot.mass_kg * MAX_LINEAR_ACCEL
     torque_nm = max(1e-3, izz * MAX_ANGULAR_ACCEL)
     rows = []
-    for joint, inertia, limit in (("x", robot.mass_kg, force_n), ("y", robot.mass_kg, force_n), ("yaw", izz, torque_nm)):
+    joints = (("x", robot.mass_kg, force_n), ("y", robot.mass_kg, force_n), ("yaw", izz, torque_nm))
+    for joint, inertia, limit in joints:
         # kv = inertia / step: an explicit (Euler) step closes the velocity gap at once within the force
         # limit, as DART's servo does (a stiffer kv overshoots by a clamped force's step and chatters).
         kv = inertia / step_s
@@ -120,6 +122,7 @@ class Laser:
         self.min_range_m, self.max_range_m = float(p["min_range"]), float(p["max_range"])
         mount = [float(v) for v in p.get("pose", "0 0 0 0 0 0").split()]
         self.mount_m = np.array(mount[:3])
+        self.height_m = robot.start_pose[2, 3] + mount[2]  # the robot stays on its plane
         # Each beam's direction in the robot's frame (the mount's yaw included), turned by the robot's yaw per scan.
         self.beams = np.column_stack((np.cos(beam_rad + mount[5]), np.sin(beam_rad + mount[5])))
         self.directions = np.zeros((self.samples, 3))
@@ -133,7 +136,7 @@ class Laser:
         started_s = time.process_time()
         c, s = math.cos(yaw_rad), math.sin(yaw_rad)
         origin = np.array([x_m + c * self.mount_m[0] - s * self.mount_m[1],
-                           y_m + s * self.mount_m[0] + c * self.mount_m[1], self.mount_m[2]])
+                           y_m + s * self.mount_m[0] + c * self.mount_m[1], self.height_m])
         self.directions[:, :2] = self.beams @ np.array([[c, s], [-s, c]])
         mujoco.mj_multiRay(model, data, origin, self.directions.ravel(), None, 1, self.body, self.geom_ids,
                            self.ranges_m, None, self.samples, self.max_range_m)

@@ -21,7 +21,8 @@ mujoco_version=4.0.1
 lcm_version=1.5.3  # for compare_with_aula.py, which reads Aula's recorded runs
 venv="${XDG_CACHE_HOME:-$HOME/.cache}/aula-bench-peers/venv"
 
-if ! "$venv/bin/python" -c "import lcm, mujoco, sys; sys.exit(mujoco.__version__ != '$mujoco_version')" 2>/dev/null; then
+installed="import lcm, mujoco, sys; sys.exit(mujoco.__version__ != '$mujoco_version')"
+if ! "$venv/bin/python" -c "$installed" 2>/dev/null; then
   echo "peers: installing mujoco==$mujoco_version and lcm==$lcm_version into $venv" >&2
   python3 -m venv "$venv"
   "$venv/bin/pip" install --quiet "mujoco==$mujoco_version" "lcm==$lcm_version"
@@ -35,9 +36,10 @@ trap 'rm -rf "$work"' EXIT
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 for pair in $(seq 1 "$pairs"); do
   /usr/bin/time -f "%e %U %S" -o "$work/aula.time" \
-    "$build/bin/aula" run vacuum --headless --algorithm=bounce --seed="$seed" --report="$work/aula.json" > "$work/aula.out" 2>&1 ||
+    "$build/bin/aula" run vacuum --headless --algorithm=bounce --seed="$seed" --report="$work/aula.json" \
+    > "$work/aula.out" 2>&1 ||
     { cat "$work/aula.out" >&2; exit 1; }
-  echo "aula $(cat "$work/aula.time") $(cat "$work/aula.json" | tr -d '\n')" >> "$work/runs"
+  echo "aula $(cat "$work/aula.time") $(tr -d '\n' < "$work/aula.json")" >> "$work/runs"
   /usr/bin/time -f "%e %U %S" -o "$work/mujoco.time" \
     "$venv/bin/python" "$here/mujoco_vacuum.py" "$work/settings.txt" "$seed" > "$work/mujoco.json"
   echo "mujoco $(cat "$work/mujoco.time") $(cat "$work/mujoco.json")" >> "$work/runs"

@@ -41,10 +41,12 @@ def main(argv):
     print(f"The peers' job: {aula[0]['sim_time_s']:.0f} s of the vacuum house, bounce, seed {argv[3]}; "
           f"{len(aula)} pairs alternated (Aula, MuJoCo); load average {argv[4]} before, {argv[5]} after")
     print(f"{'':34} {'wall median (min-max)':>24} {'CPU median (min-max)':>24}  coverage")
-    print(f"{'Aula (' + argv[2] + ')':34.34} {spread(aula, 'wall_s'):>24} {spread(aula, 'cpu_s'):>24}  {coverages(aula)}")
+    print(f"{'Aula (' + argv[2] + ')':34.34} {spread(aula, 'wall_s'):>24} {spread(aula, 'cpu_s'):>24}"
+          f"  {coverages(aula)}")
     print(f"{'MuJoCo ' + version + ' (Python), whole':34} {spread(mujoco, 'wall_s'):>24} {spread(mujoco, 'cpu_s'):>24}"
           f"  {coverages(mujoco)}")
-    print(f"{'MuJoCo ' + version + ', stepping only':34} {spread(mujoco, 'step_wall_s'):>24} {spread(mujoco, 'step_cpu_s'):>24}")
+    print(f"{'MuJoCo ' + version + ', stepping only':34} {spread(mujoco, 'step_wall_s'):>24}"
+          f" {spread(mujoco, 'step_cpu_s'):>24}")
     print(f"{'MuJoCo ' + version + ', its laser scans':34} {'':>24} {spread(mujoco, 'laser_cpu_s'):>24}")
     print(f"CPU medians, user + system: Aula {median(aula, 'user_s'):.2f} + {median(aula, 'sys_s'):.2f} s, "
           f"MuJoCo {median(mujoco, 'user_s'):.2f} + {median(mujoco, 'sys_s'):.2f} s")
