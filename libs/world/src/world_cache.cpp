@@ -1,5 +1,6 @@
 #include "world_cache.hpp"
 #include "world_sdf.hpp"
+#include "reader_version.hpp"
 
 #include <aula/config/paths.hpp>
 
@@ -15,7 +16,12 @@
 namespace aula::world {
 namespace {
 
-constexpr const char* kHeader = "aula-world-cache-v5";  // v4: meshes (read again from their files) and what was skipped; v5: a robot round within 1.1 of its half width, a Gazebo drive with no speed limit of its own, Ackermann cars and still models read from their plugins
+// The format's version, then the reader's own (its sources' SHA-256, reader_version.hpp): an entry
+// written by another reader is never read, with no version to remember to raise.
+const std::string& header() {
+  static const std::string text = std::string("aula-world-cache-v5 ") + kReaderSourceSha256;
+  return text;
+}
 
 std::string entryPath(const std::string& key) { return config::cacheDir() + "/" + entryName(key); }
 
@@ -93,7 +99,7 @@ Shape readShape(std::istream& in) {
 
 std::optional<WorldSpec> parseEntry(std::istream& in) {
   std::string line;
-  if (!std::getline(in, line) || line != kHeader) return std::nullopt;
+  if (!std::getline(in, line) || line != header()) return std::nullopt;
   WorldSpec spec;
   // A mesh's triangles are not kept in the entry (a city is megabytes of them): its file, listed
   // among the inputs with its SHA-256, is read again, once per mesh.
@@ -163,7 +169,7 @@ std::optional<WorldSpec> parseEntry(std::istream& in) {
 }  // namespace
 
 std::string worldCacheKey(const std::string& path, const std::vector<std::string>& model_folders) {
-  std::string key = std::string(kHeader) + "\n" + std::filesystem::absolute(path).string() + "\n";
+  std::string key = header() + "\n" + std::filesystem::absolute(path).string() + "\n";
   for (const auto& folder : model_folders) key += folder + "\n";
   return sha256Hex(key);
 }
@@ -193,7 +199,7 @@ std::optional<WorldSpec> readCachedWorld(const std::string& key) {
 
 void writeCachedWorld(const std::string& key, const WorldSpec& spec, const std::vector<std::string>& inputs) {
   std::ostringstream out;
-  out << kHeader << "\n";
+  out << header() << "\n";
   for (const auto& input : inputs) out << "input\t" << sha256OfFile(input) << "\t" << escape(input) << "\n";
   out << "world\t" << escape(spec.name) << "\t" << escape(spec.source_path) << "\t" << spec.sha256 << "\t"
       << number(spec.physics_step_s) << "\n";
