@@ -1,4 +1,6 @@
 #include "aula/world/occupancy_map.hpp"
+#include "reader_version.hpp"
+
 
 #include <aula/config/paths.hpp>
 #include <aula/geometry/oriented_box.hpp>
@@ -195,9 +197,9 @@ geometry::MapTransform fitTransform(const WorldSpec& world, double resolution_m)
 OccupancyMap occupancyMapOf(const WorldSpec& world, const MapParams& params) {
   OccupancyMap out;
   out.transform = fitTransform(world, params.resolution_m);
-  // Key: everything the raster depends on, printed exactly.
+  // Key: everything the raster depends on, printed exactly, the rasterizer's own sources among them.
   std::ostringstream key;
-  key << std::setprecision(17) << "aula-map-v1 " << params.resolution_m << ' ' << params.z_min_m << ' '
+  key << std::setprecision(17) << "aula-map-v1 " << kReaderSourceSha256 << ' ' << params.resolution_m << ' ' << params.z_min_m << ' '
       << params.z_max_m << '\n';
   for (const auto& o : world.statics) {
     key << static_cast<int>(o.shape.kind) << ' ' << o.shape.box_size_m.transpose() << ' ' << o.shape.radius_m << ' '
