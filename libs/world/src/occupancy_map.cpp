@@ -1,7 +1,6 @@
 #include "aula/world/occupancy_map.hpp"
 #include "reader_version.hpp"
 
-
 #include <aula/config/paths.hpp>
 #include <aula/geometry/oriented_box.hpp>
 
