@@ -34,8 +34,10 @@ LocalOrigin localOrigin(const Eigen::Vector2d& o, const RectFrame& r) {
 }
 
 // Entry distance of the ray o + t d (|d| = 1) into an oriented rectangle, 0 if o is inside,
-// +inf on a miss. Slab test in the rectangle's frame, `local` being o there.
-double rayRect(const LocalOrigin& local, const Eigen::Vector2d& d, const RectFrame& r) {
+// +inf on a miss. Slab test in the rectangle's frame, `local` being o there. +inf too when the
+// first slab already shows that the entry is not below `beat` (a nearer hit is known): the
+// nearest hit is the same, and a test costs two divisions instead of four.
+double rayRect(const LocalOrigin& local, const Eigen::Vector2d& d, const RectFrame& r, double beat = kInf) {
   const double c = r.cos_yaw, s = r.sin_yaw;
   const double ox = local.x, oy = local.y;
   const double dx = c * d.x() + s * d.y(), dy = -s * d.x() + c * d.y();
@@ -48,6 +50,7 @@ double rayRect(const LocalOrigin& local, const Eigen::Vector2d& d, const RectFra
     if (a > b) std::swap(a, b);
     t0 = std::max(t0, a);
     t1 = std::min(t1, b);
+    if (t1 < 0 || t0 >= beat) return kInf;  // the entry is at t0 or later, the exit before 0
   }
   if (std::abs(dy) < 1e-15) {
     if (oy < -hy || oy > hy) return kInf;
@@ -168,14 +171,10 @@ double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double
   return castAlong(origin, Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad)), max_range_m, dynamic, nullptr);
 }
 
-// What a scan's beams share: the origin in each rectangle's frame, and which obstacles the
-// current beam has tested already (an obstacle spans several cells). Only the work changes:
-// every test that is made computes what cast() computes, and a nearest hit is the same whichever
-// order its candidates come in.
+// What a scan's beams share: the origin in each rectangle's frame. Only the work changes: every
+// test computes what cast() computes.
 struct Raycaster2D::ScanScratch {
   std::vector<LocalOrigin> local;  // per rectangle
-  std::vector<uint32_t> tested;    // per obstacle: the last beam that tested it
-  uint32_t beam = 0;
 };
 
 double Raycaster2D::castAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& d, double max_range_m,
@@ -210,19 +209,18 @@ double Raycaster2D::castAlong(const Eigen::Vector2d& origin, const Eigen::Vector
   double t_y = std::abs(d.y()) < 1e-15 ? kInf : (next_by - origin.y()) / d.y();
 
   const int rects = static_cast<int>(statics_.rects.size()), circles = static_cast<int>(statics_.circles.size());
-  if (scratch != nullptr) ++scratch->beam;
   for (;;) {
-    // Without a scan's scratch an object may be tested again in a later cell: cheap, and keeps
-    // the caster stateless (const and safe to share).
+    // An object may be tested again in a later cell: cheap, and keeps the caster stateless
+    // (const and safe to share).
     for (const int id : cells_[static_cast<size_t>(cy) * cols_ + cx]) {
       double t;
       if (scratch != nullptr) {
-        if (scratch->tested[static_cast<size_t>(id)] == scratch->beam) continue;
-        scratch->tested[static_cast<size_t>(id)] = scratch->beam;
-        t = id < rects ? rayRect(scratch->local[static_cast<size_t>(id)], d, rect_frames_[static_cast<size_t>(id)])
+        t = id < rects ? rayRect(scratch->local[static_cast<size_t>(id)], d, rect_frames_[static_cast<size_t>(id)], best)
                        : castOne(origin, d, id, rects, circles);
       } else {
-        t = id < rects ? rayRect(origin, d, rect_frames_[static_cast<size_t>(id)]) : castOne(origin, d, id, rects, circles);
+        t = id < rects ? rayRect(localOrigin(origin, rect_frames_[static_cast<size_t>(id)]), d,
+                                 rect_frames_[static_cast<size_t>(id)], best)
+                       : castOne(origin, d, id, rects, circles);
       }
       best = std::min(best, t);
     }
@@ -251,7 +249,6 @@ void Raycaster2D::scan(const ScanRequest& request, float* ranges_m, const Obstac
   ScanScratch scratch;
   scratch.local.reserve(rect_frames_.size());
   for (const RectFrame& r : rect_frames_) scratch.local.push_back(localOrigin(request.origin_m, r));
-  scratch.tested.assign(statics_.rects.size() + statics_.circles.size() + statics_.segments.size(), 0);
   for (int i = 0; i < request.num_beams; ++i) {
     const double angle = request.yaw_rad + request.min_angle_rad + i * request.angle_increment_rad;
     double r = castAlong(request.origin_m, Eigen::Vector2d(std::cos(angle), std::sin(angle)), request.max_range_m,
