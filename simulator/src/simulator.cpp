@@ -21,6 +21,7 @@ namespace {
 using WallClock = std::chrono::steady_clock;
 constexpr auto kHeartbeat = std::chrono::milliseconds(100);
 constexpr auto kProcessCheckPeriod = std::chrono::milliseconds(100);
+constexpr auto kStopLook = std::chrono::milliseconds(1);
 
 int64_t secondsToUs(double s) { return static_cast<int64_t>(std::llround(s * 1e6)); }
 
@@ -381,10 +382,22 @@ struct Simulator::RunClocks {
   WallClock::time_point last_frame;
 };
 
-void Simulator::run(const std::function<bool()>& should_stop, const std::function<bool()>& frame) {
+void Simulator::run(const std::function<bool()>& asked_to_stop, const std::function<bool()>& frame) {
   const int64_t duration_us = secondsToUs(options_.duration_s);
   const auto start = WallClock::now();
   RunClocks clocks{start, physics_->timeUs(), start, physics_->timeUs(), start, start};
+  // Asked at most every kStopLook of wall time: it reads the signals' descriptor, and the loop
+  // passes here about three times a tick.
+  WallClock::time_point next_look{};
+  bool stopping = false;  // once asked, for good
+  const std::function<bool()> should_stop = [&] {
+    if (stopping) return true;
+    const auto now = WallClock::now();
+    if (now < next_look) return false;
+    next_look = now + kStopLook;
+    stopping = asked_to_stop();
+    return stopping;
+  };
   while (!should_stop()) {
     if (duration_us > 0 && physics_->timeUs() >= duration_us) break;
     if (!drawFrameIfDue(frame, clocks)) break;

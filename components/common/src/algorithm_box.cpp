@@ -4,6 +4,7 @@
 #include <aula/component/plugin_library.hpp>
 #include <aula/process/exit_codes.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -41,22 +42,6 @@ void ioBudget(BoxWire& wire, CallBudget& budget) {
   wire.io(budget.blocked_s, "budgets");
 }
 
-bool readAll(int fd, char* data, size_t n) {
-  size_t done = 0;
-  while (done < n) {
-    const ssize_t got = ::read(fd, data + done, n - done);
-    if (got > 0) {
-      done += static_cast<size_t>(got);
-    } else if (got == 0) {
-      if (done == 0) return false;
-      throw BoxWireError("the algorithm's socket ended inside a frame");
-    } else if (errno != EINTR) {
-      return false;
-    }
-  }
-  return true;
-}
-
 std::string signalName(int signal) {
   switch (signal) {
     case SIGSEGV: return "SIGSEGV";
@@ -89,14 +74,39 @@ void ioStart(BoxWire& wire, BoxStart& start, AlgorithmBudgets& budgets) {
   wire.io(budgets.memory_bytes, "budgets");
 }
 
-bool readFrame(int fd, std::string& bytes, size_t max_bytes) {
+bool FrameReader::fill(size_t bytes) {
+  while (buffered_.size() < bytes) {
+    const size_t have = buffered_.size();
+    const size_t chunk = std::max(bytes - have, kChunk);
+    buffered_.resize(have + chunk);
+    const ssize_t got = ::read(fd_, buffered_.data() + have, chunk);
+    buffered_.resize(have + static_cast<size_t>(std::max<ssize_t>(got, 0)));
+    if (got > 0) continue;
+    if (got == 0) {
+      if (have == 0) return false;
+      throw BoxWireError("the algorithm's socket ended inside a frame");
+    }
+    if (errno != EINTR) return false;
+  }
+  return true;
+}
+
+bool FrameReader::read(std::string& bytes, size_t max_bytes) {
   uint32_t length = 0;
-  if (!readAll(fd, reinterpret_cast<char*>(&length), sizeof length)) return false;
+  if (!fill(sizeof length)) return false;
+  std::memcpy(&length, buffered_.data(), sizeof length);
   if (length > max_bytes) {
     throw BoxWireError("a frame of " + std::to_string(length) + " bytes, at most " + std::to_string(max_bytes));
   }
-  bytes.resize(length);
-  if (length > 0 && !readAll(fd, bytes.data(), length)) throw BoxWireError("the algorithm's socket ended inside a frame");
+  if (!fill(sizeof length + length)) throw BoxWireError("the algorithm's socket ended inside a frame");
+  if (buffered_.size() == sizeof length + length) {  // the usual case: nothing after it
+    buffered_.erase(0, sizeof length);
+    bytes.swap(buffered_);
+    buffered_.clear();
+  } else {
+    bytes.assign(buffered_, sizeof length, length);
+    buffered_.erase(0, sizeof length + length);
+  }
   return true;
 }
 
@@ -129,6 +139,7 @@ AlgorithmBox::AlgorithmBox(const BoxStart& start, const AlgorithmBudgets& budget
     throw std::runtime_error(std::string("cannot make the algorithm's line: ") + std::strerror(errno));
   }
   socket_ = pair[0];
+  frames_.setFd(socket_);
   line_ = std::make_unique<process::LinePipe>(line[0]);
   line_fd_ = line[0];
   // Nothing of this process (its memory, environment, descriptors under /proc) for a process of
@@ -157,7 +168,7 @@ AlgorithmBox::AlgorithmBox(const BoxStart& start, const AlgorithmBudgets& budget
   writeFrame(socket_, wire.bytes());
 
   std::string frame;
-  if (!readFrame(socket_, frame, 1 << 20)) {
+  if (!frames_.read(frame, 1 << 20)) {
     const BoxEnded ended = endOf("loading the algorithm");
     throw PluginError(start.program + ": the algorithm's process ended while loading it: " + ended.reason);
   }
@@ -204,7 +215,7 @@ AlgorithmBox::Result AlgorithmBox::call(uint64_t seed, const char* what, CallKin
   try {
     writeFrame(socket_, wire.bytes());
     waitForReply();
-    if (!readFrame(socket_, frame, kMaxReplyBytes)) {
+    if (!frames_.read(frame, kMaxReplyBytes)) {
       result.ended = endOf(what);
       return result;
     }

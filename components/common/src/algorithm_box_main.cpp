@@ -50,6 +50,12 @@ std::string narrowGradedView(const BoxStart& start) {
   return sandbox::narrowFileView(view);
 }
 
+// The algorithm's end of the socket (one per process).
+FrameReader& boxFrames() {
+  static FrameReader frames(kBoxSocketFd);
+  return frames;
+}
+
 }  // namespace
 
 bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
@@ -62,7 +68,7 @@ bool enterAlgorithmBox(BoxStart& start, AlgorithmBudgets& budgets) {
   ::fcntl(kBoxSocketFd, F_SETFD, FD_CLOEXEC);  // no program it runs (addr2line, its own) holds it
   std::string frame;
   try {
-    if (!readFrame(kBoxSocketFd, frame, 1 << 20)) return false;
+    if (!boxFrames().read(frame, 1 << 20)) return false;
     BoxWire wire = BoxWire::reading(std::move(frame));
     uint8_t type = 0;
     wire.io(type, "start");
@@ -127,7 +133,7 @@ void sayLoaded(const AlgorithmHostBase& host) {
 
 bool readCall(std::string& frame, BoxWire& wire, uint64_t& seed, CallKind& kind, const char*& what,
               std::set<std::string>& names) {
-  if (!readFrame(kBoxSocketFd, frame, kMaxReplyBytes)) return false;
+  if (!boxFrames().read(frame, kMaxReplyBytes)) return false;
   wire = BoxWire::reading(std::move(frame));
   uint8_t type = 0;
   int32_t kind_code = 0;

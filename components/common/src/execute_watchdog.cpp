@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <pthread.h>
 #include <unistd.h>
 
 namespace aula::component {
@@ -47,6 +48,18 @@ int64_t threadCpuNs(pthread_t thread) {
   return static_cast<int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec;
 }
 
+namespace {
+thread_local pid_t cached_tid = 0;
+// The calling thread's id, asked of the kernel once per thread, not at every arm() (every control
+// period); a child forked from this thread asks again.
+pid_t threadId() {
+  static const int reset_in_children = ::pthread_atfork(nullptr, nullptr, [] { cached_tid = 0; });
+  (void)reset_in_children;
+  if (cached_tid == 0) cached_tid = ::gettid();
+  return cached_tid;
+}
+}  // namespace
+
 ExecuteWatchdog::ExecuteWatchdog(std::string program, RunBudget run_budget, Response response)
     : program_(std::move(program)), run_budget_(run_budget), response_(response), thread_([this] { watch(); }) {}
 
@@ -68,7 +81,7 @@ void ExecuteWatchdog::arm(const char* what, const CallBudget& budget) {
   what_ = what;
   budget_ = budget;
   thread_id_ = self;
-  tid_ = ::gettid();
+  tid_ = threadId();
   cpu_at_arm_ns_ = cpu_ns;
   call_blocked_ns_ = 0;
   last_sample_ns_ = steadyNowNs();

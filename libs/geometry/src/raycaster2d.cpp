@@ -2,22 +2,47 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace aula::geometry {
+
+RectFrame RectFrame::of(const OrientedBox& r) {
+  RectFrame f;
+  f.x_m = r.centre.x_m;
+  f.y_m = r.centre.y_m;
+  f.cos_yaw = std::cos(r.centre.yaw_rad);
+  f.sin_yaw = std::sin(r.centre.yaw_rad);
+  f.half_length_m = r.length_m / 2;
+  f.half_width_m = r.width_m / 2;
+  return f;
+}
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// A ray's origin in a rectangle's frame: the same for every beam of a scan.
+struct LocalOrigin {
+  double x, y;
+};
+
+LocalOrigin localOrigin(const Eigen::Vector2d& o, const RectFrame& r) {
+  const double c = r.cos_yaw, s = r.sin_yaw;
+  const double rx = o.x() - r.x_m, ry = o.y() - r.y_m;
+  return {c * rx + s * ry, -s * rx + c * ry};
+}
+
 // Entry distance of the ray o + t d (|d| = 1) into an oriented rectangle, 0 if o is inside,
-// +inf on a miss. Slab test in the rectangle's frame.
-double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const OrientedBox& r) {
-  const double c = std::cos(r.centre.yaw_rad), s = std::sin(r.centre.yaw_rad);
-  const Eigen::Vector2d rel = o - Eigen::Vector2d(r.centre.x_m, r.centre.y_m);
-  const double ox = c * rel.x() + s * rel.y(), oy = -s * rel.x() + c * rel.y();
+// +inf on a miss. Slab test in the rectangle's frame, `local` being o there. +inf too when the
+// first slab already shows that the entry is not below `beat` (a nearer hit is known): the
+// nearest hit is the same, and a test costs two divisions instead of four.
+double rayRect(const LocalOrigin& local, const Eigen::Vector2d& d, const RectFrame& r, double beat = kInf) {
+  const double c = r.cos_yaw, s = r.sin_yaw;
+  const double ox = local.x, oy = local.y;
   const double dx = c * d.x() + s * d.y(), dy = -s * d.x() + c * d.y();
   double t0 = -kInf, t1 = kInf;
-  const double hx = r.length_m / 2, hy = r.width_m / 2;
+  const double hx = r.half_length_m, hy = r.half_width_m;
   if (std::abs(dx) < 1e-15) {
     if (ox < -hx || ox > hx) return kInf;
   } else {
@@ -25,6 +50,7 @@ double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Oriente
     if (a > b) std::swap(a, b);
     t0 = std::max(t0, a);
     t1 = std::min(t1, b);
+    if (t1 < 0 || t0 >= beat) return kInf;  // the entry is at t0 or later, the exit before 0
   }
   if (std::abs(dy) < 1e-15) {
     if (oy < -hy || oy > hy) return kInf;
@@ -36,6 +62,14 @@ double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Oriente
   }
   if (t0 > t1 || t1 < 0) return kInf;
   return std::max(t0, 0.0);
+}
+
+double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const RectFrame& r) {
+  return rayRect(localOrigin(o, r), d, r);
+}
+
+double rayRect(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const OrientedBox& r) {
+  return rayRect(o, d, RectFrame::of(r));
 }
 
 double rayCircle(const Eigen::Vector2d& o, const Eigen::Vector2d& d, const Circle2& c) {
@@ -90,6 +124,8 @@ void boundsOf(const Segment2& s, Eigen::Vector2d& lo, Eigen::Vector2d& hi) {
 
 Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
     : statics_(std::move(statics)), cell_m_(cell_size_m) {
+  rect_frames_.reserve(statics_.rects.size());
+  for (const auto& r : statics_.rects) rect_frames_.push_back(RectFrame::of(r));
   const size_t count = statics_.rects.size() + statics_.circles.size() + statics_.segments.size();
   if (count == 0) return;
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(kInf), hi = -lo;
@@ -132,7 +168,17 @@ Raycaster2D::Raycaster2D(Obstacles2D statics, double cell_size_m)
 
 double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double max_range_m,
                          const Obstacles2D* dynamic) const {
-  const Eigen::Vector2d d(std::cos(angle_rad), std::sin(angle_rad));
+  return castAlong(origin, Eigen::Vector2d(std::cos(angle_rad), std::sin(angle_rad)), max_range_m, dynamic, nullptr);
+}
+
+// What a scan's beams share: the origin in each rectangle's frame. Only the work changes: every
+// test computes what cast() computes.
+struct Raycaster2D::ScanScratch {
+  std::vector<LocalOrigin> local;  // per rectangle
+};
+
+double Raycaster2D::castAlong(const Eigen::Vector2d& origin, const Eigen::Vector2d& d, double max_range_m,
+                              const Obstacles2D* dynamic, ScanScratch* scratch) const {
   double best = max_range_m;
   if (dynamic != nullptr) best = std::min(best, castBrute(origin, d, *dynamic, kInf));
   if (cells_.empty()) return best;
@@ -162,14 +208,20 @@ double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double
   double t_x = std::abs(d.x()) < 1e-15 ? kInf : (next_bx - origin.x()) / d.x();
   double t_y = std::abs(d.y()) < 1e-15 ? kInf : (next_by - origin.y()) / d.y();
 
+  const int rects = static_cast<int>(statics_.rects.size()), circles = static_cast<int>(statics_.circles.size());
   for (;;) {
     // An object may be tested again in a later cell: cheap, and keeps the caster stateless
     // (const and safe to share).
-    const int rects = static_cast<int>(statics_.rects.size()), circles = static_cast<int>(statics_.circles.size());
     for (const int id : cells_[static_cast<size_t>(cy) * cols_ + cx]) {
-      const double t = id < rects             ? rayRect(origin, d, statics_.rects[id])
-                       : id < rects + circles ? rayCircle(origin, d, statics_.circles[id - rects])
-                                              : raySegment(origin, d, statics_.segments[id - rects - circles]);
+      double t;
+      if (scratch != nullptr) {
+        t = id < rects ? rayRect(scratch->local[static_cast<size_t>(id)], d, rect_frames_[static_cast<size_t>(id)], best)
+                       : castOne(origin, d, id, rects, circles);
+      } else {
+        t = id < rects ? rayRect(localOrigin(origin, rect_frames_[static_cast<size_t>(id)]), d,
+                                 rect_frames_[static_cast<size_t>(id)], best)
+                       : castOne(origin, d, id, rects, circles);
+      }
       best = std::min(best, t);
     }
     const double t_cell_exit = std::min(t_x, t_y);
@@ -188,10 +240,19 @@ double Raycaster2D::cast(const Eigen::Vector2d& origin, double angle_rad, double
   return best;
 }
 
+double Raycaster2D::castOne(const Eigen::Vector2d& origin, const Eigen::Vector2d& d, int id, int rects, int circles) const {
+  return id < rects + circles ? rayCircle(origin, d, statics_.circles[static_cast<size_t>(id - rects)])
+                              : raySegment(origin, d, statics_.segments[static_cast<size_t>(id - rects - circles)]);
+}
+
 void Raycaster2D::scan(const ScanRequest& request, float* ranges_m, const Obstacles2D* dynamic) const {
+  ScanScratch scratch;
+  scratch.local.reserve(rect_frames_.size());
+  for (const RectFrame& r : rect_frames_) scratch.local.push_back(localOrigin(request.origin_m, r));
   for (int i = 0; i < request.num_beams; ++i) {
     const double angle = request.yaw_rad + request.min_angle_rad + i * request.angle_increment_rad;
-    double r = cast(request.origin_m, angle, request.max_range_m, dynamic);
+    double r = castAlong(request.origin_m, Eigen::Vector2d(std::cos(angle), std::sin(angle)), request.max_range_m,
+                         dynamic, &scratch);
     r = std::clamp(r, request.min_range_m, request.max_range_m);
     ranges_m[i] = static_cast<float>(r);
   }

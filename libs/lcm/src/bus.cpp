@@ -234,7 +234,26 @@ int Bus::handleTimeout(int timeout_ms) {
   return 1;
 }
 
+void Bus::unsubscribe(lcm::Subscription* subscription) {
+  subscriptions().unsubscribe(subscription);
+  const auto it = subscribed_.find(subscription);
+  if (it == subscribed_.end()) return;
+  const std::string channel = it->second;
+  subscribed_.erase(it);
+  if (!receiver_ || receive_all_ || listened_.count(channel) != 0) return;
+  for (const auto& [other, other_channel] : subscribed_) {
+    if (other_channel == channel) return;
+  }
+  deferred_.erase(channel);
+  if (channels_.erase(channel) != 0) updateFilters();
+}
+
 void Bus::listen(const std::string& channel) {
+  listened_.insert(channel);
+  pass(channel);
+}
+
+void Bus::pass(const std::string& channel) {
   if (!receiver_ || receive_all_) return;
   if (isPattern(channel)) {
     receive_all_ = true;  // a recorder: every channel wakes it, nothing is deferred

@@ -53,15 +53,23 @@ TraceLayers::TraceLayers(lcmbus::Bus& bus, const config::Config& cfg, const worl
     lasers_.push_back(laser);
   }
   for (const Laser& laser : lasers_) {
-    bus.subscribe(laser.channel, &TraceLayers::onLaserMessage, this);
+    subscriptions_.push_back(bus.subscribe(laser.channel, &TraceLayers::onLaserMessage, this));
     deferred_.push_back(laser.channel);
   }
-  bus.subscribe(cfg.getString(section + ".Console.Channel"), &TraceLayers::onConsoleMessage, this);
+  subscriptions_.push_back(bus.subscribe(cfg.getString(section + ".Console.Channel"), &TraceLayers::onConsoleMessage, this));
   if (cfg.has(section + ".Belief.Channel")) {
     deferred_.push_back(cfg.getString(section + ".Belief.Channel"));
-    bus.subscribe(deferred_.back(), &TraceLayers::onBeliefMessage, this);
+    subscriptions_.push_back(bus.subscribe(deferred_.back(), &TraceLayers::onBeliefMessage, this));
   }
-  if (cfg.has(section + ".Plan.Channel")) bus.subscribe(cfg.getString(section + ".Plan.Channel"), &TraceLayers::onPlanMessage, this);
+  if (cfg.has(section + ".Plan.Channel")) {
+    subscriptions_.push_back(bus.subscribe(cfg.getString(section + ".Plan.Channel"), &TraceLayers::onPlanMessage, this));
+  }
+}
+
+void TraceLayers::leave(lcmbus::Bus& bus) {
+  for (lcm::Subscription* subscription : subscriptions_) bus.unsubscribe(subscription);
+  subscriptions_.clear();
+  deferred_.clear();
 }
 
 void TraceLayers::onLaserMessage(const lcm::ReceiveBuffer*, const std::string& channel, const aula::laser_t* msg) {

@@ -196,6 +196,33 @@ TEST(Bus, ABusReceivesOnlyTheChannelsItSubscribesTo) {
   EXPECT_EQ(wanted.messages, 1);
 }
 
+TEST(Bus, AChannelNoLongerSubscribedIsDroppedByTheFilterAgain) {
+  const int port = privatePort();
+  const std::string url = privateUrl();
+  Bus publisher(url);
+  Bus subscriber(url);
+  Count kept, left, listened;
+  subscriber.listen("LISTENED");
+  subscriber.subscribe("KEPT", &Count::on, &kept);
+  lcm::Subscription* twice = subscriber.subscribe("KEPT", &Count::on, &kept);
+  lcm::Subscription* gone = subscriber.subscribe("LEFT", &Count::on, &left);
+  lcm::Subscription* heard = subscriber.subscribe("LISTENED", &Count::on, &listened);
+  subscriber.unsubscribe(twice);  // KEPT has another subscription: still let through
+  subscriber.unsubscribe(gone);
+  subscriber.unsubscribe(heard);  // listened to before: still let through
+  EXPECT_EQ(filtersOfSocketsOn(port),
+            (std::multiset<int>{static_cast<int>(aula::lcmbus::channelFilter({}).size()),
+                                static_cast<int>(aula::lcmbus::channelFilter({"KEPT", "LISTENED"}).size())}));
+
+  aula::motors_t command{};
+  for (int i = 0; i < 20; ++i) publisher.publish("LEFT", &command);
+  publisher.publish("KEPT", &command);
+  publisher.publish("LISTENED", &command);
+  EXPECT_EQ(packetsWithin(subscriber, 300), 2) << "LEFT's twenty never reach the process";
+  EXPECT_EQ(kept.messages, 1);
+  EXPECT_EQ(left.messages, 0);
+}
+
 TEST(Bus, AStockClientOnTheRunsUrlSeesEveryChannel) {
   const std::string url = privateUrl();
   Bus publisher(url);

@@ -190,3 +190,21 @@ TEST_F(Layers, ANewEpisodeKeepsNothingOfTheLastOne) {
 }
 
 }  // namespace
+
+// A headless run without --trace leaves the layers' channels: what comes on them is not read.
+TEST_F(Layers, LayersLeftOutReadNothingFromTheBus) {
+  TraceLayers kept(bus, settings(true, true), robotWithTwoLasers(), "Ex", trace);
+  TraceLayers left(bus, settings(true, true), robotWithTwoLasers(), "Ex", trace);
+  left.leave(bus);
+  trace.start(0);
+  const aula::laser_t msg = scan(1'000'000, {1.0f, 2.0f});
+  bus.publish("CAR_LASER_FRONT", &msg);
+  const aula::console_t line = printed(1'000'000, "hello");
+  bus.publish("EX_CONSOLE", &line);
+  while (bus.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(layersOf(kept)["lasers"][0]["scans"].size(), 1u) << layersOf(kept).dump();
+  EXPECT_EQ(layersOf(kept)["console"]["lines"].size(), 1u);
+  EXPECT_EQ(layersOf(left)["lasers"][0]["scans"].size(), 0u) << layersOf(left).dump();
+  EXPECT_EQ(layersOf(left)["console"]["lines"].size(), 0u) << layersOf(left).dump();
+}

@@ -60,6 +60,25 @@ struct BoxEnded {
   std::string reason;   // for the student: "execute() crashed (SIGSEGV) at MyAlgorithm.cpp:14 (...)"
 };
 
+// Frames on the socket: a 32-bit length, then the bytes (BoxWire's), each sent whole.
+// A frame is read in one read() when it is all there (every exchange of a control period was two
+// reads a frame, at each end).
+class FrameReader {
+ public:
+  explicit FrameReader(int fd = -1) : fd_(fd) {}
+  void setFd(int fd) { fd_ = fd; }
+  // The next frame into `bytes`: false at the end of the stream (or an error) before a frame.
+  // Throws BoxWireError for a frame past `max_bytes` or a stream that ends inside a frame.
+  bool read(std::string& bytes, size_t max_bytes);
+
+ private:
+  static constexpr size_t kChunk = 64 * 1024;
+  bool fill(size_t bytes);  // until buffered_ holds `bytes`: false at the end of the stream or an error
+
+  int fd_ = -1;
+  std::string buffered_;  // read but not yet taken
+};
+
 // The component's end.
 class AlgorithmBox {
  public:
@@ -97,6 +116,7 @@ class AlgorithmBox {
   void waitForReply();
 
   int socket_ = -1;
+  FrameReader frames_;  // socket_'s
   std::unique_ptr<process::ChildProcess> child_;
   std::unique_ptr<process::LinePipe> line_;
   std::vector<std::string> pending_lines_;  // read when it ended, not yet taken
@@ -110,9 +130,7 @@ class AlgorithmBox {
 // The algorithm's end: `PROGRAM --algorithm-box` (its own main's first line; argv[1] alone).
 bool isAlgorithmBox(int argc, char** argv);
 
-// Frames on the socket: a 32-bit length, then the bytes (BoxWire's). Throws BoxWireError for a
-// frame past `max_bytes`; false at the end of the stream.
-bool readFrame(int fd, std::string& bytes, size_t max_bytes);
+// Sends one frame whole (FrameReader reads it). Throws BoxWireError when the socket fails.
 void writeFrame(int fd, const std::string& bytes);
 
 // The descriptors the algorithm's process is given.

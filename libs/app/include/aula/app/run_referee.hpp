@@ -114,6 +114,7 @@ int runReferee(ProcessSetup& setup, Node& node, int argc, char** argv) {
     return node.endedEarly() || !node.finished() ? 1 : 0;
   }
   if (setup.headless) {
+    if (trace_path.empty()) node.leaveOutTraceLayers(*setup.bus);
     node.deferSensorWakeUps(*setup.bus);  // woken at its own ticks, not at every one
     const bool signalled = runHeadless(*setup.bus, [&] { return node.finished(); }, housekeeping);
     node.leave();

@@ -5,6 +5,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -122,11 +123,16 @@ class Bus {
   template <class... SubscribeArgs>
   lcm::Subscription* subscribe(const std::string& channel, SubscribeArgs&&... args) {
     lcm::Subscription* subscription = subscriptions().subscribe(channel, std::forward<SubscribeArgs>(args)...);
-    if (subscription != nullptr) subscription->setQueueCapacity(kQueueCapacity);
-    listen(channel);
+    if (subscription != nullptr) {
+      subscription->setQueueCapacity(kQueueCapacity);
+      subscribed_.emplace(subscription, channel);
+    }
+    pass(channel);
     return subscription;
   }
-  void unsubscribe(lcm::Subscription* subscription) { subscriptions().unsubscribe(subscription); }
+  // LCM's unsubscribe; a channel that nothing of this bus subscribes to any more (nor listens to:
+  // listen()) is dropped by the socket filter again.
+  void unsubscribe(lcm::Subscription* subscription);
   // Lets `channel` through the socket filter now, before anything subscribes to it: its messages
   // wait in the socket, in order, until handle() hands them to the subscriptions made by then (the
   // simulator's clients register while it loads its world). subscribe() does it too.
@@ -158,6 +164,7 @@ class Bus {
 
  private:
   lcm::LCM& subscriptions() { return dispatcher_ ? *dispatcher_ : *lcm_; }
+  void pass(const std::string& channel);  // let `channel` through the socket filter
   std::vector<uint8_t>& holdSlot(const std::string& channel);
   void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
@@ -173,6 +180,8 @@ class Bus {
   std::vector<std::pair<std::string, std::vector<uint8_t>>> held_;  // reused: the first held_count_ wait
   std::size_t held_count_ = 0;
   std::set<std::string> channels_;  // let through the filter
+  std::set<std::string> listened_;  // listen() without a subscription: kept through unsubscribe()
+  std::map<lcm::Subscription*, std::string> subscribed_;  // each subscription's channel
   std::set<std::string> deferred_;  // never wake the process (deferWakeUps)
   int64_t wake_for_ticks_from_us_ = 0;
   long long handled_ = 0;

@@ -68,6 +68,9 @@ class RefereeNode {
   // Headless: the simulator's truth (pose, bumper) no longer wakes this process at every tick; it
   // is read, in order, when the referee's own tick (or anything else) wakes it (Bus::deferWakeUps).
   void deferSensorWakeUps(lcmbus::Bus& bus) const;
+  // A headless run without --trace: what only the trace's layers read (the lasers, the belief,
+  // the plans, the printed lines) is not read at all (a vacuum run's 18,000 scans).
+  void leaveOutTraceLayers(lcmbus::Bus& bus) { layers_->leave(bus); }
   void leave() { clock_->leave(); }
   int64_t simTimeUs() const { return clock_->simTimeUs(); }
   int episode() const { return outcome_.generation(); }  // counts hot reloads

@@ -51,6 +51,9 @@ class TraceLayers {
               const RunTrace& trace);
   // Headless: these no longer wake the referee (read in order at its own tick).
   void deferWakeUps(lcmbus::Bus& bus) const;
+  // A run whose trace nobody writes: these channels are no longer read (nor queued: the socket
+  // filter drops them); the layers stay empty.
+  void leave(lcmbus::Bus& bus);
 
   // One message each, as the bus hands them over (tests call them with plain messages).
   void onLaser(size_t laser, const aula::laser_t& msg);
@@ -97,6 +100,7 @@ class TraceLayers {
   int64_t episode_origin_ = -1;
   std::vector<Laser> lasers_;
   std::vector<std::string> deferred_;
+  std::vector<lcm::Subscription*> subscriptions_;
   // The belief, in the algorithm's frame; offset: where its frame sits on the world.
   bool belief_placed_ = false;
   double belief_dx_m_ = 0, belief_dy_m_ = 0;
