@@ -621,7 +621,8 @@ TEST_F(GazeboWorlds, ARoundBodyWithBumpersBulgingPastItIsACylinderAroundThem) {
         "<collision name='left'><pose>0 0.168 0 0 0 0</pose>" + bumper + "</collision>"
         "<collision name='right'><pose>0 -0.168 0 0 0 0</pose>" + bumper + "</collision></link>"
         "<plugin name='drive' filename='libgazebo_ros_planar_move.so'/></model></world></sdf>");
-  const RobotSpec& roomba = requireRobot(loadWorld(dir_ + "/w.world", {dir_ + "/models"}), "roomba");
+  const WorldSpec w = loadWorld(dir_ + "/w.world", {dir_ + "/models"});  // kept: the robot is a part of it
+  const RobotSpec& roomba = requireRobot(w, "roomba");
   ASSERT_EQ(roomba.shape.kind, ShapeKind::Cylinder);
   EXPECT_NEAR(roomba.shape.radius_m, std::hypot(0.05, 0.173), 1e-9) << "to the bumpers' outer corners";
   // A box stays a box: its corners reach 1.41 times its half width.
