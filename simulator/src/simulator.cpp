@@ -345,17 +345,17 @@ void Simulator::advanceToNextTick() {
   // In lockstep with clients, tick only when some client is due: every tick costs each client
   // a wake-up, and nobody is waiting for the ones in between.
   if (options_.lockstep && lockstep_.size() > 0) next = lockstep_.nextDueAfter(now);
-  // The period's sensor messages go out together just before its tick: each client wakes once
-  // per tick, not once per message (the order on the wire is the same).
+  // The period's sensor messages go out together with its tick, in one system call: each client
+  // wakes once per tick, not once per message (the order on the wire is the same).
   bus_.hold();
   while (physics_->timeUs() < next) {
     physics_->step();
     const int64_t t = physics_->timeUs();
     for (auto& d : drivers_) d->step(t);
   }
-  bus_.flush();
   ++seq_;
   publishClock();
+  bus_.flush();
 }
 
 void Simulator::driveWith(std::vector<lcmbus::RecordedMessage> commands) {

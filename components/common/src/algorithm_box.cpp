@@ -75,15 +75,27 @@ void ioStart(BoxWire& wire, BoxStart& start, AlgorithmBudgets& budgets) {
 }
 
 bool FrameReader::fill(size_t bytes) {
-  while (buffered_.size() < bytes) {
-    const size_t have = buffered_.size();
-    const size_t chunk = std::max(bytes - have, kChunk);
-    buffered_.resize(have + chunk);
-    const ssize_t got = ::read(fd_, buffered_.data() + have, chunk);
-    buffered_.resize(have + static_cast<size_t>(std::max<ssize_t>(got, 0)));
-    if (got > 0) continue;
+  while (buffered() < bytes) {
+    if (capacity_ - start_ < std::max(bytes, kChunk)) {  // room for the frame and a whole chunk after it
+      const size_t capacity = std::max({capacity_, bytes, kChunk}) + kChunk;
+      std::unique_ptr<char[]> grown(new char[capacity]);  // not zeroed: only what read() wrote is used
+      if (buffered() > 0) std::memcpy(grown.get(), buffer_.get() + start_, buffered());
+      buffer_ = std::move(grown);
+      capacity_ = capacity;
+      end_ -= start_;
+      start_ = 0;
+    }
+    if (wait_in_poll_) {
+      pollfd input{fd_, POLLIN, 0};
+      if (::poll(&input, 1, -1) < 0 && errno != EINTR) return false;
+    }
+    const ssize_t got = ::read(fd_, buffer_.get() + end_, capacity_ - end_);
+    if (got > 0) {
+      end_ += static_cast<size_t>(got);
+      continue;
+    }
     if (got == 0) {
-      if (have == 0) return false;
+      if (buffered() == 0) return false;
       throw BoxWireError("the algorithm's socket ended inside a frame");
     }
     if (errno != EINTR) return false;
@@ -94,19 +106,14 @@ bool FrameReader::fill(size_t bytes) {
 bool FrameReader::read(std::string& bytes, size_t max_bytes) {
   uint32_t length = 0;
   if (!fill(sizeof length)) return false;
-  std::memcpy(&length, buffered_.data(), sizeof length);
+  std::memcpy(&length, buffer_.get() + start_, sizeof length);
   if (length > max_bytes) {
     throw BoxWireError("a frame of " + std::to_string(length) + " bytes, at most " + std::to_string(max_bytes));
   }
   if (!fill(sizeof length + length)) throw BoxWireError("the algorithm's socket ended inside a frame");
-  if (buffered_.size() == sizeof length + length) {  // the usual case: nothing after it
-    buffered_.erase(0, sizeof length);
-    bytes.swap(buffered_);
-    buffered_.clear();
-  } else {
-    bytes.assign(buffered_, sizeof length, length);
-    buffered_.erase(0, sizeof length + length);
-  }
+  bytes.assign(buffer_.get() + start_ + sizeof length, length);
+  start_ += sizeof length + length;
+  if (start_ == end_) start_ = end_ = 0;  // the usual case: nothing after it
   return true;
 }
 

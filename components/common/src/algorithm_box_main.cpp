@@ -52,7 +52,7 @@ std::string narrowGradedView(const BoxStart& start) {
 
 // The algorithm's end of the socket (one per process).
 FrameReader& boxFrames() {
-  static FrameReader frames(kBoxSocketFd);
+  static FrameReader frames(kBoxSocketFd, /*wait_in_poll=*/true);
   return frames;
 }
 

@@ -1,6 +1,7 @@
 #include "aula/lcm/bus.hpp"
 
 #include "aula/lcm/udpm_receiver.hpp"
+#include "aula/lcm/udpm_sender.hpp"
 
 #include <aula/config/config.hpp>
 
@@ -140,6 +141,7 @@ Bus::Bus(std::string url) : url_(std::move(url)) {
   dispatcher_ = std::make_unique<lcm::LCM>("memq://");
   if (!dispatcher_->good()) throw BusError("cannot open the LCM bus '" + url_ + "': no in-process LCM");
   receiver_ = std::make_unique<UdpmReceiver>(address, std::set<std::string>{kSelfTestChannel});
+  sender_ = std::make_unique<UdpmSender>(address);
   selfTest();
   receiver_->receiveOnly(channels_);
   while (receiver_->next(0)) {
@@ -166,7 +168,7 @@ void Bus::selfTest() {
                                "root: 'ip link set lo multicast on; ip route add 224.0.0.0/4 dev lo'";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
   while (std::chrono::steady_clock::now() < deadline) {
-    if (lcm_->publish(kSelfTestChannel, nonce.data(), static_cast<unsigned int>(nonce.size())) != 0) throw BusError(no_route);
+    if (send(kSelfTestChannel, nonce.data(), static_cast<unsigned int>(nonce.size())) != 0) throw BusError(no_route);
     const auto resend = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
     while (std::chrono::steady_clock::now() < resend) {
       const auto message = receiver_->next(20);
@@ -183,14 +185,32 @@ std::vector<uint8_t>& Bus::holdSlot(const std::string& channel) {
   return slot.second;
 }
 
+int Bus::send(const std::string& channel, const void* data, unsigned int size) {
+  if (!sender_ || !UdpmSender::fitsOneDatagram(channel, size)) return lcm_->publish(channel, data, size);
+  const UdpmSender::Message message{&channel, static_cast<const uint8_t*>(data), size};
+  return sender_->send(&message, 1);
+}
+
 int Bus::flush() {
   holding_ = false;
   int status = 0;
+  std::vector<UdpmSender::Message>& burst = burst_;  // short messages in a row: one system call
+  burst.clear();
+  auto sendBurst = [&] {
+    if (!burst.empty() && sender_->send(burst.data(), burst.size()) != 0 && status == 0) status = -1;
+    burst.clear();
+  };
   for (std::size_t i = 0; i < held_count_; ++i) {
     const auto& [channel, bytes] = held_[i];
+    if (sender_ && UdpmSender::fitsOneDatagram(channel, bytes.size())) {
+      burst.push_back({&channel, bytes.data(), bytes.size()});
+      continue;
+    }
+    sendBurst();  // what came before it goes first
     const int sent = lcm_->publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
     if (status == 0) status = sent;
   }
+  sendBurst();
   held_count_ = 0;
   return status;
 }

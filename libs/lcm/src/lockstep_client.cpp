@@ -146,6 +146,13 @@ void LockstepClient::onClock(const lcm::ReceiveBuffer*, const std::string& chann
     // Ticks before the next due one need not wake this process (when its bus defers anything);
     // at most kLongestNap of sim time, so that what waits unread stays far below the socket's queue.
     bus_.wakeForTicksFrom(std::min(next_due_us_, tick->utime + kLongestNapUs));
+    // What the period publishes (the commands) goes out with the ack, in one system call: the
+    // simulator, waiting for the ack, is woken once.
+    struct SentAtTheEnd {  // also when the period's work throws
+      Bus& bus;
+      ~SentAtTheEnd() { bus.flush(); }
+    } held{bus_};
+    bus_.hold();
     if (on_tick_) on_tick_(tick->utime);
     if (registered_ && lockstep_) sendAck(tick->seq, tick->utime);
   }

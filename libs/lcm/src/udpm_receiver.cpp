@@ -95,6 +95,8 @@ UdpmUrl parseUdpmUrl(const std::string& url) {
     const std::string option = options.substr(at, end - at);
     if (option.rfind("recv_buf_size=", 0) == 0) {
       parsed.recv_buf_size = number("recv_buf_size", option.substr(14), 0, 1 << 30);
+    } else if (option.rfind("ttl=", 0) == 0) {
+      parsed.ttl = number("ttl", option.substr(4), 0, 255);
     }
     at = end + 1;
   }

@@ -1,9 +1,12 @@
 #include "aula/process/cpu_affinity.hpp"
 
 #include <sched.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 
 namespace aula::process {
 
@@ -36,6 +39,19 @@ bool runOnlyOn(int cpu) {
 }
 
 bool runAsBatch() {
+  // linux/sched/types.h's struct sched_attr (glibc wraps sched_setattr only from 2.41).
+  struct {
+    uint32_t size;
+    uint32_t sched_policy;
+    uint64_t sched_flags;
+    int32_t sched_nice;
+    uint32_t sched_priority;
+    uint64_t sched_runtime, sched_deadline, sched_period;
+  } attributes{};
+  attributes.size = sizeof attributes;
+  attributes.sched_policy = SCHED_BATCH;
+  attributes.sched_runtime = kLockstepSliceNs;
+  if (syscall(SYS_sched_setattr, 0, &attributes, 0) == 0) return true;
   const sched_param none{};
   return sched_setscheduler(0, SCHED_BATCH, &none) == 0;
 }

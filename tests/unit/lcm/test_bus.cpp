@@ -2,6 +2,7 @@
 // receiving socket), on the thread that handles them, and a stock LCM client on the run's URL
 // still sees every channel.
 #include <aula/lcm/bus.hpp>
+#include <aula/lcm/udpm_receiver.hpp>
 
 #include <aula/config/config.hpp>
 #include <aula/motors_t.hpp>
@@ -286,4 +287,58 @@ TEST(Bus, PortZeroBecomesAPortTheOsHandsOut) {
   for (const char* kept : {"udpm://239.255.76.67:7667?ttl=0", "udpm://239.255.76.67", "memq://", "file:///tmp/x.lcmlog"}) {
     EXPECT_EQ(aula::lcmbus::withFreePort(kept), kept);
   }
+}
+
+struct Recorded {
+  std::vector<std::string> messages;  // channel, size and bytes' sum, in order
+  void on(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+    unsigned sum = 0;
+    for (uint32_t i = 0; i < buffer->data_size; ++i) sum += static_cast<const uint8_t*>(buffer->data)[i];
+    messages.push_back(channel + " " + std::to_string(buffer->data_size) + " " + std::to_string(sum));
+  }
+};
+
+TEST(Bus, AHeldBurstArrivesWholeAndInOrderAtAStockClientAndABus) {
+  // The burst goes out as LCM's own datagrams: short messages in one sendmmsg, a long one through
+  // LCM's publish (its fragments), in the order they were published.
+  const std::string url = privateUrl();
+  Bus publisher(url);
+  lcm::LCM stock(url);
+  ASSERT_TRUE(stock.good());
+  Recorded by_stock, by_bus;
+  stock.subscribe("(FIRST|LONG|AFTER|LAST)", &Recorded::on, &by_stock);
+  Bus subscriber(url);
+  for (const char* channel : {"FIRST", "LONG", "AFTER", "LAST"}) subscriber.subscribe(channel, &Recorded::on, &by_bus);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+
+  std::vector<uint8_t> small(100), large(20000);
+  for (std::size_t i = 0; i < large.size(); ++i) large[i] = static_cast<uint8_t>(i * 7);
+  for (std::size_t i = 0; i < small.size(); ++i) small[i] = static_cast<uint8_t>(i + 1);
+  publisher.hold();
+  publisher.publish("FIRST", small.data(), 100);
+  publisher.publish("LONG", large.data(), 20000);
+  publisher.publish("AFTER", small.data(), 60);
+  publisher.publish("LAST", small.data(), 1);
+  EXPECT_TRUE(by_bus.messages.empty());
+  EXPECT_EQ(publisher.flush(), 0);
+  const std::vector<std::string> expected = {"FIRST 100 5050", "LONG 20000 " + std::to_string([&] {
+                                               unsigned sum = 0;
+                                               for (uint8_t b : large) sum += b;
+                                               return sum;
+                                             }()),
+                                             "AFTER 60 1830", "LAST 1 1"};
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+  while ((by_stock.messages.size() < 4 || by_bus.messages.size() < 4) && std::chrono::steady_clock::now() < until) {
+    stock.handleTimeout(10);
+    subscriber.handleTimeout(10);
+  }
+  EXPECT_EQ(by_stock.messages, expected);
+  EXPECT_EQ(by_bus.messages, expected);
+}
+
+TEST(Bus, TheUrlsTimeToLiveIsANumberFrom0To255) {
+  EXPECT_THROW(Bus("udpm://239.255.76.67:7667?ttl=many"), aula::config::ConfigError);
+  EXPECT_THROW(Bus("udpm://239.255.76.67:7667?ttl=256"), aula::config::ConfigError);
+  EXPECT_EQ(aula::lcmbus::parseUdpmUrl("udpm://239.255.76.67:7667?ttl=1").ttl, 1);
+  EXPECT_EQ(aula::lcmbus::parseUdpmUrl("udpm://239.255.76.67:7667").ttl, 0);
 }

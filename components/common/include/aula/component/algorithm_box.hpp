@@ -62,10 +62,15 @@ struct BoxEnded {
 
 // Frames on the socket: a 32-bit length, then the bytes (BoxWire's), each sent whole.
 // A frame is read in one read() when it is all there (every exchange of a control period was two
-// reads a frame, at each end).
+// reads a frame, at each end), into a buffer that is kept and never cleared (zeroing 64 KiB for
+// each frame was most of a call's own cost).
 class FrameReader {
  public:
-  explicit FrameReader(int fd = -1) : fd_(fd) {}
+  // `wait_in_poll`: wait for a frame in poll() before reading. A read() blocked on a stream
+  // socket is woken each time the peer takes what this end wrote (the socket's space to write):
+  // the algorithm's end, which waits while the component reads its reply, was switched in and
+  // out for nothing once a call. poll() for input is woken by input only.
+  explicit FrameReader(int fd = -1, bool wait_in_poll = false) : fd_(fd), wait_in_poll_(wait_in_poll) {}
   void setFd(int fd) { fd_ = fd; }
   // The next frame into `bytes`: false at the end of the stream (or an error) before a frame.
   // Throws BoxWireError for a frame past `max_bytes` or a stream that ends inside a frame.
@@ -73,10 +78,13 @@ class FrameReader {
 
  private:
   static constexpr size_t kChunk = 64 * 1024;
-  bool fill(size_t bytes);  // until buffered_ holds `bytes`: false at the end of the stream or an error
+  bool fill(size_t bytes);  // until `bytes` are buffered: false at the end of the stream or an error
+  size_t buffered() const { return end_ - start_; }
 
   int fd_ = -1;
-  std::string buffered_;  // read but not yet taken
+  bool wait_in_poll_ = false;
+  std::unique_ptr<char[]> buffer_;  // read but not yet taken: [start_, end_)
+  size_t capacity_ = 0, start_ = 0, end_ = 0;
 };
 
 // The component's end.

@@ -2,6 +2,8 @@
 // The LCM bus of a process: URL resolution, and a connection that fails loudly and receives only
 // the channels the process subscribes to.
 
+#include <aula/lcm/udpm_sender.hpp>
+
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdint>
@@ -76,7 +78,8 @@ struct LcmMessage;
 // One process's LCM bus, with lcm::LCM's calls (publish, subscribe, handle...).
 //
 // Every channel stays on the run's one URL (udpm://GROUP:PORT), where every stock LCM tool sees it:
-// messages go out through LCM's own publish. On udpm:// they come in through a UdpmReceiver on the
+// messages go out as LCM's own datagrams (a short message, through a UdpmSender: a held burst in
+// one system call; a long one, through LCM's publish). On udpm:// they come in through a UdpmReceiver on the
 // thread that calls handle(), not LCM's receive thread (one wake-up and one recvmmsg for every
 // datagram waiting, instead of two wake-ups and five system calls per message). Its socket
 // carries a kernel socket filter (channelFilter) that passes only the channels the process
@@ -99,21 +102,22 @@ class Bus {
 
   template <class Message>
   int publish(const std::string& channel, const Message* message) {
-    if (!holding_) return lcm_->publish(channel, message);
-    std::vector<uint8_t>& bytes = holdSlot(channel);
+    std::vector<uint8_t>& bytes = holding_ ? holdSlot(channel) : encoded_;
     bytes.resize(static_cast<std::size_t>(message->getEncodedSize()));
-    return message->encode(bytes.data(), 0, static_cast<int>(bytes.size())) < 0 ? -1 : 0;
+    if (message->encode(bytes.data(), 0, static_cast<int>(bytes.size())) < 0) return -1;
+    return holding_ ? 0 : send(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
   }
   int publish(const std::string& channel, const void* data, unsigned int size) {
-    if (!holding_) return lcm_->publish(channel, data, size);
+    if (!holding_) return send(channel, data, size);
     const auto* bytes = static_cast<const uint8_t*>(data);
     holdSlot(channel).assign(bytes, bytes + size);
     return 0;
   }
 
-  // Holds what is published from here until flush(), which sends it all in order. A burst wakes
-  // a sleeping receiver once instead of once per message: the simulator holds the sensor
-  // messages of a tick period while it steps the physics, and sends them just before the tick.
+  // Holds what is published from here until flush(), which sends it all in order, in one system
+  // call on udpm:// (UdpmSender). A burst wakes a sleeping receiver once instead of once per
+  // message: the simulator holds the sensor messages of a tick period while it steps the physics,
+  // and sends them with the tick; a lockstep client sends its commands with its ack.
   void hold() { holding_ = true; }
   // Sends what was held, in order; 0, or the first failed publish's status.
   int flush();
@@ -166,6 +170,9 @@ class Bus {
   lcm::LCM& subscriptions() { return dispatcher_ ? *dispatcher_ : *lcm_; }
   void pass(const std::string& channel);  // let `channel` through the socket filter
   std::vector<uint8_t>& holdSlot(const std::string& channel);
+  // One message now: on udpm://, a short one through sender_, a long one through LCM's publish
+  // (its fragments); else LCM's publish.
+  int send(const std::string& channel, const void* data, unsigned int size);
   void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
   void updateFilters();   // the receiver's socket filters: channels_, then the doorbell's
@@ -175,6 +182,9 @@ class Bus {
   std::unique_ptr<lcm::LCM> lcm_;         // the URL's LCM: publishes (and receives, off udpm://)
   std::unique_ptr<lcm::LCM> dispatcher_;  // udpm://: an in-process LCM holding the subscriptions
   std::unique_ptr<UdpmReceiver> receiver_;  // udpm://: the run's multicast socket, read here
+  std::unique_ptr<UdpmSender> sender_;      // udpm://: LCM's short messages, sent here
+  std::vector<uint8_t> encoded_;            // a message published at once, encoded (reused)
+  std::vector<UdpmSender::Message> burst_;  // flush()'s (reused)
   bool receive_all_ = false;     // a pattern subscription: no filter
   bool holding_ = false;         // hold() until flush()
   std::vector<std::pair<std::string, std::vector<uint8_t>>> held_;  // reused: the first held_count_ wait

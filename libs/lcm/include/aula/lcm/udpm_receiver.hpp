@@ -28,6 +28,7 @@ struct UdpmUrl {
   std::string group = "239.255.76.67";
   int port = 7667;
   int recv_buf_size = 0;  // bytes; 0 = the kernel's default
+  int ttl = 0;            // LCM's default: the datagrams never leave the machine
 };
 bool isUdpmUrl(const std::string& url);
 // Wall time now, in microseconds since the epoch: LCM's recv_utime.

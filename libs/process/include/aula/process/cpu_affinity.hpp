@@ -6,6 +6,7 @@
 // (docs/performance.md). The launcher starts a headless run's processes on one CPU, as batch
 // tasks (aula::process::Placement); `aula grade` gives each of its runs at once a CPU of its own.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,16 @@ bool runOnlyOn(int cpu);
 // lockstep run then hands the CPU over when a process blocks, once per control period, instead
 // of at every datagram of the simulator's burst (each woke the component, which preempted the
 // simulator to read it: 52 k context switches per vacuum run instead of 12 k). False, with
-// errno, when the kernel refuses; safe between fork and exec.
+// errno, when the kernel refuses; safe between fork and exec. It also asks for the longest time
+// slice (kLockstepSliceNs).
 bool runAsBatch();
+// The time slice a batch task of a lockstep run asks for (sched_attr.sched_runtime, Linux 6.12 and
+// later; older kernels ignore it): the most a task may ask for. Under EEVDF a task that has used
+// up its slice (0.75 ms by default) is switched out at the next wake-up on its CPU, batch or not:
+// the simulator, past its slice in the middle of a period's burst, was switched out at most
+// control periods, the component at its commands, twice the context switches of a run. A run's
+// processes block at every hand-over, so a long slice costs no other process of the run its turn.
+inline constexpr uint64_t kLockstepSliceNs = 100000000;
 // "0,1,3": for messages.
 std::string cpuList(const std::vector<int>& cpus);
 
