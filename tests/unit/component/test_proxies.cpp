@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
 #include <limits>
 
 using namespace aula::component;
@@ -41,6 +44,33 @@ TEST(LaserProxy, MillimetreViewMatchesMetres) {
   EXPECT_EQ(d.distanceData[3], 10000);
   EXPECT_DOUBLE_EQ(d.angle(2), 0.5);
   EXPECT_EQ(d.timeStamp, 123);
+}
+
+TEST(LaserProxy, TheMillimetresAreStdLroundsForEveryRange) {
+  // The original's ints, rounded as std::lround rounds (halves away from zero), for every float a
+  // range may be: halves, their neighbours, the far end, and what no range is (not finite, huge).
+  std::vector<float> ranges;
+  for (int mm = -3000; mm <= 3000; ++mm) {
+    const float half = (mm + 0.5f) / 1000.0f;
+    ranges.insert(ranges.end(), {half, std::nextafter(half, 0.0f), std::nextafter(half, 100.0f), mm / 1000.0f});
+  }
+  for (uint32_t bits = 0x3c000000; bits < 0x42000000; bits += 4099) {  // 0.0078 m to 32 m, spread
+    float range = 0;
+    std::memcpy(&range, &bits, sizeof range);
+    ranges.push_back(range);
+  }
+  ranges.insert(ranges.end(), {0.0f, -0.0f, 1e7f, -1e7f, 3e9f, std::numeric_limits<float>::infinity(),
+                               std::numeric_limits<float>::quiet_NaN()});
+  aula::component::Laser laser;
+  LaserData scan;
+  scan.values_m = ranges;
+  scan.numLaser = static_cast<int>(ranges.size());
+  laser.set(scan);
+  const LaserData& d = laser.getLaserData();
+  ASSERT_EQ(d.distanceData.size(), ranges.size());
+  for (size_t i = 0; i < ranges.size(); ++i) {
+    ASSERT_EQ(d.distanceData[i], static_cast<int>(std::lround(ranges[i] * 1000.0))) << "range " << ranges[i];
+  }
 }
 
 TEST(MotorsProxy, ClampsToTheExerciseLimitsAndZeroesNonFinite) {
