@@ -5,6 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -35,6 +36,25 @@ void BM_LaserHouse(benchmark::State& state) {
   scanWorld(state, "vacuum.world", 0.075, 10.0, {-0.861, 1.5}, state.range(0) / 100.0);
 }
 BENCHMARK(BM_LaserHouse)->Arg(25)->Arg(50)->Arg(100)->Arg(200)->Unit(benchmark::kMicrosecond);
+
+// The same scans beam by beam through cast(): the cell walk each beam's range must equal (tests/unit/geometry,
+// Raycaster2DScan), for comparison.
+void BM_LaserHouseWalk(benchmark::State& state) {
+  const auto spec = aula::world::loadWorld(std::string(AULA_SOURCE_DIR) + "/worlds/vacuum.world");
+  const aula::geometry::Raycaster2D caster(aula::world::sliceAtHeight(spec, 0.075));
+  const Eigen::Vector2d origin(-0.861, 1.5);
+  float ranges[180];
+  int i = 0;
+  for (auto _ : state) {
+    const double yaw_rad = 0.1 * (i++ % 63);
+    for (int b = 0; b < 180; ++b) {
+      const double angle = yaw_rad + -M_PI / 2 + b * (M_PI / 179);
+      ranges[b] = static_cast<float>(std::clamp(caster.cast(origin, angle, 10.0), 0.08, 10.0));
+    }
+    benchmark::DoNotOptimize(ranges);
+  }
+}
+BENCHMARK(BM_LaserHouseWalk)->Unit(benchmark::kMicrosecond);
 
 // Brute force over every primitive, for comparison.
 void BM_LaserHouseBruteForce(benchmark::State& state) {

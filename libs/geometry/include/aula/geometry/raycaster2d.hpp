@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <vector>
 
 namespace aula::geometry {
@@ -59,7 +60,9 @@ class Raycaster2D {
 
   // Fills ranges_m (num_beams values). Beams with no hit within max_range report max_range;
   // hits closer than min_range report min_range (an obstacle touching the sensor must never
-  // look like free space to a student's algorithm).
+  // look like free space to a student's algorithm). Each beam's range is the very float that
+  // cast() gives along that beam's angle, yaw + min_angle + i * increment, clamped: a scan
+  // takes each object once and tests it only on the beams that can reach it, nearest first.
   void scan(const ScanRequest& request, float* ranges_m,
             const Obstacles2D* dynamic = nullptr) const;
 
@@ -67,6 +70,9 @@ class Raycaster2D {
 
  private:
   struct ScanScratch;
+  bool scanByObjects(const ScanRequest& request, const Obstacles2D* dynamic, ScanScratch& scratch) const;
+  bool collectCandidates(const ScanRequest& request, ScanScratch& scratch) const;
+  void castObject(const ScanRequest& request, int id, double beat_m, bool near, ScanScratch& scratch) const;
   double castAlong(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& direction, double max_range_m,
                    const Obstacles2D* dynamic, ScanScratch* scratch) const;
   double castOne(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& direction, int id, int rects,
@@ -74,6 +80,8 @@ class Raycaster2D {
 
   Obstacles2D statics_;
   std::vector<RectFrame> rect_frames_;  // statics_.rects, prepared
+  std::vector<std::array<Eigen::Vector2d, 4>> rect_corners_;  // statics_.rects' corners, world frame
+  bool walk_only_ = false;  // an object with non-finite or negative sizes: scans take castAlong's walk
   // Uniform grid over the statics' bounding box; each cell lists rect, circle and segment indices.
   double cell_m_ = 1.0;
   Eigen::Vector2d grid_min_ = Eigen::Vector2d::Zero();
