@@ -290,8 +290,18 @@ void Bus::deferWakeUps(const std::string& channel) {
   if (deferred_.insert(channel).second) updateFilters();
 }
 
+void Bus::wakeOnlyFor(const std::set<std::string>& waking) {
+  if (!receiver_ || receive_all_) return;
+  gate_ticks_ = false;
+  wake_for_ticks_from_us_ = 0;
+  for (const std::string& channel : channels_) {
+    if (waking.count(channel) == 0) deferred_.insert(channel);
+  }
+  updateFilters();
+}
+
 void Bus::wakeForTicksFrom(int64_t utime_us) {
-  if (utime_us == wake_for_ticks_from_us_) return;
+  if (utime_us == wake_for_ticks_from_us_ || !gate_ticks_) return;
   wake_for_ticks_from_us_ = utime_us;
   if (receiver_ && !receive_all_) updateDoorbell();
 }

@@ -68,6 +68,10 @@ int runComponent(ProcessSetup& setup, Component& component, int argc, char** arg
     component.watchedByLauncher();
   }
   if (setup.headless) {
+    // Woken by its ticks only: the period's sensor messages come before the tick in the same
+    // burst and wait in the socket. On a CPU shared with another task, a datagram that woke it
+    // mid-burst switched the simulator out in the middle of it, once per datagram (EEVDF).
+    setup.bus->wakeOnlyFor({lcmbus::kClockChannel});
     std::string gone;
     runHeadless(*setup.bus, [&] { return refusalOf(component).has_value() || !gone.empty(); }, [&] {
       component.poll();

@@ -156,6 +156,11 @@ class Bus {
   // of poses at its own tick, instead of waking at every tick). On udpm:// only; what wakes the
   // process is then read on a second socket of the URL (the "doorbell", UdpmReceiver::wakeOnly).
   void deferWakeUps(const std::string& channel);
+  // Every channel let through so far but `waking` defers its wake-ups, and the doorbell passes
+  // every tick (wakeForTicksFrom no longer changes it: a new filter each control period costs
+  // more than the ticks it would keep out). A lockstep component is woken once a burst, by its
+  // tick, the burst's last datagram.
+  void wakeOnlyFor(const std::set<std::string>& waking);
   // And clock ticks (kClockChannel) before `utime_us` do not wake it either: a lockstep client
   // that is not due until then (LockstepClient). Only once some channel is deferred.
   void wakeForTicksFrom(int64_t utime_us);
@@ -194,6 +199,7 @@ class Bus {
   std::map<lcm::Subscription*, std::string> subscribed_;  // each subscription's channel
   std::set<std::string> deferred_;  // never wake the process (deferWakeUps)
   int64_t wake_for_ticks_from_us_ = 0;
+  bool gate_ticks_ = true;  // wakeForTicksFrom moves the doorbell's tick gate
   long long handled_ = 0;
   bool print_stats_ = false;  // $AULA_BUS_STATS set: say how many messages were handled, at the end
 };
