@@ -212,4 +212,32 @@ TEST(UdpmReceiver, DeferredChannelsWaitInOrderUntilADueTickWakesTheProcess) {
   EXPECT_EQ(referee.handled(), 8);
 }
 
+TEST(UdpmReceiver, AComponentWokenOnlyForTicksReadsItsSensorsWithEachTick) {
+  aula::lcmbus::Bus simulator(privateUrl());
+  aula::lcmbus::Bus component(privateUrl());
+  Log log;
+  component.subscribe("LASER", &Log::raw, &log);
+  component.subscribe("POSE", &Log::raw, &log);
+  component.subscribe(aula::lcmbus::kClockChannel, &Log::tick, &log);
+  component.wakeOnlyFor({aula::lcmbus::kClockChannel});
+  component.wakeForTicksFrom(5000000);  // its LockstepClient's next due tick: every tick wakes it still
+
+  simulator.hold();
+  simulator.publish("POSE", "1", 1);
+  simulator.publish("LASER", "a", 1);
+  simulator.publish("POSE", "2", 1);
+  EXPECT_EQ(simulator.flush(), 0);
+  EXPECT_FALSE(readableWithin(component.getFileno(), 300)) << "a burst's sensor messages do not wake it";
+  EXPECT_TRUE(log.seen.empty());
+  simulator.hold();
+  simulator.publish("POSE", "3", 1);
+  publishTick(simulator, 80000);
+  EXPECT_EQ(simulator.flush(), 0);
+  ASSERT_TRUE(readableWithin(component.getFileno(), 1000)) << "the tick, the burst's last datagram, wakes it";
+  while (component.handleTimeout(0) > 0) {
+  }
+  EXPECT_EQ(log.seen, (std::vector<std::string>{"POSE:1", "LASER:a", "POSE:2", "POSE:3", "SIM_CLOCK:80000"}))
+      << "everything, in the order it was sent";
+}
+
 }  // namespace
