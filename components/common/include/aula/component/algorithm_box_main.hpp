@@ -34,6 +34,11 @@ void sayLoaded(const AlgorithmHostBase& host);
 // keeps the calls' names for the process's life: the watchdog holds a call's name by pointer.
 bool readCall(std::string& frame, BoxWire& wire, uint64_t& seed, CallKind& kind, const char*& what,
               std::set<std::string>& names);
+// The process's end once the algorithm has ended: its output flushed, then no library's static
+// destructors, which may fail on their own at exit (OMPL 1.5's SelfConfig map: a SIGSEGV after
+// every run of the Autopark planner, said as a crash after a good run). Under AddressSanitizer the
+// usual exit, for its leak check.
+[[noreturn]] void endAlgorithmBox();
 void sendReply(const std::string& fault, const std::string& printed, const Motors& motors,
                const std::function<void(BoxWire&)>& outputs);
 
@@ -64,7 +69,8 @@ int runAlgorithmBox() {
     host->call(seed, what, kind, [&box, kind](typename Box::Algorithm& algorithm) { box.invoke(algorithm, kind); });
     sendReply(host->fault(), host->takePrinted(), motors, [&box, kind](BoxWire& out) { box.writeOutputs(out, kind); });
   }
-  return 0;  // the host ends the algorithm (its destructor, a Python program's `finally`)
+  host.reset();  // ends the algorithm (its destructor, a Python program's `finally`)
+  endAlgorithmBox();
 }
 
 }  // namespace aula::component
