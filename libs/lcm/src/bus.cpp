@@ -185,8 +185,12 @@ std::vector<uint8_t>& Bus::holdSlot(const std::string& channel) {
   return slot.second;
 }
 
+bool Bus::sendsItself(const std::string& channel, std::size_t size) const {
+  return sender_ && UdpmSender::fitsOneDatagram(channel, size);
+}
+
 int Bus::send(const std::string& channel, const void* data, unsigned int size) {
-  if (!sender_ || !UdpmSender::fitsOneDatagram(channel, size)) return lcm_->publish(channel, data, size);
+  if (!sendsItself(channel, size)) return lcm_->publish(channel, data, size);
   const UdpmSender::Message message{&channel, static_cast<const uint8_t*>(data), size};
   return sender_->send(&message, 1);
 }
@@ -194,20 +198,19 @@ int Bus::send(const std::string& channel, const void* data, unsigned int size) {
 int Bus::flush() {
   holding_ = false;
   int status = 0;
-  std::vector<UdpmSender::Message>& burst = burst_;  // short messages in a row: one system call
-  burst.clear();
+  burst_.clear();  // short messages in a row: one system call
   auto sendBurst = [&] {
-    if (!burst.empty() && sender_->send(burst.data(), burst.size()) != 0 && status == 0) status = -1;
-    burst.clear();
+    if (!burst_.empty() && sender_->send(burst_.data(), burst_.size()) != 0 && status == 0) status = -1;
+    burst_.clear();
   };
   for (std::size_t i = 0; i < held_count_; ++i) {
     const auto& [channel, bytes] = held_[i];
-    if (sender_ && UdpmSender::fitsOneDatagram(channel, bytes.size())) {
-      burst.push_back({&channel, bytes.data(), bytes.size()});
+    if (sendsItself(channel, bytes.size())) {
+      burst_.push_back({&channel, bytes.data(), bytes.size()});
       continue;
     }
     sendBurst();  // what came before it goes first
-    const int sent = lcm_->publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
+    const int sent = send(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
     if (status == 0) status = sent;
   }
   sendBurst();

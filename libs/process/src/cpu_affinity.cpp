@@ -38,22 +38,33 @@ bool runOnlyOn(int cpu) {
   return sched_setaffinity(0, sizeof mask, &mask) == 0;
 }
 
+namespace {
+
+// linux/sched/types.h's struct sched_attr (glibc wraps sched_setattr only from 2.41).
+struct SchedAttr {
+  uint32_t size = sizeof(SchedAttr);
+  uint32_t sched_policy = 0;
+  uint64_t sched_flags = 0;
+  int32_t sched_nice = 0;
+  uint32_t sched_priority = 0;
+  uint64_t sched_runtime = 0, sched_deadline = 0, sched_period = 0;
+};
+
+}  // namespace
+
 bool runAsBatch() {
-  // linux/sched/types.h's struct sched_attr (glibc wraps sched_setattr only from 2.41).
-  struct {
-    uint32_t size;
-    uint32_t sched_policy;
-    uint64_t sched_flags;
-    int32_t sched_nice;
-    uint32_t sched_priority;
-    uint64_t sched_runtime, sched_deadline, sched_period;
-  } attributes{};
-  attributes.size = sizeof attributes;
+  SchedAttr attributes;
   attributes.sched_policy = SCHED_BATCH;
   attributes.sched_runtime = kLockstepSliceNs;
   if (syscall(SYS_sched_setattr, 0, &attributes, 0) == 0) return true;
   const sched_param none{};
   return sched_setscheduler(0, SCHED_BATCH, &none) == 0;
+}
+
+uint64_t timeSliceNs() {
+  SchedAttr attributes;
+  if (syscall(SYS_sched_getattr, 0, &attributes, sizeof attributes, 0) != 0) return 0;
+  return attributes.sched_runtime;
 }
 
 std::string cpuList(const std::vector<int>& cpus) {

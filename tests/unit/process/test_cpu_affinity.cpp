@@ -15,7 +15,6 @@
 #include <string>
 
 #include <sched.h>
-#include <sys/syscall.h>
 #include <sys/utsname.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -56,15 +55,7 @@ bool sliceIsTheLockstepOne() {
   int major = 0, minor = 0;
   if (uname(&system) != 0 || std::sscanf(system.release, "%d.%d", &major, &minor) != 2) return false;
   if (major < 6 || (major == 6 && minor < 12)) return true;
-  struct {
-    uint32_t size, sched_policy;
-    uint64_t sched_flags;
-    int32_t sched_nice;
-    uint32_t sched_priority;
-    uint64_t sched_runtime, sched_deadline, sched_period;
-  } attributes{};
-  if (syscall(SYS_sched_getattr, 0, &attributes, sizeof attributes, 0) != 0) return false;
-  return attributes.sched_runtime == aula::process::kLockstepSliceNs;
+  return aula::process::timeSliceNs() == aula::process::kLockstepSliceNs;
 }
 
 TEST(CpuAffinity, ABatchTaskStartsBatchTasks) {

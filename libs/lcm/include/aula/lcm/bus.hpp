@@ -178,6 +178,7 @@ class Bus {
   // One message now: on udpm://, a short one through sender_, a long one through LCM's publish
   // (its fragments); else LCM's publish.
   int send(const std::string& channel, const void* data, unsigned int size);
+  bool sendsItself(const std::string& channel, std::size_t size) const;  // through sender_
   void dispatch(const LcmMessage& message, int64_t received_utime);
   void selfTest();
   void updateFilters();   // the receiver's socket filters: channels_, then the doorbell's

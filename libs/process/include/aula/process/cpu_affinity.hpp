@@ -35,6 +35,9 @@ bool runAsBatch();
 // control periods, the component at its commands, twice the context switches of a run. A run's
 // processes block at every hand-over, so a long slice costs no other process of the run its turn.
 inline constexpr uint64_t kLockstepSliceNs = 100000000;
+// The calling thread's time slice as the kernel reports it (sched_getattr's sched_runtime), in
+// nanoseconds; 0 when it reports none.
+uint64_t timeSliceNs();
 // "0,1,3": for messages.
 std::string cpuList(const std::vector<int>& cpus);
 
